@@ -1,0 +1,93 @@
+#include "check/compare.h"
+
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace pn {
+namespace {
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", v);
+  return text;
+}
+
+std::string short_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2e", v);
+  return text;
+}
+
+double element_error(float e, float o, Tolerance::Kind kind) {
+  const bool ef = std::isfinite(e), of = std::isfinite(o);
+  if (!ef || !of) {
+    const bool same = (std::isnan(e) && std::isnan(o)) || (!std::isnan(e) && e == o);
+    return same ? 0.0 : std::numeric_limits<double>::infinity();
+  }
+  const double diff = std::fabs(static_cast<double>(e) - static_cast<double>(o));
+  if (kind == Tolerance::Kind::relative) return diff / std::max(std::fabs(static_cast<double>(e)), double(FLT_MIN));
+  return diff;
+}
+
+}  // namespace
+
+std::string Tolerance::describe() const {
+  switch (kind) {
+    case Kind::absolute: return bound == 0.0 ? "exact" : "abs <= " + short_number(bound);
+    case Kind::relative: return "rel <= " + short_number(bound);
+    case Kind::rmse: return "rmse <= " + short_number(bound);
+  }
+  return "?";
+}
+
+std::string Comparison::where(const Tolerance& tolerance) const {
+  if (!problem.empty()) return problem;
+  if (x < 0) return "no elements";
+  std::string out = "at (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+  if (channel != 0) out += "[" + std::to_string(channel) + "]";
+  const char* measure = tolerance.kind == Tolerance::Kind::relative ? "rel" : "abs";
+  out += ": expected " + number(expected) + ", observed " + number(observed) + " (" + measure + " error " +
+         short_number(element_error(expected, observed, tolerance.kind == Tolerance::Kind::relative
+                                                             ? Tolerance::Kind::relative
+                                                             : Tolerance::Kind::absolute)) +
+         (pass ? ", within " : ", not within ") + tolerance.describe() + ")";
+  if (tolerance.kind == Tolerance::Kind::rmse) out += ", rmse " + short_number(rmse);
+  return out;
+}
+
+Comparison compare(const Image& expected, const Image& observed, const Tolerance& tolerance) {
+  Comparison c;
+  if (expected.width != observed.width || expected.height != observed.height ||
+      expected.channels != observed.channels) {
+    c.problem = "size mismatch: expected " + std::to_string(expected.width) + "x" + std::to_string(expected.height) +
+                "x" + std::to_string(expected.channels) + ", observed " + std::to_string(observed.width) + "x" +
+                std::to_string(observed.height) + "x" + std::to_string(observed.channels);
+    c.worst_error = std::numeric_limits<double>::infinity();
+    return c;
+  }
+  const Tolerance::Kind element_kind =
+      tolerance.kind == Tolerance::Kind::relative ? Tolerance::Kind::relative : Tolerance::Kind::absolute;
+  double worst = -1.0, square_sum = 0.0;
+  for (int y = 0; y < expected.height; ++y) {
+    for (int x = 0; x < expected.width; ++x) {
+      for (int ch = 0; ch < expected.channels; ++ch) {
+        const float e = expected.at(x, y, ch), o = observed.at(x, y, ch);
+        const double err = element_error(e, o, element_kind);
+        square_sum += err * err;
+        if (err > worst) {
+          worst = err;
+          c.x = x, c.y = y, c.channel = ch, c.expected = e, c.observed = o;
+        }
+      }
+    }
+  }
+  const double count = static_cast<double>(expected.texels.size());
+  c.rmse = count > 0 ? std::sqrt(square_sum / count) : 0.0;
+  c.worst_error = tolerance.kind == Tolerance::Kind::rmse ? c.rmse : std::max(worst, 0.0);
+  c.pass = c.worst_error <= tolerance.bound;
+  return c;
+}
+
+}  // namespace pn

@@ -1,0 +1,24 @@
+#include "check/module_check.h"
+
+#include "core/error.h"
+
+namespace pn {
+
+const std::vector<ModuleCheck>& module_checks() {
+  static const std::vector<ModuleCheck> checks{
+      {"blur", "separable Gaussian (two 1-D passes) vs direct 2-D convolution; depth-aware vs its 1-D definition",
+       &run_blur_check},
+  };
+  return checks;
+}
+
+const ModuleCheck& find_module_check(const std::string& module) {
+  std::string names;
+  for (const ModuleCheck& check : module_checks()) {
+    if (module == check.module) return check;
+    names += std::string(names.empty() ? "" : ", ") + check.module;
+  }
+  throw Error("module '" + module + "': no check registered; expected one of " + names);
+}
+
+}  // namespace pn

@@ -1,0 +1,46 @@
+// The registry of module checks behind `penumbra check`: each runs one
+// module's pass over the fixtures on the GPU and compares every case with its
+// CPU reference. Later modules add one entry here and one file of cases.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "check/compare.h"
+#include "gl/context.h"
+#include "reference/blur_reference.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+// What the user may set on the command line for the checks.
+struct CheckOptions {
+  std::optional<BlurParams> blur;  // replaces the blur check's parameter list
+};
+
+struct CheckEnvironment {
+  const Context& context;
+  const SourceTree& tree;  // the modules under test (--glsl-root)
+  const CheckOptions& options;
+};
+
+struct CaseResult {
+  std::string name;
+  Tolerance tolerance;
+  Comparison comparison;
+};
+
+struct ModuleCheck {
+  const char* module;   // the glsl/ module it checks, without .glsl
+  const char* summary;  // what it compares against what
+  std::vector<CaseResult> (*run)(const CheckEnvironment&);
+};
+
+const std::vector<ModuleCheck>& module_checks();
+const ModuleCheck& find_module_check(const std::string& module);  // throws Error listing the modules
+
+// One entry point per module check.
+std::vector<CaseResult> run_blur_check(const CheckEnvironment& env);
+
+}  // namespace pn

@@ -1,0 +1,73 @@
+#include "check/report.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace pn {
+namespace {
+
+// How close a case came to its bound: error / bound, with exact bounds
+// counting any error as infinitely far.
+double closeness(const CaseResult& c) {
+  const double bound = c.tolerance.bound;
+  if (bound > 0.0) return c.comparison.worst_error / bound;
+  return c.comparison.worst_error > 0.0 ? 1e300 : 0.0;
+}
+
+}  // namespace
+
+bool ModuleReport::pass() const {
+  return !cases.empty() && std::all_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.comparison.pass; });
+}
+
+const CaseResult* ModuleReport::worst() const {
+  const CaseResult* worst = nullptr;
+  for (const CaseResult& c : cases) {
+    const bool more_failing = worst != nullptr && !c.comparison.pass && worst->comparison.pass;
+    if (worst == nullptr || more_failing ||
+        (c.comparison.pass == worst->comparison.pass && closeness(c) > closeness(*worst)))
+      worst = &c;
+  }
+  return worst;
+}
+
+std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, const CheckEnvironment& env) {
+  std::vector<const ModuleCheck*> selected;
+  if (modules.empty())
+    for (const ModuleCheck& check : module_checks()) selected.push_back(&check);
+  for (const std::string& name : modules) selected.push_back(&find_module_check(name));
+  std::vector<ModuleReport> reports;
+  for (const ModuleCheck* check : selected) reports.push_back({check->module, check->run(env)});
+  return reports;
+}
+
+void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%-14s %6s  %-34s %s\n", "module", "cases", "worst error (tolerance)", "verdict");
+  out << line;
+  for (const ModuleReport& r : reports) {
+    const CaseResult* w = r.worst();
+    std::string worst = "-";
+    if (w != nullptr) {
+      char e[64];
+      std::snprintf(e, sizeof e, "%.2e", w->comparison.worst_error);
+      worst = std::string(e) + " (" + w->tolerance.describe() + ")";
+    }
+    std::snprintf(line, sizeof line, "%-14s %6zu  %-34s %s\n", r.module.c_str(), r.cases.size(), worst.c_str(),
+                  r.pass() ? "pass" : "FAIL");
+    out << line;
+  }
+  for (const ModuleReport& r : reports) {
+    if (r.pass()) continue;
+    size_t failing = 0;
+    for (const CaseResult& c : r.cases) {
+      if (c.comparison.pass) continue;
+      if (++failing <= max_failures)
+        out << r.module << ": FAIL " << c.name << ": " << c.comparison.where(c.tolerance) << "\n";
+    }
+    if (failing > max_failures) out << r.module << ": ... and " << failing - max_failures << " more failing cases\n";
+    if (r.cases.empty()) out << r.module << ": FAIL no cases ran\n";
+  }
+}
+
+}  // namespace pn

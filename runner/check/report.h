@@ -1,0 +1,28 @@
+// Runs module checks and prints the table of `penumbra check`.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "check/module_check.h"
+
+namespace pn {
+
+struct ModuleReport {
+  std::string module;
+  std::vector<CaseResult> cases;
+
+  bool pass() const;
+  // The failing case with the largest error, else the case closest to its bound.
+  const CaseResult* worst() const;
+};
+
+// `modules` empty means every registered check. Unknown names throw Error before anything runs.
+std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, const CheckEnvironment& env);
+
+// Table: module, cases, worst error, verdict; then, for each failing module,
+// its failing cases with where / expected / observed (at most `max_failures` each).
+void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures = 10);
+
+}  // namespace pn

@@ -1,0 +1,24 @@
+// The subcommands of `penumbra`; each returns the process exit code and
+// throws pn::Error for bad input.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace pn::cli {
+
+// Options shared by the commands that need them.
+struct GlobalOptions {
+  std::string glsl_root;  // empty: the library's own glsl/
+  std::string backend;    // empty: first that works
+};
+
+void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code);
+void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code);
+void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code);
+void add_info_command(CLI::App& app, GlobalOptions& global, int& exit_code);
+
+// Helpers for the commands.
+std::string default_glsl_root();
+std::string glsl_root_or_default(const GlobalOptions& global);
+
+}  // namespace pn::cli

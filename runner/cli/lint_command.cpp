@@ -1,0 +1,52 @@
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "shader/lint.h"
+
+namespace fs = std::filesystem;
+
+namespace pn::cli {
+namespace {
+
+// Without --glsl-root, a path inside the library's glsl/ uses it as the root;
+// any other directory is its own root (a user's copy of the modules).
+fs::path root_for(const fs::path& path, const GlobalOptions& global) {
+  if (!global.glsl_root.empty()) return global.glsl_root;
+  std::error_code ec;
+  const fs::path library = fs::canonical(default_glsl_root(), ec);
+  const fs::path target = fs::canonical(path, ec);
+  if (ec) throw Error("'" + path.string() + "': no such file or directory");
+  const fs::path rel = target.lexically_relative(library);
+  if (!library.empty() && !rel.empty() && *rel.begin() != "..") return library;
+  return fs::is_directory(target) ? target : target.parent_path();
+}
+
+}  // namespace
+
+void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
+  auto* cmd = app.add_subcommand("lint", "Compile each module and pass for GL 4.50, Vulkan SPIR-V and GLSL ES 3.10");
+  auto paths = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("paths", *paths, "GLSL files or directories (default: the glsl root)");
+  cmd->add_option("--glsl-root", global.glsl_root, "Directory that #include paths resolve under");
+  cmd->callback([paths, &global, &exit_code] {
+    if (paths->empty()) paths->push_back(glsl_root_or_default(global));
+    const GlslangProcess glslang;
+    size_t files = 0, failed = 0;
+    for (const std::string& path : *paths) {
+      const SourceTree tree(root_for(path, global));
+      for (const fs::path& file : collect_glsl_files(path)) {
+        const LintResult result = lint_file(glslang, tree, file);
+        ++files;
+        for (const LintDiagnostic& d : result.diagnostics) std::cout << d.str() << "\n";
+        if (!result.ok) ++failed;
+      }
+    }
+    if (files == 0) throw Error("no .glsl or .comp files found in the given paths");
+    std::cout << "lint: " << files - failed << " of " << files << " files compile for gl450, vulkan and es310\n";
+    exit_code = failed == 0 ? 0 : static_cast<int>(ExitCode::failed);
+  });
+}
+
+}  // namespace pn::cli

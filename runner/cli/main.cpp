@@ -1,0 +1,26 @@
+// penumbra — lint, bundle and check the GLSL soft-shadow modules.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"penumbra: GLSL soft-shadow modules, linted, bundled and checked against CPU references"};
+  app.require_subcommand(1);
+  pn::cli::GlobalOptions global;
+  int exit_code = 0;
+  pn::cli::add_lint_command(app, global, exit_code);
+  pn::cli::add_bundle_command(app, global, exit_code);
+  pn::cli::add_check_command(app, global, exit_code);
+  pn::cli::add_info_command(app, global, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : static_cast<int>(pn::ExitCode::bad_input);
+  } catch (const pn::Error& e) {
+    std::cerr << "penumbra: error: " << e.what() << "\n";
+    return static_cast<int>(e.code());
+  }
+  return exit_code;
+}

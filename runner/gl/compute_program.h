@@ -1,0 +1,33 @@
+// A linked compute program built from a flattened pass (GL 4.50 wrapper);
+// driver diagnostics are mapped back to module files and lines.
+#pragma once
+
+#include <string>
+
+#include "gl/objects.h"
+#include "shader/target.h"
+
+namespace pn {
+
+class ComputeProgram {
+ public:
+  // `name` is used in messages. Throws Error(ExitCode::failed) on a compile or link error.
+  ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source);
+
+  // Runs the program over a width × height grid of invocations (rounded up to
+  // whole work groups) and waits for image writes to become visible.
+  void dispatch(int width, int height) const;
+
+  GLuint id() const { return program_.id(); }
+
+ private:
+  const Context* context_;
+  std::string name_;
+  GlObject program_;
+  GLint local_size_[3] = {1, 1, 1};
+};
+
+// A std140 uniform buffer holding `size` bytes, bound to `binding`.
+GlObject bind_uniform_buffer(const Context& context, GLuint binding, const void* data, size_t size);
+
+}  // namespace pn

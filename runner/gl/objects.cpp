@@ -1,0 +1,28 @@
+#include "gl/objects.h"
+
+namespace pn {
+
+// `target` is the texture target, the shader stage or the query target.
+GlObject::GlObject(const Context& context, GlKind kind, GLenum target) : gl_(&context.gl()), kind_(kind) {
+  switch (kind) {
+    case GlKind::texture: gl_->CreateTextures(target, 1, &id_); break;
+    case GlKind::buffer: gl_->CreateBuffers(1, &id_); break;
+    case GlKind::shader: id_ = gl_->CreateShader(target); break;
+    case GlKind::program: id_ = gl_->CreateProgram(); break;
+    case GlKind::query: gl_->CreateQueries(target, 1, &id_); break;
+  }
+}
+
+void GlObject::release() {
+  if (id_ == 0) return;
+  switch (kind_) {
+    case GlKind::texture: gl_->DeleteTextures(1, &id_); break;
+    case GlKind::buffer: gl_->DeleteBuffers(1, &id_); break;
+    case GlKind::shader: gl_->DeleteShader(id_); break;
+    case GlKind::program: gl_->DeleteProgram(id_); break;
+    case GlKind::query: gl_->DeleteQueries(1, &id_); break;
+  }
+  id_ = 0;
+}
+
+}  // namespace pn

@@ -1,0 +1,41 @@
+// Move-only owners of GL names (magnum's model): each deletes its name in the
+// destructor through the function table of the context that made it, so no
+// name outlives its context and no check leaks objects into the next.
+#pragma once
+
+#include <utility>
+
+#include "gl/context.h"
+
+namespace pn {
+
+enum class GlKind { texture, buffer, shader, program, query };
+
+class GlObject {
+ public:
+  GlObject() = default;
+  GlObject(const Context& context, GlKind kind, GLenum target = 0);
+  ~GlObject() { release(); }
+  GlObject(GlObject&& other) noexcept { *this = std::move(other); }
+  GlObject& operator=(GlObject&& other) noexcept {
+    if (this != &other) {
+      release();
+      gl_ = std::exchange(other.gl_, nullptr);
+      kind_ = other.kind_;
+      id_ = std::exchange(other.id_, 0);
+    }
+    return *this;
+  }
+  GlObject(const GlObject&) = delete;
+  GlObject& operator=(const GlObject&) = delete;
+
+  GLuint id() const { return id_; }
+
+ private:
+  void release();
+  const GladGLContext* gl_ = nullptr;
+  GlKind kind_ = GlKind::texture;
+  GLuint id_ = 0;
+};
+
+}  // namespace pn

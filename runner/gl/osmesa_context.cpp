@@ -1,0 +1,56 @@
+// OSMesa backend: Mesa's off-screen renderer, for machines whose EGL cannot
+// give a core context. Optional at build time (Mesa 25.1 removed OSMesa).
+#include "core/error.h"
+#include "gl/context.h"
+
+#ifdef PENUMBRA_HAVE_OSMESA
+#include <GL/osmesa.h>
+
+#include <array>
+#include <cstdint>
+
+namespace pn {
+namespace {
+
+class OsmesaContext final : public Context {
+ public:
+  OsmesaContext() : Context(Backend::osmesa) {
+    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
+                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+    if (context_ == nullptr) throw Error("OSMesaCreateContextAttribs for OpenGL 4.5 core failed");
+    // OSMesa needs a colour buffer to be current; all real work goes to FBOs.
+    if (!OSMesaMakeCurrent(context_, pixel_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
+      OSMesaDestroyContext(context_);
+      throw Error("OSMesaMakeCurrent failed");
+    }
+    try {
+      load(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress));
+    } catch (...) {
+      OSMesaDestroyContext(context_);
+      throw;
+    }
+  }
+  ~OsmesaContext() override { OSMesaDestroyContext(context_); }
+
+ private:
+  OSMesaContext context_ = nullptr;
+  std::array<std::uint8_t, 4> pixel_{};
+};
+
+}  // namespace
+
+std::unique_ptr<Context> create_osmesa_context() { return std::make_unique<OsmesaContext>(); }
+
+}  // namespace pn
+
+#else
+
+namespace pn {
+std::unique_ptr<Context> create_osmesa_context() {
+  throw Error("this build has no OSMesa backend (libosmesa6-dev was not found at configure time)");
+}
+}  // namespace pn
+
+#endif

@@ -1,0 +1,59 @@
+#include "gl/texture.h"
+
+#include "core/error.h"
+
+namespace pn {
+namespace {
+
+GLenum pixel_format(int channels) {
+  static const GLenum formats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+  return formats[channels - 1];
+}
+
+}  // namespace
+
+GLenum float_format(int channels) {
+  static const GLenum formats[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+  if (channels < 1 || channels > 4) throw Error("texture channels " + std::to_string(channels) + ": expected 1 to 4");
+  return formats[channels - 1];
+}
+
+GlObject make_float_texture(const Context& context, int width, int height, int channels) {
+  const auto& gl = context.gl();
+  GLint max_size = 0;
+  gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (width < 1 || height < 1 || width > max_size || height > max_size)
+    throw Error("texture size " + std::to_string(width) + "x" + std::to_string(height) +
+                ": expected 1 to GL_MAX_TEXTURE_SIZE (" + std::to_string(max_size) + ") on each side");
+  GlObject texture(context, GlKind::texture, GL_TEXTURE_2D);
+  gl.TextureStorage2D(texture.id(), 1, float_format(channels), width, height);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  context.throw_if_gl_error("allocating a float texture");
+  return texture;
+}
+
+GlObject upload_float_texture(const Context& context, const Image& image) {
+  GlObject texture = make_float_texture(context, image.width, image.height, image.channels);
+  const auto& gl = context.gl();
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl.TextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, pixel_format(image.channels), GL_FLOAT,
+                       image.texels.data());
+  context.throw_if_gl_error("uploading a float texture");
+  return texture;
+}
+
+Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels) {
+  Image image(width, height, channels);
+  const auto& gl = context.gl();
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  gl.GetTextureImage(texture.id(), 0, pixel_format(channels), GL_FLOAT,
+                     static_cast<GLsizei>(image.texels.size() * sizeof(float)), image.texels.data());
+  context.throw_if_gl_error("reading back a float texture");
+  return image;
+}
+
+}  // namespace pn

@@ -1,0 +1,18 @@
+// Float textures for passes: upload an Image unchanged (no 8-bit quantisation),
+// allocate a target, read a result back as floats.
+#pragma once
+
+#include "core/image.h"
+#include "gl/objects.h"
+
+namespace pn {
+
+// Immutable-storage 2-D texture of 1–4 float channels (R32F … RGBA32F), nearest filtering.
+GlObject make_float_texture(const Context& context, int width, int height, int channels);
+GlObject upload_float_texture(const Context& context, const Image& image);
+Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels);
+
+// GL internal format for `channels` floats (GL_R32F … GL_RGBA32F).
+GLenum float_format(int channels);
+
+}  // namespace pn

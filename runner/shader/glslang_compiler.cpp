@@ -1,0 +1,76 @@
+#include "shader/glslang_compiler.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <spirv-tools/libspirv.hpp>
+
+namespace pn {
+
+GlslangProcess::GlslangProcess() { glslang::InitializeProcess(); }
+GlslangProcess::~GlslangProcess() { glslang::FinalizeProcess(); }
+
+namespace {
+
+std::vector<Diagnostic> validate_spirv(const std::vector<uint32_t>& spirv, const std::string& entry) {
+  std::vector<Diagnostic> out;
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_0);
+  tools.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* text) {
+    if (level <= SPV_MSG_ERROR) out.push_back({entry, 0, "error", std::string("SPIR-V validation: ") + text});
+  });
+  if (!tools.Validate(spirv) && out.empty()) out.push_back({entry, 0, "error", "SPIR-V validation failed"});
+  return out;
+}
+
+}  // namespace
+
+CompileResult compile_with_glslang(const GlslangProcess&, const ShaderSource& source, Target target) {
+  const EShLanguage stage = EShLangCompute;
+  glslang::TShader shader(stage);
+  const char* text = source.text.c_str();
+  const int length = static_cast<int>(source.text.size());
+  shader.setStringsWithLengths(&text, &length, 1);
+
+  auto messages = static_cast<EShMessages>(EShMsgDefault);
+  if (target == Target::vulkan) {
+    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  } else {
+    // Client "none" (SPEC §8): EShClientOpenGL would select ARB_gl_spirv rules.
+    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientNone, 0);
+    shader.setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+    shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+  }
+
+  const std::string entry = source.files.empty() ? "<source>" : source.files.front();
+  CompileResult result;
+  const bool parsed = shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, messages);
+  result.diagnostics = parse_info_log(shader.getInfoLog(), source.files, entry);
+  if (!parsed) return result;
+
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    auto link = parse_info_log(program.getInfoLog(), source.files, entry);
+    result.diagnostics.insert(result.diagnostics.end(), link.begin(), link.end());
+    return result;
+  }
+  if (target == Target::vulkan) {
+    glslang::SpvOptions options;
+    options.validate = false;  // validated below, with the messages kept
+    glslang::GlslangToSpv(*program.getIntermediate(stage), result.spirv, &options);
+    auto invalid = validate_spirv(result.spirv, entry);
+    if (!invalid.empty()) {
+      result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
+      return result;
+    }
+  }
+  result.ok = true;
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == "error") result.ok = false;
+  return result;
+}
+
+}  // namespace pn

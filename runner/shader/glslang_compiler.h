@@ -1,0 +1,32 @@
+// glslang as the reference front end: compiles a ShaderSource as a compute
+// shader for one Target. GL 4.50 and ES 3.10 are parsed as glslangValidator
+// does without -V (client none: ordinary GLSL, as drivers see it); Vulkan is
+// parsed with Vulkan rules, translated to SPIR-V and validated by SPIRV-Tools.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shader/diagnostic.h"
+#include "shader/target.h"
+
+namespace pn {
+
+// glslang's process-wide tables live as long as one of these does.
+class GlslangProcess {
+ public:
+  GlslangProcess();
+  ~GlslangProcess();
+  GlslangProcess(const GlslangProcess&) = delete;
+  GlslangProcess& operator=(const GlslangProcess&) = delete;
+};
+
+struct CompileResult {
+  bool ok = false;
+  std::vector<Diagnostic> diagnostics;  // file names are the ShaderSource's table entries
+  std::vector<uint32_t> spirv;          // Vulkan target only
+};
+
+CompileResult compile_with_glslang(const GlslangProcess& process, const ShaderSource& source, Target target);
+
+}  // namespace pn

@@ -1,0 +1,81 @@
+#include "shader/source_tree.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace fs = std::filesystem;
+
+namespace pn {
+
+SourceTree::SourceTree(const fs::path& root) {
+  std::error_code ec;
+  fs::path canonical = fs::canonical(root, ec);
+  if (ec || !fs::is_directory(canonical))
+    throw Error("glsl root '" + root.string() + "': expected an existing directory of GLSL modules");
+  root_ = canonical;
+}
+
+bool SourceTree::inside_root(const fs::path& canonical) const {
+  auto rel = canonical.lexically_relative(root_);
+  return !rel.empty() && *rel.begin() != "..";
+}
+
+fs::path SourceTree::locate(const fs::path& file) const {
+  std::error_code ec;
+  // A relative name is first taken from the working directory, then from the root.
+  fs::path candidate = file;
+  if (file.is_relative() && !fs::exists(file, ec)) candidate = root_ / file;
+  fs::path canonical = fs::canonical(candidate, ec);
+  if (ec)
+    throw Error("'" + file.string() + "': no such file (looked in the working directory and in '" +
+                root_.string() + "')");
+  if (!fs::is_regular_file(canonical))
+    throw Error("'" + file.string() + "': expected a GLSL file, found a directory or special file");
+  if (!inside_root(canonical))
+    throw Error("'" + file.string() + "': expected a file inside the glsl root '" + root_.string() + "'");
+  return canonical;
+}
+
+fs::path SourceTree::resolve_include(const fs::path& includer, const std::string& requested) const {
+  if (requested.empty()) throw Error("#include \"\": expected a file name");
+  if (fs::path(requested).is_absolute())
+    throw Error("#include \"" + requested + "\": expected a path relative to the glsl root, not an absolute path");
+  std::error_code ec;
+  for (const fs::path& base : {includer.parent_path(), root_}) {
+    fs::path candidate = (base / requested).lexically_normal();
+    if (!inside_root(candidate))
+      throw Error("#include \"" + requested + "\": leaves the glsl root '" + root_.string() + "'");
+    if (!fs::exists(candidate, ec)) continue;
+    fs::path canonical = fs::canonical(candidate, ec);
+    if (ec || !inside_root(canonical))
+      throw Error("#include \"" + requested + "\": resolves outside the glsl root '" + root_.string() + "'");
+    return canonical;
+  }
+  throw Error("#include \"" + requested + "\": no such file next to '" + diagnostic_path(includer) +
+              "' or at the glsl root");
+}
+
+std::string SourceTree::display_name(const fs::path& canonical) const {
+  if (inside_root(canonical)) return canonical.lexically_relative(root_).generic_string();
+  return canonical.generic_string();
+}
+
+std::string SourceTree::diagnostic_path(const fs::path& canonical) const {
+  std::error_code ec;
+  fs::path rel = canonical.lexically_relative(fs::current_path(ec));
+  if (!ec && !rel.empty() && *rel.begin() != "..") return rel.generic_string();
+  return canonical.generic_string();
+}
+
+std::string SourceTree::read(const fs::path& canonical) const {
+  std::ifstream in(canonical, std::ios::binary);
+  if (!in) throw Error("'" + diagnostic_path(canonical) + "': cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw Error("'" + diagnostic_path(canonical) + "': read failed");
+  return text.str();
+}
+
+}  // namespace pn

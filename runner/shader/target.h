@@ -1,0 +1,35 @@
+// The three GLSL targets every module must compile for (SPEC §2), and the
+// standalone wrapper that turns a flattened module into a whole compute shader
+// for one of them. Lint, bundle and the GL passes all use this one wrapper.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "shader/flatten.h"
+
+namespace pn {
+
+enum class Target { gl450, vulkan, es310 };
+
+const std::vector<Target>& all_targets();
+const char* target_name(Target target);  // "gl450", "vulkan", "es310"
+Target parse_target(const std::string& name);  // throws Error naming the accepted values
+
+struct Define {
+  std::string name;
+  std::string value;
+};
+
+// A whole shader: `#version` and (for ES) default precisions, the defines,
+// the flattened source and, when it has no main(), a minimal 1×1×1 compute
+// entry point. `files` extends the flattened file table with the entry point.
+struct ShaderSource {
+  std::string text;
+  std::vector<std::string> files;
+};
+
+ShaderSource standalone_source(const FlatSource& flat, Target target,
+                               const std::vector<Define>& defines = {});
+
+}  // namespace pn
