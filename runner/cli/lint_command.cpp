@@ -40,7 +40,10 @@ void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
         const LintResult result = lint_file(glslang, tree, file);
         ++files;
         for (const LintDiagnostic& d : result.diagnostics) std::cout << d.str() << "\n";
-        if (!result.ok) ++failed;
+        if (!result.ok) {
+          std::cout << "lint: FAIL " << result.file << "\n";
+          ++failed;
+        }
       }
     }
     if (files == 0) throw Error("no .glsl or .comp files found in the given paths");

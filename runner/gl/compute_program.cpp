@@ -21,7 +21,8 @@ ComputeProgram::ComputeProgram(const Context& context, const std::string& name, 
     : context_(&context), name_(name), program_(context, GlKind::program) {
   const auto& gl = context.gl();
   GlObject shader(context, GlKind::shader, GL_COMPUTE_SHADER);
-  const char* text = source.text.c_str();
+  const std::string driver_text = source.driver_text();
+  const char* text = driver_text.c_str();
   gl.ShaderSource(shader.id(), 1, &text, nullptr);
   gl.CompileShader(shader.id());
   GLint ok = 0;
@@ -35,11 +36,12 @@ ComputeProgram::ComputeProgram(const Context& context, const std::string& name, 
     return std::string(log.c_str());
   };
   const std::string entry = source.files.empty() ? name : source.files.front();
+  const LocationMap by_physical_line = [&](int, int line) { return source.origin_of_line(line); };
   if (!ok) {
     const std::string log = log_of(shader.id(), false);
     context.discard_gl_errors();  // the mapped log below says it better
     throw Error(name + ": the GL driver rejected the pass:\n" +
-                    first_lines(parse_info_log(log, source.files, entry), log),
+                    first_lines(parse_info_log(log, by_physical_line, entry), log),
                 ExitCode::failed);
   }
   gl.AttachShader(program_.id(), shader.id());

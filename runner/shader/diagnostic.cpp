@@ -11,18 +11,21 @@ std::string Diagnostic::str() const {
   return out + ": " + severity + ": " + message;
 }
 
-std::vector<Diagnostic> parse_info_log(const std::string& log, const std::vector<std::string>& files,
+std::vector<Diagnostic> parse_info_log(const std::string& log, const LocationMap& map,
                                        const std::string& fallback_file) {
   // glslang: "ERROR: 2:14: 'x' : undeclared identifier"
-  // Mesa:    "2:14(3): error: `x' undeclared"
+  // Mesa:    "0:14(3): error: `x' undeclared"
+  // NVIDIA:  "0(14) : error C1008: undefined variable "x""
   static const std::regex glslang_re(R"(^(ERROR|WARNING): (\d+):(\d+): (.*?)\s*$)");
   static const std::regex glslang_bare_re(R"(^(ERROR|WARNING): (.*?)\s*$)");
   static const std::regex mesa_re(R"(^(\d+):(\d+)\(\d+\): (error|warning): (.*?)\s*$)");
+  static const std::regex nvidia_re(R"(^(\d+)\((\d+)\) : (error|warning) \w*: ?(.*?)\s*$)");
   static const std::regex summary_re(R"(^(ERROR|WARNING): \d+ compilation (errors|warnings)\..*)");
+  static const std::regex terminated_re(R"(.*'' : compilation terminated.*)");
 
-  auto file_name = [&](const std::string& number) {
-    size_t n = std::stoul(number);
-    return n < files.size() ? files[n] : fallback_file;
+  auto at = [&](const std::string& number, const std::string& line, std::string severity, std::string message) {
+    auto [file, mapped_line] = map(std::stoi(number), std::stoi(line));
+    return Diagnostic{file, mapped_line, std::move(severity), std::move(message)};
   };
   auto lower = [](std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -34,14 +37,18 @@ std::vector<Diagnostic> parse_info_log(const std::string& log, const std::vector
   std::string line;
   std::smatch m;
   while (std::getline(lines, line)) {
+    if (std::regex_match(line, terminated_re)) {
+      // The aborted parse leaves include guards open: not the user's error.
+      while (!out.empty() && out.back().message == "'' : missing #endif") out.pop_back();
+      break;
+    }
     if (std::regex_match(line, summary_re)) continue;
     if (std::regex_match(line, m, glslang_re)) {
-      out.push_back({file_name(m[2]), std::stoi(m[3]), lower(m[1]), m[4]});
-    } else if (std::regex_match(line, m, mesa_re)) {
-      out.push_back({file_name(m[1]), std::stoi(m[2]), m[3], m[4]});
-    } else if (std::regex_match(line, m, glslang_bare_re)) {
-      if (m[2] != "" && m[2] != "'' : compilation terminated")
-        out.push_back({fallback_file, 0, lower(m[1]), m[2]});
+      out.push_back(at(m[2], m[3], lower(m[1]), m[4]));
+    } else if (std::regex_match(line, m, mesa_re) || std::regex_match(line, m, nvidia_re)) {
+      out.push_back(at(m[1], m[2], m[3], m[4]));
+    } else if (std::regex_match(line, m, glslang_bare_re) && m[2] != "") {
+      out.push_back({fallback_file, 0, lower(m[1]), m[2]});
     }
   }
   return out;

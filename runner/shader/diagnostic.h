@@ -1,7 +1,9 @@
 // A compiler message mapped back to the file and line it is about.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pn {
@@ -16,10 +18,14 @@ struct Diagnostic {
   std::string str() const;
 };
 
-// Parses a glslang or driver info log whose locations are "FILE_NUMBER:LINE"
-// (the integer `#line` markers of a flattened source) and maps each file
-// number through `files`. Messages without a location go to `fallback_file`.
-std::vector<Diagnostic> parse_info_log(const std::string& log, const std::vector<std::string>& files,
+// Maps a log location (source-string number, line) to (file, line).
+using LocationMap = std::function<std::pair<std::string, int>(int string_number, int line)>;
+
+// Parses a glslang, Mesa or NVIDIA info log and maps each location through
+// `map`. Messages without a location go to `fallback_file`. Everything after
+// glslang's "compilation terminated" is dropped: it is noise such as
+// "missing #endif" from the aborted parse.
+std::vector<Diagnostic> parse_info_log(const std::string& log, const LocationMap& map,
                                        const std::string& fallback_file);
 
 }  // namespace pn

@@ -45,15 +45,20 @@ CompileResult compile_with_glslang(const GlslangProcess&, const ShaderSource& so
   }
 
   const std::string entry = source.files.empty() ? "<source>" : source.files.front();
+  // The `#line` markers carry file numbers, which glslang reports faithfully.
+  const LocationMap by_file_number = [&](int number, int line) {
+    const auto n = static_cast<size_t>(number);
+    return std::pair<std::string, int>{n < source.files.size() ? source.files[n] : entry, line};
+  };
   CompileResult result;
   const bool parsed = shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, messages);
-  result.diagnostics = parse_info_log(shader.getInfoLog(), source.files, entry);
+  result.diagnostics = parse_info_log(shader.getInfoLog(), by_file_number, entry);
   if (!parsed) return result;
 
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(messages)) {
-    auto link = parse_info_log(program.getInfoLog(), source.files, entry);
+    auto link = parse_info_log(program.getInfoLog(), by_file_number, entry);
     result.diagnostics.insert(result.diagnostics.end(), link.begin(), link.end());
     return result;
   }

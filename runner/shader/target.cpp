@@ -1,5 +1,8 @@
 #include "shader/target.h"
 
+#include <regex>
+#include <sstream>
+
 #include "core/error.h"
 
 namespace pn {
@@ -22,6 +25,40 @@ Target parse_target(const std::string& name) {
   for (Target t : all_targets())
     if (name == target_name(t)) return t;
   throw Error("target '" + name + "': expected one of gl450, vulkan, es310");
+}
+
+namespace {
+
+const std::regex& line_marker() {
+  static const std::regex re(R"(^#line (\d+) (\d+)$)");
+  return re;
+}
+
+}  // namespace
+
+std::string ShaderSource::driver_text() const {
+  std::istringstream lines(text);
+  std::string out, line;
+  while (std::getline(lines, line)) out += (std::regex_match(line, line_marker()) ? "" : line) + "\n";
+  return out;
+}
+
+std::pair<std::string, int> ShaderSource::origin_of_line(int line) const {
+  std::istringstream lines(text);
+  std::string current;
+  std::pair<std::string, int> next{"<wrapper>", 1}, origin{"<wrapper>", 0};
+  std::smatch m;
+  for (int physical = 1; physical <= line && std::getline(lines, current); ++physical) {
+    if (std::regex_match(current, m, line_marker())) {
+      const size_t number = std::stoul(m[2]);
+      next = {number < files.size() ? files[number] : "<wrapper>", std::stoi(m[1])};
+      origin = {"<wrapper>", 0};
+    } else {
+      origin = next;
+      ++next.second;
+    }
+  }
+  return origin;
 }
 
 ShaderSource standalone_source(const FlatSource& flat, Target target, const std::vector<Define>& defines) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "shader/flatten.h"
@@ -27,6 +28,15 @@ struct Define {
 struct ShaderSource {
   std::string text;
   std::vector<std::string> files;
+
+  // `text` with every `#line` marker blanked, for GL drivers: their logs
+  // disagree on source-string numbers (Mesa prints 0 whatever `#line` says),
+  // so driver messages are mapped back by physical line instead.
+  std::string driver_text() const;
+
+  // File and line that physical line `line` (1-based) of `text` came from;
+  // the file is "<wrapper>" for the #version/precision/define prelude.
+  std::pair<std::string, int> origin_of_line(int line) const;
 };
 
 ShaderSource standalone_source(const FlatSource& flat, Target target,

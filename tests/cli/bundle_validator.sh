@@ -1,0 +1,24 @@
+#!/bin/sh
+# bundle_validator.sh PENUMBRA GLSLANG_VALIDATOR OUT_DIR DATA_DIR
+# Every module and pass bundles, for each target, into a file that Debian's
+# glslangValidator compiles on its own; a failing bundle leaves no file.
+set -u
+penumbra=$1 validator=$2 out=$3 data=$4
+rm -rf "$out" && mkdir -p "$out" || exit 1
+status=0
+for module in blur.glsl passes/blur.comp; do
+  for target in gl450 es310 vulkan; do
+    file="$out/$(echo "$module" | tr / _).$target.comp"
+    "$penumbra" bundle "$module" --target "$target" -o "$file" || { echo "bundle $module $target failed"; status=1; continue; }
+    flag=""; [ "$target" = vulkan ] && flag="-V -o $out/spv"
+    if ! "$validator" $flag "$file"; then echo "glslangValidator rejected $file"; status=1; fi
+    grep -q '^#line 1 0$' "$file" || { echo "$file has no integer #line marker"; status=1; }
+  done
+done
+if "$penumbra" bundle --glsl-root "$data/cycle" a.glsl -o "$out/cycle.comp" 2>/dev/null; then
+  echo "a bundle with an include cycle succeeded"; status=1
+fi
+if [ -e "$out/cycle.comp" ] || [ -e "$out/cycle.comp.partial" ]; then
+  echo "a failed bundle left a file behind"; status=1
+fi
+exit $status

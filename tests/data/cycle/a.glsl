@@ -1,0 +1,2 @@
+#include "b.glsl"
+float a() { return 1.0; }

@@ -1,0 +1,2 @@
+float b() { return 2.0; }
+#include "a.glsl"

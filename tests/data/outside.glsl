@@ -1,0 +1,1 @@
+float outside() { return 0.0; }

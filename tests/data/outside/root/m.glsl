@@ -1,0 +1,2 @@
+#include "../../outside.glsl"
+float m() { return 0.0; }
