@@ -72,7 +72,9 @@ ShaderSource standalone_source(const FlatSource& flat, Target target, const std:
           "#version 310 es\n"
           "precision highp float;\nprecision highp int;\n"
           "precision highp sampler2D;\nprecision highp isampler2D;\nprecision highp usampler2D;\n"
-          "precision highp image2D;\nprecision highp iimage2D;\nprecision highp uimage2D;\n";
+          "precision highp sampler2DArray;\nprecision highp isampler2DArray;\nprecision highp usampler2DArray;\n"
+          "precision highp image2D;\nprecision highp iimage2D;\nprecision highp uimage2D;\n"
+          "precision highp image2DArray;\nprecision highp iimage2DArray;\nprecision highp uimage2DArray;\n";
       break;
   }
   for (const Define& d : defines) out.text += "#define " + d.name + " " + d.value + "\n";

@@ -1,0 +1,98 @@
+// region.glsl — power-of-two region approximation (seed 000 §2.2, Steps 1–7).
+//
+// description:
+//   Replaces the square search/filter region of side s centred at (x, y)
+//   (texels, float) by one 2^j×2^j window, i.e. one texel of depth_pyramid
+//   level j. The paper's steps, literally (SPEC §4.2 fixes the open readings):
+//   1  l = floor(x - s/2), r = ceil(x + s/2), t = floor(y - s/2), b = ceil(y + s/2)
+//      (evaluated in float32)
+//   2  clamp the bounds to the map [0, e-1], e = N
+//   3  w = r - l + 1, h = b - t + 1; if w is a power of two, w' = w (likewise h)
+//   4  otherwise, if the second-highest set bit of w is 1, w' = 2^(floor(lb w) + 1),
+//      else w' = 2^floor(lb w)
+//   5  s' = w' if w' == h', else min(2 min(w', h'), E), E = the largest power of two <= N
+//   6  x' = l + s'/2, y' = t + s'/2
+//   7  if x' + s'/2 - 1 >= e then x' = e - 1 - s'/2 + 1 (likewise y')
+//   Window: origin (x' - s'/2, y' - s'/2), side s', level j = lb s'.
+//   Readings beyond the paper, each needed for a window inside the map:
+//   - Step 2 clamps every bound into [0, e-1] (the paper clamps l, t from
+//     below and r, b from above only); a region wholly outside the map thus
+//     becomes the nearest edge texels instead of a negative width.
+//   - The cap E applies in both branches of Step 5: w' = h' can exceed N
+//     (w = h = N = 100 rounds to 128).
+//   - s NaN or negative reads as 0, a NaN centre coordinate as 0; ±Inf clamps.
+//
+// use:
+//   PnWindow pnRegionApproximate(vec2 centre, float side, int mapSize)          the literal steps
+//   PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize)   option: same side s',
+//            origin round(centre - s'/2) clamped into the map, so the window stays
+//            centred on the original region instead of its clamped top-left corner
+//   int pnRegionRoundPow2(int w)       Steps 3–4 for one extent (w >= 1)
+//   int pnRegionLargestPow2(int n)     E
+//   PnWindow { ivec2 origin; int side; int level; }: origin + side <= N on both axes.
+//
+// cost: a few dozen ALU operations, no memory access.
+
+#ifndef PENUMBRA_REGION_GLSL
+#define PENUMBRA_REGION_GLSL
+
+struct PnWindow {
+  ivec2 origin;
+  int side;
+  int level;
+};
+
+int pnRegionLargestPow2(int n) {
+  return 1 << findMSB(max(n, 1));
+}
+
+int pnRegionRoundPow2(int w) {
+  int top = findMSB(max(w, 1));
+  if (w <= (1 << top)) return 1 << top;  // lb w is an integer (or w < 1: treated as 1)
+  bool secondBit = ((w >> (top - 1)) & 1) != 0;
+  return secondBit ? (1 << (top + 1)) : (1 << top);
+}
+
+float pnRegionFiniteOrZero(float v) {
+  return isnan(v) ? 0.0 : v;
+}
+
+// Steps 1–5: the clamped bounds (l, t) and the side s'.
+ivec3 pnRegionCornerAndSide(vec2 centre, float side, int mapSize) {
+  int e = max(mapSize, 1);
+  float s = max(pnRegionFiniteOrZero(side), 0.0);
+  vec2 c = vec2(pnRegionFiniteOrZero(centre.x), pnRegionFiniteOrZero(centre.y));
+  float last = float(e - 1);
+  // Bounds are clamped while still float, so huge or infinite inputs never
+  // reach an int conversion.
+  int l = int(clamp(floor(c.x - s * 0.5), 0.0, last));
+  int r = int(clamp(ceil(c.x + s * 0.5), 0.0, last));
+  int t = int(clamp(floor(c.y - s * 0.5), 0.0, last));
+  int b = int(clamp(ceil(c.y + s * 0.5), 0.0, last));
+  int w = pnRegionRoundPow2(r - l + 1);
+  int h = pnRegionRoundPow2(b - t + 1);
+  int cap = pnRegionLargestPow2(e);
+  int sp = (w == h) ? w : 2 * min(w, h);
+  return ivec3(l, t, min(sp, cap));
+}
+
+PnWindow pnRegionApproximate(vec2 centre, float side, int mapSize) {
+  int e = max(mapSize, 1);
+  ivec3 lts = pnRegionCornerAndSide(centre, side, e);
+  float halfSide = float(lts.z) * 0.5;
+  vec2 c = vec2(lts.xy) + halfSide;  // Step 6
+  // Step 7: push back inside on the right and bottom.
+  if (c.x + halfSide - 1.0 >= float(e)) c.x = float(e) - 1.0 - halfSide + 1.0;
+  if (c.y + halfSide - 1.0 >= float(e)) c.y = float(e) - 1.0 - halfSide + 1.0;
+  return PnWindow(ivec2(c - halfSide), lts.z, findMSB(lts.z));
+}
+
+PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize) {
+  int e = max(mapSize, 1);
+  int sp = pnRegionCornerAndSide(centre, side, e).z;
+  vec2 c = vec2(pnRegionFiniteOrZero(centre.x), pnRegionFiniteOrZero(centre.y));
+  vec2 origin = clamp(floor(c - float(sp) * 0.5 + 0.5), vec2(0.0), vec2(float(e - sp)));
+  return PnWindow(ivec2(origin), sp, findMSB(sp));
+}
+
+#endif  // PENUMBRA_REGION_GLSL
