@@ -8,6 +8,10 @@ const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
       {"blur", "separable Gaussian (two 1-D passes) vs direct 2-D convolution; depth-aware vs its 1-D definition",
        &run_blur_check},
+      {"pyramid", "depth_pyramid levels vs window scans (min/max exact); any-square min/max vs square scans",
+       &run_pyramid_check},
+      {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
+       &run_region_check},
   };
   return checks;
 }

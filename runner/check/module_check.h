@@ -42,5 +42,7 @@ const ModuleCheck& find_module_check(const std::string& module);  // throws Erro
 
 // One entry point per module check.
 std::vector<CaseResult> run_blur_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_pyramid_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_region_check(const CheckEnvironment& env);
 
 }  // namespace pn

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "shader/diagnostic.h"
+#include "shader/flatten.h"
 
 namespace pn {
 namespace {
@@ -63,6 +64,11 @@ void ComputeProgram::dispatch(int width, int height) const {
   gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   context_->throw_if_gl_error(name_ + ": dispatch");
+}
+
+ComputeProgram compile_pass(const Context& context, const SourceTree& tree, const std::string& pass,
+                            const std::vector<Define>& defines) {
+  return ComputeProgram(context, pass, standalone_source(flatten(tree, pass), Target::gl450, defines));
 }
 
 GlObject bind_uniform_buffer(const Context& context, GLuint binding, const void* data, size_t size) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gl/objects.h"
+#include "shader/source_tree.h"
 #include "shader/target.h"
 
 namespace pn {
@@ -26,6 +27,11 @@ class ComputeProgram {
   GlObject program_;
   GLint local_size_[3] = {1, 1, 1};
 };
+
+// Flattens `pass` (a path under the glsl root, e.g. "passes/blur.comp") from
+// `tree`, wraps it for GL 4.50 with `defines`, and compiles it.
+ComputeProgram compile_pass(const Context& context, const SourceTree& tree, const std::string& pass,
+                            const std::vector<Define>& defines = {});
 
 // A std140 uniform buffer holding `size` bytes, bound to `binding`.
 GlObject bind_uniform_buffer(const Context& context, GLuint binding, const void* data, size_t size);

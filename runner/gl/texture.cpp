@@ -18,20 +18,45 @@ GLenum float_format(int channels) {
   return formats[channels - 1];
 }
 
-GlObject make_float_texture(const Context& context, int width, int height, int channels) {
-  const auto& gl = context.gl();
+namespace {
+
+void check_size(const Context& context, int width, int height) {
   GLint max_size = 0;
-  gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  context.gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
   if (width < 1 || height < 1 || width > max_size || height > max_size)
     throw Error("texture size " + std::to_string(width) + "x" + std::to_string(height) +
                 ": expected 1 to GL_MAX_TEXTURE_SIZE (" + std::to_string(max_size) + ") on each side");
+}
+
+void set_nearest_clamped(const GladGLContext& gl, GLuint texture) {
+  gl.TextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl.TextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+}  // namespace
+
+GlObject make_float_texture(const Context& context, int width, int height, int channels) {
+  check_size(context, width, height);
   GlObject texture(context, GlKind::texture, GL_TEXTURE_2D);
-  gl.TextureStorage2D(texture.id(), 1, float_format(channels), width, height);
-  gl.TextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl.TextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  gl.TextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  gl.TextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  context.gl().TextureStorage2D(texture.id(), 1, float_format(channels), width, height);
+  set_nearest_clamped(context.gl(), texture.id());
   context.throw_if_gl_error("allocating a float texture");
+  return texture;
+}
+
+GlObject make_float_texture_array(const Context& context, int width, int height, int layers, int channels) {
+  check_size(context, width, height);
+  GLint max_layers = 0;
+  context.gl().GetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (layers < 1 || layers > max_layers)
+    throw Error("texture array of " + std::to_string(layers) + " layers: expected 1 to GL_MAX_ARRAY_TEXTURE_LAYERS (" +
+                std::to_string(max_layers) + ")");
+  GlObject texture(context, GlKind::texture, GL_TEXTURE_2D_ARRAY);
+  context.gl().TextureStorage3D(texture.id(), 1, float_format(channels), width, height, layers);
+  set_nearest_clamped(context.gl(), texture.id());
+  context.throw_if_gl_error("allocating a float texture array");
   return texture;
 }
 
@@ -53,6 +78,22 @@ Image read_float_texture(const Context& context, const GlObject& texture, int wi
   gl.GetTextureImage(texture.id(), 0, pixel_format(channels), GL_FLOAT,
                      static_cast<GLsizei>(image.texels.size() * sizeof(float)), image.texels.data());
   context.throw_if_gl_error("reading back a float texture");
+  return image;
+}
+
+}  // namespace pn
+
+namespace pn {
+
+Image read_float_texture_layer(const Context& context, const GlObject& texture, int layer, int width, int height,
+                               int channels) {
+  Image image(width, height, channels);
+  const auto& gl = context.gl();
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  gl.GetTextureSubImage(texture.id(), 0, 0, 0, layer, width, height, 1, pixel_format(channels), GL_FLOAT,
+                        static_cast<GLsizei>(image.texels.size() * sizeof(float)), image.texels.data());
+  context.throw_if_gl_error("reading back a layer of a float texture array");
   return image;
 }
 

@@ -12,6 +12,12 @@ GlObject make_float_texture(const Context& context, int width, int height, int c
 GlObject upload_float_texture(const Context& context, const Image& image);
 Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels);
 
+// Immutable-storage 2-D array texture, `layers` layers of width × height floats.
+GlObject make_float_texture_array(const Context& context, int width, int height, int layers, int channels);
+// The top-left width × height texels of one layer of an array texture.
+Image read_float_texture_layer(const Context& context, const GlObject& texture, int layer, int width, int height,
+                               int channels);
+
 // GL internal format for `channels` floats (GL_R32F … GL_RGBA32F).
 GLenum float_format(int channels);
 

@@ -4,7 +4,6 @@
 #include <string>
 
 #include "gl/texture.h"
-#include "shader/flatten.h"
 
 namespace pn {
 namespace {
@@ -20,16 +19,13 @@ struct BlurPassParams {
 };
 static_assert(sizeof(BlurPassParams) == 32, "std140 layout of PnBlurPassParams");
 
-ShaderSource blur_source(const SourceTree& tree) {
-  return standalone_source(flatten(tree, "passes/blur.comp"), Target::gl450,
-                           {{"PN_BLUR_MAX_RADIUS", std::to_string(kBlurMaxRadius)},
-                            {"PN_BLUR_NONFINITE_VALUE", std::to_string(kBlurNonfiniteValue)}});
-}
-
 }  // namespace
 
 BlurPass::BlurPass(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(context, "passes/blur.comp", blur_source(tree)) {}
+    : context_(&context),
+      program_(compile_pass(context, tree, "passes/blur.comp",
+                            {{"PN_BLUR_MAX_RADIUS", std::to_string(kBlurMaxRadius)},
+                             {"PN_BLUR_NONFINITE_VALUE", std::to_string(kBlurNonfiniteValue)}})) {}
 
 GlObject BlurPass::run(const GlObject& source, const GlObject* depth, int width, int height,
                        const BlurParams& params) const {

@@ -1,0 +1,53 @@
+// Runner side of glsl/passes/depth_pyramid_build.comp and _query.comp.
+#pragma once
+
+#include <cstddef>
+
+#include "core/image.h"
+#include "gl/compute_program.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+// A built pyramid: an N×N×levels RGBA32F array texture (see depth_pyramid.glsl).
+struct DepthPyramid {
+  GlObject texture;
+  int map_size = 0;
+  int levels = 0;  // L + 1
+
+  // Bytes of GPU memory: 16 · N² · levels.
+  static std::size_t memory_bytes(int map_size, int levels);
+};
+
+class DepthPyramidBuilder {
+ public:
+  DepthPyramidBuilder(const Context& context, const SourceTree& tree);
+
+  // Builds levels 0 … min(floor(log2 N), max_level) from an N×N R32F shadow
+  // map. Throws Error for a non-square map, N < 2 or max_level < 0.
+  DepthPyramid build(const GlObject& shadow_map, int width, int height, int max_level) const;
+
+  // Dispatches only, into an existing pyramid (for benchmarks).
+  void build_into(const GlObject& shadow_map, const DepthPyramid& pyramid) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;
+};
+
+class DepthPyramidQuery {
+ public:
+  DepthPyramidQuery(const Context& context, const SourceTree& tree);
+
+  // `queries` is RGBA (u, v, side, -) per texel; returns RGBA (min, max, 0, 0) of the same size.
+  Image run(const DepthPyramid& pyramid, const Image& queries) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;
+};
+
+// Throws Error naming the map unless it is square with N >= 2.
+void validate_shadow_map_size(int width, int height);
+
+}  // namespace pn

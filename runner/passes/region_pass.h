@@ -1,0 +1,23 @@
+// Runner side of glsl/passes/region_query.comp.
+#pragma once
+
+#include "core/image.h"
+#include "gl/compute_program.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+class RegionQuery {
+ public:
+  RegionQuery(const Context& context, const SourceTree& tree);
+
+  // `queries` is RGBA (x, y, side, -) per texel; returns RGBA (u, v, side, level).
+  // Throws Error for map_size < 1.
+  Image run(const Image& queries, int map_size, bool centred) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;
+};
+
+}  // namespace pn
