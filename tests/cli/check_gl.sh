@@ -1,23 +1,26 @@
 #!/bin/sh
-# check_gl.sh PENUMBRA BACKEND GLSL_DIR SCRATCH
-# `penumbra check blur --backend BACKEND` passes on the library, and fails with
-# a where / expected / observed line on a copy with one wrong blur weight.
+# check_gl.sh PENUMBRA BACKEND MODULE GLSL_DIR SCRATCH FILE FROM TO
+# `penumbra check MODULE --backend BACKEND` passes on the library, and fails
+# with a where / expected / observed line on a copy of GLSL_DIR in which FILE
+# has its first FROM replaced by TO (a deliberate mistake).
 # Exit 77 (skipped) when the backend gives no context.
 set -u
-penumbra=$1 backend=$2 glsl=$3 scratch=$4
+penumbra=$1 backend=$2 module=$3 glsl=$4 scratch=$5 file=$6
+export PN_FROM="$7" PN_TO="$8"
 "$penumbra" info --backend "$backend" >/dev/null 2>"$scratch.err"
 case $? in
   0) ;;
   3) echo "SKIPPED: $(cat "$scratch.err")"; exit 77 ;;
   *) cat "$scratch.err"; exit 1 ;;
 esac
-"$penumbra" check blur --backend "$backend" || { echo "check failed on the library's modules"; exit 1; }
+"$penumbra" check "$module" --backend "$backend" || { echo "check failed on the library's modules"; exit 1; }
 rm -rf "$scratch" && cp -r "$glsl" "$scratch" || exit 1
-sed -i 's/return exp(-0.5 \* t \* t);/return exp(-0.45 * t * t);/' "$scratch/blur.glsl"
-grep -q 'exp(-0.45' "$scratch/blur.glsl" || { echo "could not break the weight in the copy"; exit 1; }
-out=$("$penumbra" check blur --backend "$backend" --glsl-root "$scratch")
+perl -0pi -e 's/\Q$ENV{PN_FROM}\E/$ENV{PN_TO}/' "$scratch/$file"
+grep -qF -- "$PN_TO" "$scratch/$file" || { echo "could not put the mistake into $file"; exit 1; }
+out=$("$penumbra" check "$module" --backend "$backend" --glsl-root "$scratch")
 status=$?
+rm -rf "$scratch"
 printf '%s\n' "$out"
 [ "$status" -eq 1 ] || { echo "expected exit 1 on the broken copy, got $status"; exit 1; }
-printf '%s\n' "$out" | grep -Eq 'blur: FAIL .* at \([0-9]+, [0-9]+\): expected [-0-9.e]+, observed [-0-9.e]+' ||
+printf '%s\n' "$out" | grep -Eq "$module: FAIL .* at \([0-9]+, [0-9]+\)(\[[0-9]\])?: expected [-+0-9.einf]+, observed [-+0-9.einf]+" ||
   { echo "no where / expected / observed line"; exit 1; }
