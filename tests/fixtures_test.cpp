@@ -74,3 +74,20 @@ TEST_CASE("negative: a 0x0 fixture and an unknown fixture name are refused") {
   CHECK_THROWS_AS(pn::generate_fixture(pn::find_fixture("noise"), 0, 4), pn::Error);
   CHECK_THROWS_WITH(pn::find_fixture("plasma"), Catch::Contains("expected one of constant"));
 }
+
+TEST_CASE("boxes: ground from b at the top towards the middle of [a, b] at the bottom, boxes nearer than the ground") {
+  const auto& f = pn::find_fixture("boxes");
+  const pn::Image img = pn::generate_fixture(f, 128, 128);
+  int nearer = 0;
+  for (int y = 0; y < 128; ++y) {
+    const float ground = f.b - 0.5f * (f.b - f.a) * (static_cast<float>(y) / 127.0f);
+    for (int x = 0; x < 128; ++x) {
+      const float d = img.at(x, y);
+      CHECK(d <= ground);
+      CHECK(d >= f.a);
+      nearer += d < ground;
+    }
+  }
+  CHECK(nearer > 128 * 128 / 20);  // the boxes cover a visible part of the map
+  CHECK(nearer < 128 * 128 / 2);
+}

@@ -1,39 +1,13 @@
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/write_file.h"
 #include "shader/flatten.h"
 #include "shader/target.h"
 
-namespace fs = std::filesystem;
-
 namespace pn::cli {
-namespace {
-
-// Writes next to `out` and renames, so a failure never leaves half a file.
-void write_atomically(const fs::path& out, const std::string& text) {
-  const fs::path temporary = out.string() + ".partial";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw Error("output '" + out.string() + "': cannot be written");
-    file << text;
-    if (!file.flush()) {
-      std::error_code ec;
-      fs::remove(temporary, ec);
-      throw Error("output '" + out.string() + "': write failed");
-    }
-  }
-  std::error_code ec;
-  fs::rename(temporary, out, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw Error("output '" + out.string() + "': cannot be replaced");
-  }
-}
-
-}  // namespace
 
 void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   struct Options {
@@ -63,7 +37,7 @@ void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       text = source.text.substr(0, first_line_end) + header + source.text.substr(first_line_end);
     }
     if (opt->output.empty()) std::cout << text;
-    else write_atomically(opt->output, text);
+    else write_file_atomically(opt->output, text);
     exit_code = 0;
   });
 }

@@ -7,11 +7,6 @@
 
 namespace pn::cli {
 
-std::optional<Backend> chosen_backend(const GlobalOptions& global) {
-  if (global.backend.empty()) return std::nullopt;
-  return parse_backend(global.backend);
-}
-
 void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   struct Options {
     std::vector<std::string> modules;

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <optional>
+
+#include "gl/context.h"
 
 namespace pn::cli {
 
@@ -16,9 +19,12 @@ void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_info_command(CLI::App& app, GlobalOptions& global, int& exit_code);
+void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code);
+void add_figures_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 
 // Helpers for the commands.
 std::string default_glsl_root();
 std::string glsl_root_or_default(const GlobalOptions& global);
+std::optional<Backend> chosen_backend(const GlobalOptions& global);  // throws Error for an unknown name
 
 }  // namespace pn::cli

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   pn::cli::add_bundle_command(app, global, exit_code);
   pn::cli::add_check_command(app, global, exit_code);
   pn::cli::add_info_command(app, global, exit_code);
+  pn::cli::add_bench_command(app, global, exit_code);
+  pn::cli::add_figures_command(app, global, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,71 @@
+#include "bench/pyramid_bench.h"
+
+#include <cstdio>
+#include <string>
+
+#include "core/error.h"
+#include "fixture/texture_fixture.h"
+#include "gl/gpu_timer.h"
+#include "gl/texture.h"
+#include "passes/depth_pyramid_pass.h"
+#include "passes/minmax_mip_pass.h"
+#include "reference/pyramid_reference.h"
+
+namespace pn {
+
+std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceTree& tree, const std::vector<int>& sizes,
+                                           int repeats, int max_level) {
+  if (repeats < 1) throw Error("repeats " + std::to_string(repeats) + ": expected at least 1");
+  for (int n : sizes) validate_shadow_map_size(n, n);
+  pyramid_level_count(2, max_level);  // validates max_level
+  const DepthPyramidBuilder pyramid_builder(context, tree);
+  const MinMaxMipBuilder mip_builder(context, tree);
+  const GpuTimer timer(context);
+  std::vector<PyramidBenchRow> rows;
+  for (int n : sizes) {
+    const GlObject map = upload_float_texture(context, generate_fixture(find_fixture("noise"), n, n));
+    const DepthPyramid pyramid = pyramid_builder.build(map, n, n, max_level);  // also the warm-up
+    const MinMaxMipChain chain = mip_builder.allocate(n);
+    mip_builder.build_into(map, chain);
+    std::vector<double> pyramid_gpu, pyramid_wall, mip_gpu, mip_wall;
+    // Interleaved, so that both see the same machine state.
+    for (int r = 0; r < repeats; ++r) {
+      const StageTime p = timer.measure([&] { pyramid_builder.build_into(map, pyramid); });
+      const StageTime m = timer.measure([&] { mip_builder.build_into(map, chain); });
+      pyramid_gpu.push_back(p.gpu_ms), pyramid_wall.push_back(p.wall_ms);
+      mip_gpu.push_back(m.gpu_ms), mip_wall.push_back(m.wall_ms);
+    }
+    rows.push_back({n, pyramid.levels, DepthPyramid::memory_bytes(n, pyramid.levels), median(pyramid_gpu),
+                    median(pyramid_wall), MinMaxMipChain::memory_bytes(n), median(mip_gpu), median(mip_wall), repeats});
+  }
+  return rows;
+}
+
+void print_pyramid_bench(std::ostream& out, const std::vector<PyramidBenchRow>& rows) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%-6s %6s %12s %12s %12s %12s %12s %12s %8s\n", "size", "levels", "pyramid MiB",
+                "pyramid ms", "(wall ms)", "mip MiB", "mip ms", "(wall ms)", "ratio");
+  out << line;
+  for (const auto& r : rows) {
+    std::snprintf(line, sizeof line, "%-6d %6d %12.1f %12.3f %12.3f %12.1f %12.3f %12.3f %8.2f\n", r.size, r.levels,
+                  r.pyramid_bytes / 1048576.0, r.pyramid_ms, r.pyramid_wall_ms, r.mip_bytes / 1048576.0, r.mip_ms,
+                  r.mip_wall_ms, r.pyramid_ms / r.mip_ms);
+    out << line;
+  }
+  out << "ms: median GPU time (GL_TIMESTAMP pairs) of a whole build over " << (rows.empty() ? 0 : rows.front().repeats)
+      << " runs; ratio = pyramid / mip chain, same run.\n";
+}
+
+nlohmann::json pyramid_bench_json(const std::vector<PyramidBenchRow>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : rows)
+    out.push_back({{"size", r.size},
+                   {"levels", r.levels},
+                   {"repeats", r.repeats},
+                   {"pyramid", {{"bytes", r.pyramid_bytes}, {"gpu_ms_median", r.pyramid_ms}, {"wall_ms_median", r.pyramid_wall_ms}}},
+                   {"minmax_mip_chain", {{"bytes", r.mip_bytes}, {"gpu_ms_median", r.mip_ms}, {"wall_ms_median", r.mip_wall_ms}}},
+                   {"ratio_pyramid_to_mip_chain", r.pyramid_ms / r.mip_ms}});
+  return out;
+}
+
+}  // namespace pn

@@ -1,0 +1,33 @@
+// `penumbra bench pyramid`: GPU build time of the decreased pyramid against
+// the aligned min/max mip chain, measured in the same run (SPEC §9).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <vector>
+
+#include "gl/context.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+struct PyramidBenchRow {
+  int size = 0;
+  int levels = 0;
+  std::size_t pyramid_bytes = 0;
+  double pyramid_ms = 0.0;       // median GPU time
+  double pyramid_wall_ms = 0.0;  // median wall time to glFinish
+  std::size_t mip_bytes = 0;
+  double mip_ms = 0.0;
+  double mip_wall_ms = 0.0;
+  int repeats = 0;
+};
+
+// Throws Error for sizes < 2, repeats < 1 or max_level < 0.
+std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceTree& tree, const std::vector<int>& sizes,
+                                           int repeats, int max_level);
+
+void print_pyramid_bench(std::ostream& out, const std::vector<PyramidBenchRow>& rows);
+nlohmann::json pyramid_bench_json(const std::vector<PyramidBenchRow>& rows);
+
+}  // namespace pn

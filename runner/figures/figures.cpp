@@ -1,0 +1,113 @@
+#include "figures/figures.h"
+
+#include <cmath>
+#include <utility>
+
+#include "check/query_grid.h"
+#include "core/error.h"
+#include "figures/canvas.h"
+#include "fixture/texture_fixture.h"
+#include "gl/texture.h"
+#include "passes/blur_pass.h"
+#include "passes/depth_pyramid_pass.h"
+#include "passes/region_pass.h"
+
+namespace fs = std::filesystem;
+
+namespace pn {
+namespace {
+
+constexpr Rgb kPaper{255, 255, 255};
+constexpr Rgb kMagenta{220, 0, 180};  // NaN / ±Inf texels
+constexpr Rgb kRed{220, 40, 40};
+constexpr Rgb kBlue{40, 90, 220};
+constexpr Rgb kGreen{30, 160, 60};
+constexpr Rgb kGrid{225, 225, 225};
+
+// Source, blur (r 3, sigma 1), depth-aware blur over a step-edge depth — a checker with NaN/Inf sprinkled in.
+void blur_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+  const int n = 48, scale = 5, gap = 12;
+  Image source = generate_fixture(find_fixture("checker"), n, n);
+  const Image holes = generate_fixture(find_fixture("nonfinite"), n, n);
+  for (size_t i = 0; i < source.texels.size(); ++i)
+    if (!std::isfinite(holes.texels[i])) source.texels[i] = holes.texels[i];
+  const Image depth = generate_fixture(find_fixture("step_edge"), n, n);
+  const BlurPass pass(context, tree);
+  const GlObject src = upload_float_texture(context, source), dep = upload_float_texture(context, depth);
+  const Image plain = read_float_texture(context, pass.run(src, nullptr, n, n, {3, 1.0, false, 0.0}), n, n, 1);
+  const Image aware = read_float_texture(context, pass.run(src, &dep, n, n, {3, 1.0, true, 0.05}), n, n, 1);
+  Canvas canvas(3 * n * scale + 4 * gap, n * scale + 2 * gap, kPaper);
+  int x = gap;
+  for (const Image* image : {&std::as_const(source), &plain, &aware}) {
+    canvas.grey(*image, 0, x, gap, scale, 0.0f, 1.0f, kMagenta);
+    x += n * scale + gap;
+  }
+  canvas.write_png(path);
+}
+
+// Levels 0, 2, 4, 6 of a boxes shadow map: min (top row) and max (bottom row), each at its true size.
+void pyramid_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+  const int n = 128, scale = 2, gap = 10;
+  const int levels[] = {0, 2, 4, 6};
+  const Image map = generate_fixture(find_fixture("boxes"), n, n);
+  const DepthPyramidBuilder builder(context, tree);
+  const DepthPyramid pyramid = builder.build(upload_float_texture(context, map), n, n, 31);
+  Canvas canvas(4 * n * scale + 5 * gap, 2 * n * scale + 3 * gap, kPaper);
+  for (int i = 0; i < 4; ++i) {
+    const int size = n - (1 << levels[i]) + 1;
+    const Image level = read_float_texture_layer(context, pyramid.texture, levels[i], size, size, 4);
+    const int x = gap + i * (n * scale + gap);
+    canvas.outline(x - 1, gap - 1, n * scale + 2, n * scale + 2, kGrid);
+    canvas.outline(x - 1, 2 * gap + n * scale - 1, n * scale + 2, n * scale + 2, kGrid);
+    canvas.grey(level, 0, x, gap, scale, 0.2f, 1.0f, kMagenta);
+    canvas.grey(level, 1, x, 2 * gap + n * scale, scale, 0.2f, 1.0f, kMagenta);
+  }
+  canvas.write_png(path);
+}
+
+// A 32×32 map: requested regions (red outline), the literal window (blue fill)
+// and the centred option's window (green outline).
+void region_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+  const int n = 32, scale = 16, margin = 3 * scale;
+  const std::vector<Query> regions{{6.5f, 7.0f, 5.0f, 0}, {21.0f, 8.0f, 9.0f, 0}, {29.0f, 27.0f, 7.0f, 0},
+                                   {5.0f, 25.0f, 11.0f, 0}, {16.0f, 18.0f, 3.0f, 0}};
+  const RegionQuery pass(context, tree);
+  const Image input = query_image(regions);
+  const Image literal = pass.run(input, n, false), centred = pass.run(input, n, true);
+  Canvas canvas(n * scale + 2 * margin, n * scale + 2 * margin, kPaper);
+  for (int i = 0; i <= n; ++i) {
+    canvas.fill(margin + i * scale, margin, 1, n * scale + 1, kGrid);
+    canvas.fill(margin, margin + i * scale, n * scale + 1, 1, kGrid);
+  }
+  canvas.outline(margin, margin, n * scale + 1, n * scale + 1, {120, 120, 120});
+  for (size_t k = 0; k < regions.size(); ++k) {
+    const int x = static_cast<int>(k) % input.width, y = static_cast<int>(k) / input.width;
+    const int side = static_cast<int>(literal.at(x, y, 2)) * scale;
+    canvas.fill(margin + static_cast<int>(literal.at(x, y, 0)) * scale, margin + static_cast<int>(literal.at(x, y, 1)) * scale,
+                side, side, kBlue, 0.3f);
+    canvas.outline(margin + static_cast<int>(centred.at(x, y, 0)) * scale,
+                   margin + static_cast<int>(centred.at(x, y, 1)) * scale, side, side, kGreen, 2);
+    // The requested region: centre (x, y) in texel units, the texel centre of texel i at i + 0.5.
+    const float half = regions[k][2] * 0.5f;
+    const int rx = margin + static_cast<int>(std::lround((regions[k][0] - half) * scale));
+    const int ry = margin + static_cast<int>(std::lround((regions[k][1] - half) * scale));
+    const int rs = static_cast<int>(std::lround(regions[k][2] * scale));
+    canvas.outline(rx, ry, rs, rs, kRed, 2);
+  }
+  canvas.write_png(path);
+}
+
+}  // namespace
+
+std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");
+  const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png"};
+  blur_figure(context, tree, paths[0]);
+  pyramid_figure(context, tree, paths[1]);
+  region_figure(context, tree, paths[2]);
+  return paths;
+}
+
+}  // namespace pn

@@ -1,0 +1,18 @@
+// The pictures in docs/modules/, drawn from what the modules compute on the
+// GPU (not from the references), by `penumbra figures`.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "gl/context.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+// Writes blur.png, pyramid_levels.png and region_snapping.png into `out`
+// (created if missing); returns the paths written.
+std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
+                                                 const std::filesystem::path& out);
+
+}  // namespace pn
