@@ -2,22 +2,19 @@
 
 #include <cfloat>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+
+#include "core/format.h"
 
 namespace pn {
 namespace {
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", v);
-  return text;
-}
+std::string number(double v) { return format_number("%.9g", v); }
+std::string short_number(double v) { return format_number("%.2e", v); }
 
-std::string short_number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2e", v);
-  return text;
+// Per-element measure of a tolerance: relative for relative bounds, absolute otherwise.
+Tolerance::Kind element_kind(const Tolerance& t) {
+  return t.kind == Tolerance::Kind::relative ? Tolerance::Kind::relative : Tolerance::Kind::absolute;
 }
 
 double element_error(float e, float o, Tolerance::Kind kind) {
@@ -49,9 +46,7 @@ std::string Comparison::where(const Tolerance& tolerance) const {
   if (channel != 0) out += "[" + std::to_string(channel) + "]";
   const char* measure = tolerance.kind == Tolerance::Kind::relative ? "rel" : "abs";
   out += ": expected " + number(expected) + ", observed " + number(observed) + " (" + measure + " error " +
-         short_number(element_error(expected, observed, tolerance.kind == Tolerance::Kind::relative
-                                                             ? Tolerance::Kind::relative
-                                                             : Tolerance::Kind::absolute)) +
+         short_number(element_error(expected, observed, element_kind(tolerance))) +
          (pass ? ", within " : ", not within ") + tolerance.describe() + ")";
   if (tolerance.kind == Tolerance::Kind::rmse) out += ", rmse " + short_number(rmse);
   return out;
@@ -67,14 +62,13 @@ Comparison compare(const Image& expected, const Image& observed, const Tolerance
     c.worst_error = std::numeric_limits<double>::infinity();
     return c;
   }
-  const Tolerance::Kind element_kind =
-      tolerance.kind == Tolerance::Kind::relative ? Tolerance::Kind::relative : Tolerance::Kind::absolute;
+  const Tolerance::Kind kind = element_kind(tolerance);
   double worst = -1.0, square_sum = 0.0;
   for (int y = 0; y < expected.height; ++y) {
     for (int x = 0; x < expected.width; ++x) {
       for (int ch = 0; ch < expected.channels; ++ch) {
         const float e = expected.at(x, y, ch), o = observed.at(x, y, ch);
-        const double err = element_error(e, o, element_kind);
+        const double err = element_error(e, o, kind);
         square_sum += err * err;
         if (err > worst) {
           worst = err;

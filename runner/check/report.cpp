@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/format.h"
+
 namespace pn {
 namespace {
 
@@ -49,9 +51,7 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
     const CaseResult* w = r.worst();
     std::string worst = "-";
     if (w != nullptr) {
-      char e[64];
-      std::snprintf(e, sizeof e, "%.2e", w->comparison.worst_error);
-      worst = std::string(e) + " (" + w->tolerance.describe() + ")";
+      worst = format_number("%.2e", w->comparison.worst_error) + " (" + w->tolerance.describe() + ")";
     }
     std::snprintf(line, sizeof line, "%-14s %6zu  %-34s %s\n", r.module.c_str(), r.cases.size(), worst.c_str(),
                   r.pass() ? "pass" : "FAIL");

@@ -2,19 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "core/error.h"
+#include "core/format.h"
 
 namespace pn {
 namespace {
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
 
 float finite_or(float v, float fallback) { return std::isfinite(v) ? v : fallback; }
 
@@ -27,9 +21,9 @@ void BlurParams::validate() const {
     throw Error("blur radius " + std::to_string(radius) + ": expected an integer from 0 to " +
                 std::to_string(kBlurMaxRadius));
   if (!std::isfinite(sigma) || sigma <= 0.0)
-    throw Error("blur sigma " + number(sigma) + ": expected a finite number > 0 (texels)");
+    throw Error("blur sigma " + format_number("%g", sigma) + ": expected a finite number > 0 (texels)");
   if (!std::isfinite(depth_tolerance) || depth_tolerance < 0.0)
-    throw Error("blur depth tolerance " + number(depth_tolerance) + ": expected a finite number >= 0");
+    throw Error("blur depth tolerance " + format_number("%g", depth_tolerance) + ": expected a finite number >= 0");
 }
 
 double gaussian_weight(int offset, double sigma) {

@@ -1,0 +1,16 @@
+// printf-style formatting of one number, for messages and tables.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+namespace pn {
+
+// `spec` is a printf conversion for a double, e.g. "%g", "%.9g", "%.2e".
+inline std::string format_number(const char* spec, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, spec, value);
+  return text;
+}
+
+}  // namespace pn
