@@ -12,6 +12,10 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_pyramid_check},
       {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
        &run_region_check},
+      {"sample_table", "multi-jittered strata of the table; the 3.2 selection and scaling vs the paper's arithmetic",
+       &run_sample_table_check},
+      {"traversal", "leaf 1 vs brute force (exact counts); sampled / min leaves and budgets vs the CPU recursion",
+       &run_traversal_check},
   };
   return checks;
 }

@@ -44,5 +44,7 @@ const ModuleCheck& find_module_check(const std::string& module);  // throws Erro
 std::vector<CaseResult> run_blur_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_pyramid_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_region_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env);
 
 }  // namespace pn

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <string>
 
-#include "check/case_random.h"
+#include "core/seeded_random.h"
 #include "check/module_check.h"
-#include "check/query_grid.h"
+#include "core/query_grid.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
@@ -119,7 +119,7 @@ std::vector<CaseResult> run_pyramid_check(const CheckEnvironment& env) {
     }
   }
 
-  CaseRandom random(0x9e3779b9u);
+  SeededRandom random(0x9e3779b9u);
   for (const char* name : {"noise", "step_edge", "nonfinite"}) {
     const auto& fixture = find_fixture(name);
     for (int n : kRandomSquaresSizes) {

@@ -7,9 +7,9 @@
 #include <limits>
 #include <string>
 
-#include "check/case_random.h"
+#include "core/seeded_random.h"
 #include "check/module_check.h"
-#include "check/query_grid.h"
+#include "core/query_grid.h"
 #include "passes/region_pass.h"
 #include "reference/region_reference.h"
 
@@ -75,7 +75,7 @@ std::vector<CaseResult> run_region_check(const CheckEnvironment& env) {
     add_cases(results, "N=" + std::to_string(n) + " all centres and sides", pass, queries, n);
   }
 
-  CaseRandom random(0x5eed0003u);
+  SeededRandom random(0x5eed0003u);
   const float n = static_cast<float>(kRandomSize);
   std::vector<Query> queries;
   for (int k = 0; k < kRandomRegions; ++k)

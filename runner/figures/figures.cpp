@@ -3,7 +3,7 @@
 #include <cmath>
 #include <utility>
 
-#include "check/query_grid.h"
+#include "core/query_grid.h"
 #include "core/error.h"
 #include "figures/canvas.h"
 #include "fixture/texture_fixture.h"

@@ -1,4 +1,4 @@
-// Deterministic random inputs for check cases: std::mt19937's raw output is
+// Deterministic random numbers (check cases, sample tables): std::mt19937's raw output is
 // fixed by the C++ standard (unlike its distributions), so the same seed gives
 // the same cases with every compiler and standard library.
 #pragma once
@@ -8,9 +8,9 @@
 
 namespace pn {
 
-class CaseRandom {
+class SeededRandom {
  public:
-  explicit CaseRandom(std::uint32_t seed) : engine_(seed) {}
+  explicit SeededRandom(std::uint32_t seed) : engine_(seed) {}
 
   // Uniform in [lo, hi] (inclusive), by rejection so there is no modulo bias.
   int uniform_int(int lo, int hi) {

@@ -1,0 +1,41 @@
+// window_scan.comp — the brute-force baseline of traversal_query.comp: every
+// texel of each query's region is fetched and compared (PCSS's blocker search
+// over the whole window). Same bindings and result layout as traversal_query.comp;
+// level 0 of the pyramid is the (sanitized) shadow map.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2DArray pnPyramid;
+layout(binding = 2) uniform sampler2D pnQueryA;
+layout(binding = 5) uniform sampler2D pnQueryB;
+layout(rgba32f, binding = 3) writeonly uniform image2D pnResultC;
+layout(rgba32f, binding = 4) writeonly uniform image2D pnResultD;
+layout(std140, binding = 6) uniform PnWindowScanParams {
+  float bias;
+} pnParams;
+
+#include "depth_pyramid.glsl"
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(pnResultC)))) return;
+  vec4 a = texelFetch(pnQueryA, p, 0);
+  float t = texelFetch(pnQueryB, p, 0).x - pnParams.bias;
+  int n = pnPyramidMapSize(pnPyramid);
+  ivec2 lo = clamp(ivec2(a.xy), ivec2(0), ivec2(n));
+  ivec2 hi = clamp(ivec2(a.xy + a.zw), lo, ivec2(n));
+  float occluders = 0.0;
+  float depthSum = 0.0;
+  for (int y = lo.y; y < hi.y; ++y) {
+    for (int x = lo.x; x < hi.x; ++x) {
+      float d = pnPyramidFetch(pnPyramid, 0, ivec2(x, y)).x;
+      if (d < t) {
+        occluders += 1.0;
+        depthSum += d;
+      }
+    }
+  }
+  ivec2 size = hi - lo;
+  imageStore(pnResultC, p, vec4(occluders, depthSum, float(size.x * size.y), 0.0));
+  imageStore(pnResultD, p, vec4(0.0, float(size.x * size.y), 0.0, 0.0));
+}

@@ -1,0 +1,73 @@
+// sample_table.glsl — the multi-jittered sample table and its selection rule.
+//
+// description:
+//   Seed 000 §3.1–3.2, SPEC §4.3. The table (generated and uploaded by the
+//   runner, deterministic from a seed) is a 21×8 RG32F texture of positions in
+//   [0, 1)²: row = set (8 independent sets), column 0 = the 1-sample group,
+//   1–4 = the 4-sample group, 5–20 = the 16-sample group; each group is
+//   multi-jittered (Chiu, Shirley, Wang 1994).
+//   Selection for a region of side s shaded at screen pixel (x, y):
+//     Step 1  k = clamp(s / 2, 1, 4), k = floor(lb k)    -> 4^k = 1, 4 or 16 samples
+//     Step 2  set n = (x + y) mod 8; columns (4^k - 1)/3 … 4(4^k - 1)/3
+//     Step 3  scale each position to the region: texel = origin + floor(p * size)
+//   (x, y) is the screen pixel, so neighbouring pixels use different sets (§3.1).
+//
+// use:
+//   int   pnSampleGroupLog4(int regionSide)       k (0, 1 or 2)
+//   int   pnSampleCount(int k)                    4^k
+//   int   pnSampleFirstColumn(int k)              (4^k - 1) / 3
+//   int   pnSampleLastColumn(int k)               4 (4^k - 1) / 3
+//   int   pnSampleSet(ivec2 pixel)                (x + y) mod 8, non-negative
+//   vec2  pnSample(sampler2D table, int column, int set)            (clamped into the table)
+//   ivec2 pnSampleTexel(vec2 position, ivec2 origin, ivec2 size)    inside [origin, origin + size)
+//
+// options:
+//   PN_SAMPLE_TABLE_COLUMNS 21, PN_SAMPLE_TABLE_SETS 8, PN_SAMPLE_MAX_COUNT 16 (loop bound for callers)
+//
+// cost: one fetch per sample.
+
+#ifndef PENUMBRA_SAMPLE_TABLE_GLSL
+#define PENUMBRA_SAMPLE_TABLE_GLSL
+
+#ifndef PN_SAMPLE_TABLE_COLUMNS
+#define PN_SAMPLE_TABLE_COLUMNS 21
+#endif
+#ifndef PN_SAMPLE_TABLE_SETS
+#define PN_SAMPLE_TABLE_SETS 8
+#endif
+#ifndef PN_SAMPLE_MAX_COUNT
+#define PN_SAMPLE_MAX_COUNT 16
+#endif
+
+int pnSampleGroupLog4(int regionSide) {
+  // s / 2 clamped to 1…4 and floor(lb): integer halving gives the same floor for every s >= 1.
+  return findMSB(clamp(regionSide / 2, 1, 4));
+}
+
+int pnSampleCount(int k) {
+  return 1 << (2 * k);
+}
+
+int pnSampleFirstColumn(int k) {
+  return (pnSampleCount(k) - 1) / 3;
+}
+
+int pnSampleLastColumn(int k) {
+  return 4 * (pnSampleCount(k) - 1) / 3;
+}
+
+int pnSampleSet(ivec2 pixel) {
+  return (pixel.x + pixel.y) & (PN_SAMPLE_TABLE_SETS - 1);
+}
+
+vec2 pnSample(sampler2D table, int column, int set) {
+  ivec2 p = clamp(ivec2(column, set), ivec2(0), ivec2(PN_SAMPLE_TABLE_COLUMNS - 1, PN_SAMPLE_TABLE_SETS - 1));
+  return texelFetch(table, p, 0).rg;
+}
+
+ivec2 pnSampleTexel(vec2 position, ivec2 origin, ivec2 size) {
+  ivec2 s = max(size, ivec2(1));
+  return origin + clamp(ivec2(floor(position * vec2(s))), ivec2(0), s - ivec2(1));
+}
+
+#endif  // PENUMBRA_SAMPLE_TABLE_GLSL

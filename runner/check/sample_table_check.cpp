@@ -1,0 +1,89 @@
+// Cases of the sample_table check: the uploaded table is multi-jittered in
+// every set and group (CPU property), and the shader's §3.2 selection and
+// scaling equal the paper's arithmetic for every pixel residue, region side
+// 0…40 and sample index.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "check/module_check.h"
+#include "core/query_grid.h"
+#include "gl/texture.h"
+#include "passes/traversal_pass.h"
+
+namespace pn {
+namespace {
+
+constexpr std::uint32_t kTableSeed = 0x5eed0005u;
+
+// For the group of n² samples of one set: how many samples fall in each thin
+// column, thin row and cell (3 n² counts; all must be 1).
+Image stratum_counts(const SampleTable& table, int set, int first_column, int n) {
+  const int count = n * n;
+  Image counts(3 * count, 1);
+  for (int i = 0; i < count; ++i) {
+    const Sample& s = table.at(first_column + i, set);
+    const int column = static_cast<int>(std::floor(s.x * count)), row = static_cast<int>(std::floor(s.y * count));
+    const int cell = static_cast<int>(std::floor(s.y * n)) * n + static_cast<int>(std::floor(s.x * n));
+    if (column >= 0 && column < count) counts.at(column, 0) += 1;
+    if (row >= 0 && row < count) counts.at(count + row, 0) += 1;
+    if (cell >= 0 && cell < count) counts.at(2 * count + cell, 0) += 1;
+  }
+  return counts;
+}
+
+}  // namespace
+
+std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
+  const SampleTable table = generate_sample_table(kTableSeed);
+  const Tolerance exact = Tolerance::exact();
+  std::vector<CaseResult> results;
+  for (int set = 0; set < SampleTable::kSets; ++set)
+    for (auto [n, first] : {std::pair{1, 0}, std::pair{2, 1}, std::pair{4, 5}}) {
+      const Image counts = stratum_counts(table, set, first, n);
+      results.push_back({"set " + std::to_string(set) + ", " + std::to_string(n * n) +
+                             " samples: one per thin column, thin row and cell",
+                         exact, compare(Image(counts.width, 1, 1, 1.0f), counts, exact)});
+    }
+
+  std::vector<Query> queries;
+  for (int py = -3; py <= 4; ++py)
+    for (int px = -4; px <= 11; ++px)
+      for (int side = 0; side <= 40; ++side)
+        for (int i = 0; i < 16; ++i) queries.push_back({float(px), float(py), float(side), float(i)});
+  const Image input = query_image(queries);
+  const GlObject query_texture = upload_float_texture(env.context, input);
+  const GlObject table_texture = upload_sample_table(env.context, table);
+  const GlObject result_a = make_float_texture(env.context, input.width, input.height, 4);
+  const GlObject result_b = make_float_texture(env.context, input.width, input.height, 4);
+  const ComputeProgram program = compile_pass(env.context, env.tree, "passes/sample_table_query.comp");
+  const auto& gl = env.context.gl();
+  gl.BindTextureUnit(0, query_texture.id());
+  gl.BindTextureUnit(1, table_texture.id());
+  gl.BindImageTexture(2, result_a.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  gl.BindImageTexture(3, result_b.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  program.dispatch(input.width, input.height);
+
+  Image expected_a(input.width, input.height, 4), expected_b(input.width, input.height, 4);
+  for (int y = 0; y < input.height; ++y)
+    for (int x = 0; x < input.width; ++x) {
+      const int side = static_cast<int>(input.at(x, y, 2));
+      const SampleSelection s = select_samples(side, static_cast<int>(input.at(x, y, 0)), static_cast<int>(input.at(x, y, 1)));
+      const int column = s.first_column + std::min(static_cast<int>(input.at(x, y, 3)), s.count - 1);
+      const Sample& q = table.at(column, s.set);
+      const int extent = std::max(side, 1);
+      const auto scaled = [extent](float v) {
+        return static_cast<float>(std::clamp(static_cast<int>(std::floor(v * static_cast<float>(extent))), 0, extent - 1));
+      };
+      const float a[4] = {float(s.group_log4), float(s.first_column), float(s.last_column), float(s.set)};
+      const float b[4] = {float(column), scaled(q.x), scaled(q.y), 0.0f};
+      for (int c = 0; c < 4; ++c) expected_a.at(x, y, c) = a[c], expected_b.at(x, y, c) = b[c];
+    }
+  results.push_back({"selection (k, first, last column, set) for every pixel residue and side 0-40", exact,
+                     compare(expected_a, read_float_texture(env.context, result_a, input.width, input.height, 4), exact)});
+  results.push_back({"selected sample's column and its texel in a region of that side", exact,
+                     compare(expected_b, read_float_texture(env.context, result_b, input.width, input.height, 4), exact)});
+  return results;
+}
+
+}  // namespace pn

@@ -1,0 +1,181 @@
+// Cases of the traversal check:
+// - leaf side 1 (exact): occluder counts equal brute force exactly and the
+//   blocker mean to float rounding, for power-of-two windows of side 1…256
+//   and for exact (non-power-of-two) regions, on every fixture, with
+//   receivers below, at the min of, inside, at the max of and above each
+//   region's depth range;
+// - sampled and HQEPCSS (min) leaves, leaf sides 2…16: equal to the CPU
+//   recursion with the same table and decisions (nodes, fetches and counts
+//   exactly, blocker mean to float rounding);
+// - the node budget on the fine checkerboard at the receiver depth: within
+//   budget + 3·levels + 1 nodes, equal to the recursion with that budget,
+//   its error against brute force in the case name.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <string>
+
+#include "check/module_check.h"
+#include "core/format.h"
+#include "core/seeded_random.h"
+#include "fixture/texture_fixture.h"
+#include "gl/texture.h"
+#include "passes/traversal_pass.h"
+#include "reference/pyramid_reference.h"
+
+namespace pn {
+namespace {
+
+constexpr int kMapSize = 300;
+constexpr std::uint32_t kTableSeed = 0x5eed0005u;
+
+struct Scene {
+  Image map;    // as generated
+  Image depth;  // sanitized
+  DepthPyramid pyramid;
+  float largest = FLT_MIN;  // max finite |depth|
+};
+
+// Receivers relative to the region's depth range: below it, at its min, in the middle, at its max, above it.
+std::vector<float> receivers_for(const Image& depth, const Rect& r) {
+  float lo = INFINITY, hi = -INFINITY, finite_hi = -INFINITY;
+  for (int y = r.y; y < r.y + r.height; ++y)
+    for (int x = r.x; x < r.x + r.width; ++x) {
+      const float d = depth.at(x, y);
+      lo = std::min(lo, d), hi = std::max(hi, d);
+      if (std::isfinite(d)) finite_hi = std::max(finite_hi, d);
+    }
+  const float top = std::isfinite(finite_hi) ? finite_hi : 1.0f;
+  return {lo - 0.05f, lo, 0.5f * (lo + top), hi, top + 0.05f};
+}
+
+// Compares GPU results with expected ones: (occluders, nodes, fetches) exactly
+// when `compare_counters`, occluders alone otherwise; the blocker mean within
+// (terms + 2 levels + 4) ulps of the largest depth, terms = nodes + fetches of the reference.
+void add_comparison(std::vector<CaseResult>& results, const std::string& name, const Scene& scene,
+                    const std::vector<TraversalResult>& expected, const std::vector<TraversalResult>& observed,
+                    const std::vector<TraversalResult>& decisions, bool compare_counters) {
+  const int n = static_cast<int>(expected.size());
+  Image e_counts(n, 1, 3), o_counts(n, 1, 3), e_mean(n, 1), o_mean(n, 1);
+  double terms = 0;
+  for (int k = 0; k < n; ++k) {
+    const TraversalResult& e = expected[static_cast<size_t>(k)];
+    const TraversalResult& o = observed[static_cast<size_t>(k)];
+    const TraversalResult& d = decisions[static_cast<size_t>(k)];
+    e_counts.at(k, 0, 0) = static_cast<float>(e.occluders), o_counts.at(k, 0, 0) = static_cast<float>(o.occluders);
+    if (compare_counters) {
+      e_counts.at(k, 0, 1) = static_cast<float>(e.nodes), o_counts.at(k, 0, 1) = static_cast<float>(o.nodes);
+      e_counts.at(k, 0, 2) = static_cast<float>(e.fetches), o_counts.at(k, 0, 2) = static_cast<float>(o.fetches);
+    }
+    e_mean.at(k, 0) = static_cast<float>(e.blocker_mean()), o_mean.at(k, 0) = static_cast<float>(o.blocker_mean());
+    terms = std::max(terms, static_cast<double>(d.nodes + d.fetches));
+  }
+  const Tolerance exact = Tolerance::exact();
+  const std::string what = compare_counters ? " occluders, nodes, fetches" : " occluders";
+  results.push_back({name + what + " (query k at (k, 0))", exact, compare(e_counts, o_counts, exact)});
+  const Tolerance mean_tol =
+      Tolerance::absolute((terms + 2.0 * scene.pyramid.levels + 4.0) * FLT_EPSILON * scene.largest);
+  results.push_back({name + " blocker mean", mean_tol, compare(e_mean, o_mean, mean_tol)});
+}
+
+}  // namespace
+
+std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
+  const DepthPyramidBuilder builder(env.context, env.tree);
+  const TraversalPass pass(env.context, env.tree);
+  const SampleTable table = generate_sample_table(kTableSeed);
+  const GlObject table_texture = upload_sample_table(env.context, table);
+  std::vector<CaseResult> results;
+
+  const auto run_batch = [&](const Scene& scene, const std::vector<TraversalQuery>& queries, const TraversalSettings& s) {
+    const TraversalBatch batch(env.context, queries);
+    pass.dispatch(scene.pyramid, table_texture, batch, s);
+    return batch.read();
+  };
+  const auto recursion = [&](const Scene& scene, const std::vector<TraversalQuery>& queries, const TraversalSettings& s) {
+    std::vector<TraversalResult> out;
+    for (const TraversalQuery& q : queries)
+      out.push_back(traversal_reference(scene.depth, scene.pyramid.levels - 1, table, q.region,
+                                        {q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y}));
+    return out;
+  };
+
+  SeededRandom random(0x5eed0006u);
+  for (const auto& fixture : fixtures::kTextureFixtures) {
+    Scene scene;
+    scene.map = generate_fixture(fixture, kMapSize, kMapSize);
+    scene.depth = sanitized_depths(scene.map);
+    scene.pyramid = builder.build(upload_float_texture(env.context, scene.map), kMapSize, kMapSize, 31);
+    for (float d : scene.depth.texels)
+      if (std::isfinite(d)) scene.largest = std::max(scene.largest, std::fabs(d));
+
+    // Exact: leaf side 1, power-of-two windows and exact regions, against brute force.
+    std::vector<Rect> regions;
+    for (int side = 1; side <= 256; side *= 2)
+      for (int origin : {0, kMapSize - side}) regions.push_back({origin, (origin * 7) % (kMapSize - side + 1), side, side});
+    for (int side = 3; side <= 64; side += 2) regions.push_back({17, 5, side, side});
+    for (Rect r : {Rect{1, 2, 100, 37}, Rect{30, 40, 255, 129}, Rect{99, 0, 200, 200}, Rect{0, 299, 300, 1}})
+      regions.push_back(r);
+    std::vector<TraversalQuery> queries;
+    for (const Rect& r : regions)
+      for (float receiver : receivers_for(scene.depth, r))
+        queries.push_back({r, receiver, static_cast<int>(queries.size()), 3 * static_cast<int>(queries.size())});
+    TraversalSettings exact_settings;
+    std::vector<TraversalResult> brute;
+    for (const TraversalQuery& q : queries) brute.push_back(brute_force_occluders(scene.depth, q.region, q.receiver_depth, 0.0f));
+    const auto observed = run_batch(scene, queries, exact_settings);
+    const auto decisions = recursion(scene, queries, exact_settings);
+    const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
+    add_comparison(results, label + " leaf 1 vs brute force:", scene, brute, observed, decisions, false);
+    add_comparison(results, label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
+
+    // Sampled and min leaves against the recursion with the same table and decisions.
+    std::vector<TraversalQuery> leaf_queries;
+    for (int k = 0; k < 96; ++k) {
+      const int side = 1 << random.uniform_int(4, 8);
+      const Rect r{random.uniform_int(0, kMapSize - side), random.uniform_int(0, kMapSize - side), side, side};
+      const std::vector<float> rs = receivers_for(scene.depth, r);
+      leaf_queries.push_back({r, random.uniform_float(rs[0], rs[4]), random.uniform_int(0, 1023), random.uniform_int(0, 1023)});
+    }
+    for (LeafMode mode : {LeafMode::sampled, LeafMode::min})
+      for (int leaf : {2, 4, 8, 16}) {
+        TraversalSettings s;
+        s.leaf_side = leaf, s.leaf_mode = mode, s.bias = 0.001f;
+        const auto expected = recursion(scene, leaf_queries, s);
+        add_comparison(results,
+                       label + (mode == LeafMode::sampled ? " sampled" : " min (HQEPCSS)") + " leaves, side " +
+                           std::to_string(leaf) + ":",
+                       scene, expected, run_batch(scene, leaf_queries, s), expected, true);
+      }
+
+    if (std::string(fixture.name) == "fine_checker") {
+      // The pathological case: every node ambiguous at receiver 0.5.
+      for (int budget : {64, 1000}) {
+        TraversalSettings s;
+        s.node_budget = budget;
+        const std::vector<TraversalQuery> q{{{0, 0, 256, 256}, 0.5f, 0, 0}, {{10, 20, 200, 150}, 0.5f, 5, 1}};
+        const auto expected = recursion(scene, q, s);
+        const auto observed = run_batch(scene, q, s);
+        double worst = 0.0;
+        long most_nodes = 0;
+        for (size_t k = 0; k < q.size(); ++k) {
+          const auto b = brute_force_occluders(scene.depth, q[k].region, 0.5f, 0.0f);
+          worst = std::max(worst, std::fabs(observed[k].occluded_fraction() - b.occluded_fraction()));
+          most_nodes = std::max(most_nodes, observed[k].nodes);
+        }
+        const long bound = budget + 3 * 8 + 1;
+        add_comparison(results,
+                       label + " budget " + std::to_string(budget) + " (nodes " + std::to_string(most_nodes) +
+                           " <= " + std::to_string(bound) + "; fraction error vs brute force " +
+                           format_number("%.3f", worst) + "):",
+                       scene, expected, observed, expected, true);
+        Image within(1, 1, 1, 1.0f), observed_within(1, 1, 1, most_nodes <= bound ? 1.0f : 0.0f);
+        results.push_back({label + " budget " + std::to_string(budget) + ": nodes within budget + 3 levels + 1",
+                           Tolerance::exact(), compare(within, observed_within, Tolerance::exact())});
+      }
+    }
+  }
+  return results;
+}
+
+}  // namespace pn

@@ -1,0 +1,67 @@
+// Runner side of glsl/passes/traversal_query.comp (and of window_scan.comp,
+// the brute-force baseline of `penumbra bench traversal`).
+#pragma once
+
+#include <vector>
+
+#include "gl/compute_program.h"
+#include "passes/depth_pyramid_pass.h"
+#include "reference/traversal_reference.h"
+#include "sampling/sample_table.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+struct TraversalQuery {
+  Rect region;
+  float receiver_depth = 0.0f;
+  int pixel_x = 0, pixel_y = 0;
+};
+
+// The same for every query of a batch.
+struct TraversalSettings {
+  float bias = 0.0f;
+  int leaf_side = 1;
+  LeafMode leaf_mode = LeafMode::sampled;
+  int node_budget = 1 << 26;
+};
+
+GlObject upload_sample_table(const Context& context, const SampleTable& table);
+
+// Queries on the GPU and their result images; read() returns one result per query.
+class TraversalBatch {
+ public:
+  TraversalBatch(const Context& context, const std::vector<TraversalQuery>& queries);
+  std::vector<TraversalResult> read() const;
+
+ private:
+  friend class TraversalPass;
+  friend class WindowScanPass;
+  const Context* context_;
+  int count_, width_, height_;
+  GlObject query_a_, query_b_, result_c_, result_d_;
+};
+
+class TraversalPass {
+ public:
+  TraversalPass(const Context& context, const SourceTree& tree);
+  void dispatch(const DepthPyramid& pyramid, const GlObject& sample_table, const TraversalBatch& batch,
+                const TraversalSettings& settings) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;
+};
+
+// Brute force over each query's region (every texel fetched), into the same result layout.
+class WindowScanPass {
+ public:
+  WindowScanPass(const Context& context, const SourceTree& tree);
+  void dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;
+};
+
+}  // namespace pn

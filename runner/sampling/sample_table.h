@@ -1,0 +1,48 @@
+// The multi-jittered sample table of Fast PCSS (seed 000 §3.1, SPEC §4.3):
+// 8 sets, each holding a 1-sample, a 4-sample and a 16-sample multi-jittered
+// group (Chiu, Shirley, Wang 1994), positions in [0, 1)², stored as a 21×8
+// RG32F image: column 0 the 1-sample group, 1–4 the 4-sample group, 5–20 the
+// 16-sample group; row = set.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/image.h"
+
+namespace pn {
+
+struct Sample {
+  float x = 0.0f, y = 0.0f;
+};
+
+// One multi-jittered set of n² samples: exactly one in each of the n×n cells,
+// one in each of the n² thin columns [c/n², (c+1)/n²) and one in each thin row.
+// Deterministic for a given seed.
+std::vector<Sample> multi_jittered_set(int n, std::uint32_t seed);
+
+struct SampleTable {
+  static constexpr int kColumns = 21;
+  static constexpr int kSets = 8;
+  std::array<Sample, kColumns * kSets> samples{};
+
+  const Sample& at(int column, int set) const { return samples[static_cast<size_t>(set * kColumns + column)]; }
+  Image image() const;  // 21×8, 2 channels, for upload as RG32F
+};
+
+// The table for `seed`: set s, group of n² samples (n = 1, 2, 4) drawn by
+// multi_jittered_set(n, a hash of (seed, s, n)).
+SampleTable generate_sample_table(std::uint32_t seed);
+
+// §3.2 selection, as the paper writes it, for a region of side s at screen pixel (x, y).
+struct SampleSelection {
+  int group_log4 = 0;  // k: 4^k samples
+  int count = 1;       // 4^k
+  int first_column = 0;  // (4^k − 1) / 3
+  int last_column = 0;   // 4 (4^k − 1) / 3, inclusive
+  int set = 0;           // (x + y) mod 8
+};
+SampleSelection select_samples(int region_side, int pixel_x, int pixel_y);
+
+}  // namespace pn
