@@ -2,65 +2,20 @@
 // and copies with one deliberate mistake that the checks must catch.
 #include <catch2/catch.hpp>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "check/module_check.h"
 #include "gl/texture.h"
+#include "broken_copy.h"
 #include "gl_test_context.h"
 #include "passes/depth_pyramid_pass.h"
 
-namespace fs = std::filesystem;
+using pn::test::BrokenCopy;
+using pn::test::failing_cases;
+using pn::test::run_check;
 
-namespace {
-
-std::vector<pn::CaseResult> run(pn::ModuleCheck check, const fs::path& root) {
-  const pn::SourceTree tree(root);
-  const pn::CheckOptions options;
-  return check.run({pn::test::gl_context(), tree, options});
-}
-
-// A copy of glsl/ with `from` replaced by `to` in `file`; removed on destruction.
-class BrokenCopy {
- public:
-  BrokenCopy(const std::string& file, const std::string& from, const std::string& to)
-      : root_(fs::temp_directory_path() / ("penumbra-broken-" + std::to_string(::getpid()))) {
-    fs::remove_all(root_);
-    fs::copy(PENUMBRA_GLSL_DIR, root_, fs::copy_options::recursive);
-    std::ifstream in(root_ / file);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    const size_t at = s.find(from);
-    found_ = at != std::string::npos;
-    if (found_) s.replace(at, from.size(), to);
-    std::ofstream(root_ / file) << s;
-  }
-  ~BrokenCopy() { fs::remove_all(root_); }
-  const fs::path& root() const { return root_; }
-  bool found() const { return found_; }
-
- private:
-  fs::path root_;
-  bool found_ = false;
-};
-
-size_t failing(const std::vector<pn::CaseResult>& results) {
-  size_t n = 0;
-  for (const auto& r : results) {
-    if (r.comparison.pass) continue;
-    ++n;
-    CHECK(r.comparison.where(r.tolerance).find("expected") != std::string::npos);
-  }
-  return n;
-}
-
-}  // namespace
 
 TEST_CASE("pyramid: every level of every fixture and every square query equals the scans") {
-  const auto results = run(pn::find_module_check("pyramid"), PENUMBRA_GLSL_DIR);
+  const auto results = run_check(pn::find_module_check("pyramid"), PENUMBRA_GLSL_DIR);
   REQUIRE(results.size() > 500);
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
@@ -69,7 +24,7 @@ TEST_CASE("pyramid: every level of every fixture and every square query equals t
 }
 
 TEST_CASE("region: the literal and centred steps equal the CPU steps on every region") {
-  const auto results = run(pn::find_module_check("region"), PENUMBRA_GLSL_DIR);
+  const auto results = run_check(pn::find_module_check("region"), PENUMBRA_GLSL_DIR);
   REQUIRE(results.size() == 28);
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
@@ -80,14 +35,14 @@ TEST_CASE("region: the literal and centred steps equal the CPU steps on every re
 TEST_CASE("negative: a pyramid copy with a wrong child offset fails the pyramid check") {
   const BrokenCopy copy("depth_pyramid.glsl", "origin + ivec2(h, 0)", "origin + ivec2(h - 1, 0)");
   REQUIRE(copy.found());
-  CHECK(failing(run(pn::find_module_check("pyramid"), copy.root())) > 0);
+  CHECK(failing_cases(run_check(pn::find_module_check("pyramid"), copy.root())) > 0);
 }
 
 TEST_CASE("negative: a region copy that drops the cap in Step 5 fails, inside-the-map property included") {
   const BrokenCopy copy("region.glsl", "return ivec3(l, t, min(sp, cap));", "return ivec3(l, t, sp);");
   REQUIRE(copy.found());
-  const auto results = run(pn::find_module_check("region"), copy.root());
-  CHECK(failing(results) > 0);
+  const auto results = run_check(pn::find_module_check("region"), copy.root());
+  CHECK(failing_cases(results) > 0);
   bool property_failed = false;
   for (const auto& r : results)
     if (r.name.find("inside the map") != std::string::npos && !r.comparison.pass) property_failed = true;

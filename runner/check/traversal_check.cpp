@@ -111,8 +111,10 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
 
     // Exact: leaf side 1, power-of-two windows and exact regions, against brute force.
     std::vector<Rect> regions;
-    for (int side = 1; side <= 256; side *= 2)
-      for (int origin : {0, kMapSize - side}) regions.push_back({origin, (origin * 7) % (kMapSize - side + 1), side, side});
+    for (int side = 1; side <= 256; side *= 2) {
+      regions.push_back({kMapSize - side, (side * 7) % (kMapSize - side + 1), side, side});
+      if (side <= 64) regions.push_back({0, 0, side, side});  // and at the corner (large ones cost llvmpipe seconds)
+    }
     for (int side = 3; side <= 64; side += 2) regions.push_back({17, 5, side, side});
     for (Rect r : {Rect{1, 2, 100, 37}, Rect{30, 40, 255, 129}, Rect{99, 0, 200, 200}, Rect{0, 299, 300, 1}})
       regions.push_back(r);

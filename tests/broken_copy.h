@@ -1,0 +1,62 @@
+// Helpers of the GL tests: run a module check on a glsl root, and make a copy
+// of glsl/ with one deliberate mistake that the check must catch.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include "check/module_check.h"
+#include "gl_test_context.h"
+
+namespace pn::test {
+
+inline std::vector<CaseResult> run_check(const ModuleCheck& check, const std::filesystem::path& root) {
+  const SourceTree tree(root);
+  const CheckOptions options;
+  return check.run({gl_context(), tree, options});
+}
+
+// Failing cases, each required to say where / expected / observed.
+inline size_t failing_cases(const std::vector<CaseResult>& results) {
+  size_t n = 0;
+  for (const auto& r : results) {
+    if (r.comparison.pass) continue;
+    ++n;
+    CHECK(r.comparison.where(r.tolerance).find("expected") != std::string::npos);
+  }
+  return n;
+}
+
+// A copy of glsl/ with the first `from` in `file` replaced by `to`; removed on destruction.
+class BrokenCopy {
+ public:
+  BrokenCopy(const std::string& file, const std::string& from, const std::string& to)
+      : root_(std::filesystem::temp_directory_path() / ("penumbra-broken-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(root_);
+    std::filesystem::copy(PENUMBRA_GLSL_DIR, root_, std::filesystem::copy_options::recursive);
+    std::ifstream in(root_ / file);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    const size_t at = s.find(from);
+    found_ = at != std::string::npos;
+    if (found_) s.replace(at, from.size(), to);
+    std::ofstream(root_ / file) << s;
+  }
+  ~BrokenCopy() { std::filesystem::remove_all(root_); }
+  BrokenCopy(const BrokenCopy&) = delete;
+  BrokenCopy& operator=(const BrokenCopy&) = delete;
+  const std::filesystem::path& root() const { return root_; }
+  bool found() const { return found_; }
+
+ private:
+  std::filesystem::path root_;
+  bool found_ = false;
+};
+
+}  // namespace pn::test

@@ -1,0 +1,46 @@
+// sample_table and traversal on a real GL context, and copies with the
+// mistakes the traversal check exists to catch.
+#include <catch2/catch.hpp>
+
+#include "broken_copy.h"
+
+using pn::test::BrokenCopy;
+using pn::test::failing_cases;
+using pn::test::run_check;
+
+TEST_CASE("sample_table: strata, selection and scaling equal the paper's arithmetic") {
+  for (const auto& r : run_check(pn::find_module_check("sample_table"), PENUMBRA_GLSL_DIR)) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    CHECK(r.comparison.pass);
+  }
+}
+
+TEST_CASE("traversal: exact at leaf 1, sampled and min leaves and budgets equal the CPU recursion") {
+  const auto results = run_check(pn::find_module_check("traversal"), PENUMBRA_GLSL_DIR);
+  REQUIRE(results.size() > 150);
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    CHECK(r.comparison.pass);
+  }
+}
+
+TEST_CASE("negative: a traversal that counts a texel at exactly dP - bias as occluding fails the exact check") {
+  const BrokenCopy copy("traversal.glsl", "if (node.y < t) {", "if (node.y <= t) {");
+  REQUIRE(copy.found());
+  CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root())) > 0);
+}
+
+TEST_CASE("negative: a traversal that drops a child fails the exact check") {
+  const BrokenCopy copy("traversal.glsl",
+                        "pnTraversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(h, h), t, leafMode, pixel);",
+                        "");
+  REQUIRE(copy.found());
+  CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root())) > 0);
+}
+
+TEST_CASE("negative: a sample table selection with the wrong set rule fails the sample_table check") {
+  const BrokenCopy copy("sample_table.glsl", "return (pixel.x + pixel.y) & (PN_SAMPLE_TABLE_SETS - 1);",
+                        "return (pixel.x * pixel.y) & (PN_SAMPLE_TABLE_SETS - 1);");
+  REQUIRE(copy.found());
+  CHECK(failing_cases(run_check(pn::find_module_check("sample_table"), copy.root())) > 0);
+}
