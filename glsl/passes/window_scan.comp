@@ -1,7 +1,8 @@
 // window_scan.comp — the brute-force baseline of traversal_query.comp: every
 // texel of each query's region is fetched and compared (PCSS's blocker search
 // over the whole window). Same bindings and result layout as traversal_query.comp;
-// level 0 of the pyramid is the (sanitized) shadow map.
+// level 0 of the pyramid is the (sanitized) shadow map. On llvmpipe, windows
+// stay exact while rows × ceil(width / 8) <= 65535 (any window up to 720²).
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -26,12 +27,18 @@ void main() {
   ivec2 hi = clamp(ivec2(a.xy + a.zw), lo, ivec2(n));
   float occluders = 0.0;
   float depthSum = 0.0;
+  // Eight texels per inner iteration: llvmpipe ends a shader's loops after
+  // 65535 iterations in total, which a 256² window would otherwise exceed.
   for (int y = lo.y; y < hi.y; ++y) {
-    for (int x = lo.x; x < hi.x; ++x) {
-      float d = pnPyramidFetch(pnPyramid, 0, ivec2(x, y)).x;
-      if (d < t) {
-        occluders += 1.0;
-        depthSum += d;
+    for (int x = lo.x; x < hi.x; x += 8) {
+      for (int i = 0; i < 8; ++i) {  // constant trip count: unrolled
+        if (x + i < hi.x) {
+          float d = pnPyramidFetch(pnPyramid, 0, ivec2(x + i, y)).x;
+          if (d < t) {
+            occluders += 1.0;
+            depthSum += d;
+          }
+        }
       }
     }
   }

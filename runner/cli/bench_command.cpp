@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "bench/pyramid_bench.h"
+#include "bench/traversal_bench.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/write_file.h"
@@ -13,37 +14,51 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::string what;
     std::vector<int> sizes{512, 1024, 2048};
     int repeats = 15;
+    TraversalBenchSetup traversal;
     int max_level = 31;
     std::string json;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
-  cmd->add_option("what", opt->what, "pyramid")->required();
-  cmd->add_option("--sizes", opt->sizes, "Shadow-map sizes N (default 512 1024 2048)")->delimiter(',');
-  cmd->add_option("--repeats", opt->repeats, "Timed runs per size (default 15)");
-  cmd->add_option("--max-level", opt->max_level, "Pyramid maximum level (default: all)");
+  cmd->add_option("what", opt->what, "pyramid | traversal")->required();
+  cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048)")->delimiter(',');
+  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal)");
+  cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)");
+  cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)");
+  cmd->add_option("--receivers", opt->traversal.receivers, "traversal: receivers in the batch (default 4096)");
+  cmd->add_option("--leaf-sizes", opt->traversal.leaf_sides, "traversal: leaf sizes (default 1,2,4,8,16)")->delimiter(',');
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->callback([opt, &global, &exit_code] {
-    if (opt->what != "pyramid") throw Error("bench '" + opt->what + "': expected one of pyramid");
+  cmd->callback([opt, repeats, &global, &exit_code] {
+    if (opt->what != "pyramid" && opt->what != "traversal")
+      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal");
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "
               << context->version() << "\n";
-    const auto rows = bench_pyramid(*context, tree, opt->sizes, opt->repeats, opt->max_level);
-    print_pyramid_bench(std::cout, rows);
+    nlohmann::json results;
+    if (opt->what == "pyramid") {
+      const auto rows = bench_pyramid(*context, tree, opt->sizes, opt->repeats, opt->max_level);
+      print_pyramid_bench(std::cout, rows);
+      results = pyramid_bench_json(rows);
+    } else {
+      if (repeats->count() > 0) opt->traversal.repeats = opt->repeats;
+      const auto rows = bench_traversal(*context, tree, opt->traversal);
+      print_traversal_bench(std::cout, opt->traversal, rows);
+      results = traversal_bench_json(opt->traversal, rows);
+    }
     if (!opt->json.empty()) {
       const std::time_t now = std::time(nullptr);
       char date[32];
       std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-      const nlohmann::json doc{{"bench", "pyramid"},
+      const nlohmann::json doc{{"bench", opt->what},
                                {"date", date},
                                {"backend", backend_name(context->backend())},
                                {"vendor", context->vendor()},
                                {"renderer", context->renderer()},
                                {"gl_version", context->version()},
-                               {"results", pyramid_bench_json(rows)}};
+                               {"results", results}};
       write_file_atomically(opt->json, doc.dump(2) + "\n");
     }
     exit_code = 0;

@@ -1,5 +1,6 @@
 #include "figures/figures.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -11,6 +12,8 @@
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/region_pass.h"
+#include "passes/traversal_pass.h"
+#include "reference/region_reference.h"
 
 namespace fs = std::filesystem;
 
@@ -97,16 +100,89 @@ void region_figure(const Context& context, const SourceTree& tree, const fs::pat
   canvas.write_png(path);
 }
 
+// The table: one row per group (1, 4, 16 samples), one column per set; the
+// n×n cells of each group are drawn, and every cell holds one sample.
+void sample_table_figure(const fs::path& path) {
+  const SampleTable table = generate_sample_table(0x5eed0005u);
+  const int box = 96, gap = 12;
+  Canvas canvas(8 * box + 9 * gap, 3 * box + 4 * gap, kPaper);
+  int row = 0;
+  for (auto [n, first] : {std::pair{1, 0}, std::pair{2, 1}, std::pair{4, 5}}) {
+    for (int set = 0; set < SampleTable::kSets; ++set) {
+      const int x0 = gap + set * (box + gap), y0 = gap + row * (box + gap);
+      for (int i = 1; i < n * n; ++i) {  // thin strata, faint
+        canvas.fill(x0 + i * box / (n * n), y0, 1, box, {240, 240, 240});
+        canvas.fill(x0, y0 + i * box / (n * n), box, 1, {240, 240, 240});
+      }
+      for (int i = 1; i < n; ++i) {  // cells
+        canvas.fill(x0 + i * box / n, y0, 1, box, {170, 170, 170});
+        canvas.fill(x0, y0 + i * box / n, box, 1, {170, 170, 170});
+      }
+      canvas.outline(x0, y0, box + 1, box + 1, {90, 90, 90});
+      for (int i = 0; i < n * n; ++i) {
+        const Sample& q = table.at(first + i, set);
+        canvas.fill(x0 + static_cast<int>(q.x * box) - 2, y0 + static_cast<int>(q.y * box) - 2, 5, 5, kBlue);
+      }
+    }
+    ++row;
+  }
+  canvas.write_png(path);
+}
+
+// Nodes visited per receiver (one receiver per texel of a 256² boxes map, on
+// the ground, search region 32, bias 0.03 so that the sloped ground does not
+// shadow itself): leaf 1 (exact) and leaf 8 (sampled), beside the map.
+void traversal_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+  const int n = 256, gap = 10;
+  const Image map = generate_fixture(find_fixture("boxes"), n, n);
+  const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(upload_float_texture(context, map), n, n, 31);
+  const GlObject table = upload_sample_table(context, generate_sample_table(0x5eed0005u));
+  const auto& boxes = find_fixture("boxes");
+  std::vector<TraversalQuery> queries;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const float ground = boxes.b - 0.5f * (boxes.b - boxes.a) * (static_cast<float>(y) / (n - 1));
+      const RegionWindow w = region_reference(x + 0.5f, y + 0.5f, 32.0f, n);
+      queries.push_back({{w.u, w.v, w.side, w.side}, ground + 0.002f, x, y});
+    }
+  const TraversalPass pass(context, tree);
+  const TraversalBatch batch(context, queries);
+  Canvas canvas(3 * n + 4 * gap, n + 2 * gap, kPaper);
+  canvas.grey(map, 0, gap, gap, 1, 0.2f, 1.0f, kMagenta);
+  int column = 1;
+  for (int leaf : {1, 8}) {
+    TraversalSettings settings;
+    settings.leaf_side = leaf;
+    settings.bias = 0.03f;
+    pass.dispatch(pyramid, table, batch, settings);
+    const std::vector<TraversalResult> results = batch.read();
+    long most = 1;
+    for (const auto& r : results) most = std::max(most, r.nodes);
+    for (int k = 0; k < n * n; ++k) {
+      const float t = std::sqrt(static_cast<float>(results[static_cast<size_t>(k)].nodes) / static_cast<float>(most));
+      const Rgb heat{static_cast<unsigned char>(255 * std::min(1.0f, 1.6f * t)),
+                     static_cast<unsigned char>(255 * std::clamp(1.6f * t - 0.6f, 0.0f, 1.0f)),
+                     static_cast<unsigned char>(255 * std::clamp(3.0f * t - 2.0f, 0.0f, 1.0f) * 0.8f)};
+      canvas.fill(gap + column * (n + gap) + k % n, gap + k / n, 1, 1, heat);
+    }
+    ++column;
+  }
+  canvas.write_png(path);
+}
+
 }  // namespace
 
 std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");
-  const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png"};
+  const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png",
+                                    out / "sample_table.png", out / "traversal_nodes.png"};
   blur_figure(context, tree, paths[0]);
   pyramid_figure(context, tree, paths[1]);
   region_figure(context, tree, paths[2]);
+  sample_table_figure(paths[3]);
+  traversal_figure(context, tree, paths[4]);
   return paths;
 }
 

@@ -10,7 +10,8 @@
 
 namespace pn {
 
-// Writes blur.png, pyramid_levels.png and region_snapping.png into `out`
+// Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
+// and traversal_nodes.png into `out`
 // (created if missing); returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
