@@ -43,7 +43,7 @@ std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, co
   return reports;
 }
 
-void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures) {
+void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures, bool every_case) {
   char line[256];
   std::snprintf(line, sizeof line, "%-14s %6s  %-34s %s\n", "module", "cases", "worst error (tolerance)", "verdict");
   out << line;
@@ -57,8 +57,13 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
                   r.pass() ? "pass" : "FAIL");
     out << line;
   }
+  if (every_case)
+    for (const ModuleReport& r : reports)
+      for (const CaseResult& c : r.cases)
+        out << r.module << ": " << (c.comparison.pass ? "pass " : "FAIL ") << c.name << ": "
+            << c.comparison.where(c.tolerance) << "\n";
   for (const ModuleReport& r : reports) {
-    if (r.pass()) continue;
+    if (r.pass() || every_case) continue;
     size_t failing = 0;
     for (const CaseResult& c : r.cases) {
       if (c.comparison.pass) continue;

@@ -22,7 +22,9 @@ struct ModuleReport {
 std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, const CheckEnvironment& env);
 
 // Table: module, cases, worst error, verdict; then, for each failing module,
-// its failing cases with where / expected / observed (at most `max_failures` each).
-void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures = 10);
+// its failing cases with where / expected / observed (at most `max_failures`
+// each). `every_case` lists every case, passing ones too, with its worst element.
+void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures = 10,
+                  bool every_case = false);
 
 }  // namespace pn

@@ -13,6 +13,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::optional<int> blur_radius;
     std::optional<double> blur_sigma, blur_depth_tolerance;
     bool blur_depth_aware = false;
+    bool every_case = false;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("check", "Run module checks on the GPU against CPU references");
@@ -22,6 +23,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--blur-radius", opt->blur_radius, "Check blur with this radius only (0 to 16)");
   cmd->add_option("--blur-sigma", opt->blur_sigma, "Check blur with this sigma only (texels, > 0)");
   cmd->add_flag("--blur-depth-aware", opt->blur_depth_aware, "Check the depth-aware blur only");
+  cmd->add_flag("-v,--every-case", opt->every_case, "List every case with its worst element, passing ones too");
   cmd->add_option("--blur-depth-tolerance", opt->blur_depth_tolerance, "Relative depth tolerance (>= 0)");
   cmd->callback([opt, &global, &exit_code] {
     CheckOptions options;
@@ -41,7 +43,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << "\n";
     const CheckEnvironment env{*context, tree, options};
     const auto reports = run_checks(opt->modules, env);
-    print_report(std::cout, reports);
+    print_report(std::cout, reports, 10, opt->every_case);
     bool pass = true;
     for (const auto& r : reports) pass = pass && r.pass();
     exit_code = pass ? 0 : static_cast<int>(ExitCode::failed);
