@@ -112,25 +112,37 @@ void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2
   r.depthSum += texels * depthSum / float(m);
 }
 
-// A node inside the region, with a pyramid level, that will not be descended:
-// full -> all its texels; empty -> nothing; ambiguous -> the leaf estimate.
-void pnTraversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, int level, ivec2 origin,
-                          float t, int leafMode, ivec2 pixel) {
-  int side = 1 << level;
+// Reads a node inside the region (with a pyramid level) and counts it: a node
+// whose texels all occlude is added whole; returns true when it is ambiguous,
+// with its min depth in `nodeMin`.
+bool pnTraversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level, ivec2 origin, float t,
+                         out float nodeMin) {
   vec4 node = pnPyramidFetch(pyramid, level, origin);
   r.nodes += 1;
   r.fetches += 1;
-  float texels = float(side * side);
+  nodeMin = node.x;
   if (node.y < t) {
+    float texels = float(1 << (2 * level));
     r.occluders += texels;
     r.depthSum += node.z * texels;
-  } else if (node.x < t) {
-    if (leafMode == PN_LEAF_MIN) {
-      r.occluders += texels;
-      r.depthSum += node.x * texels;
-    } else {
-      pnTraversalSampleLeaf(r, pyramid, sampleTable, origin, ivec2(side), side, t, pixel);
-    }
+    return false;
+  }
+  return node.x < t;
+}
+
+// A node inside the region, with a pyramid level, that will not be descended:
+// classified, and estimated by the leaf mode when ambiguous.
+void pnTraversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, int level, ivec2 origin,
+                          float t, int leafMode, ivec2 pixel) {
+  float nodeMin;
+  if (!pnTraversalClassify(r, pyramid, level, origin, t, nodeMin)) return;
+  int side = 1 << level;
+  if (leafMode == PN_LEAF_MIN) {
+    float texels = float(side * side);
+    r.occluders += texels;
+    r.depthSum += nodeMin * texels;
+  } else {
+    pnTraversalSampleLeaf(r, pyramid, sampleTable, origin, ivec2(side), side, t, pixel);
   }
 }
 
@@ -170,14 +182,8 @@ PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec
       if (inside && level <= maxLevel && (side <= leafSide || spent)) {
         pnTraversalVisitLeaf(r, pyramid, sampleTable, level, origin, t, leafMode, pixel);
       } else if (inside && level <= maxLevel) {
-        vec4 node = pnPyramidFetch(pyramid, level, origin);
-        r.nodes += 1;
-        r.fetches += 1;
-        float texels = float(side * side);
-        if (node.y < t) {
-          r.occluders += texels;
-          r.depthSum += node.z * texels;
-        } else if (node.x < t) {  // ambiguous: descend
+        float nodeMin;
+        if (pnTraversalClassify(r, pyramid, level, origin, t, nodeMin)) {  // ambiguous: descend
           if ((side >> 1) <= leafSide) {
             int h = side >> 1;
             pnTraversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin, t, leafMode, pixel);
