@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 #include <unistd.h>
 
 #include "check/module_check.h"
@@ -32,10 +34,14 @@ inline size_t failing_cases(const std::vector<CaseResult>& results) {
   return n;
 }
 
-// A copy of glsl/ with the first `from` in `file` replaced by `to`; removed on destruction.
+// A copy of glsl/ with the first `from` in `file` replaced by `to` (for each
+// pair); removed on destruction.
 class BrokenCopy {
  public:
+  using Edit = std::pair<std::string, std::string>;
   BrokenCopy(const std::string& file, const std::string& from, const std::string& to)
+      : BrokenCopy(file, std::vector<Edit>{{from, to}}) {}
+  BrokenCopy(const std::string& file, const std::vector<Edit>& edits)
       : root_(std::filesystem::temp_directory_path() / ("penumbra-broken-" + std::to_string(::getpid()))) {
     std::filesystem::remove_all(root_);
     std::filesystem::copy(PENUMBRA_GLSL_DIR, root_, std::filesystem::copy_options::recursive);
@@ -43,9 +49,12 @@ class BrokenCopy {
     std::stringstream text;
     text << in.rdbuf();
     std::string s = text.str();
-    const size_t at = s.find(from);
-    found_ = at != std::string::npos;
-    if (found_) s.replace(at, from.size(), to);
+    found_ = true;
+    for (const auto& [from, to] : edits) {
+      const size_t at = s.find(from);
+      found_ = found_ && at != std::string::npos;
+      if (at != std::string::npos) s.replace(at, from.size(), to);
+    }
     std::ofstream(root_ / file) << s;
   }
   ~BrokenCopy() { std::filesystem::remove_all(root_); }

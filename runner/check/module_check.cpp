@@ -16,6 +16,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_sample_table_check},
       {"traversal", "leaf 1 vs brute force (exact counts); sampled / min leaves and budgets vs the CPU recursion",
        &run_traversal_check},
+      {"reuse", "parent links, representatives and gathered values vs explicit parent pointers and root finding",
+       &run_reuse_check},
   };
   return checks;
 }

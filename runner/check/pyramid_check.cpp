@@ -24,14 +24,6 @@ constexpr int kAllSquaresSizes[] = {2, 3, 8, 13};
 constexpr int kRandomSquaresSizes[] = {64, 100, 257, 512};
 constexpr int kRandomSquares = 1000;
 
-Image channels(const Image& image, int first, int count) {
-  Image out(image.width, image.height, count);
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
-      for (int c = 0; c < count; ++c) out.at(x, y, c) = image.at(x, y, first + c);
-  return out;
-}
-
 float largest_finite(const Image& map) {
   float m = FLT_MIN;
   for (float d : map.texels)
@@ -72,7 +64,7 @@ SquareQueries square_queries(const Image& map, const std::vector<Query>& queries
 
 CaseResult square_case(const std::string& name, const DepthPyramidQuery& query, const DepthPyramid& pyramid,
                        const SquareQueries& queries) {
-  const Image observed = channels(query.run(pyramid, queries.input), 0, 2);
+  const Image observed = channels_of(query.run(pyramid, queries.input), 0, 2);
   const Tolerance exact = Tolerance::exact();
   return {name, exact, compare(queries.expected, observed, exact)};
 }
@@ -96,12 +88,12 @@ std::vector<CaseResult> run_pyramid_check(const CheckEnvironment& env) {
         const Image expected = pyramid_level_reference(map, level);
         const std::string name = label(fixture.name, n) + " level " + std::to_string(level);
         const Tolerance exact = Tolerance::exact();
-        results.push_back({name + " min/max", exact, compare(channels(expected, 0, 2), channels(observed, 0, 2), exact)});
+        results.push_back({name + " min/max", exact, compare(channels_of(expected, 0, 2), channels_of(observed, 0, 2), exact)});
         // Mean of means: each level adds three float roundings of values <= 4M, then
         // scales by 1/4 exactly; 2(i+1) ulps of the largest |depth| covers them and the
         // reference's own rounding to float.
         const Tolerance mean_tol = Tolerance::absolute(2.0 * (level + 1) * FLT_EPSILON * m);
-        results.push_back({name + " mean", mean_tol, compare(channels(expected, 2, 1), channels(observed, 2, 1), mean_tol)});
+        results.push_back({name + " mean", mean_tol, compare(channels_of(expected, 2, 1), channels_of(observed, 2, 1), mean_tol)});
       }
     }
   }

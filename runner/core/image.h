@@ -26,4 +26,13 @@ struct Image {
   }
 };
 
+// Channels [first, first + count) of `image`, as an image of their own.
+inline Image channels_of(const Image& image, int first, int count) {
+  Image out(image.width, image.height, count);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < count; ++c) out.at(x, y, c) = image.at(x, y, first + c);
+  return out;
+}
+
 }  // namespace pn

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include "core/query_grid.h"
 #include "core/error.h"
 #include "figures/canvas.h"
 #include "fixture/texture_fixture.h"
+#include "gl/compute_program.h"
 #include "gl/texture.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
@@ -170,6 +172,66 @@ void traversal_figure(const Context& context, const SourceTree& tree, const fs::
   canvas.write_png(path);
 }
 
+// Reuse groups on a 64×64 search-region-like map, k = 4 (Step 4) and k = 2
+// (Step 5): every group in one colour, representatives marked, tile grid in white.
+void reuse_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+  const int n = 64, scale = 6, gap = 12;
+  Image entries(n, n, 4);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      entries.at(x, y, 0) = std::round((0.5f + 0.3f * std::sin(x / 9.0f) * std::cos(y / 6.0f)) * 30.0f) / 30.0f;
+      entries.at(x, y, 1) = std::floor((x + 0.5f) * 0.75f) + 0.5f + 20.0f;
+      entries.at(x, y, 2) = std::floor((y + 0.5f) * 0.75f) + 0.5f + 20.0f;
+      entries.at(x, y, 3) = std::exp2(std::round(3.0f + std::sin((x - y) / 15.0f)));
+    }
+  const ComputeProgram link = compile_pass(context, tree, "passes/reuse_link.comp");
+  const ComputeProgram gather = compile_pass(context, tree, "passes/reuse_gather.comp");
+  const GlObject entry_texture = upload_float_texture(context, entries);
+  const GlObject values = make_float_texture(context, n, n, 1);
+  const GlObject parents = make_float_texture(context, n, n, 1);
+  const GlObject gathered = make_float_texture(context, n, n, 4);
+  const auto& gl = context.gl();
+  Canvas canvas(2 * n * scale + 3 * gap, n * scale + 2 * gap, kPaper);
+  int column = 0;
+  for (int tile : {4, 2}) {
+    const struct {
+      float sigma1, sigma2, sigma3;
+      std::int32_t tile;
+    } link_block{0.0f, 0.1f, 0.1f, tile};
+    const std::int32_t gather_block[4] = {tile, 0, 0, 0};
+    {
+      GlObject ubo = bind_uniform_buffer(context, 3, &link_block, sizeof link_block);
+      gl.BindTextureUnit(0, entry_texture.id());
+      gl.BindImageTexture(2, parents.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+      link.dispatch(n, n);
+    }
+    GlObject ubo = bind_uniform_buffer(context, 3, gather_block, sizeof gather_block);
+    gl.BindTextureUnit(0, parents.id());
+    gl.BindTextureUnit(1, values.id());
+    gl.BindImageTexture(2, gathered.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gather.dispatch(n, n);
+    const Image groups = read_float_texture(context, gathered, n, n, 4);
+    const int x0 = gap + column * (n * scale + gap);
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const auto rx = static_cast<std::uint32_t>(groups.at(x, y, 0)), ry = static_cast<std::uint32_t>(groups.at(x, y, 1));
+        std::uint32_t h = (rx * 73856093u) ^ (ry * 19349663u);
+        h ^= h >> 13, h *= 0x5bd1e995u, h ^= h >> 15;
+        const Rgb colour{static_cast<unsigned char>(80 + (h & 0x7f)), static_cast<unsigned char>(80 + ((h >> 8) & 0x7f)),
+                         static_cast<unsigned char>(80 + ((h >> 16) & 0x7f))};
+        canvas.fill(x0 + x * scale, gap + y * scale, scale, scale, colour);
+        if (rx == static_cast<std::uint32_t>(x) && ry == static_cast<std::uint32_t>(y))
+          canvas.fill(x0 + x * scale + 2, gap + y * scale + 2, 2, 2, {20, 20, 20});
+      }
+    for (int i = 0; i <= n; i += tile) {
+      canvas.fill(x0 + i * scale, gap, 1, n * scale, kPaper);
+      canvas.fill(x0, gap + i * scale, n * scale, 1, kPaper);
+    }
+    ++column;
+  }
+  canvas.write_png(path);
+}
+
 }  // namespace
 
 std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
@@ -177,12 +239,13 @@ std::vector<fs::path> write_figures(const Context& context, const SourceTree& tr
   fs::create_directories(out, ec);
   if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");
   const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png",
-                                    out / "sample_table.png", out / "traversal_nodes.png"};
+                                    out / "sample_table.png", out / "traversal_nodes.png", out / "reuse_groups.png"};
   blur_figure(context, tree, paths[0]);
   pyramid_figure(context, tree, paths[1]);
   region_figure(context, tree, paths[2]);
   sample_table_figure(paths[3]);
   traversal_figure(context, tree, paths[4]);
+  reuse_figure(context, tree, paths[5]);
   return paths;
 }
 

@@ -11,7 +11,7 @@
 namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
-// and traversal_nodes.png into `out`
+// traversal_nodes.png and reuse_groups.png into `out`
 // (created if missing); returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
