@@ -1,0 +1,29 @@
+#include <iostream>
+
+#include "cli/commands.h"
+#include "core/write_file.h"
+#include "sampling/poisson_disk.h"
+
+namespace pn::cli {
+
+void add_poisson_command(CLI::App& app, int& exit_code) {
+  struct Options {
+    int count = 64;
+    std::uint32_t seed = 1;
+    std::string name = "PN_POISSON_DISK", output;
+  };
+  auto opt = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand("poisson", "Poisson-disk samples (Bridson) in the unit disk as a GLSL constant array");
+  cmd->add_option("--count", opt->count, "Number of samples (default 64; PCSS uses 36 for the blocker search)");
+  cmd->add_option("--seed", opt->seed, "Seed (default 1)");
+  cmd->add_option("--name", opt->name, "GLSL constant name (default PN_POISSON_DISK)");
+  cmd->add_option("-o,--output", opt->output, "Output file (default: standard output)");
+  cmd->callback([opt, &exit_code] {
+    const std::string text = poisson_disk_glsl(poisson_disk(opt->count, opt->seed), opt->name, opt->seed);
+    if (opt->output.empty()) std::cout << text;
+    else write_file_atomically(opt->output, text);
+    exit_code = 0;
+  });
+}
+
+}  // namespace pn::cli
