@@ -44,22 +44,3 @@ TEST_CASE("negative: a sample table selection with the wrong set rule fails the 
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("sample_table"), copy.root())) > 0);
 }
-
-TEST_CASE("reuse: parents, representatives and gathered values equal the CPU reference; no group crosses a tile") {
-  for (const auto& r : run_check(pn::find_module_check("reuse"), PENUMBRA_GLSL_DIR)) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    CHECK(r.comparison.pass);
-  }
-}
-
-TEST_CASE("negative: reuse links that ignore the tile border fail, the tile property included") {
-  const BrokenCopy copy("reuse.glsl", {{"if (p.x % tile != 0 && pnReuseSimilar", "if (p.x > 0 && pnReuseSimilar"},
-                                       {"if (parent == PN_REUSE_LEFT && q.x % tile != 0)", "if (parent == PN_REUSE_LEFT)"}});
-  REQUIRE(copy.found());
-  const auto results = run_check(pn::find_module_check("reuse"), copy.root());
-  CHECK(failing_cases(results) > 0);
-  bool tile_failed = false;
-  for (const auto& r : results)
-    if (r.name.find("crosses a tile") != std::string::npos && !r.comparison.pass) tile_failed = true;
-  CHECK(tile_failed);
-}

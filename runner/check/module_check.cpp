@@ -18,6 +18,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_traversal_check},
       {"reuse", "parent links, representatives and gathered values vs explicit parent pointers and root finding",
        &run_reuse_check},
+      {"light_model", "blocker-window, search-width and penumbra widths vs runner/scene/light_model.h",
+       &run_light_model_check},
   };
   return checks;
 }

@@ -47,5 +47,6 @@ std::vector<CaseResult> run_region_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env);
 
 }  // namespace pn

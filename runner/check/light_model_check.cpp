@@ -1,0 +1,71 @@
+// Cases of the light_model check: the GLSL widths equal runner/scene/light_model.h
+// over a grid of receiver and blocker depths for several lights (relative
+// float rounding, the grid keeping dP / z >= 1.01 so the difference does not
+// cancel), and degenerate inputs give exactly 0 where the definition says 0.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "check/module_check.h"
+#include "core/format.h"
+#include "core/query_grid.h"
+#include "gl/compute_program.h"
+#include "gl/texture.h"
+#include "scene/light_model.h"
+
+namespace pn {
+
+std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
+  const ComputeProgram program = compile_pass(env.context, env.tree, "passes/light_model_query.comp");
+  const auto& gl = env.context.gl();
+  std::vector<CaseResult> results;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  for (LightModel light : {LightModel{2.0, 1.0, 100.0, 1.5707963267948966, 1024},
+                           LightModel{0.5, 0.1, 50.0, 0.8, 512}, LightModel{0.0, 1.0, 100.0, 1.0, 1024},
+                           LightModel{10.0, 2.0, 500.0, 2.0, 2048}}) {
+    std::vector<Query> regular, degenerate;
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 40; ++j) {
+        const float receiver = static_cast<float>(light.near_plane * std::pow(1.25, i));
+        const float blocker = static_cast<float>(light.near_plane * std::pow(1.25, j));
+        if (receiver >= blocker * 1.01f) regular.push_back({receiver, blocker, 0, 0});
+      }
+    const float n = static_cast<float>(light.near_plane);
+    degenerate = {{5 * n, 5 * n, 0, 0}, {5 * n, 6 * n, 0, 0}, {0.5f * n, 0.25f * n, 0, 0}, {5 * n, 0.5f * n, 0, 0},
+                  {nan, n, 0, 0},       {5 * n, nan, 0, 0},   {inf, 2 * n, 0, 0},          {-3, -4, 0, 0}};
+    for (const auto& [queries, is_regular] : {std::pair{regular, true}, std::pair{degenerate, false}}) {
+      const Image input = query_image(queries);
+      const GlObject query_texture = upload_float_texture(env.context, input);
+      const GlObject result = make_float_texture(env.context, input.width, input.height, 4);
+      const float block[4] = {static_cast<float>(light.width), n, static_cast<float>(light.near_plane_width()),
+                              static_cast<float>(light.map_size)};
+      GlObject ubo = bind_uniform_buffer(env.context, 3, block, sizeof block);
+      gl.BindTextureUnit(0, query_texture.id());
+      gl.BindImageTexture(2, result.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      program.dispatch(input.width, input.height);
+      const Image observed = read_float_texture(env.context, result, input.width, input.height, 4);
+      Image expected(input.width, input.height, 4);
+      for (int y = 0; y < input.height; ++y)
+        for (int x = 0; x < input.width; ++x) {
+          const double r = input.at(x, y, 0), b = input.at(x, y, 1);
+          expected.at(x, y, 0) = static_cast<float>(light.blocker_window_texels(r, b));
+          expected.at(x, y, 1) = static_cast<float>(light.search_width_texels(r));
+          expected.at(x, y, 2) = static_cast<float>(light.penumbra_world(r, b));
+          expected.at(x, y, 3) = static_cast<float>(light.penumbra_texels(r, b));
+        }
+      const std::string name = "light width " + format_number("%g", light.width) + ", near " +
+                               format_number("%g", light.near_plane) + ", fov " + format_number("%.3g", light.fov_radians) +
+                               ", N " + std::to_string(light.map_size);
+      // A dozen float operations, |dP - z| >= 1 % of dP: 64 ulps relative. Relative
+      // to an expected 0 (the degenerate widths), any non-zero result fails.
+      const Tolerance tolerance = Tolerance::relative(64.0 * 1.1920929e-7);
+      results.push_back({name + (is_regular ? ": widths over receiver x blocker depths"
+                                            : ": degenerate inputs (widths that must be 0 are exactly 0)"),
+                         tolerance, compare(expected, observed, tolerance)});
+    }
+  }
+  return results;
+}
+
+}  // namespace pn

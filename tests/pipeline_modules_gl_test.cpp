@@ -1,0 +1,41 @@
+// reuse and light_model on a real GL context, and copies with a mistake each.
+#include <catch2/catch.hpp>
+
+#include "broken_copy.h"
+
+using pn::test::BrokenCopy;
+using pn::test::failing_cases;
+using pn::test::run_check;
+
+TEST_CASE("reuse: parents, representatives and gathered values equal the CPU reference; no group crosses a tile") {
+  for (const auto& r : run_check(pn::find_module_check("reuse"), PENUMBRA_GLSL_DIR)) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    CHECK(r.comparison.pass);
+  }
+}
+
+TEST_CASE("negative: reuse links that ignore the tile border fail, the tile property included") {
+  const BrokenCopy copy("reuse.glsl", {{"if (p.x % tile != 0 && pnReuseSimilar", "if (p.x > 0 && pnReuseSimilar"},
+                                       {"if (parent == PN_REUSE_LEFT && q.x % tile != 0)", "if (parent == PN_REUSE_LEFT)"}});
+  REQUIRE(copy.found());
+  const auto results = run_check(pn::find_module_check("reuse"), copy.root());
+  CHECK(failing_cases(results) > 0);
+  bool tile_failed = false;
+  for (const auto& r : results)
+    if (r.name.find("crosses a tile") != std::string::npos && !r.comparison.pass) tile_failed = true;
+  CHECK(tile_failed);
+}
+
+TEST_CASE("light_model: the GLSL widths equal the C++ light model") {
+  for (const auto& r : run_check(pn::find_module_check("light_model"), PENUMBRA_GLSL_DIR)) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    CHECK(r.comparison.pass);
+  }
+}
+
+TEST_CASE("negative: a penumbra divided by the receiver depth instead of the blocker's fails the light_model check") {
+  const BrokenCopy copy("light_model.glsl", "(receiverDepth - blockerDepth) / blockerDepth)",
+                        "(receiverDepth - blockerDepth) / receiverDepth)");
+  REQUIRE(copy.found());
+  CHECK(failing_cases(run_check(pn::find_module_check("light_model"), copy.root())) > 0);
+}
