@@ -23,6 +23,14 @@ inline std::vector<CaseResult> run_check(const ModuleCheck& check, const std::fi
   return check.run({gl_context(), tree, options});
 }
 
+// Every case passes; a failing one is reported with its where / expected / observed.
+inline void check_all_pass(const std::vector<CaseResult>& results) {
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    CHECK(r.comparison.pass);
+  }
+}
+
 // Failing cases, each required to say where / expected / observed.
 inline size_t failing_cases(const std::vector<CaseResult>& results) {
   size_t n = 0;

@@ -4,14 +4,12 @@
 #include "broken_copy.h"
 
 using pn::test::BrokenCopy;
+using pn::test::check_all_pass;
 using pn::test::failing_cases;
 using pn::test::run_check;
 
 TEST_CASE("reuse: parents, representatives and gathered values equal the CPU reference; no group crosses a tile") {
-  for (const auto& r : run_check(pn::find_module_check("reuse"), PENUMBRA_GLSL_DIR)) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    CHECK(r.comparison.pass);
-  }
+  check_all_pass(run_check(pn::find_module_check("reuse"), PENUMBRA_GLSL_DIR));
 }
 
 TEST_CASE("negative: reuse links that ignore the tile border fail, the tile property included") {
@@ -27,10 +25,7 @@ TEST_CASE("negative: reuse links that ignore the tile border fail, the tile prop
 }
 
 TEST_CASE("light_model: the GLSL widths equal the C++ light model") {
-  for (const auto& r : run_check(pn::find_module_check("light_model"), PENUMBRA_GLSL_DIR)) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    CHECK(r.comparison.pass);
-  }
+  check_all_pass(run_check(pn::find_module_check("light_model"), PENUMBRA_GLSL_DIR));
 }
 
 TEST_CASE("negative: a penumbra divided by the receiver depth instead of the blocker's fails the light_model check") {

@@ -10,6 +10,7 @@
 #include "passes/depth_pyramid_pass.h"
 
 using pn::test::BrokenCopy;
+using pn::test::check_all_pass;
 using pn::test::failing_cases;
 using pn::test::run_check;
 
@@ -17,19 +18,13 @@ using pn::test::run_check;
 TEST_CASE("pyramid: every level of every fixture and every square query equals the scans") {
   const auto results = run_check(pn::find_module_check("pyramid"), PENUMBRA_GLSL_DIR);
   REQUIRE(results.size() > 500);
-  for (const auto& r : results) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    CHECK(r.comparison.pass);
-  }
+  check_all_pass(results);
 }
 
 TEST_CASE("region: the literal and centred steps equal the CPU steps on every region") {
   const auto results = run_check(pn::find_module_check("region"), PENUMBRA_GLSL_DIR);
   REQUIRE(results.size() == 28);
-  for (const auto& r : results) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    CHECK(r.comparison.pass);
-  }
+  check_all_pass(results);
 }
 
 TEST_CASE("negative: a pyramid copy with a wrong child offset fails the pyramid check") {

@@ -5,23 +5,18 @@
 #include "broken_copy.h"
 
 using pn::test::BrokenCopy;
+using pn::test::check_all_pass;
 using pn::test::failing_cases;
 using pn::test::run_check;
 
 TEST_CASE("sample_table: strata, selection and scaling equal the paper's arithmetic") {
-  for (const auto& r : run_check(pn::find_module_check("sample_table"), PENUMBRA_GLSL_DIR)) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    CHECK(r.comparison.pass);
-  }
+  check_all_pass(run_check(pn::find_module_check("sample_table"), PENUMBRA_GLSL_DIR));
 }
 
 TEST_CASE("traversal: exact at leaf 1, sampled and min leaves and budgets equal the CPU recursion") {
   const auto results = run_check(pn::find_module_check("traversal"), PENUMBRA_GLSL_DIR);
   REQUIRE(results.size() > 150);
-  for (const auto& r : results) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    CHECK(r.comparison.pass);
-  }
+  check_all_pass(results);
 }
 
 TEST_CASE("negative: a traversal that counts a texel at exactly dP - bias as occluding fails the exact check") {
