@@ -10,16 +10,6 @@ GLenum pixel_format(int channels) {
   return formats[channels - 1];
 }
 
-}  // namespace
-
-GLenum float_format(int channels) {
-  static const GLenum formats[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
-  if (channels < 1 || channels > 4) throw Error("texture channels " + std::to_string(channels) + ": expected 1 to 4");
-  return formats[channels - 1];
-}
-
-namespace {
-
 void check_size(const Context& context, int width, int height) {
   GLint max_size = 0;
   context.gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
@@ -36,6 +26,12 @@ void set_nearest_clamped(const GladGLContext& gl, GLuint texture) {
 }
 
 }  // namespace
+
+GLenum float_format(int channels) {
+  static const GLenum formats[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+  if (channels < 1 || channels > 4) throw Error("texture channels " + std::to_string(channels) + ": expected 1 to 4");
+  return formats[channels - 1];
+}
 
 GlObject make_float_texture(const Context& context, int width, int height, int channels) {
   check_size(context, width, height);
@@ -71,19 +67,8 @@ GlObject upload_float_texture(const Context& context, const Image& image) {
 }
 
 Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels) {
-  Image image(width, height, channels);
-  const auto& gl = context.gl();
-  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  gl.GetTextureImage(texture.id(), 0, pixel_format(channels), GL_FLOAT,
-                     static_cast<GLsizei>(image.texels.size() * sizeof(float)), image.texels.data());
-  context.throw_if_gl_error("reading back a float texture");
-  return image;
+  return read_float_texture_layer(context, texture, 0, width, height, channels);
 }
-
-}  // namespace pn
-
-namespace pn {
 
 Image read_float_texture_layer(const Context& context, const GlObject& texture, int layer, int width, int height,
                                int channels) {
@@ -93,7 +78,7 @@ Image read_float_texture_layer(const Context& context, const GlObject& texture, 
   gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
   gl.GetTextureSubImage(texture.id(), 0, 0, 0, layer, width, height, 1, pixel_format(channels), GL_FLOAT,
                         static_cast<GLsizei>(image.texels.size() * sizeof(float)), image.texels.data());
-  context.throw_if_gl_error("reading back a layer of a float texture array");
+  context.throw_if_gl_error("reading back a float texture");
   return image;
 }
 
