@@ -16,19 +16,20 @@ std::string first_lines(const std::vector<Diagnostic>& diagnostics, const std::s
   return out;
 }
 
+GLenum shader_type(Stage stage) {
+  switch (stage) {
+    case Stage::vertex: return GL_VERTEX_SHADER;
+    case Stage::fragment: return GL_FRAGMENT_SHADER;
+    case Stage::compute: return GL_COMPUTE_SHADER;
+  }
+  return GL_COMPUTE_SHADER;
+}
+
 }  // namespace
 
-ComputeProgram::ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source)
-    : context_(&context), name_(name), program_(context, GlKind::program) {
+GlObject link_program(const Context& context, const std::string& name, const std::vector<const ShaderSource*>& stages) {
   const auto& gl = context.gl();
-  GlObject shader(context, GlKind::shader, GL_COMPUTE_SHADER);
-  const std::string driver_text = source.driver_text();
-  const char* text = driver_text.c_str();
-  gl.ShaderSource(shader.id(), 1, &text, nullptr);
-  gl.CompileShader(shader.id());
-  GLint ok = 0;
-  gl.GetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-  auto log_of = [&](GLuint id, bool is_program) {
+  const auto log_of = [&](GLuint id, bool is_program) {
     GLint length = 0;
     is_program ? gl.GetProgramiv(id, GL_INFO_LOG_LENGTH, &length) : gl.GetShaderiv(id, GL_INFO_LOG_LENGTH, &length);
     std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
@@ -36,24 +37,42 @@ ComputeProgram::ComputeProgram(const Context& context, const std::string& name, 
                : gl.GetShaderInfoLog(id, length, nullptr, log.data());
     return std::string(log.c_str());
   };
-  const std::string entry = source.files.empty() ? name : source.files.front();
-  const LocationMap by_physical_line = [&](int, int line) { return source.origin_of_line(line); };
-  if (!ok) {
-    const std::string log = log_of(shader.id(), false);
-    context.discard_gl_errors();  // the mapped log below says it better
-    throw Error(name + ": the GL driver rejected the pass:\n" +
-                    first_lines(parse_info_log(log, by_physical_line, entry), log),
-                ExitCode::failed);
+  GlObject program(context, GlKind::program);
+  std::vector<GlObject> shaders;
+  for (const ShaderSource* source : stages) {
+    GlObject shader(context, GlKind::shader, shader_type(source->stage));
+    const std::string driver_text = source->driver_text();
+    const char* text = driver_text.c_str();
+    gl.ShaderSource(shader.id(), 1, &text, nullptr);
+    gl.CompileShader(shader.id());
+    GLint ok = 0;
+    gl.GetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      const std::string log = log_of(shader.id(), false);
+      const std::string entry = source->files.empty() ? name : source->files.front();
+      const LocationMap by_physical_line = [&](int, int line) { return source->origin_of_line(line); };
+      context.discard_gl_errors();  // the mapped log below says it better
+      throw Error(name + ": the GL driver rejected the pass:\n" +
+                      first_lines(parse_info_log(log, by_physical_line, entry), log),
+                  ExitCode::failed);
+    }
+    gl.AttachShader(program.id(), shader.id());
+    shaders.push_back(std::move(shader));
   }
-  gl.AttachShader(program_.id(), shader.id());
-  gl.LinkProgram(program_.id());
-  gl.GetProgramiv(program_.id(), GL_LINK_STATUS, &ok);
+  gl.LinkProgram(program.id());
+  GLint ok = 0;
+  gl.GetProgramiv(program.id(), GL_LINK_STATUS, &ok);
   if (!ok) {
     context.discard_gl_errors();
-    throw Error(name + ": the GL driver could not link the pass: " + log_of(program_.id(), true), ExitCode::failed);
+    throw Error(name + ": the GL driver could not link the pass: " + log_of(program.id(), true), ExitCode::failed);
   }
-  gl.GetProgramiv(program_.id(), GL_COMPUTE_WORK_GROUP_SIZE, local_size_);
   context.throw_if_gl_error(name + ": building the program");
+  return program;
+}
+
+ComputeProgram::ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source)
+    : context_(&context), name_(name), program_(link_program(context, name, {&source})) {
+  context.gl().GetProgramiv(program_.id(), GL_COMPUTE_WORK_GROUP_SIZE, local_size_);
 }
 
 void ComputeProgram::dispatch(int width, int height) const {

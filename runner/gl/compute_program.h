@@ -1,14 +1,19 @@
-// A linked compute program built from a flattened pass (GL 4.50 wrapper);
-// driver diagnostics are mapped back to module files and lines.
+// Programs built from flattened passes (GL 4.50 wrapper); driver diagnostics
+// are mapped back to module files and lines.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "gl/objects.h"
 #include "shader/source_tree.h"
 #include "shader/target.h"
 
 namespace pn {
+
+// Compiles each stage (its type from ShaderSource::stage) and links them.
+// Throws Error(ExitCode::failed) naming `name` on a compile or link error.
+GlObject link_program(const Context& context, const std::string& name, const std::vector<const ShaderSource*>& stages);
 
 class ComputeProgram {
  public:

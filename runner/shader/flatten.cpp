@@ -111,8 +111,17 @@ std::string FlatSource::file_table_comment() const {
   return table;
 }
 
+Stage stage_of(const fs::path& file) {
+  const std::string ext = file.extension().string();
+  if (ext == ".vert") return Stage::vertex;
+  if (ext == ".frag") return Stage::fragment;
+  return Stage::compute;
+}
+
 FlatSource flatten(const SourceTree& tree, const fs::path& entry) {
-  return Flattener(tree).run(tree.locate(entry));
+  FlatSource flat = Flattener(tree).run(tree.locate(entry));
+  flat.stage = stage_of(entry);
+  return flat;
 }
 
 }  // namespace pn

@@ -13,10 +13,16 @@
 
 namespace pn {
 
+// The shader stage of a file, from its extension: .vert and .frag are
+// vertex and fragment passes; .comp passes and .glsl modules are compute.
+enum class Stage { compute, vertex, fragment };
+Stage stage_of(const std::filesystem::path& file);
+
 struct FlatSource {
   std::string text;                // flattened GLSL, no #version
   std::vector<std::string> files;  // file number → path relative to the glsl root
   bool has_main = false;           // the entry file (or an include) defines main()
+  Stage stage = Stage::compute;    // from the entry file's extension
 
   // "// #line file numbers:\n//   0 blur.glsl\n..." for the top of a bundle.
   std::string file_table_comment() const;

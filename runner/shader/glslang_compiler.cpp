@@ -25,7 +25,9 @@ std::vector<Diagnostic> validate_spirv(const std::vector<uint32_t>& spirv, const
 }  // namespace
 
 CompileResult compile_with_glslang(const GlslangProcess&, const ShaderSource& source, Target target) {
-  const EShLanguage stage = EShLangCompute;
+  const EShLanguage stage = source.stage == Stage::vertex     ? EShLangVertex
+                            : source.stage == Stage::fragment ? EShLangFragment
+                                                              : EShLangCompute;
   glslang::TShader shader(stage);
   const char* text = source.text.c_str();
   const int length = static_cast<int>(source.text.size());

@@ -1,5 +1,5 @@
-// glslang as the reference front end: compiles a ShaderSource as a compute
-// shader for one Target. GL 4.50 and ES 3.10 are parsed as glslangValidator
+// glslang as the reference front end: compiles a ShaderSource, for its stage
+// (compute, vertex or fragment), for one Target. GL 4.50 and ES 3.10 are parsed as glslangValidator
 // does without -V (client none: ordinary GLSL, as drivers see it); Vulkan is
 // parsed with Vulkan rules, translated to SPIR-V and validated by SPIRV-Tools.
 #pragma once

@@ -25,7 +25,8 @@ std::vector<fs::path> collect_glsl_files(const fs::path& path) {
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(path, ec)) {
     const std::string ext = entry.path().extension().string();
-    if (entry.is_regular_file() && (ext == ".glsl" || ext == ".comp")) files.push_back(entry.path());
+    if (entry.is_regular_file() && (ext == ".glsl" || ext == ".comp" || ext == ".vert" || ext == ".frag"))
+      files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   return files;

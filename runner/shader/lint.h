@@ -25,8 +25,8 @@ struct LintResult {
   std::vector<LintDiagnostic> diagnostics;  // identical messages from several targets merged
 };
 
-// The GLSL files under `path`: the file itself, or *.glsl and *.comp below a
-// directory, sorted. Throws Error when `path` does not exist.
+// The GLSL files under `path`: the file itself, or *.glsl, *.comp, *.vert and
+// *.frag below a directory, sorted. Throws Error when `path` does not exist.
 std::vector<std::filesystem::path> collect_glsl_files(const std::filesystem::path& path);
 
 LintResult lint_file(const GlslangProcess& process, const SourceTree& tree, const std::filesystem::path& file);

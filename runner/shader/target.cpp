@@ -81,6 +81,7 @@ ShaderSource standalone_source(const FlatSource& flat, Target target, const std:
   out.text += flat.file_table_comment();
   out.text += flat.text;
   out.files = flat.files;
+  out.stage = flat.stage;
   if (!flat.has_main) {
     out.text += "#line 1 " + std::to_string(out.files.size()) + "\n";
     out.text += "layout(local_size_x = 1) in;\nvoid main() {}\n";

@@ -28,6 +28,7 @@ struct Define {
 struct ShaderSource {
   std::string text;
   std::vector<std::string> files;
+  Stage stage = Stage::compute;
 
   // `text` with every `#line` marker blanked, for GL drivers: their logs
   // disagree on source-string numbers (Mesa prints 0 whatever `#line` says),
