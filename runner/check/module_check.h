@@ -48,5 +48,6 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env);
 
 }  // namespace pn

@@ -10,6 +10,9 @@ GlObject::GlObject(const Context& context, GlKind kind, GLenum target) : gl_(&co
     case GlKind::shader: id_ = gl_->CreateShader(target); break;
     case GlKind::program: id_ = gl_->CreateProgram(); break;
     case GlKind::query: gl_->CreateQueries(target, 1, &id_); break;
+    case GlKind::vertex_array: gl_->CreateVertexArrays(1, &id_); break;
+    case GlKind::framebuffer: gl_->CreateFramebuffers(1, &id_); break;
+    case GlKind::renderbuffer: gl_->CreateRenderbuffers(1, &id_); break;
   }
 }
 
@@ -21,6 +24,9 @@ void GlObject::release() {
     case GlKind::shader: gl_->DeleteShader(id_); break;
     case GlKind::program: gl_->DeleteProgram(id_); break;
     case GlKind::query: gl_->DeleteQueries(1, &id_); break;
+    case GlKind::vertex_array: gl_->DeleteVertexArrays(1, &id_); break;
+    case GlKind::framebuffer: gl_->DeleteFramebuffers(1, &id_); break;
+    case GlKind::renderbuffer: gl_->DeleteRenderbuffers(1, &id_); break;
   }
   id_ = 0;
 }

@@ -9,7 +9,7 @@
 
 namespace pn {
 
-enum class GlKind { texture, buffer, shader, program, query };
+enum class GlKind { texture, buffer, shader, program, query, vertex_array, framebuffer, renderbuffer };
 
 class GlObject {
  public:

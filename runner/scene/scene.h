@@ -1,0 +1,43 @@
+// A scene as geometry: axis-aligned boxes (the ground is one) and the area
+// light (SPEC §4.7) with its view and projection; and a CPU ray caster that
+// gives the shadow map's definition — the linear light depth of the nearest
+// surface through each texel centre — independently of rasterisation.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "scene/light_model.h"
+#include "scenes.h"
+
+namespace pn {
+
+struct Box {
+  glm::vec3 lo, hi;
+};
+
+struct Scene {
+  std::string name;
+  std::vector<Box> boxes;  // boxes[0] is the ground slab
+  LightModel light;        // width, planes, field of view, shadow-map size
+  glm::vec3 light_position{0.0f};
+
+  // Light space: looking down −y from light_position, +x right, +z "up" in the map.
+  glm::mat4 light_view() const;
+  glm::mat4 light_projection() const;  // OpenGL perspective, near/far from `light`
+
+  // Triangles of every box, 36 vertices a box, counter-clockwise seen from outside.
+  std::vector<glm::vec3> triangles() const;
+};
+
+// Throws Error for N < 2 or a light that does not validate.
+Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
+
+// Linear light depth (distance along the light's axis) of the nearest box
+// surface through the centre of shadow-map texel (x, y) — x, y counted from
+// the framebuffer's lower left, as glReadPixels returns them — or +Inf.
+float ray_cast_light_depth(const Scene& scene, int x, int y);
+
+}  // namespace pn
