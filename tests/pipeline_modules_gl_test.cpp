@@ -35,13 +35,20 @@ TEST_CASE("negative: a penumbra divided by the receiver depth instead of the blo
   CHECK(failing_cases(run_check(pn::find_module_check("light_model"), copy.root())) > 0);
 }
 
-TEST_CASE("shadow_map: each scene's rendered linear light depth equals the ray cast off silhouettes") {
+TEST_CASE("shadow_map: each scene's shadow map and G-buffer equal their ray casts off silhouettes") {
   check_all_pass(run_check(pn::find_module_check("shadow_map"), PENUMBRA_GLSL_DIR));
 }
 
 TEST_CASE("negative: a shadow map of window depth instead of linear light depth fails the shadow_map check") {
   const BrokenCopy copy("passes/shadow_depth.frag", "pnDepth = vec4(pnLinearDepth, 0.0, 0.0, 0.0);",
                         "pnDepth = vec4(gl_FragCoord.z, 0.0, 0.0, 0.0);");
+  REQUIRE(copy.found());
+  CHECK(failing_cases(run_check(pn::find_module_check("shadow_map"), copy.root())) > 0);
+}
+
+TEST_CASE("negative: a G-buffer with the light depth's sign flipped fails the shadow_map check") {
+  const BrokenCopy copy("passes/gbuffer.frag", "pnReceiver = vec4(texel, -view.z, 1.0);",
+                        "pnReceiver = vec4(texel, view.z, 1.0);");
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("shadow_map"), copy.root())) > 0);
 }

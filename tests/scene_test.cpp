@@ -37,3 +37,18 @@ TEST_CASE("ray cast: the texels at the map's centre see the tall blocker's top a
   CHECK(std::isinf(pn::ray_cast_light_depth(tall, 0, 0)));
   CHECK(pn::ray_cast_light_depth(tall, 8, 32) == Approx(20.0).epsilon(1e-6));
 }
+
+TEST_CASE("G-buffer definition: a pixel's ray-cast receiver lies on a surface it sees; a shifted one does not") {
+  const pn::Scene boxes = pn::make_scene(scene_named("boxes"), 256);
+  int checked = 0;
+  for (int y = 10; y < 256; y += 37)
+    for (int x = 10; x < 256; x += 41) {
+      const pn::Receiver r = pn::ray_cast_receiver(boxes, x, y, 256);
+      if (!r.valid) continue;
+      ++checked;
+      INFO("pixel " << x << ", " << y << ": u " << r.u << " v " << r.v << " depth " << r.depth);
+      CHECK(pn::receiver_on_surface_near_pixel(boxes, r.u, r.v, r.depth, x, y, 256, 1e-6));
+      CHECK_FALSE(pn::receiver_on_surface_near_pixel(boxes, r.u + 8.0, r.v, r.depth, x, y, 256, 1e-3));
+    }
+  CHECK(checked > 20);
+}

@@ -20,7 +20,7 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_reuse_check},
       {"light_model", "blocker-window, search-width and penumbra widths vs runner/scene/light_model.h",
        &run_light_model_check},
-      {"shadow_map", "rendered linear light depth of each scene vs a CPU ray cast through every texel centre",
+      {"shadow_map", "each scene's shadow map and G-buffer vs CPU ray casts through every texel / pixel centre",
        &run_shadow_map_check},
   };
   return checks;

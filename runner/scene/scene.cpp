@@ -18,6 +18,15 @@ glm::mat4 Scene::light_projection() const {
                           static_cast<float>(light.far_plane));
 }
 
+glm::mat4 Scene::camera_view() const {
+  const glm::vec3 eye(fixtures::kCameraPosition[0], fixtures::kCameraPosition[1], fixtures::kCameraPosition[2]);
+  return glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+}
+
+glm::mat4 Scene::camera_projection() const {
+  return glm::perspective(glm::radians(fixtures::kCameraFovDegrees), 1.0f, fixtures::kCameraNear, fixtures::kCameraFar);
+}
+
 std::vector<glm::vec3> Scene::triangles() const {
   std::vector<glm::vec3> out;
   for (const Box& b : boxes) {
@@ -68,21 +77,13 @@ Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size) {
   return scene;
 }
 
-float ray_cast_light_depth(const Scene& scene, int x, int y) {
-  const int n = scene.light.map_size;
-  // The texel centre on the near plane, back through the inverse projection and view.
-  const glm::vec4 ndc{(2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(n)) - 1.0f,
-                      (2.0f * (static_cast<float>(y) + 0.5f) / static_cast<float>(n)) - 1.0f, -1.0f, 1.0f};
-  const glm::mat4 inverse = glm::inverse(scene.light_projection() * scene.light_view());
-  glm::vec4 world = inverse * ndc;
-  world /= world.w;
-  // Ray with unit length along the light's axis (−y): parameter t = linear depth.
-  const glm::dvec3 origin(scene.light_position);
-  glm::dvec3 direction = glm::dvec3(world.x, world.y, world.z) - origin;
-  direction /= -direction.y;
+namespace {
+
+// Nearest box hit along origin + t·direction with t in [t_min, t_max]; +Inf when none.
+double nearest_hit(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max) {
   double nearest = std::numeric_limits<double>::infinity();
   for (const Box& b : scene.boxes) {  // slab test
-    double t0 = 0.0, t1 = nearest;
+    double t0 = 0.0, t1 = std::min(nearest, t_max);
     bool hit = true;
     for (int a = 0; a < 3 && hit; ++a) {
       const double lo = b.lo[a], hi = b.hi[a];
@@ -95,9 +96,68 @@ float ray_cast_light_depth(const Scene& scene, int x, int y) {
       t0 = std::max(t0, ta), t1 = std::min(t1, tb);
       hit = t0 <= t1;
     }
-    if (hit && t0 >= scene.light.near_plane && t0 <= scene.light.far_plane) nearest = std::min(nearest, t0);
+    if (hit && t0 >= t_min) nearest = std::min(nearest, t0);
   }
-  return static_cast<float>(nearest);
+  return nearest;
+}
+
+// The point on the near plane of view·projection through pixel centre (x, y) of a size×size target.
+glm::dvec3 through_pixel(const glm::mat4& view_projection, int x, int y, int size) {
+  const glm::vec4 ndc{(2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(size)) - 1.0f,
+                      (2.0f * (static_cast<float>(y) + 0.5f) / static_cast<float>(size)) - 1.0f, -1.0f, 1.0f};
+  glm::vec4 world = glm::inverse(view_projection) * ndc;
+  return glm::dvec3(world) / static_cast<double>(world.w);
+}
+
+}  // namespace
+
+float ray_cast_light_depth(const Scene& scene, int x, int y) {
+  const glm::dvec3 origin(scene.light_position);
+  const glm::dvec3 on_near = through_pixel(scene.light_projection() * scene.light_view(), x, y, scene.light.map_size);
+  // Unit length along the light's axis (−y): the ray parameter is the linear depth.
+  glm::dvec3 direction = on_near - origin;
+  direction /= -direction.y;
+  return static_cast<float>(nearest_hit(scene, origin, direction, scene.light.near_plane, scene.light.far_plane));
+}
+
+Receiver ray_cast_receiver(const Scene& scene, int x, int y, int size) {
+  const glm::dvec3 eye(fixtures::kCameraPosition[0], fixtures::kCameraPosition[1], fixtures::kCameraPosition[2]);
+  const glm::dvec3 on_near = through_pixel(scene.camera_projection() * scene.camera_view(), x, y, size);
+  const glm::dvec3 direction = on_near - eye;  // t = 1 on the near plane
+  const double t = nearest_hit(scene, eye, direction, 1.0, fixtures::kCameraFar / fixtures::kCameraNear);
+  Receiver r;
+  if (!std::isfinite(t)) return r;
+  const glm::dvec3 p = eye + t * direction;
+  const glm::dmat4 light_view(scene.light_view()), light_projection(scene.light_projection());
+  const glm::dvec4 view = light_view * glm::dvec4(p, 1.0);
+  const glm::dvec4 clip = light_projection * view;
+  r.valid = true;
+  r.u = (clip.x / clip.w * 0.5 + 0.5) * scene.light.map_size;
+  r.v = (clip.y / clip.w * 0.5 + 0.5) * scene.light.map_size;
+  r.depth = -view.z;
+  return r;
+}
+
+bool receiver_on_surface_near_pixel(const Scene& scene, double u, double v, double depth, int x, int y, int size,
+                                    double tolerance) {
+  // Back from the shadow map: NDC, light view space (x_ndc = P00 x_view / depth), world.
+  const glm::dmat4 projection(scene.light_projection());
+  const double nx = u / scene.light.map_size * 2.0 - 1.0, ny = v / scene.light.map_size * 2.0 - 1.0;
+  const glm::dvec4 view(nx * depth / projection[0][0], ny * depth / projection[1][1], -depth, 1.0);
+  const glm::dvec3 p = glm::dvec3(glm::inverse(glm::dmat4(scene.light_view())) * view);
+  bool on_surface = false;
+  for (const Box& b : scene.boxes) {
+    bool inside = true;
+    double nearest_face = INFINITY;
+    for (int a = 0; a < 3; ++a) {
+      inside = inside && p[a] >= b.lo[a] - tolerance && p[a] <= b.hi[a] + tolerance;
+      nearest_face = std::min({nearest_face, std::fabs(p[a] - b.lo[a]), std::fabs(p[a] - b.hi[a])});
+    }
+    on_surface = on_surface || (inside && nearest_face <= tolerance);
+  }
+  const glm::dvec4 clip = glm::dmat4(scene.camera_projection() * scene.camera_view()) * glm::dvec4(p, 1.0);
+  const double px = (clip.x / clip.w * 0.5 + 0.5) * size, py = (clip.y / clip.w * 0.5 + 0.5) * size;
+  return on_surface && std::fabs(px - (x + 0.5)) <= 1.0 && std::fabs(py - (y + 0.5)) <= 1.0;
 }
 
 }  // namespace pn

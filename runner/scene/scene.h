@@ -28,12 +28,34 @@ struct Scene {
   glm::mat4 light_view() const;
   glm::mat4 light_projection() const;  // OpenGL perspective, near/far from `light`
 
+  // The G-buffer's camera (fixtures/scenes.h), square screen.
+  glm::mat4 camera_view() const;
+  glm::mat4 camera_projection() const;
+
   // Triangles of every box, 36 vertices a box, counter-clockwise seen from outside.
   std::vector<glm::vec3> triangles() const;
 };
 
 // Throws Error for N < 2 or a light that does not validate.
 Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
+
+// What a screen pixel sees, in the shadow map's terms (Step 2): the shadow-map
+// position of the surface point through the pixel's centre, in texels
+// (continuous: texel i spans [i, i + 1)), and its linear light depth.
+struct Receiver {
+  bool valid = false;  // the pixel sees a surface
+  double u = 0, v = 0, depth = 0;
+};
+
+// The G-buffer's definition by ray casting from the camera through the centre
+// of pixel (x, y) of a size×size screen (x, y from the lower left).
+Receiver ray_cast_receiver(const Scene& scene, int x, int y, int size);
+
+// Whether a G-buffer value (u, v, light depth) names a point on some box's
+// surface (within `tolerance` world units) that the camera sees within one
+// pixel of pixel (x, y)'s centre: what a pixel on a silhouette may hold.
+bool receiver_on_surface_near_pixel(const Scene& scene, double u, double v, double depth, int x, int y, int size,
+                                    double tolerance);
 
 // Linear light depth (distance along the light's axis) of the nearest box
 // surface through the centre of shadow-map texel (x, y) — x, y counted from
