@@ -90,6 +90,12 @@ ComputeProgram compile_pass(const Context& context, const SourceTree& tree, cons
   return ComputeProgram(context, pass, standalone_source(flatten(tree, pass), Target::gl450, defines));
 }
 
+GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& stem) {
+  const ShaderSource vertex = standalone_source(flatten(tree, stem + ".vert"), Target::gl450);
+  const ShaderSource fragment = standalone_source(flatten(tree, stem + ".frag"), Target::gl450);
+  return link_program(context, stem, {&vertex, &fragment});
+}
+
 GlObject bind_uniform_buffer(const Context& context, GLuint binding, const void* data, size_t size) {
   GlObject buffer(context, GlKind::buffer);
   context.gl().NamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(size), data, 0);

@@ -4,15 +4,11 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "passes/scene_draw.h"
-#include "shader/flatten.h"
 
 namespace pn {
 
-GBufferRenderer::GBufferRenderer(const Context& context, const SourceTree& tree) : context_(&context) {
-  const ShaderSource vertex = standalone_source(flatten(tree, "passes/gbuffer.vert"), Target::gl450);
-  const ShaderSource fragment = standalone_source(flatten(tree, "passes/gbuffer.frag"), Target::gl450);
-  program_ = link_program(context, "passes/gbuffer", {&vertex, &fragment});
-}
+GBufferRenderer::GBufferRenderer(const Context& context, const SourceTree& tree)
+    : context_(&context), program_(link_raster_pass(context, tree, "passes/gbuffer")) {}
 
 GlObject GBufferRenderer::render(const Scene& scene, int screen_size) const {
   struct {

@@ -6,15 +6,11 @@
 
 #include "passes/scene_draw.h"
 #include "gl/texture.h"
-#include "shader/flatten.h"
 
 namespace pn {
 
-ShadowMapRenderer::ShadowMapRenderer(const Context& context, const SourceTree& tree) : context_(&context) {
-  const ShaderSource vertex = standalone_source(flatten(tree, "passes/shadow_depth.vert"), Target::gl450);
-  const ShaderSource fragment = standalone_source(flatten(tree, "passes/shadow_depth.frag"), Target::gl450);
-  program_ = link_program(context, "passes/shadow_depth", {&vertex, &fragment});
-}
+ShadowMapRenderer::ShadowMapRenderer(const Context& context, const SourceTree& tree)
+    : context_(&context), program_(link_raster_pass(context, tree, "passes/shadow_depth")) {}
 
 GlObject ShadowMapRenderer::render(const Scene& scene) const {
   struct {
