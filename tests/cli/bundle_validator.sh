@@ -1,14 +1,18 @@
 #!/bin/sh
-# bundle_validator.sh PENUMBRA GLSLANG_VALIDATOR OUT_DIR DATA_DIR
-# Every module and pass bundles, for each target, into a file that Debian's
-# glslangValidator compiles on its own; a failing bundle leaves no file.
+# bundle_validator.sh PENUMBRA GLSLANG_VALIDATOR OUT_DIR DATA_DIR GLSL_DIR
+# Every module and pass under GLSL_DIR bundles, for each target, into a file
+# that Debian's glslangValidator compiles on its own; a failing bundle leaves no file.
 set -u
-penumbra=$1 validator=$2 out=$3 data=$4
+penumbra=$1 validator=$2 out=$3 data=$4 glsl=$5
 rm -rf "$out" && mkdir -p "$out" || exit 1
 status=0
-for module in blur.glsl passes/blur.comp; do
+modules=$(cd "$glsl" && find . -name '*.glsl' -o -name '*.comp' -o -name '*.vert' -o -name '*.frag' | sed 's|^\./||' | sort)
+[ -n "$modules" ] || { echo "no modules under $glsl"; exit 1; }
+for module in $modules; do
+  stage=comp
+  case $module in *.vert) stage=vert ;; *.frag) stage=frag ;; esac
   for target in gl450 es310 vulkan; do
-    file="$out/$(echo "$module" | tr / _).$target.comp"
+    file="$out/$(echo "$module" | tr / _).$target.$stage"
     "$penumbra" bundle "$module" --target "$target" -o "$file" || { echo "bundle $module $target failed"; status=1; continue; }
     flag=""; [ "$target" = vulkan ] && flag="-V -o $out/spv"
     if ! "$validator" $flag "$file"; then echo "glslangValidator rejected $file"; status=1; fi
