@@ -39,3 +39,10 @@ TEST_CASE("negative: a sample table selection with the wrong set rule fails the 
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("sample_table"), copy.root())) > 0);
 }
+
+TEST_CASE("negative: a stateless generator that forgets to scale the sub-stratum fails the sample_table check") {
+  const BrokenCopy copy("correlated_multi_jitter.glsl", "(float(column) + (float(sy) + jx) / float(un)) / float(um)",
+                        "(float(column) + (float(sy) + jx)) / float(um)");
+  REQUIRE(copy.found());
+  CHECK(failing_cases(run_check(pn::find_module_check("sample_table"), copy.root())) > 0);
+}

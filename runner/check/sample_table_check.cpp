@@ -1,9 +1,11 @@
 // Cases of the sample_table check: the uploaded table is multi-jittered in
-// every set and group (CPU property), and the shader's §3.2 selection and
-// scaling equal the paper's arithmetic for every pixel residue, region side
-// 0…40 and sample index.
+// every set and group (CPU property); the shader's §3.2 selection and scaling
+// equal the paper's arithmetic for every pixel residue, region side 0…40 and
+// sample index; and the stateless option (correlated_multi_jitter.glsl) gives
+// multi-jittered groups of 1, 4, 16 and 64 for every set of three seeds.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include <string>
 
 #include "check/module_check.h"
@@ -16,13 +18,13 @@ namespace {
 
 constexpr std::uint32_t kTableSeed = 0x5eed0005u;
 
-// For the group of n² samples of one set: how many samples fall in each thin
-// column, thin row and cell (3 n² counts; all must be 1).
-Image stratum_counts(const SampleTable& table, int set, int first_column, int n) {
+// For a group of n² samples: how many fall in each thin column, thin row and
+// cell (3 n² counts; all must be 1).
+Image stratum_counts(const std::vector<Sample>& group, int n) {
   const int count = n * n;
   Image counts(3 * count, 1);
   for (int i = 0; i < count; ++i) {
-    const Sample& s = table.at(first_column + i, set);
+    const Sample& s = group[static_cast<size_t>(i)];
     const int column = static_cast<int>(std::floor(s.x * count)), row = static_cast<int>(std::floor(s.y * count));
     const int cell = static_cast<int>(std::floor(s.y * n)) * n + static_cast<int>(std::floor(s.x * n));
     if (column >= 0 && column < count) counts.at(column, 0) += 1;
@@ -40,7 +42,9 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
   std::vector<CaseResult> results;
   for (int set = 0; set < SampleTable::kSets; ++set)
     for (auto [n, first] : {std::pair{1, 0}, std::pair{2, 1}, std::pair{4, 5}}) {
-      const Image counts = stratum_counts(table, set, first, n);
+      std::vector<Sample> group;
+      for (int i = 0; i < n * n; ++i) group.push_back(table.at(first + i, set));
+      const Image counts = stratum_counts(group, n);
       results.push_back({"set " + std::to_string(set) + ", " + std::to_string(n * n) +
                              " samples: one per thin column, thin row and cell",
                          exact, compare(Image(counts.width, 1, 1, 1.0f), counts, exact)});
@@ -83,6 +87,50 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
                      compare(expected_a, read_float_texture(env.context, result_a, input.width, input.height, 4), exact)});
   results.push_back({"selected sample's column and its texel in a region of that side", exact,
                      compare(expected_b, read_float_texture(env.context, result_b, input.width, input.height, 4), exact)});
+
+  // The stateless generator: every (seed, k, set) group multi-jittered.
+  std::vector<Query> cmj;
+  for (int seed : {1, 2, 12345})
+    for (int k = 0; k <= 3; ++k)
+      for (int set = 0; set < SampleTable::kSets; ++set)
+        for (int i = 0; i < (1 << (2 * k)); ++i) cmj.push_back({float(k), float(i), float(set), float(seed)});
+  const Image cmj_input = query_image(cmj);
+  const GlObject cmj_queries = upload_float_texture(env.context, cmj_input);
+  const GlObject cmj_result = make_float_texture(env.context, cmj_input.width, cmj_input.height, 4);
+  const ComputeProgram cmj_program = compile_pass(env.context, env.tree, "passes/cmj_query.comp");
+  gl.BindTextureUnit(0, cmj_queries.id());
+  gl.BindImageTexture(2, cmj_result.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  cmj_program.dispatch(cmj_input.width, cmj_input.height);
+  const Image positions = read_float_texture(env.context, cmj_result, cmj_input.width, cmj_input.height, 4);
+  size_t at = 0;
+  for (int seed : {1, 2, 12345})
+    for (int k = 0; k <= 3; ++k) {
+      const int n = 1 << k;
+      std::vector<Image> per_set;
+      std::vector<std::pair<float, float>> firsts;
+      for (int set = 0; set < SampleTable::kSets; ++set) {
+        std::vector<Sample> group;
+        for (int i = 0; i < n * n; ++i, ++at) {
+          const int x = static_cast<int>(at) % cmj_input.width, y = static_cast<int>(at) / cmj_input.width;
+          group.push_back({positions.at(x, y, 0), positions.at(x, y, 1)});
+        }
+        firsts.emplace_back(group.front().x, group.front().y);
+        per_set.push_back(stratum_counts(group, n));
+      }
+      // All sets of this seed and k side by side: every count must be 1.
+      Image all(per_set.front().width * SampleTable::kSets, 1);
+      for (int set = 0; set < SampleTable::kSets; ++set)
+        for (int i = 0; i < per_set.front().width; ++i) all.at(set * per_set.front().width + i, 0) = per_set[static_cast<size_t>(set)].at(i, 0);
+      results.push_back({"stateless (Kensler) seed " + std::to_string(seed) + ", " + std::to_string(n * n) +
+                             " samples, 8 sets: one per thin column, thin row and cell",
+                         exact, compare(Image(all.width, 1, 1, 1.0f), all, exact)});
+      // Independent sets: the first sample differs in every set.
+      std::sort(firsts.begin(), firsts.end());
+      const auto distinct = std::unique(firsts.begin(), firsts.end()) - firsts.begin();
+      results.push_back({"stateless (Kensler) seed " + std::to_string(seed) + ", " + std::to_string(n * n) +
+                             " samples: the 8 sets' first samples are all different",
+                         exact, compare(Image(1, 1, 1, 8.0f), Image(1, 1, 1, static_cast<float>(distinct)), exact)});
+    }
   return results;
 }
 
