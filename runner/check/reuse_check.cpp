@@ -11,8 +11,8 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/seeded_random.h"
-#include "gl/compute_program.h"
 #include "gl/texture.h"
+#include "passes/reuse_pass.h"
 #include "reference/reuse_reference.h"
 
 namespace pn {
@@ -40,9 +40,7 @@ Image region_map(int w, int h, std::uint32_t seed) {
 }  // namespace
 
 std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
-  const ComputeProgram link = compile_pass(env.context, env.tree, "passes/reuse_link.comp");
-  const ComputeProgram gather = compile_pass(env.context, env.tree, "passes/reuse_gather.comp");
-  const auto& gl = env.context.gl();
+  const ReusePass pass(env.context, env.tree);
   const Tolerance exact = Tolerance::exact();
   std::vector<CaseResult> results;
   struct Size { int w, h; };
@@ -54,30 +52,11 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
     for (float& v : values.texels) v = random.uniform_float(0.0f, 1.0f);
     const GlObject entry_texture = upload_float_texture(env.context, entries);
     const GlObject value_texture = upload_float_texture(env.context, values);
-    const GlObject parents = make_float_texture(env.context, size.w, size.h, 1);
-    const GlObject gathered = make_float_texture(env.context, size.w, size.h, 4);
     for (ReuseParams params : {ReuseParams{0.0f, 0.1f, 0.1f, 4}, ReuseParams{0.0f, 0.1f, 0.1f, 2},
                                ReuseParams{0.0f, 0.1f, 0.1f, 8}, ReuseParams{0.0f, 0.0f, 0.0f, 4},
                                ReuseParams{0.5f, 0.3f, 0.3f, 4}}) {
-      // std140 blocks PnReuseParams and PnReuseGatherParams.
-      const struct {
-        float sigma1, sigma2, sigma3;
-        std::int32_t tile;
-      } link_block{params.sigma1, params.sigma2, params.sigma3, params.tile};
-      const std::int32_t tile_block[4] = {params.tile, 0, 0, 0};
-      {
-        GlObject ubo = bind_uniform_buffer(env.context, 3, &link_block, sizeof link_block);
-        gl.BindTextureUnit(0, entry_texture.id());
-        gl.BindImageTexture(2, parents.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        link.dispatch(size.w, size.h);
-      }
-      {
-        GlObject ubo = bind_uniform_buffer(env.context, 3, tile_block, sizeof tile_block);
-        gl.BindTextureUnit(0, parents.id());
-        gl.BindTextureUnit(1, value_texture.id());
-        gl.BindImageTexture(2, gathered.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        gather.dispatch(size.w, size.h);
-      }
+      const GlObject parents = pass.link(entry_texture, size.w, size.h, params);
+      const GlObject gathered = pass.gather(parents, value_texture, size.w, size.h, params.tile);
       const Image observed_parents = read_float_texture(env.context, parents, size.w, size.h, 1);
       const Image observed = read_float_texture(env.context, gathered, size.w, size.h, 4);
 

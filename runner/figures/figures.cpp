@@ -9,11 +9,11 @@
 #include "core/error.h"
 #include "figures/canvas.h"
 #include "fixture/texture_fixture.h"
-#include "gl/compute_program.h"
 #include "gl/texture.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/region_pass.h"
+#include "passes/reuse_pass.h"
 #include "passes/traversal_pass.h"
 #include "reference/region_reference.h"
 
@@ -184,32 +184,14 @@ void reuse_figure(const Context& context, const SourceTree& tree, const fs::path
       entries.at(x, y, 2) = std::floor((y + 0.5f) * 0.75f) + 0.5f + 20.0f;
       entries.at(x, y, 3) = std::exp2(std::round(3.0f + std::sin((x - y) / 15.0f)));
     }
-  const ComputeProgram link = compile_pass(context, tree, "passes/reuse_link.comp");
-  const ComputeProgram gather = compile_pass(context, tree, "passes/reuse_gather.comp");
+  const ReusePass pass(context, tree);
   const GlObject entry_texture = upload_float_texture(context, entries);
   const GlObject values = make_float_texture(context, n, n, 1);
-  const GlObject parents = make_float_texture(context, n, n, 1);
-  const GlObject gathered = make_float_texture(context, n, n, 4);
-  const auto& gl = context.gl();
   Canvas canvas(2 * n * scale + 3 * gap, n * scale + 2 * gap, kPaper);
   int column = 0;
   for (int tile : {4, 2}) {
-    const struct {
-      float sigma1, sigma2, sigma3;
-      std::int32_t tile;
-    } link_block{0.0f, 0.1f, 0.1f, tile};
-    const std::int32_t gather_block[4] = {tile, 0, 0, 0};
-    {
-      GlObject ubo = bind_uniform_buffer(context, 3, &link_block, sizeof link_block);
-      gl.BindTextureUnit(0, entry_texture.id());
-      gl.BindImageTexture(2, parents.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-      link.dispatch(n, n);
-    }
-    GlObject ubo = bind_uniform_buffer(context, 3, gather_block, sizeof gather_block);
-    gl.BindTextureUnit(0, parents.id());
-    gl.BindTextureUnit(1, values.id());
-    gl.BindImageTexture(2, gathered.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gather.dispatch(n, n);
+    const GlObject parents = pass.link(entry_texture, n, n, {0.0f, 0.1f, 0.1f, tile});
+    const GlObject gathered = pass.gather(parents, values, n, n, tile);
     const Image groups = read_float_texture(context, gathered, n, n, 4);
     const int x0 = gap + column * (n * scale + gap);
     for (int y = 0; y < n; ++y)

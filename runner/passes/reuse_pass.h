@@ -1,0 +1,27 @@
+// Runner side of glsl/passes/reuse_link.comp and reuse_gather.comp: parent
+// codes for a map of entries, then every pixel's representative and the value
+// it takes from it.
+#pragma once
+
+#include "gl/compute_program.h"
+#include "reference/reuse_reference.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+class ReusePass {
+ public:
+  ReusePass(const Context& context, const SourceTree& tree);
+
+  // R32F parent codes (0 none, 1 left, 2 top) of a width × height RGBA32F (d, x, y, s) entry texture.
+  GlObject link(const GlObject& entries, int width, int height, const ReuseParams& params) const;
+
+  // RGBA32F (representative x, y, value at the representative, 0) for every pixel.
+  GlObject gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram link_, gather_;
+};
+
+}  // namespace pn
