@@ -27,7 +27,7 @@ std::vector<TraversalQuery> ground_receivers(const Image& map, int count) {
   for (int k = 0; k < count; ++k) {
     const float x = random.uniform_float(0.0f, static_cast<float>(n)), y = random.uniform_float(0.0f, static_cast<float>(n));
     const float side = std::exp2(random.uniform_float(4.0f, 8.0f));
-    const float ground = boxes.b - 0.5f * (boxes.b - boxes.a) * (y / static_cast<float>(n - 1));
+    const float ground = boxes_ground_depth(boxes, y, n);
     const RegionWindow w = region_reference(x, y, side, n);
     queries.push_back({{w.u, w.v, w.side, w.side}, ground + 0.002f, k % 64, k / 64});
   }

@@ -34,10 +34,7 @@ std::vector<BlurCase> default_cases() {
 // weights come from float exp() and a float division, so the result is within
 // a few ulps per tap of max |v|; 16 ulps per tap is a generous, stated bound.
 Tolerance blur_tolerance(const BlurParams& params, const Image& source) {
-  float largest = 1.0f;
-  for (float v : source.texels)
-    if (std::isfinite(v)) largest = std::max(largest, std::fabs(v));
-  return Tolerance::absolute(16.0 * (2 * params.radius + 1) * FLT_EPSILON * largest);
+  return Tolerance::absolute(16.0 * (2 * params.radius + 1) * FLT_EPSILON * largest_finite_magnitude(source, 1.0f));
 }
 
 std::string case_name(const char* fixture, int w, int h, const BlurCase& c) {

@@ -24,13 +24,6 @@ constexpr int kAllSquaresSizes[] = {2, 3, 8, 13};
 constexpr int kRandomSquaresSizes[] = {64, 100, 257, 512};
 constexpr int kRandomSquares = 1000;
 
-float largest_finite(const Image& map) {
-  float m = FLT_MIN;
-  for (float d : map.texels)
-    if (std::isfinite(d)) m = std::max(m, std::fabs(d));
-  return m;
-}
-
 std::string label(const char* fixture, int n) { return std::string(fixture) + " " + std::to_string(n) + "x" + std::to_string(n); }
 
 // The module's documented clamp of a square query: side into [1, N], origin so the square fits.
@@ -81,7 +74,7 @@ std::vector<CaseResult> run_pyramid_check(const CheckEnvironment& env) {
       const Image map = generate_fixture(fixture, n, n);
       const GlObject map_texture = upload_float_texture(env.context, map);
       const DepthPyramid pyramid = builder.build(map_texture, n, n, 31);
-      const float m = largest_finite(map);
+      const float m = largest_finite_magnitude(map, FLT_MIN);
       for (int level = 0; level < pyramid.levels; ++level) {
         const int size = n - (1 << level) + 1;
         const Image observed = read_float_texture_layer(env.context, pyramid.texture, level, size, size, 4);

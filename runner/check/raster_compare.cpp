@@ -45,10 +45,7 @@ std::vector<CaseResult> compare_raster(const std::string& name, const Image& exp
       for (int c = 0; c < channels; ++c) masked_expected.at(x, y, c) = masked_observed.at(x, y, c) = 0.0f;
     }
   // The off-silhouette bound as one absolute number: `relative` of the largest finite value.
-  double largest = 1.0;
-  for (float v : expected.texels)
-    if (std::isfinite(v)) largest = std::max(largest, static_cast<double>(std::fabs(v)));
-  const Tolerance off = Tolerance::absolute(relative * largest);
+  const Tolerance off = Tolerance::absolute(relative * largest_finite_magnitude(expected, 1.0f));
   return {{name + " off silhouettes (" + std::to_string(silhouette) + " silhouette pixels)", off,
            compare(masked_expected, masked_observed, off)},
           {name + ": every silhouette pixel " + rule, Tolerance::exact(),

@@ -106,8 +106,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     scene.map = generate_fixture(fixture, kMapSize, kMapSize);
     scene.depth = sanitized_depths(scene.map);
     scene.pyramid = builder.build(upload_float_texture(env.context, scene.map), kMapSize, kMapSize, 31);
-    for (float d : scene.depth.texels)
-      if (std::isfinite(d)) scene.largest = std::max(scene.largest, std::fabs(d));
+    scene.largest = largest_finite_magnitude(scene.depth, FLT_MIN);
 
     // Exact: leaf side 1, power-of-two windows and exact regions, against brute force.
     std::vector<Rect> regions;

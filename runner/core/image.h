@@ -2,6 +2,8 @@
 // back into, and what references compute. Row-major, origin top-left (SPEC §3).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -25,6 +27,14 @@ struct Image {
     return (static_cast<size_t>(y) * width + x) * channels + c;
   }
 };
+
+// max(floor, the largest |v| over the finite texels): the scale of float-rounding bounds.
+inline float largest_finite_magnitude(const Image& image, float floor) {
+  float largest = floor;
+  for (float v : image.texels)
+    if (std::isfinite(v)) largest = std::max(largest, std::fabs(v));
+  return largest;
+}
 
 // Channels [first, first + count) of `image`, as an image of their own.
 inline Image channels_of(const Image& image, int first, int count) {

@@ -143,7 +143,7 @@ void traversal_figure(const Context& context, const SourceTree& tree, const fs::
   std::vector<TraversalQuery> queries;
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
-      const float ground = boxes.b - 0.5f * (boxes.b - boxes.a) * (static_cast<float>(y) / (n - 1));
+      const float ground = boxes_ground_depth(boxes, static_cast<float>(y), n);
       const RegionWindow w = region_reference(x + 0.5f, y + 0.5f, 32.0f, n);
       queries.push_back({{w.u, w.v, w.side, w.side}, ground + 0.002f, x, y});
     }
