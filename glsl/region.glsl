@@ -27,6 +27,11 @@
 //   PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize)   option: same side s',
 //            origin round(centre - s'/2) clamped into the map, so the window stays
 //            centred on the original region instead of its clamped top-left corner
+//   PnRect pnRegionSquare(vec2 centre, float side, int mapSize)   the exact region (no
+//            approximation, for exact PCSS and the "exact region" mode): n = max(1, round(s))
+//            texels a side, the n×n block whose texel centres are nearest (x, y) —
+//            origin floor(centre - n/2 + 0.5) — clipped to the map; empty when it
+//            lies wholly outside (a receiver outside the light's frustum).
 //   int pnRegionRoundPow2(int w)       Steps 3–4 for one extent (w >= 1)
 //   int pnRegionLargestPow2(int n)     E
 //   PnWindow { ivec2 origin; int side; int level; }: origin + side <= N on both axes.
@@ -40,6 +45,11 @@ struct PnWindow {
   ivec2 origin;
   int side;
   int level;
+};
+
+struct PnRect {
+  ivec2 origin;
+  ivec2 size;  // 0 on an axis where the region misses the map
 };
 
 int pnRegionLargestPow2(int n) {
@@ -93,6 +103,17 @@ PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize) {
   vec2 c = vec2(pnRegionFiniteOrZero(centre.x), pnRegionFiniteOrZero(centre.y));
   vec2 origin = clamp(floor(c - float(sp) * 0.5 + 0.5), vec2(0.0), vec2(float(e - sp)));
   return PnWindow(ivec2(origin), sp, findMSB(sp));
+}
+
+PnRect pnRegionSquare(vec2 centre, float side, int mapSize) {
+  float e = float(max(mapSize, 1));
+  // Clamped while float: an infinite side covers the map, never overflows an int.
+  float n = clamp(round(max(pnRegionFiniteOrZero(side), 0.0)), 1.0, 4.0 * e);
+  vec2 c = clamp(vec2(pnRegionFiniteOrZero(centre.x), pnRegionFiniteOrZero(centre.y)), vec2(-4.0 * e), vec2(5.0 * e));
+  vec2 lo = floor(c - 0.5 * n + 0.5);
+  vec2 start = clamp(lo, vec2(0.0), vec2(e));
+  vec2 end = clamp(lo + n, start, vec2(e));
+  return PnRect(ivec2(start), ivec2(end - start));
 }
 
 #endif  // PENUMBRA_REGION_GLSL

@@ -9,7 +9,10 @@ layout(std140, binding = 0) uniform PnGBufferParams {
   mat4 cameraViewProjection;
   mat4 lightView;
   mat4 lightProjection;
+  vec4 cameraPosition;
   float mapSize;
+  float normalOffset;
+  float texelPerDepth;
 } pnParams;
 
 void main() {

@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   pn::cli::GlobalOptions global;
   int exit_code = 0;
+  pn::cli::add_render_command(app, global, exit_code);
   pn::cli::add_lint_command(app, global, exit_code);
   pn::cli::add_bundle_command(app, global, exit_code);
   pn::cli::add_check_command(app, global, exit_code);

@@ -45,4 +45,13 @@ inline Image channels_of(const Image& image, int first, int count) {
   return out;
 }
 
+// The rows in reverse order: GL's bottom-up framebuffer rows as a top-down picture.
+inline Image flip_rows(const Image& image) {
+  Image out(image.width, image.height, image.channels);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < image.channels; ++c) out.at(x, y, c) = image.at(x, image.height - 1 - y, c);
+  return out;
+}
+
 }  // namespace pn

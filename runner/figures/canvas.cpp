@@ -49,6 +49,18 @@ void Canvas::grey(const Image& image, int channel, int x, int y, int scale, floa
   }
 }
 
+void Canvas::rgb(const Image& image, int x, int y, int scale) {
+  for (int v = 0; v < image.height; ++v)
+    for (int u = 0; u < image.width; ++u) {
+      Rgb colour;
+      for (int c = 0; c < 3; ++c) {
+        const float value = image.at(u, v, std::min(c, image.channels - 1));
+        colour[c] = static_cast<unsigned char>(std::lround(255.0f * std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f)));
+      }
+      fill(x + u * scale, y + v * scale, scale, scale, colour);
+    }
+}
+
 void Canvas::write_png(const std::filesystem::path& path) const {
   std::string png;
   const auto append = [](void* out, void* data, int size) {

@@ -25,6 +25,9 @@ class Canvas {
   // non-finite values are drawn in `nonfinite`.
   void grey(const Image& image, int channel, int x, int y, int scale, float lo, float hi, Rgb nonfinite);
 
+  // Draws a 3-channel image of values in [0, 1] (clamped), each texel a scale×scale block.
+  void rgb(const Image& image, int x, int y, int scale);
+
   // Throws Error naming the path when it cannot be written.
   void write_png(const std::filesystem::path& path) const;
 

@@ -85,6 +85,18 @@ void ComputeProgram::dispatch(int width, int height) const {
   context_->throw_if_gl_error(name_ + ": dispatch");
 }
 
+void ComputeProgram::dispatch_indirect(const GlObject& buffer) const {
+  const auto& gl = context_->gl();
+  gl.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  gl.UseProgram(program_.id());
+  gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffer.id());
+  gl.DispatchComputeIndirect(0);
+  gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                   GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  context_->throw_if_gl_error(name_ + ": indirect dispatch");
+}
+
 ComputeProgram compile_pass(const Context& context, const SourceTree& tree, const std::string& pass,
                             const std::vector<Define>& defines) {
   return ComputeProgram(context, pass, standalone_source(flatten(tree, pass), Target::gl450, defines));

@@ -24,6 +24,10 @@ class ComputeProgram {
   // whole work groups) and waits for image writes to become visible.
   void dispatch(int width, int height) const;
 
+  // Runs the number of work groups held by the first three uints of `buffer`
+  // (glDispatchComputeIndirect), after making earlier shader writes to it visible.
+  void dispatch_indirect(const GlObject& buffer) const;
+
   GLuint id() const { return program_.id(); }
 
  private:

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "gl/objects.h"
@@ -23,6 +25,22 @@ class GpuTimer {
  private:
   const Context* context_;
   GlObject begin_, end_;
+};
+
+// GPU time of consecutive stages of one run, without waiting between them: a
+// GL_TIMESTAMP query at each stage boundary, read back once at the end.
+class StageClock {
+ public:
+  explicit StageClock(const Context& context);
+  void start();                        // marks the beginning of the first stage
+  void stage(const std::string& name);  // marks the end of the stage `name`
+  // (name, GPU milliseconds) of every stage in order; waits for the GPU.
+  std::vector<std::pair<std::string, double>> read() const;
+
+ private:
+  const Context* context_;
+  std::vector<GlObject> marks_;
+  std::vector<std::string> names_;
 };
 
 // Median of a non-empty list (the mean of the two middle values for an even count).

@@ -11,7 +11,9 @@ namespace pn {
 class GBufferRenderer {
  public:
   GBufferRenderer(const Context& context, const SourceTree& tree);
-  GlObject render(const Scene& scene, int screen_size) const;  // RGBA32F, rows from the bottom
+  // RGBA32F, rows from the bottom. normal_offset_texels > 0: the point moved
+  // off its face by that many shadow-map texels first (gbuffer.frag).
+  GlObject render(const Scene& scene, int screen_size, float normal_offset_texels = 0.0f) const;
 
  private:
   const Context* context_;

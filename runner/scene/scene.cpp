@@ -41,6 +41,15 @@ std::vector<glm::vec3> Scene::triangles() const {
   return out;
 }
 
+const fixtures::SceneFixture& find_scene_fixture(const std::string& name) {
+  std::string known;
+  for (const auto& fixture : fixtures::kScenes) {
+    if (name == fixture.name) return fixture;
+    known += (known.empty() ? "" : ", ") + std::string(fixture.name);
+  }
+  throw Error("unknown scene '" + name + "': expected one of " + known);
+}
+
 Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size) {
   using namespace fixtures;
   Scene scene;
@@ -71,7 +80,7 @@ Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size) {
       break;
     }
     case SceneKind::tall_blocker:
-      scene.boxes.push_back({{-1.0f, 0.0f, -1.0f}, {1.0f, 12.0f, 1.0f}});
+      scene.boxes.push_back({{-1.0f, 0.0f, -1.0f}, {1.0f, 10.0f, 1.0f}});
       break;
   }
   return scene;

@@ -36,6 +36,9 @@ struct Scene {
   std::vector<glm::vec3> triangles() const;
 };
 
+// The fixture called `name` (fixtures::kScenes); throws Error listing the names.
+const fixtures::SceneFixture& find_scene_fixture(const std::string& name);
+
 // Throws Error for N < 2 or a light that does not validate.
 Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
 

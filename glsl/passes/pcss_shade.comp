@@ -1,0 +1,27 @@
+// pcss_shade.comp — end of Step 5: each pixel takes the occluded fraction of
+// its representative (reuse.glsl; itself without reuse); visibility = 1 -
+// fraction, 1 for a lit entry. This is the soft-shadow map before the blur.
+//   binding 2: filter map (sampler2D)           binding 3: visibility (image2D, r32f) out
+//   binding 4: parent codes (sampler2D, R32F)   binding 7: PnPcssParams
+//   binding 5: occlusion results (sampler2D)
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 2) uniform sampler2D pnFilterMap;
+layout(binding = 4) uniform sampler2D pnParents;
+layout(binding = 5) uniform sampler2D pnOcclusion;
+layout(r32f, binding = 3) writeonly uniform image2D pnVisibility;
+
+#include "pcss_params.glsl"
+#include "pcss_regions.glsl"
+#include "reuse.glsl"
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
+  ivec2 r = pnPcss.reuseTile > 0 ? pnReuseRepresentative(pnParents, p, pnPcss.reuseTile) : p;
+  vec4 result = texelFetch(pnOcclusion, r, 0);
+  bool lit = pnEntryLit(texelFetch(pnFilterMap, r, 0)) || pnEntryLit(texelFetch(pnFilterMap, p, 0));
+  float fraction = (!lit && result.z > 0.0) ? result.x / result.z : 0.0;
+  imageStore(pnVisibility, p, vec4(1.0 - fraction));
+}

@@ -1,0 +1,37 @@
+// pcss_traverse.comp — Steps 4 and 5 by traversal (traversal.glsl) over each
+// entry's region: the exact rectangle or a region.glsl window (pcss_regions.glsl).
+// Result per computed pixel: (occluders, depth sum, texels, nodes visited).
+//   binding 0: pyramid (sampler2DArray)     binding 3: result (image2D, rgba32f)
+//   binding 1: sample table (sampler2D)     binding 4 / SSBO 0: pcss_work.glsl
+//   binding 2: entries (sampler2D, rgba32f) binding 7: PnPcssParams
+
+layout(binding = 0) uniform sampler2DArray pnPyramid;
+layout(binding = 1) uniform sampler2D pnSampleTable;
+layout(binding = 2) uniform sampler2D pnEntries;
+layout(rgba32f, binding = 3) writeonly uniform image2D pnResult;
+
+#include "pcss_params.glsl"
+#include "pcss_regions.glsl"
+#include "pcss_work.glsl"
+#include "traversal.glsl"
+
+void main() {
+  ivec2 p;
+  if (!pnWorkPixel(imageSize(pnResult), p)) return;
+  vec4 entry = texelFetch(pnEntries, p, 0);
+  if (pnEntryLit(entry)) {
+    imageStore(pnResult, p, vec4(0.0));
+    return;
+  }
+  int n = pnPyramidMapSize(pnPyramid);
+  PnTraversal r;
+  if (pnPcss.regionMode == PN_REGION_EXACT) {
+    PnRect rect = pnEntryRect(entry, n);
+    r = pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, pnPcss.leafSide,
+                         pnPcss.leafMode, pnPcss.nodeBudget, p);
+  } else {
+    r = pnTraverseWindow(pnPyramid, pnSampleTable, pnEntryWindow(entry, n, pnPcss.regionMode), entry.x, pnPcss.bias, pnPcss.leafSide,
+                         pnPcss.leafMode, pnPcss.nodeBudget, p);
+  }
+  imageStore(pnResult, p, vec4(r.occluders, r.depthSum, r.texels, float(r.nodes)));
+}

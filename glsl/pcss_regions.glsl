@@ -1,0 +1,106 @@
+// pcss_regions.glsl — the search and filter regions of PCSS (Steps 3 and 4
+// of Fast PCSS), as (d, x, y, s) entries of the search- and filter-region maps.
+//
+// description:
+//   Seed 000 §1, SPEC §4.7. An entry is (receiver light depth d, region
+//   centre x, y in shadow-map texels, region side s in texels); s < 0
+//   (PN_REGION_LIT) marks a pixel known to be lit: no region, nothing to do.
+//   Step 3 — search region: PCSS's blocker-search width for d (blockers as
+//   near as the near plane, light_model.glsl), then, when refining (HQEPCSS),
+//   repeated at most `iterations` times:
+//     zmin = min depth of the region (the pyramid, 4 fetches);
+//     zmin >= d - bias            -> nothing in the region occludes: lit;
+//     s' = width a blocker at zmin needs (light_model.glsl);
+//     s' >= s                     -> stop; else s = s' and repeat.
+//   The width is decreasing in the blocker depth, so every blocker that can
+//   shadow the receiver (depth >= the true zmin) lies in the shrunk region
+//   as long as zmin is the min of a square covering the region: the exact
+//   mode reads the square that covers pnRegionSquare's rectangle, which makes
+//   refinement lossless; the window modes read the region.glsl window, which
+//   can be smaller than the region (the paper's approximation).
+//   Step 4 — filter region: from the blocker mean dz (Step 4's traversal),
+//   penumbra by Eq. (1) in texels at the receiver (light_model.glsl), side
+//   s = c · penumbra; no blocker -> lit.
+//   A pixel without a surface, a NaN depth, or a region that misses the map
+//   is lit. A zero-size light gives s = 0: one texel, a hard shadow.
+//
+// use:
+//   vec4  pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias,
+//                       int iterations, int regionMode)          receiver = G-buffer (u, v, d, valid)
+//   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
+//   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
+//   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
+//   bool  pnEntryLit(vec4 entry)
+//   regionMode: PN_REGION_WINDOW (the paper's Steps 1-7), PN_REGION_EXACT (pnRegionSquare),
+//               PN_REGION_CENTRED (the window's side, centred on the region: pnRegionApproximateCentred)
+//
+// options:
+//   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement
+//
+// cost: search entry: 4 fetches per refinement iteration; filter entry: ALU only.
+
+#ifndef PENUMBRA_PCSS_REGIONS_GLSL
+#define PENUMBRA_PCSS_REGIONS_GLSL
+
+#include "depth_pyramid.glsl"
+#include "light_model.glsl"
+#include "region.glsl"
+
+#ifndef PN_REFINE_MAX_ITERATIONS
+#define PN_REFINE_MAX_ITERATIONS 16
+#endif
+
+#define PN_REGION_LIT -1.0
+
+#define PN_REGION_WINDOW 0
+#define PN_REGION_EXACT 1
+#define PN_REGION_CENTRED 2
+
+bool pnEntryLit(vec4 entry) {
+  return !(entry.w >= 0.0);
+}
+
+PnRect pnEntryRect(vec4 entry, int mapSize) {
+  return pnRegionSquare(entry.yz, entry.w, mapSize);
+}
+
+PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode) {
+  if (regionMode == PN_REGION_CENTRED) return pnRegionApproximateCentred(entry.yz, entry.w, mapSize);
+  return pnRegionApproximate(entry.yz, entry.w, mapSize);
+}
+
+// Min depth over a square that covers the region (exact), or over its window (literal).
+float pnSearchRegionMin(sampler2DArray pyramid, vec4 entry, int regionMode) {
+  int n = pnPyramidMapSize(pyramid);
+  if (regionMode == PN_REGION_EXACT) {
+    PnRect r = pnEntryRect(entry, n);
+    if (r.size.x == 0 || r.size.y == 0) return pnPyramidFar();
+    return pnPyramidSquareMinMax(pyramid, r.origin, max(r.size.x, r.size.y)).x;
+  }
+  PnWindow w = pnEntryWindow(entry, n, regionMode);
+  return pnPyramidSquareMinMax(pyramid, w.origin, w.side).x;
+}
+
+vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations,
+                   int regionMode) {
+  float d = receiver.z;
+  if (receiver.w == 0.0 || isnan(d)) return vec4(0.0, 0.0, 0.0, PN_REGION_LIT);
+  vec4 entry = vec4(d, receiver.xy, pnLightSearchWidthTexels(light, d));
+  for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
+    if (i >= iterations) break;
+    float zmin = pnSearchRegionMin(pyramid, entry, regionMode);
+    if (!(zmin < d - bias)) return vec4(entry.xyz, PN_REGION_LIT);
+    float side = pnLightBlockerWindowTexels(light, d, zmin);
+    if (!(side < entry.w)) break;
+    entry.w = side;
+  }
+  return entry;
+}
+
+vec4 pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale) {
+  if (pnEntryLit(searchEntry) || !hasBlocker) return vec4(searchEntry.xyz, PN_REGION_LIT);
+  float side = scale * pnLightPenumbraTexels(light, searchEntry.x, blockerMean);
+  return vec4(searchEntry.xyz, (side >= 0.0 && !isinf(side)) ? side : 0.0);
+}
+
+#endif  // PENUMBRA_PCSS_REGIONS_GLSL

@@ -1,0 +1,201 @@
+#include "pipeline/pcss_settings.h"
+
+#include <cmath>
+#include <exception>
+
+#include "core/error.h"
+#include "core/format.h"
+
+namespace pn {
+
+void PcssSettings::validate() const {
+  const auto bad = [&](const std::string& what, double v, const char* expected) {
+    return Error(name + ": " + what + " " + format_number("%g", v) + ": expected " + expected);
+  };
+  if (!std::isfinite(bias) || bias < 0) throw bad("bias", bias, "a finite number >= 0");
+  if (!std::isfinite(filter_scale) || filter_scale < 0) throw bad("filter scale", filter_scale, "a finite number >= 0");
+  if (refine_iterations < 0 || refine_iterations > 16) throw bad("refine iterations", refine_iterations, "0..16");
+  if (leaf_side < 1 || leaf_side > 8192) throw bad("leaf side", leaf_side, "1..8192");
+  if (node_budget < 1) throw bad("node budget", node_budget, ">= 1");
+  if (search_tile < 0 || search_tile > 16) throw bad("search reuse tile", search_tile, "0 (off) or 1..16");
+  if (filter_tile < 0 || filter_tile > 16) throw bad("filter reuse tile", filter_tile, "0 (off) or 1..16");
+  for (float s : {sigma1, sigma2, sigma3})
+    if (!(s >= 0) || !std::isfinite(s)) throw bad("similarity bound", s, "a finite number >= 0");
+  if (blocker_samples < 1 || blocker_samples > 64) throw bad("blocker samples", blocker_samples, "1..64");
+  if (filter_samples < 1 || filter_samples > 64) throw bad("filter samples", filter_samples, "1..64");
+  if (blur) blur_params.validate();
+}
+
+PcssSettings exact_pcss() {
+  PcssSettings s;
+  s.name = "exact";
+  s.refine_iterations = 0;
+  s.region = RegionMode::exact;
+  s.blockers = s.occlusion = Estimator::scan;
+  s.search_tile = s.filter_tile = 0;
+  s.blur = false;
+  return s;
+}
+
+PcssSettings poisson_pcss() {
+  PcssSettings s = exact_pcss();
+  s.name = "poisson";
+  s.blockers = s.occlusion = Estimator::poisson;
+  return s;
+}
+
+PcssSettings hqepcss() {
+  PcssSettings s = exact_pcss();
+  s.name = "hqepcss";
+  s.refine_iterations = PcssSettings{}.refine_iterations;
+  s.region = RegionMode::window;
+  s.blockers = Estimator::traversal;
+  s.leaf_mode = LeafMode::min;
+  return s;
+}
+
+PcssSettings fast_pcss() {
+  PcssSettings s;
+  s.name = "fast";
+  return s;
+}
+
+PcssSettings fast_pcss_all_off() {
+  PcssSettings s = fast_pcss();
+  s.name = "fast-all-off";
+  s.refine_iterations = 0;
+  s.leaf_side = 1;
+  s.search_tile = s.filter_tile = 0;
+  s.region = RegionMode::exact;
+  s.blur = false;
+  return s;
+}
+
+std::vector<PcssSettings> fast_pcss_ablations() {
+  std::vector<PcssSettings> out;
+  const auto add = [&](const char* name, auto change) {
+    PcssSettings s = fast_pcss();
+    s.name = name;
+    change(s);
+    out.push_back(s);
+  };
+  add("fast-no-refine", [](PcssSettings& s) { s.refine_iterations = 0; });
+  add("fast-leaf-1", [](PcssSettings& s) { s.leaf_side = 1; });
+  add("fast-no-reuse", [](PcssSettings& s) { s.search_tile = s.filter_tile = 0; });
+  add("fast-reuse-branch", [](PcssSettings& s) { s.skip = WorkSkip::branch; });
+  add("fast-exact-region", [](PcssSettings& s) { s.region = RegionMode::exact; });
+  add("fast-centred-region", [](PcssSettings& s) { s.region = RegionMode::centred; });
+  add("fast-no-blur", [](PcssSettings& s) { s.blur = false; });
+  out.push_back(fast_pcss_all_off());
+  return out;
+}
+
+std::vector<PcssSettings> pcss_methods() { return {exact_pcss(), poisson_pcss(), hqepcss(), fast_pcss()}; }
+
+namespace {
+
+void apply_override(PcssSettings& s, const std::string& key, const std::string& value) {
+  const auto bad = [&](const char* expected) {
+    return Error("method '" + s.name + "': " + key + "=" + value + ": expected " + expected);
+  };
+  const auto integer = [&] {
+    try {
+      size_t used = 0;
+      const int v = std::stoi(value, &used);
+      if (used == value.size()) return v;
+    } catch (const std::exception&) {
+    }
+    throw bad("an integer");
+  };
+  const auto real = [&] {
+    try {
+      size_t used = 0;
+      const float v = std::stof(value, &used);
+      if (used == value.size()) return v;
+    } catch (const std::exception&) {
+    }
+    throw bad("a number");
+  };
+  const auto on_off = [&] {
+    if (value == "on") return true;
+    if (value == "off") return false;
+    throw bad("on or off");
+  };
+  const auto estimator = [&] {
+    if (value == "scan") return Estimator::scan;
+    if (value == "traversal") return Estimator::traversal;
+    if (value == "poisson") return Estimator::poisson;
+    throw bad("scan, traversal or poisson");
+  };
+  if (key == "refine") s.refine_iterations = integer();
+  else if (key == "region") {
+    if (value == "window") s.region = RegionMode::window;
+    else if (value == "exact") s.region = RegionMode::exact;
+    else if (value == "centred") s.region = RegionMode::centred;
+    else throw bad("window, exact or centred");
+  } else if (key == "leaf") s.leaf_side = integer();
+  else if (key == "leaf-mode") {
+    if (value == "sampled") s.leaf_mode = LeafMode::sampled;
+    else if (value == "min") s.leaf_mode = LeafMode::min;
+    else throw bad("sampled or min");
+  } else if (key == "budget") s.node_budget = integer();
+  else if (key == "reuse") {
+    const bool on = on_off();
+    s.search_tile = on ? 4 : 0;
+    s.filter_tile = on ? 2 : 0;
+  } else if (key == "search-tile") s.search_tile = integer();
+  else if (key == "filter-tile") s.filter_tile = integer();
+  else if (key == "skip") {
+    if (value == "list") s.skip = WorkSkip::list;
+    else if (value == "branch") s.skip = WorkSkip::branch;
+    else throw bad("list or branch");
+  } else if (key == "blur") s.blur = on_off();
+  else if (key == "blur-radius") s.blur_params.radius = integer();
+  else if (key == "blur-sigma") s.blur_params.sigma = real();
+  else if (key == "bias") s.bias = real();
+  else if (key == "c") s.filter_scale = real();
+  else if (key == "sigma1") s.sigma1 = real();
+  else if (key == "sigma2") s.sigma2 = real();
+  else if (key == "sigma3") s.sigma3 = real();
+  else if (key == "blockers") s.blockers = estimator();
+  else if (key == "occlusion") s.occlusion = estimator();
+  else if (key == "blocker-samples") s.blocker_samples = integer();
+  else if (key == "filter-samples") s.filter_samples = integer();
+  else
+    throw Error("method '" + s.name + "': unknown setting '" + key +
+                "': expected refine, region, leaf, leaf-mode, budget, reuse, search-tile, filter-tile, skip, blur, "
+                "blur-radius, blur-sigma, bias, c, sigma1, sigma2, sigma3, blockers, occlusion, blocker-samples, "
+                "filter-samples");
+}
+
+PcssSettings named_method(const std::string& name) {
+  std::string known;
+  std::vector<PcssSettings> all = pcss_methods();
+  for (const PcssSettings& s : fast_pcss_ablations()) all.push_back(s);
+  for (const PcssSettings& s : all) {
+    if (s.name == name) return s;
+    known += (known.empty() ? "" : ", ") + s.name;
+  }
+  throw Error("unknown method '" + name + "': expected one of " + known);
+}
+
+}  // namespace
+
+PcssSettings pcss_method(const std::string& spec) {
+  size_t colon = spec.find(':');
+  PcssSettings s = named_method(spec.substr(0, colon));
+  if (colon == std::string::npos) return s;
+  s.name = spec;
+  while (colon != std::string::npos) {
+    const size_t next = spec.find(':', colon + 1);
+    const std::string item = spec.substr(colon + 1, next == std::string::npos ? std::string::npos : next - colon - 1);
+    const size_t equals = item.find('=');
+    if (equals == std::string::npos) throw Error("method '" + spec + "': '" + item + "': expected key=value");
+    apply_override(s, item.substr(0, equals), item.substr(equals + 1));
+    colon = next;
+  }
+  s.validate();
+  return s;
+}
+
+}  // namespace pn

@@ -1,0 +1,79 @@
+// What a PCSS run computes: every technique of SPEC §4.8 is one PcssSettings
+// over the same passes (runner/pipeline/pcss_pipeline.h), so exact PCSS,
+// Poisson PCSS, HQEPCSS and Fast PCSS differ only in these switches.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "reference/blur_reference.h"
+#include "reference/traversal_reference.h"
+
+namespace pn {
+
+// How Steps 4 and 5 estimate a region.
+enum class Estimator {
+  scan,       // every texel (exact PCSS)
+  traversal,  // quadtree over the pyramid (traversal.glsl)
+  poisson,    // fixed Poisson-disk samples (Poisson PCSS)
+};
+
+// Which texels stand for a region of centre (x, y) and side s (pcss_regions.glsl).
+enum class RegionMode {
+  window = 0,    // the paper's power-of-two window, Steps 1-7 literally (region.glsl)
+  exact = 1,     // the n×n texels nearest the centre, n = round(s) (no approximation)
+  centred = 2,   // the window's side, centred on (x, y) (pnRegionApproximateCentred)
+};
+
+// How the GPU skips the reuse scheme's non-representatives (pcss_work.glsl).
+enum class WorkSkip {
+  branch,  // every pixel dispatched, non-representatives return at once
+  list,    // representatives compacted into a list, dispatched indirectly
+};
+
+struct PcssSettings {
+  std::string name;
+  float bias = 0.02f;          // world units of light depth: d occludes when d < dP - bias
+  float filter_scale = 1.0f;   // c: filter side = c · penumbra (Step 4)
+  int refine_iterations = 8;   // Step 3 refinement with the pyramid; 0 = off (PCSS's width)
+  RegionMode region = RegionMode::window;
+  Estimator blockers = Estimator::traversal;  // Step 4
+  Estimator occlusion = Estimator::traversal; // Step 5
+  int leaf_side = 8;           // traversal leaves; 1 = exact (sampled leaves off)
+  LeafMode leaf_mode = LeafMode::sampled;
+  int node_budget = 1 << 26;   // per pixel (traversal.glsl): unbounded by default
+  int search_tile = 4;         // reuse k for Step 4; 0 = no reuse
+  int filter_tile = 2;         // reuse k for Step 5; 0 = no reuse
+  float sigma1 = 0.0f, sigma2 = 0.1f, sigma3 = 0.1f;  // Eq. 7 (§5.2 defaults)
+  WorkSkip skip = WorkSkip::list;
+  int blocker_samples = 36;    // Poisson PCSS
+  int filter_samples = 64;
+  bool blur = true;            // Step 6
+  BlurParams blur_params;      // radius 3 (§5.3)
+
+  // Throws Error naming the setting and its accepted range.
+  void validate() const;
+};
+
+PcssSettings exact_pcss();    // brute force over the whole search and filter regions
+PcssSettings poisson_pcss();  // 36 blocker / 64 PCF Poisson-disk samples
+PcssSettings hqepcss();       // refined search, min-estimated leaves for blockers, brute-force PCF
+PcssSettings fast_pcss();     // seed 000 with the paper's defaults
+
+// Fast PCSS with one improvement off at a time, then all of them off (which
+// must equal exact PCSS: the wiring check).
+std::vector<PcssSettings> fast_pcss_ablations();
+PcssSettings fast_pcss_all_off();
+
+// The four techniques, in the order of every table.
+std::vector<PcssSettings> pcss_methods();
+
+// By name ("exact", "poisson", "hqepcss", "fast", or an ablation's name),
+// optionally followed by overrides ":key=value" (e.g. "fast:leaf=4:blur=off",
+// keys as in PcssSettings: refine, region, leaf, leaf-mode, budget, reuse,
+// search-tile, filter-tile, skip, blur, blur-radius, blur-sigma, bias, c,
+// sigma1..3, blockers, occlusion, blocker-samples, filter-samples).
+// Throws Error naming the method, the setting and what it expects.
+PcssSettings pcss_method(const std::string& spec);
+
+}  // namespace pn

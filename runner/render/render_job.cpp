@@ -1,0 +1,95 @@
+#include "render/render_job.h"
+
+#include <iomanip>
+#include <map>
+
+#include "core/error.h"
+#include "figures/canvas.h"
+#include "gl/gpu_timer.h"
+#include "gl/texture.h"
+#include "metrics/ssim.h"
+#include "pipeline/pcss_pipeline.h"
+#include "scene/scene.h"
+
+namespace pn {
+namespace {
+
+void validate(const RenderSetup& s) {
+  find_scene_fixture(s.scene);
+  if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
+  if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
+  if (s.light_samples < 1 || s.light_samples > 64) throw Error("light samples " + std::to_string(s.light_samples) + ": expected 1..64 per side");
+  if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
+  if (s.methods.empty()) throw Error("no methods to render");
+  for (const PcssSettings& m : s.methods) m.validate();
+}
+
+void write_grey(const Image& image, const std::filesystem::path& path) {
+  Canvas canvas(image.width, image.height, {0, 0, 0});
+  canvas.grey(flip_rows(image), 0, 0, 0, 1, 0.0f, 1.0f, {255, 0, 255});
+  canvas.write_png(path);
+}
+
+}  // namespace
+
+RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup) {
+  validate(setup);
+  const Scene scene = make_scene(find_scene_fixture(setup.scene), setup.map_size);
+  const PcssPipeline pipeline(context, tree);
+  const PcssInputs inputs = pipeline.render_inputs(scene, setup.screen_size);
+  const int size = setup.screen_size;
+
+  std::vector<Image> shadows;
+  RenderResult result;
+  for (const PcssSettings& method : setup.methods) {
+    std::vector<double> times;
+    PcssFrame frame;
+    for (int r = 0; r < setup.repeats; ++r) {
+      frame = pipeline.run(inputs, method);
+      times.push_back(frame.total_ms());
+    }
+    const PcssStats stats = pipeline.stats(frame);
+    shadows.push_back(read_float_texture(context, frame.soft_shadow(), size, size, 1));
+    RenderRow row;
+    row.method = method.name;
+    row.gpu_ms = median(times);
+    row.representative_fraction = stats.representative_fraction();
+    row.work_per_receiver = stats.work_per_receiver();
+    row.stages = frame.stages;
+    result.rows.push_back(row);
+  }
+  // SSIM against the first method that is exact PCSS, when one was rendered.
+  int exact = -1;
+  for (size_t i = 0; i < setup.methods.size(); ++i)
+    if (setup.methods[i].name == exact_pcss().name && exact < 0) exact = static_cast<int>(i);
+  std::filesystem::create_directories(setup.out);
+  for (size_t i = 0; i < shadows.size(); ++i) {
+    result.rows[i].ssim_exact = exact >= 0 ? ssim(shadows[exact], shadows[i]) : 0.0;
+    const auto path = setup.out / (setup.scene + "_" + setup.methods[i].name + "_shadow.png");
+    write_grey(shadows[i], path);
+    result.written.push_back(path);
+  }
+  return result;
+}
+
+void print_render_table(std::ostream& out, const RenderSetup& setup, const RenderResult& result, bool stages) {
+  out << "scene " << setup.scene << ", shadow map " << setup.map_size << "x" << setup.map_size << ", screen "
+      << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats << " runs\n";
+  out << std::left << std::setw(20) << "method" << std::right << std::setw(12) << "GPU ms" << std::setw(12)
+      << "SSIM exact" << std::setw(14) << "SSIM physical" << std::setw(10) << "repr." << std::setw(12)
+      << "work/px" << "\n";
+  for (const RenderRow& r : result.rows)
+    out << std::left << std::setw(20) << r.method << std::right << std::fixed << std::setprecision(2) << std::setw(12)
+        << r.gpu_ms << std::setprecision(4) << std::setw(12) << r.ssim_exact << std::setw(14) << r.ssim_physical
+        << std::setprecision(3) << std::setw(10) << r.representative_fraction << std::setprecision(1)
+        << std::setw(12) << r.work_per_receiver << "\n";
+  if (stages)
+    for (const RenderRow& r : result.rows) {
+      out << r.method << ":";
+      for (const auto& [name, ms] : r.stages) out << "  " << name << " " << std::fixed << std::setprecision(2) << ms;
+      out << "\n";
+    }
+  out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace pn
