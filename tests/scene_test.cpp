@@ -27,11 +27,11 @@ TEST_CASE("scenes: the ground plus their occluders, 36 vertices a box, the light
   CHECK_THROWS_WITH(pn::make_scene(scene_named("boxes"), 1), Catch::Contains("shadow map size 1"));
 }
 
-TEST_CASE("ray cast: the texels at the map's centre see the tall blocker's top at depth 20 - 12 = 8") {
+TEST_CASE("ray cast: the texels at the map's centre see the tall blocker's top at depth 20 - 10 = 10") {
   const pn::Scene tall = pn::make_scene(scene_named("tall_blocker"), 64);
   // Texel centres (31.5, 31.5) and (32.5, 32.5) are 0.5 texel from the axis: still on the 2x2 top.
-  CHECK(pn::ray_cast_light_depth(tall, 31, 31) == Approx(8.0).epsilon(1e-6));
-  CHECK(pn::ray_cast_light_depth(tall, 32, 32) == Approx(8.0).epsilon(1e-6));
+  CHECK(pn::ray_cast_light_depth(tall, 31, 31) == Approx(10.0).epsilon(1e-6));
+  CHECK(pn::ray_cast_light_depth(tall, 32, 32) == Approx(10.0).epsilon(1e-6));
   // A corner texel sees the ground (depth 20) or beyond it nothing: the ground spans +-10 at depth 20,
   // the view +-20 tan(30 deg) = +-11.5.
   CHECK(std::isinf(pn::ray_cast_light_depth(tall, 0, 0)));

@@ -8,6 +8,8 @@
 //   binding 2: entries (sampler2D, rgba32f)            binding 7: PnPcssParams
 //   binding 8: PnPoissonDisk (std140): points in the unit disk, count = sampleCount
 
+layout(local_size_x = 64) in;  // pcss_work.glsl
+
 layout(binding = 0) uniform sampler2DArray pnPyramid;
 layout(binding = 2) uniform sampler2D pnEntries;
 layout(rgba32f, binding = 3) writeonly uniform image2D pnResult;

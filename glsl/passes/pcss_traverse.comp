@@ -5,6 +5,8 @@
 //   binding 1: sample table (sampler2D)     binding 4 / SSBO 0: pcss_work.glsl
 //   binding 2: entries (sampler2D, rgba32f) binding 7: PnPcssParams
 
+layout(local_size_x = 64) in;  // pcss_work.glsl
+
 layout(binding = 0) uniform sampler2DArray pnPyramid;
 layout(binding = 1) uniform sampler2D pnSampleTable;
 layout(binding = 2) uniform sampler2D pnEntries;

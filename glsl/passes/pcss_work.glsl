@@ -6,16 +6,17 @@
 //                   work group still runs: the saving depends on whole groups);
 //   PN_WORK_LIST    one per representative, from the list pcss_compact.comp
 //                   appended (dispatched indirectly: no idle invocations).
-// Invocations are 64 wide in x; a pixel index i is (i mod W, i div W).
+// The including pass declares layout(local_size_x = 64) in; (the runner
+// dispatches 64-wide groups, and the list's header counts groups of 64);
+// a pixel index i is (i mod W, i div W).
 //   binding 4: parent codes (sampler2D, R32F; reuse.glsl)
 //   SSBO binding 0: PnWorkList (dispatch-indirect header, count, pixels)
 
 #ifndef PENUMBRA_PCSS_WORK_GLSL
 #define PENUMBRA_PCSS_WORK_GLSL
 
+#include "pcss_params.glsl"
 #include "reuse.glsl"
-
-layout(local_size_x = 64) in;
 
 layout(binding = 4) uniform sampler2D pnParents;
 layout(std430, binding = 0) readonly buffer PnWorkList {

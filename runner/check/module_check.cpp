@@ -22,6 +22,10 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_light_model_check},
       {"shadow_map", "each scene's shadow map and G-buffer vs CPU ray casts through every texel / pixel centre",
        &run_shadow_map_check},
+      {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
+       &run_pipeline_check},
+      {"physical_reference", "averaged hard shadows from 4x4 light sample points vs CPU segment tests to each point",
+       &run_physical_reference_check},
   };
   return checks;
 }

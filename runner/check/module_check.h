@@ -49,5 +49,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_physical_reference_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env);
 
 }  // namespace pn

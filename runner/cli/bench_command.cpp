@@ -1,6 +1,7 @@
 #include <ctime>
 #include <iostream>
 
+#include "bench/pipeline_bench.h"
 #include "bench/pyramid_bench.h"
 #include "bench/traversal_bench.h"
 #include "cli/commands.h"
@@ -15,14 +16,18 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::vector<int> sizes{512, 1024, 2048};
     int repeats = 15;
     TraversalBenchSetup traversal;
+    PipelineBenchSetup pipeline;
+    std::vector<std::string> methods;
     int max_level = 31;
     std::string json;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
-  cmd->add_option("what", opt->what, "pyramid | traversal")->required();
-  cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048)")->delimiter(',');
-  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal)");
+  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline")->required();
+  auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline: map = screen sizes (default 512 1024)")->delimiter(',');
+  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline)");
+  cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
+  cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: all four and every Fast PCSS ablation)")->delimiter(',');
   cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)");
   cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)");
   cmd->add_option("--receivers", opt->traversal.receivers, "traversal: receivers in the batch (default 4096)");
@@ -30,9 +35,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->callback([opt, repeats, &global, &exit_code] {
-    if (opt->what != "pyramid" && opt->what != "traversal")
-      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal");
+  cmd->callback([opt, repeats, sizes, &global, &exit_code] {
+    if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline")
+      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline");
+    for (const std::string& name : opt->methods) opt->pipeline.methods.push_back(pcss_method(name));
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "
@@ -42,6 +48,12 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const auto rows = bench_pyramid(*context, tree, opt->sizes, opt->repeats, opt->max_level);
       print_pyramid_bench(std::cout, rows);
       results = pyramid_bench_json(rows);
+    } else if (opt->what == "pipeline") {
+      if (repeats->count() > 0) opt->pipeline.repeats = opt->repeats;
+      if (sizes->count() > 0) opt->pipeline.sizes = opt->sizes;
+      const auto rows = bench_pipeline(*context, tree, opt->pipeline);
+      print_pipeline_bench(std::cout, rows);
+      results = pipeline_bench_json(opt->pipeline, rows);
     } else {
       if (repeats->count() > 0) opt->traversal.repeats = opt->repeats;
       const auto rows = bench_traversal(*context, tree, opt->traversal);

@@ -295,4 +295,21 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
   return s;
 }
 
+PcssMeasurement PcssPipeline::measure(const PcssInputs& inputs, const PcssSettings& settings, int repeats) const {
+  if (repeats < 1) throw Error("repeats " + std::to_string(repeats) + ": expected >= 1");
+  PcssMeasurement m;
+  std::vector<double> totals;
+  std::vector<std::vector<double>> stages;
+  for (int r = 0; r < repeats; ++r) {
+    m.frame = run(inputs, settings);
+    totals.push_back(m.frame.total_ms());
+    stages.resize(m.frame.stages.size());
+    for (size_t i = 0; i < m.frame.stages.size(); ++i) stages[i].push_back(m.frame.stages[i].second);
+  }
+  m.total_ms = median(totals);
+  for (size_t i = 0; i < stages.size(); ++i) m.stage_ms.emplace_back(m.frame.stages[i].first, median(stages[i]));
+  m.stats = stats(m.frame);
+  return m;
+}
+
 }  // namespace pn

@@ -61,6 +61,14 @@ struct PcssStats {
   double work_per_receiver() const;
 };
 
+// Repeated runs of one technique: the last frame, medians of the GPU times, its stats.
+struct PcssMeasurement {
+  PcssFrame frame;
+  double total_ms = 0.0;
+  std::vector<std::pair<std::string, double>> stage_ms;
+  PcssStats stats;
+};
+
 class PcssPipeline {
  public:
   PcssPipeline(const Context& context, const SourceTree& tree);
@@ -72,6 +80,9 @@ class PcssPipeline {
   PcssFrame run(const PcssInputs& inputs, const PcssSettings& settings) const;
 
   PcssStats stats(const PcssFrame& frame) const;
+
+  // `repeats` >= 1 runs; medians of the total and of each stage.
+  PcssMeasurement measure(const PcssInputs& inputs, const PcssSettings& settings, int repeats) const;
 
  private:
   void estimate(const PcssFrame& frame, const PcssInputs& inputs, const GlObject& entries, const GlObject* parents,

@@ -42,20 +42,14 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
   std::vector<Image> shadows;
   RenderResult result;
   for (const PcssSettings& method : setup.methods) {
-    std::vector<double> times;
-    PcssFrame frame;
-    for (int r = 0; r < setup.repeats; ++r) {
-      frame = pipeline.run(inputs, method);
-      times.push_back(frame.total_ms());
-    }
-    const PcssStats stats = pipeline.stats(frame);
-    shadows.push_back(read_float_texture(context, frame.soft_shadow(), size, size, 1));
+    const PcssMeasurement m = pipeline.measure(inputs, method, setup.repeats);
+    shadows.push_back(read_float_texture(context, m.frame.soft_shadow(), size, size, 1));
     RenderRow row;
     row.method = method.name;
-    row.gpu_ms = median(times);
-    row.representative_fraction = stats.representative_fraction();
-    row.work_per_receiver = stats.work_per_receiver();
-    row.stages = frame.stages;
+    row.gpu_ms = m.total_ms;
+    row.representative_fraction = m.stats.representative_fraction();
+    row.work_per_receiver = m.stats.work_per_receiver();
+    row.stages = m.stage_ms;
     result.rows.push_back(row);
   }
   // SSIM against the first method that is exact PCSS, when one was rendered.

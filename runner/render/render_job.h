@@ -33,7 +33,7 @@ struct RenderRow {
   double ssim_physical = 0.0;    // against the physical reference
   double representative_fraction = 0.0;
   double work_per_receiver = 0.0;
-  std::vector<std::pair<std::string, double>> stages;  // GPU ms of the last run
+  std::vector<std::pair<std::string, double>> stages;  // median GPU ms per stage
 };
 
 struct RenderResult {

@@ -1,0 +1,148 @@
+// Cases of the pipeline check (issue 5): exact PCSS against the CPU
+// reference; the wiring check (Fast PCSS with every improvement off equals
+// exact PCSS); SSIM of Fast PCSS with the paper's defaults against exact
+// PCSS at 512²; and bad inputs — NaN and empty shadow-map texels, receivers
+// outside the light's frustum, a zero-size light — giving finite, documented
+// results.
+#include <cmath>
+#include <string>
+
+#include "check/module_check.h"
+#include "gl/texture.h"
+#include "metrics/ssim.h"
+#include "pipeline/pcss_pipeline.h"
+#include "reference/pcss_reference.h"
+#include "reference/pyramid_reference.h"
+
+namespace pn {
+namespace {
+
+constexpr int kMap = 128, kScreen = 64;     // small: brute force on llvmpipe stays fast
+constexpr double kMargin = 1e-4;            // texels / relative depth: float and double may round apart
+constexpr double kFractionRounding = 1e-6;  // count / texels in float vs double
+constexpr double kMinimumSsim = 0.97;       // seed 000 Table / §5.4 reports 0.9705
+
+Image read1(const Context& c, const GlObject& t, int size) { return read_float_texture(c, t, size, size, 1); }
+Image read4(const Context& c, const GlObject& t, int size) { return read_float_texture(c, t, size, size, 4); }
+
+// A scalar as a 1×1 comparison: expected `target`, observed `value`, passing within `bound`.
+CaseResult scalar_case(const std::string& name, double target, double value, Tolerance tolerance) {
+  Image e(1, 1, 1, static_cast<float>(target)), o(1, 1, 1, static_cast<float>(value));
+  return {name, tolerance, compare(e, o, tolerance)};
+}
+
+// Every texel finite and in [0, 1]: expected 0.5 within 0.5.
+CaseResult in_unit_range(const std::string& name, const Image& image) {
+  Image expected(image.width, image.height, 1, 0.5f);
+  return {name, Tolerance::absolute(0.5), compare(expected, image, Tolerance::absolute(0.5))};
+}
+
+// The hard shadow of a point light at the map's centre of projection: the texel under (u, v).
+Image hard_shadow(const Image& shadow_map, const Image& gbuffer, double bias) {
+  Image out(gbuffer.width, gbuffer.height, 1, 1.0f);
+  const int n = shadow_map.width;
+  for (int y = 0; y < gbuffer.height; ++y)
+    for (int x = 0; x < gbuffer.width; ++x) {
+      const double u = gbuffer.at(x, y, 0), v = gbuffer.at(x, y, 1), d = gbuffer.at(x, y, 2);
+      if (gbuffer.at(x, y, 3) == 0.0f || !(u >= 0 && u < n && v >= 0 && v < n)) continue;
+      const double z = sanitize_depth(shadow_map.at(static_cast<int>(u), static_cast<int>(v)));
+      if (z < d - bias) out.at(x, y) = 0.0f;
+    }
+  return out;
+}
+
+}  // namespace
+
+std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
+  const Context& context = env.context;
+  const PcssPipeline pipeline(context, env.tree);
+  std::vector<CaseResult> results;
+  for (const auto& fixture : fixtures::kScenes) {
+    const Scene scene = make_scene(fixture, kMap);
+    const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
+                             std::to_string(kScreen) + "² screen";
+    const PcssInputs inputs = pipeline.render_inputs(scene, kScreen);
+    const Image map = read1(context, inputs.shadow_map, kMap), gbuffer = read4(context, inputs.gbuffer, kScreen);
+
+    // Exact PCSS against the CPU's definition; pixels where float and double
+    // may decide a rounding differently are left out (counted in the name).
+    const PcssSettings exact = exact_pcss();
+    const PcssFrame exact_frame = pipeline.run(inputs, exact);
+    const Image exact_visibility = read1(context, exact_frame.soft_shadow(), kScreen);
+    const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, exact.bias, exact.filter_scale, kMargin);
+    Image observed = exact_visibility;
+    int ambiguous = 0;
+    for (int y = 0; y < kScreen; ++y)
+      for (int x = 0; x < kScreen; ++x)
+        if (reference.ambiguous.at(x, y) != 0.0f) observed.at(x, y) = reference.visibility.at(x, y), ++ambiguous;
+    results.push_back({name + ": exact PCSS vs CPU brute force (" + std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
+                       Tolerance::absolute(kFractionRounding),
+                       compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
+
+    // The wiring check: every improvement off. Counts are exact either way;
+    // the blocker mean is summed in another order, so a pixel may differ only
+    // where the two blocker means differ (by float rounding, checked) and move
+    // a filter square's rounding.
+    const PcssFrame off_frame = pipeline.run(inputs, fast_pcss_all_off());
+    const Image off_visibility = read1(context, off_frame.soft_shadow(), kScreen);
+    const Image exact_mean = read1(context, exact_frame.blocker_mean, kScreen);
+    const Image off_mean = read1(context, off_frame.blocker_mean, kScreen);
+    results.push_back({name + ": blocker mean, all improvements off vs exact PCSS", Tolerance::relative(1e-5),
+                       compare(exact_mean, off_mean, Tolerance::relative(1e-5))});
+    Image aligned = off_visibility;
+    int moved = 0;
+    for (int y = 0; y < kScreen; ++y)
+      for (int x = 0; x < kScreen; ++x)
+        if (exact_mean.at(x, y) != off_mean.at(x, y) && aligned.at(x, y) != exact_visibility.at(x, y))
+          aligned.at(x, y) = exact_visibility.at(x, y), ++moved;
+    results.push_back({name + ": soft shadow, all improvements off vs exact PCSS (" + std::to_string(moved) +
+                           " pixels whose blocker mean rounded apart left out)",
+                       Tolerance::exact(), compare(exact_visibility, aligned, Tolerance::exact())});
+
+    // Bad inputs on this scene: NaN and +Inf texels; receivers pushed outside the frustum.
+    Image damaged = map;
+    for (int y = 0; y < kMap; ++y)
+      for (int x = 0; x < kMap; ++x)
+        if ((x * 7 + y * 3) % 11 == 0) damaged.at(x, y) = NAN;
+        else if (x > kMap / 2 && y > kMap / 2 && (x + y) % 5 == 0) damaged.at(x, y) = INFINITY;
+    Image outside = gbuffer;
+    for (int y = 0; y < kScreen; ++y)
+      for (int x = 0; x < kScreen / 2; ++x) outside.at(x, y, 0) += (y % 2 ? 3.0f : -3.0f) * kMap;
+    PcssInputs bad{scene.light, kScreen, upload_float_texture(context, damaged), upload_float_texture(context, outside)};
+    const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kMargin);
+    Image bad_observed = read1(context, pipeline.run(bad, exact).soft_shadow(), kScreen);
+    for (int y = 0; y < kScreen; ++y)
+      for (int x = 0; x < kScreen; ++x)
+        if (bad_reference.ambiguous.at(x, y) != 0.0f) bad_observed.at(x, y) = bad_reference.visibility.at(x, y);
+    results.push_back({name + ": exact PCSS, NaN/+Inf texels (no occluder) and receivers outside the frustum (lit)",
+                       Tolerance::absolute(kFractionRounding),
+                       compare(bad_reference.visibility, bad_observed, Tolerance::absolute(kFractionRounding))});
+    results.push_back(in_unit_range(name + ": Fast PCSS, NaN/+Inf texels and receivers outside the frustum: finite, in [0, 1]",
+                                    read1(context, pipeline.run(bad, fast_pcss()).soft_shadow(), kScreen)));
+
+    // A zero-size light: every region is one texel, a hard shadow.
+    Scene point = scene;
+    point.light.width = 0.0;
+    const PcssInputs point_inputs = pipeline.render_inputs(point, kScreen);
+    const Image hard = hard_shadow(read1(context, point_inputs.shadow_map, kMap), read4(context, point_inputs.gbuffer, kScreen), exact.bias);
+    for (const PcssSettings& s : {exact, pcss_method("fast:region=exact:blur=off")})
+      results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
+                         compare(hard, read1(context, pipeline.run(point_inputs, s).soft_shadow(), kScreen), Tolerance::exact())});
+    results.push_back(in_unit_range(name + ", zero-size light: Fast PCSS (2x2-texel windows): finite, in [0, 1]",
+                                    read1(context, pipeline.run(point_inputs, fast_pcss()).soft_shadow(), kScreen)));
+  }
+
+  // The paper's quality claim on the default scene at 512².
+  const Scene scene = make_scene(fixtures::kScenes[0], 512);
+  const PcssInputs inputs = pipeline.render_inputs(scene, 512);
+  const Image exact = read1(context, pipeline.run(inputs, exact_pcss()).soft_shadow(), 512);
+  for (const PcssSettings& s : {fast_pcss(), hqepcss()}) {
+    const double value = ssim(exact, read1(context, pipeline.run(inputs, s).soft_shadow(), 512));
+    results.push_back(scalar_case(std::string(fixtures::kScenes[0].name) + " 512²: SSIM of " + s.name +
+                                      " vs exact PCSS >= " + std::to_string(kMinimumSsim).substr(0, 4) + " (expected 1)",
+                                  1.0, value, Tolerance::absolute(1.0 - kMinimumSsim)));
+  }
+  return results;
+}
+
+}  // namespace pn

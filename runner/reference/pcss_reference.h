@@ -1,0 +1,29 @@
+// CPU reference for exact PCSS (SPEC §4.8), from the definition: for each
+// screen pixel of a G-buffer (u, v, light depth, valid), scan every texel of
+// the search square (PCSS's width for blockers at the near plane), average
+// the depths below dP - bias, penumbra by Eq. (1), and count the occluding
+// texels of the filter square — in double precision, from LightModel.
+// A square of side s around (x, y) is the n×n texels, n = max(1, round(s)),
+// whose centres are nearest (x, y), clipped to the map (docs/pipeline.md).
+#pragma once
+
+#include "core/image.h"
+#include "reference/traversal_reference.h"
+#include "scene/light_model.h"
+
+namespace pn {
+
+// The square of side `side` around (x, y) clipped to an n×n map; `margin` is
+// how far (texels) the rounding of its side and origin was from flipping.
+Rect pcss_square(double x, double y, double side, int n, double* margin);
+
+struct PcssReference {
+  Image visibility;  // 1 - occluded fraction; 1 where lit or no surface
+  Image ambiguous;   // 1 where a rounding decision lay within `margin` of flipping (float may differ)
+};
+
+// `margin`: texels for the roundings of squares, relative to dP for depths near dP - bias.
+PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
+                                   double filter_scale, double margin);
+
+}  // namespace pn
