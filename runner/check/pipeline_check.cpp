@@ -5,10 +5,13 @@
 // outside the light's frustum, a zero-size light — giving finite, documented
 // results.
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "check/module_check.h"
+#include "figures/lit_image.h"
 #include "gl/texture.h"
+#include "passes/surface_pass.h"
 #include "metrics/ssim.h"
 #include "pipeline/pcss_pipeline.h"
 #include "reference/pcss_reference.h"
@@ -99,6 +102,12 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
                            " pixels whose blocker mean rounded apart left out)",
                        Tolerance::exact(), compare(exact_visibility, aligned, Tolerance::exact())});
 
+    // The two ways of skipping non-representatives compute the same thing.
+    const Image listed = read1(context, pipeline.run(inputs, fast_pcss()).soft_shadow(), kScreen);
+    const Image branched = read1(context, pipeline.run(inputs, pcss_method("fast:skip=branch")).soft_shadow(), kScreen);
+    results.push_back({name + ": Fast PCSS, representatives compacted into a list vs branching in place",
+                       Tolerance::exact(), compare(listed, branched, Tolerance::exact())});
+
     // Bad inputs on this scene: NaN and +Inf texels; receivers pushed outside the frustum.
     Image damaged = map;
     for (int y = 0; y < kMap; ++y)
@@ -132,15 +141,20 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
                                     read1(context, pipeline.run(point_inputs, fast_pcss()).soft_shadow(), kScreen)));
   }
 
-  // The paper's quality claim on the default scene at 512².
+  // The paper's quality claim (§5.4: SSIM of the rendered pictures) on the default
+  // scene at 512²: the lit images' SSIM is held to 0.97; the soft-shadow maps'
+  // own SSIM, lower (docs/pipeline.md says why), is printed with it.
   const Scene scene = make_scene(fixtures::kScenes[0], 512);
   const PcssInputs inputs = pipeline.render_inputs(scene, 512);
+  const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512), 512, 512, 4);
   const Image exact = read1(context, pipeline.run(inputs, exact_pcss()).soft_shadow(), 512);
   for (const PcssSettings& s : {fast_pcss(), hqepcss()}) {
-    const double value = ssim(exact, read1(context, pipeline.run(inputs, s).soft_shadow(), 512));
+    const Image shadow = read1(context, pipeline.run(inputs, s).soft_shadow(), 512);
+    char map_ssim[32];
+    std::snprintf(map_ssim, sizeof map_ssim, "%.4f", ssim(exact, shadow));
     results.push_back(scalar_case(std::string(fixtures::kScenes[0].name) + " 512²: SSIM of " + s.name +
-                                      " vs exact PCSS >= " + std::to_string(kMinimumSsim).substr(0, 4) + " (expected 1)",
-                                  1.0, value, Tolerance::absolute(1.0 - kMinimumSsim)));
+                                      "'s lit image vs exact PCSS's >= 0.97, expected 1 (soft-shadow maps: " + map_ssim + ")",
+                                  1.0, lit_ssim(surface, exact, shadow), Tolerance::absolute(1.0 - kMinimumSsim)));
   }
   return results;
 }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "metrics/ssim.h"
 
 namespace pn {
 namespace {
@@ -31,6 +32,19 @@ Image compose_lit_image(const Image& surface, const Image& visibility) {
       for (int c = 0; c < 3; ++c) out.at(x, y, c) = sky ? kSkyColour[c] : unit(unit(surface.at(x, y, c)) * light);
     }
   return out;
+}
+
+Image luma(const Image& rgb) {
+  if (rgb.channels != 3) throw Error("luma of a " + describe(rgb) + " image: expected 3 channels");
+  Image out(rgb.width, rgb.height, 1);
+  for (int y = 0; y < rgb.height; ++y)
+    for (int x = 0; x < rgb.width; ++x)
+      out.at(x, y) = 0.2126f * rgb.at(x, y, 0) + 0.7152f * rgb.at(x, y, 1) + 0.0722f * rgb.at(x, y, 2);
+  return out;
+}
+
+double lit_ssim(const Image& surface, const Image& visibility_a, const Image& visibility_b) {
+  return ssim(luma(compose_lit_image(surface, visibility_a)), luma(compose_lit_image(surface, visibility_b)));
 }
 
 }  // namespace pn

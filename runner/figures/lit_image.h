@@ -18,4 +18,10 @@ inline constexpr std::array<float, 3> kSkyColour{0.62f, 0.75f, 0.90f};
 // all 0 is sky. Throws Error when the sizes or channel counts differ from that.
 Image compose_lit_image(const Image& surface, const Image& visibility);
 
+// Rec. 709 luma of a 3-channel image: the single channel SSIM compares for lit pictures.
+Image luma(const Image& rgb);
+
+// SSIM of the lit pictures (their luma) that two visibility images give on the same surface.
+double lit_ssim(const Image& surface, const Image& visibility_a, const Image& visibility_b);
+
 }  // namespace pn

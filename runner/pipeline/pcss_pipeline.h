@@ -81,7 +81,7 @@ class PcssPipeline {
 
   PcssStats stats(const PcssFrame& frame) const;
 
-  // `repeats` >= 1 runs; medians of the total and of each stage.
+  // One untimed warm-up run, then `repeats` >= 1 runs; medians of the total and of each stage.
   PcssMeasurement measure(const PcssInputs& inputs, const PcssSettings& settings, int repeats) const;
 
  private:

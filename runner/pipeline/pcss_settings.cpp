@@ -10,7 +10,7 @@ namespace pn {
 
 void PcssSettings::validate() const {
   const auto bad = [&](const std::string& what, double v, const char* expected) {
-    return Error(name + ": " + what + " " + format_number("%g", v) + ": expected " + expected);
+    return Error("method '" + name + "': " + what + " " + format_number("%g", v) + ": expected " + expected);
   };
   if (!std::isfinite(bias) || bias < 0) throw bad("bias", bias, "a finite number >= 0");
   if (!std::isfinite(filter_scale) || filter_scale < 0) throw bad("filter scale", filter_scale, "a finite number >= 0");

@@ -5,6 +5,9 @@
 
 #include "core/error.h"
 #include "figures/canvas.h"
+#include "figures/lit_image.h"
+#include "passes/physical_reference_pass.h"
+#include "passes/surface_pass.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
 #include "metrics/ssim.h"
@@ -14,7 +17,9 @@
 namespace pn {
 namespace {
 
-void validate(const RenderSetup& s) {
+}  // namespace
+
+void validate_render_setup(const RenderSetup& s) {
   find_scene_fixture(s.scene);
   if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
   if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
@@ -24,20 +29,43 @@ void validate(const RenderSetup& s) {
   for (const PcssSettings& m : s.methods) m.validate();
 }
 
+namespace {
+
 void write_grey(const Image& image, const std::filesystem::path& path) {
   Canvas canvas(image.width, image.height, {0, 0, 0});
   canvas.grey(flip_rows(image), 0, 0, 0, 1, 0.0f, 1.0f, {255, 0, 255});
   canvas.write_png(path);
 }
 
+void write_rgb(const Image& image, const std::filesystem::path& path) {
+  Canvas canvas(image.width, image.height, {0, 0, 0});
+  canvas.rgb(flip_rows(image), 0, 0, 1);
+  canvas.write_png(path);
+}
+
+// A method's name as a file name: overrides "fast:leaf=4" become "fast_leaf-4".
+std::string file_stem(std::string name) {
+  for (char& c : name)
+    if (c == ':') c = '_';
+    else if (c == '=') c = '-';
+  return name;
+}
+
+
 }  // namespace
 
 RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup) {
-  validate(setup);
+  validate_render_setup(setup);
   const Scene scene = make_scene(find_scene_fixture(setup.scene), setup.map_size);
   const PcssPipeline pipeline(context, tree);
   const PcssInputs inputs = pipeline.render_inputs(scene, setup.screen_size);
   const int size = setup.screen_size;
+
+  // The physical reference: the average of light_samples² point-light hard shadows.
+  const PhysicalReferenceRenderer physical_renderer(context, tree);
+  const Image physical = read_float_texture(
+      context, physical_renderer.render(scene, size, setup.light_samples, setup.methods.front().bias), size, size, 1);
+  const Image surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size), size, size, 4);
 
   std::vector<Image> shadows;
   RenderResult result;
@@ -54,27 +82,55 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
   }
   // SSIM against the first method that is exact PCSS, when one was rendered.
   int exact = -1;
-  for (size_t i = 0; i < setup.methods.size(); ++i)
-    if (setup.methods[i].name == exact_pcss().name && exact < 0) exact = static_cast<int>(i);
+  for (size_t i = 0; i < setup.methods.size() && exact < 0; ++i)
+    if (setup.methods[i].name == exact_pcss().name) exact = static_cast<int>(i);
+
   std::filesystem::create_directories(setup.out);
-  for (size_t i = 0; i < shadows.size(); ++i) {
-    result.rows[i].ssim_exact = exact >= 0 ? ssim(shadows[exact], shadows[i]) : 0.0;
-    const auto path = setup.out / (setup.scene + "_" + setup.methods[i].name + "_shadow.png");
-    write_grey(shadows[i], path);
+  const auto write = [&](const std::filesystem::path& path, auto writer, const Image& image) {
+    writer(image, path);
     result.written.push_back(path);
+  };
+  const std::string prefix = setup.scene + "_";
+  write(setup.out / (prefix + "physical_shadow.png"), write_grey, physical);
+  const Image physical_lit = compose_lit_image(surface, physical);
+  write(setup.out / (prefix + "physical_lit.png"), write_rgb, physical_lit);
+  std::vector<Image> lit{physical_lit};
+  for (size_t i = 0; i < shadows.size(); ++i) {
+    lit.push_back(compose_lit_image(surface, shadows[i]));
+    RenderRow& row = result.rows[i];
+    row.ssim_exact = exact >= 0 ? ssim(shadows[exact], shadows[i]) : 0.0;
+    row.ssim_physical = ssim(physical, shadows[i]);
+    row.ssim_exact_lit = exact >= 0 ? lit_ssim(surface, shadows[exact], shadows[i]) : 0.0;
+    const std::string stem = prefix + file_stem(setup.methods[i].name);
+    write(setup.out / (stem + "_shadow.png"), write_grey, shadows[i]);
+    write(setup.out / (stem + "_lit.png"), write_rgb, lit.back());
   }
+  // The sheet: the physical reference, then every method, lit images above their soft-shadow maps.
+  const int gap = 4;
+  Canvas sheet(static_cast<int>(lit.size()) * (size + gap) - gap, 2 * size + gap, {255, 255, 255});
+  for (size_t i = 0; i < lit.size(); ++i) {
+    const int x = static_cast<int>(i) * (size + gap);
+    sheet.rgb(flip_rows(lit[i]), x, 0, 1);
+    sheet.grey(flip_rows(i == 0 ? physical : shadows[i - 1]), 0, x, size + gap, 1, 0.0f, 1.0f, {255, 0, 255});
+  }
+  const auto sheet_path = setup.out / (prefix + "sheet.png");
+  sheet.write_png(sheet_path);
+  result.written.push_back(sheet_path);
   return result;
 }
 
 void print_render_table(std::ostream& out, const RenderSetup& setup, const RenderResult& result, bool stages) {
+  out << "sheet columns: physical reference";
+  for (const RenderRow& r : result.rows) out << ", " << r.method;
+  out << " (lit images above soft-shadow maps)\n";
   out << "scene " << setup.scene << ", shadow map " << setup.map_size << "x" << setup.map_size << ", screen "
       << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats << " runs\n";
   out << std::left << std::setw(20) << "method" << std::right << std::setw(12) << "GPU ms" << std::setw(12)
-      << "SSIM exact" << std::setw(14) << "SSIM physical" << std::setw(10) << "repr." << std::setw(12)
+      << "SSIM exact" << std::setw(14) << "SSIM physical" << std::setw(10) << "lit SSIM" << std::setw(10) << "repr." << std::setw(12)
       << "work/px" << "\n";
   for (const RenderRow& r : result.rows)
     out << std::left << std::setw(20) << r.method << std::right << std::fixed << std::setprecision(2) << std::setw(12)
-        << r.gpu_ms << std::setprecision(4) << std::setw(12) << r.ssim_exact << std::setw(14) << r.ssim_physical
+        << r.gpu_ms << std::setprecision(4) << std::setw(12) << r.ssim_exact << std::setw(14) << r.ssim_physical << std::setw(10) << r.ssim_exact_lit
         << std::setprecision(3) << std::setw(10) << r.representative_fraction << std::setprecision(1)
         << std::setw(12) << r.work_per_receiver << "\n";
   if (stages)

@@ -31,6 +31,7 @@ struct RenderRow {
   double gpu_ms = 0.0;           // median total of Steps 1 (pyramid) to 6
   double ssim_exact = 0.0;       // of the soft-shadow map, against exact PCSS
   double ssim_physical = 0.0;    // against the physical reference
+  double ssim_exact_lit = 0.0;   // of the lit image's luma, against exact PCSS's
   double representative_fraction = 0.0;
   double work_per_receiver = 0.0;
   std::vector<std::pair<std::string, double>> stages;  // median GPU ms per stage
@@ -41,7 +42,10 @@ struct RenderResult {
   std::vector<std::filesystem::path> written;
 };
 
-// Throws Error for an unknown scene or sizes out of range (before writing anything).
+// Throws Error naming the first setting out of range (an unknown scene, sizes, samples, repeats).
+void validate_render_setup(const RenderSetup& setup);
+
+// Throws Error for an invalid setup (before writing anything).
 RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup);
 
 // `stages`: also each method's per-stage GPU times.
