@@ -31,6 +31,9 @@
 //   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
 //   bool  pnEntryLit(vec4 entry)
+//   vec4  pnEntryLinkKey(vec4 entry, int mapSize, int regionMode)   what the reuse scheme compares
+//         (reuse.glsl): in the window modes the side is the window's power of two, as the paper's
+//         maps hold it (§5.2: "the sizes are already approximated", hence sigma1 = 0); else the entry
 //   regionMode: PN_REGION_WINDOW (the paper's Steps 1-7), PN_REGION_EXACT (pnRegionSquare),
 //               PN_REGION_CENTRED (the window's side, centred on the region: pnRegionApproximateCentred)
 //
@@ -67,6 +70,11 @@ PnRect pnEntryRect(vec4 entry, int mapSize) {
 PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode) {
   if (regionMode == PN_REGION_CENTRED) return pnRegionApproximateCentred(entry.yz, entry.w, mapSize);
   return pnRegionApproximate(entry.yz, entry.w, mapSize);
+}
+
+vec4 pnEntryLinkKey(vec4 entry, int mapSize, int regionMode) {
+  if (regionMode == PN_REGION_EXACT || pnEntryLit(entry)) return entry;
+  return vec4(entry.xyz, float(pnEntryWindow(entry, mapSize, regionMode).side));
 }
 
 // Min depth over a square that covers the region (exact), or over its window (literal).

@@ -4,4 +4,4 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
-exec "${PENUMBRA_BUILD_DIR:-$root/build}/penumbra" check "$@"
+exec "${PENUMBRA_BUILD_DIR:-$root/build}/penumbra" render "$@"

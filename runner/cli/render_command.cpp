@@ -13,8 +13,8 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto stages = std::make_shared<bool>(false);
   auto* cmd = app.add_subcommand("render", "Render a scene with every PCSS technique: PNGs, a sheet and a table of time and SSIM");
   cmd->add_option("--scene", setup->scene, "boxes | fence | tall_blocker (default boxes)");
-  cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 256)");
-  cmd->add_option("--screen", setup->screen_size, "Screen size (default 256)");
+  cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 512)");
+  cmd->add_option("--screen", setup->screen_size, "Screen size (default 512)");
   cmd->add_option("--light-samples", setup->light_samples, "Physical reference: point lights per side of the area light (default 8)");
   cmd->add_option("--repeats", setup->repeats, "Timed runs per technique, median reported (default 3)");
   cmd->add_option("--methods", *methods, "Techniques (default exact,poisson,hqepcss,fast; also any fast-* ablation)")

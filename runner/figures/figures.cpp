@@ -221,13 +221,15 @@ std::vector<fs::path> write_figures(const Context& context, const SourceTree& tr
   fs::create_directories(out, ec);
   if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");
   const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png",
-                                    out / "sample_table.png", out / "traversal_nodes.png", out / "reuse_groups.png"};
+                                    out / "sample_table.png", out / "traversal_nodes.png", out / "reuse_groups.png",
+                                    out / "pipeline_stages.png"};
   blur_figure(context, tree, paths[0]);
   pyramid_figure(context, tree, paths[1]);
   region_figure(context, tree, paths[2]);
   sample_table_figure(paths[3]);
   traversal_figure(context, tree, paths[4]);
   reuse_figure(context, tree, paths[5]);
+  pipeline_stages_figure(context, tree, paths[6]);
   return paths;
 }
 

@@ -11,9 +11,12 @@
 namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
-// traversal_nodes.png and reuse_groups.png into `out`
+// traversal_nodes.png, reuse_groups.png and pipeline_stages.png into `out`
 // (created if missing); returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
+
+// Fast PCSS's stages on the boxes scene, 256² (pipeline_figure.cpp).
+void pipeline_stages_figure(const Context& context, const SourceTree& tree, const std::filesystem::path& path);
 
 }  // namespace pn

@@ -203,18 +203,20 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   // Step 3.
   const PcssBlock block = make_block(inputs.light, settings);
   frame.search_map = make_float_texture(*context_, size, size, 4);
+  frame.search_keys = make_float_texture(*context_, size, size, 4);
   {
     GlObject ubo = bind_uniform_buffer(*context_, 7, &block, sizeof block);
     gl.BindTextureUnit(0, frame.pyramid.texture.id());
     gl.BindTextureUnit(1, inputs.gbuffer.id());
     gl.BindImageTexture(2, frame.search_map.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl.BindImageTexture(3, frame.search_keys.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     search_.dispatch(size, size);
   }
   clock.stage("3 search region");
 
   // Step 4.
   const int search_tile = settings.search_tile;
-  if (search_tile > 0) frame.search_parents = link(frame.search_map, size, search_tile, settings);
+  if (search_tile > 0) frame.search_parents = link(frame.search_keys, size, search_tile, settings);
   clock.stage("4 reuse link");
   frame.blocker_results = cleared_texture(*context_, size, 4);
   estimate(frame, inputs, frame.search_map, search_tile > 0 ? &frame.search_parents : nullptr, search_tile,
@@ -222,6 +224,7 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   clock.stage("4 blockers");
   frame.filter_map = make_float_texture(*context_, size, size, 4);
   frame.blocker_mean = make_float_texture(*context_, size, size, 1);
+  frame.filter_keys = make_float_texture(*context_, size, size, 4);
   {
     PcssBlock b = block;
     b.reuse_tile = search_tile;
@@ -229,15 +232,16 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
     gl.BindTextureUnit(2, frame.search_map.id());
     gl.BindTextureUnit(4, search_tile > 0 ? frame.search_parents.id() : no_parents_.id());
     gl.BindTextureUnit(5, frame.blocker_results.id());
-    gl.BindImageTexture(3, frame.filter_map.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl.BindImageTexture(6, frame.blocker_mean.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    gl.BindImageTexture(0, frame.filter_map.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl.BindImageTexture(1, frame.blocker_mean.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    gl.BindImageTexture(2, frame.filter_keys.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     filter_.dispatch(size, size);
   }
   clock.stage("4 filter region");
 
   // Step 5.
   const int filter_tile = settings.filter_tile;
-  if (filter_tile > 0) frame.filter_parents = link(frame.filter_map, size, filter_tile, settings);
+  if (filter_tile > 0) frame.filter_parents = link(frame.filter_keys, size, filter_tile, settings);
   clock.stage("5 reuse link");
   frame.occlusion_results = cleared_texture(*context_, size, 4);
   estimate(frame, inputs, frame.filter_map, filter_tile > 0 ? &frame.filter_parents : nullptr, filter_tile,

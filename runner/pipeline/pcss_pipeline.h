@@ -34,10 +34,12 @@ struct PcssFrame {
   int size = 0;  // screen side
   DepthPyramid pyramid;
   GlObject search_map;         // (d, x, y, s), s < 0: lit
+  GlObject search_keys;        // what reuse compares (pnEntryLinkKey)
   GlObject search_parents;     // reuse codes (k = search_tile), when reuse is on
   GlObject blocker_results;    // (occluders, depth sum, texels, work) per computed pixel
   GlObject filter_map;         // (d, x, y, s)
   GlObject blocker_mean;       // R32F, 0 where lit
+  GlObject filter_keys;
   GlObject filter_parents;
   GlObject occlusion_results;
   GlObject visibility;         // Step 5: 1 - occluded fraction

@@ -18,8 +18,8 @@ namespace pn {
 
 struct RenderSetup {
   std::string scene = "boxes";
-  int map_size = 256;
-  int screen_size = 256;
+  int map_size = 512;
+  int screen_size = 512;
   int light_samples = 8;  // per side of the physical reference's grid of point lights
   int repeats = 3;        // timed runs per technique (the median is reported)
   std::vector<PcssSettings> methods = pcss_methods();
