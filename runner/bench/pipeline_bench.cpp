@@ -3,7 +3,9 @@
 #include <iomanip>
 
 #include "core/error.h"
+#include "figures/lit_image.h"
 #include "gl/texture.h"
+#include "passes/surface_pass.h"
 #include "metrics/ssim.h"
 #include "pipeline/pcss_pipeline.h"
 #include "scene/scene.h"
@@ -23,7 +25,9 @@ std::vector<PipelineBenchRow> bench_pipeline(const Context& context, const Sourc
   const PcssPipeline pipeline(context, tree);
   std::vector<PipelineBenchRow> rows;
   for (int n : setup.sizes) {
-    const PcssInputs inputs = pipeline.render_inputs(make_scene(fixture, n), n);
+    const Scene scene = make_scene(fixture, n);
+    const PcssInputs inputs = pipeline.render_inputs(scene, n);
+    const Image surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, n), n, n, 4);
     const size_t first = rows.size();
     Image exact;
     double exact_ms = 0.0, poisson_ms = 0.0;
@@ -45,7 +49,10 @@ std::vector<PipelineBenchRow> bench_pipeline(const Context& context, const Sourc
     for (size_t i = first; i < rows.size(); ++i) {
       if (exact_ms > 0) rows[i].speedup_vs_exact = exact_ms / rows[i].total_ms;
       if (poisson_ms > 0) rows[i].speedup_vs_poisson = poisson_ms / rows[i].total_ms;
-      if (exact.width > 0) rows[i].ssim_vs_exact = ssim(exact, shadows[i - first]);
+      if (exact.width > 0) {
+        rows[i].ssim_vs_exact = ssim(exact, shadows[i - first]);
+        rows[i].lit_ssim_vs_exact = lit_ssim(surface, exact, shadows[i - first]);
+      }
     }
   }
   return rows;
@@ -53,12 +60,13 @@ std::vector<PipelineBenchRow> bench_pipeline(const Context& context, const Sourc
 
 void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchRow>& rows) {
   out << std::left << std::setw(6) << "size" << std::setw(22) << "method" << std::right << std::setw(11) << "total ms"
-      << std::setw(10) << "x exact" << std::setw(10) << "x Poisson" << std::setw(8) << "SSIM" << std::setw(8)
+      << std::setw(10) << "x exact" << std::setw(10) << "x Poisson" << std::setw(8) << "SSIM" << std::setw(9) << "lit SSIM" << std::setw(8)
       << "repr." << std::setw(10) << "work/px" << "   stages (ms)\n";
   for (const PipelineBenchRow& r : rows) {
     out << std::left << std::setw(6) << r.size << std::setw(22) << r.method << std::right << std::fixed
         << std::setprecision(2) << std::setw(11) << r.total_ms << std::setw(10) << r.speedup_vs_exact << std::setw(10)
-        << r.speedup_vs_poisson << std::setprecision(4) << std::setw(8) << r.ssim_vs_exact << std::setprecision(3)
+        << r.speedup_vs_poisson << std::setprecision(4) << std::setw(8) << r.ssim_vs_exact << std::setw(9) << r.lit_ssim_vs_exact
+        << std::setprecision(3)
         << std::setw(8) << r.representative_fraction << std::setprecision(1) << std::setw(10) << r.work_per_receiver
         << "  ";
     for (const auto& [name, ms] : r.stage_ms)
@@ -80,6 +88,7 @@ nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::v
                     {"speedup_vs_exact", r.speedup_vs_exact},
                     {"speedup_vs_poisson", r.speedup_vs_poisson},
                     {"ssim_vs_exact", r.ssim_vs_exact},
+                    {"lit_ssim_vs_exact", r.lit_ssim_vs_exact},
                     {"representative_fraction", r.representative_fraction},
                     {"work_per_receiver", r.work_per_receiver}});
   }

@@ -31,7 +31,8 @@ struct PipelineBenchRow {
   std::vector<std::pair<std::string, double>> stage_ms;
   double speedup_vs_exact = 0.0;    // 0 when exact PCSS was not run
   double speedup_vs_poisson = 0.0;  // 0 when Poisson PCSS was not run
-  double ssim_vs_exact = 0.0;
+  double ssim_vs_exact = 0.0;       // soft-shadow maps
+  double lit_ssim_vs_exact = 0.0;   // lit images (figures/lit_image.h)
   double representative_fraction = 0.0;
   double work_per_receiver = 0.0;   // nodes (traversal), texels (scan) or samples (Poisson)
 };

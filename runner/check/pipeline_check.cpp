@@ -16,6 +16,7 @@
 #include "pipeline/pcss_pipeline.h"
 #include "reference/pcss_reference.h"
 #include "reference/pyramid_reference.h"
+#include "reference/reuse_reference.h"
 
 namespace pn {
 namespace {
@@ -52,6 +53,49 @@ Image hard_shadow(const Image& shadow_map, const Image& gbuffer, double bias) {
       if (z < d - bias) out.at(x, y) = 0.0f;
     }
   return out;
+}
+
+// The reuse scheme on a scene's own maps (Steps 4 and 5 of `frame`): the GPU's
+// parent codes against the CPU's parents of the same link keys, exactly; every
+// group inside one k×k tile; and, for Step 5, every pixel's visibility equal to
+// its representative's.
+void reuse_cases(const Context& context, const std::string& name, const PcssFrame& frame, std::vector<CaseResult>& out) {
+  const int n = frame.size;
+  const PcssSettings& s = frame.settings;
+  struct Step {
+    const char* what;
+    const GlObject& keys;
+    const GlObject& parents;
+    int tile;
+  };
+  for (const Step& step : {Step{"Step 4", frame.search_keys, frame.search_parents, s.search_tile},
+                           Step{"Step 5", frame.filter_keys, frame.filter_parents, s.filter_tile}}) {
+    ReuseParams params;
+    params.sigma1 = s.sigma1, params.sigma2 = s.sigma2, params.sigma3 = s.sigma3, params.tile = step.tile;
+    const std::vector<int> parents = reuse_parents(read4(context, step.keys, n), params);
+    const std::vector<int> roots = reuse_roots(parents);
+    const Image codes = read1(context, step.parents, n);
+    Image expected(n, n), tiles(n, n), same_tile(n, n, 1, 1.0f);
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const int i = y * n + x, p = parents[i];
+        expected.at(x, y) = p < 0 ? 0.0f : p == i - 1 ? 1.0f : 2.0f;  // reuse.glsl's codes: none, left, top
+        const int r = roots[i], rx = r % n, ry = r / n;
+        tiles.at(x, y) = (rx / step.tile == x / step.tile && ry / step.tile == y / step.tile) ? 1.0f : 0.0f;
+      }
+    out.push_back({name + ": " + step.what + " reuse links (k = " + std::to_string(step.tile) +
+                       ") on the scene's own map vs the CPU's parents",
+                   Tolerance::exact(), compare(expected, codes, Tolerance::exact())});
+    out.push_back({name + ": " + step.what + " every group inside its k x k tile (1 = inside)", Tolerance::exact(),
+                   compare(same_tile, tiles, Tolerance::exact())});
+    if (step.tile == s.filter_tile && &step.parents == &frame.filter_parents) {
+      const Image visibility = read1(context, frame.visibility, n);
+      Image of_root(n, n);
+      for (int i = 0; i < n * n; ++i) of_root.at(i % n, i / n) = visibility.at(roots[i] % n, roots[i] / n);
+      out.push_back({name + ": Step 5 every pixel's visibility equals its representative's", Tolerance::exact(),
+                     compare(of_root, visibility, Tolerance::exact())});
+    }
+  }
 }
 
 }  // namespace
@@ -103,7 +147,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
                        Tolerance::exact(), compare(exact_visibility, aligned, Tolerance::exact())});
 
     // The two ways of skipping non-representatives compute the same thing.
-    const Image listed = read1(context, pipeline.run(inputs, fast_pcss()).soft_shadow(), kScreen);
+    const PcssFrame fast_frame = pipeline.run(inputs, fast_pcss());
+    reuse_cases(context, name, fast_frame, results);
+    const Image listed = read1(context, fast_frame.soft_shadow(), kScreen);
     const Image branched = read1(context, pipeline.run(inputs, pcss_method("fast:skip=branch")).soft_shadow(), kScreen);
     results.push_back({name + ": Fast PCSS, representatives compacted into a list vs branching in place",
                        Tolerance::exact(), compare(listed, branched, Tolerance::exact())});
