@@ -4,8 +4,9 @@
 //   PN_WORK_ALL     one invocation per pixel, all compute;
 //   PN_WORK_BRANCH  one per pixel, those with a parent return at once (their
 //                   work group still runs: the saving depends on whole groups);
-//   PN_WORK_LIST    one per representative, from the list pcss_compact.comp
-//                   appended (dispatched indirectly: no idle invocations).
+//   PN_WORK_LIST    one per pixel that computes (not lit; a representative when
+//                   reuse is on), from the list pcss_compact.comp appended
+//                   (dispatched indirectly: no idle invocations).
 // The including pass declares layout(local_size_x = 64) in; (the runner
 // dispatches 64-wide groups, and the list's header counts groups of 64);
 // a pixel index i is (i mod W, i div W).

@@ -153,8 +153,10 @@ void PcssPipeline::estimate(const PcssFrame& frame, const PcssInputs& inputs, co
   }
 
   const ComputeProgram& program = estimator == Estimator::poisson ? poisson_ : traverse_;
-  const bool list = parents && frame.settings.skip == WorkSkip::list;
-  block.work_mode = !parents ? work_all : list ? work_list : work_branch;
+  // The list holds the pixels that must compute — not lit, and representatives
+  // when reuse is on — so lit pixels are skipped with or without reuse.
+  const bool list = frame.settings.skip == WorkSkip::list;
+  block.work_mode = list ? work_list : parents ? work_branch : work_all;
   GlObject ubo = bind_uniform_buffer(*context_, 7, &block, sizeof block);
   GlObject other_disk;  // a sample count other than the defaults gets its own disk
   if (estimator == Estimator::poisson) {

@@ -25,10 +25,12 @@ enum class RegionMode {
   centred = 2,   // the window's side, centred on (x, y) (pnRegionApproximateCentred)
 };
 
-// How the GPU skips the reuse scheme's non-representatives (pcss_work.glsl).
+// How the GPU skips the pixels that need not compute in Steps 4 and 5 — lit
+// ones, and the reuse scheme's non-representatives (pcss_work.glsl). The
+// brute-force scan of exact PCSS always runs over every pixel.
 enum class WorkSkip {
-  branch,  // every pixel dispatched, non-representatives return at once
-  list,    // representatives compacted into a list, dispatched indirectly
+  branch,  // every pixel dispatched; those with nothing to do return at once
+  list,    // the pixels that compute compacted into a list, dispatched indirectly
 };
 
 struct PcssSettings {
