@@ -4,6 +4,7 @@
 // PCSS at 512²; and bad inputs — NaN and empty shadow-map texels, receivers
 // outside the light's frustum, a zero-size light — giving finite, documented
 // results.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -35,10 +36,12 @@ CaseResult scalar_case(const std::string& name, double target, double value, Tol
   return {name, tolerance, compare(e, o, tolerance)};
 }
 
-// Every texel finite and in [0, 1]: expected 0.5 within 0.5.
+// Every texel finite and in [0, 1]: the image must equal itself clamped to
+// [0, 1], with every non-finite texel replaced by -1.
 CaseResult in_unit_range(const std::string& name, const Image& image) {
-  Image expected(image.width, image.height, 1, 0.5f);
-  return {name, Tolerance::absolute(0.5), compare(expected, image, Tolerance::absolute(0.5))};
+  Image expected = image;
+  for (float& v : expected.texels) v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : -1.0f;
+  return {name, Tolerance::exact(), compare(expected, image, Tolerance::exact())};
 }
 
 // The hard shadow of a point light at the map's centre of projection: the texel under (u, v).

@@ -45,7 +45,7 @@ std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, co
 
 void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures, bool every_case) {
   char line[256];
-  std::snprintf(line, sizeof line, "%-14s %6s  %-34s %s\n", "module", "cases", "worst error (tolerance)", "verdict");
+  std::snprintf(line, sizeof line, "%-18s %6s  %-34s %s\n", "module", "cases", "worst error (tolerance)", "verdict");
   out << line;
   for (const ModuleReport& r : reports) {
     const CaseResult* w = r.worst();
@@ -53,7 +53,7 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
     if (w != nullptr) {
       worst = format_number("%.2e", w->comparison.worst_error) + " (" + w->tolerance.describe() + ")";
     }
-    std::snprintf(line, sizeof line, "%-14s %6zu  %-34s %s\n", r.module.c_str(), r.cases.size(), worst.c_str(),
+    std::snprintf(line, sizeof line, "%-18s %6zu  %-34s %s\n", r.module.c_str(), r.cases.size(), worst.c_str(),
                   r.pass() ? "pass" : "FAIL");
     out << line;
   }

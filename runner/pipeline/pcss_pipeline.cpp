@@ -10,12 +10,6 @@
 #include "sampling/sample_table.h"
 
 namespace pn {
-namespace {
-
-constexpr std::uint32_t kSampleTableSeed = 0x5eed0005u;
-constexpr std::uint32_t kBlockerDiskSeed = 0x5eed0036u;
-constexpr std::uint32_t kFilterDiskSeed = 0x5eed0064u;
-constexpr int kScanBandRows = 128;  // pcss_scan.comp: 128 × ceil(8192 / 16) < 65535 loop iterations
 
 // glsl/passes/pcss_params.glsl, std140.
 struct PcssBlock {
@@ -24,6 +18,13 @@ struct PcssBlock {
       band_rows, sample_count;
   float sigma1, sigma2, sigma3, padding;
 };
+
+namespace {
+
+constexpr std::uint32_t kSampleTableSeed = 0x5eed0005u;
+constexpr std::uint32_t kBlockerDiskSeed = 0x5eed0036u;
+constexpr std::uint32_t kFilterDiskSeed = 0x5eed0064u;
+constexpr int kScanBandRows = 128;  // pcss_scan.comp: 128 × ceil(8192 / 16) < 65535 loop iterations
 
 enum WorkMode : std::int32_t { work_all = 0, work_branch = 1, work_list = 2 };
 
@@ -187,6 +188,28 @@ void PcssPipeline::estimate(const PcssFrame& frame, const PcssInputs& inputs, co
   }
 }
 
+void PcssPipeline::reuse_and_estimate(PcssFrame& frame, const PcssInputs& inputs, StageClock& clock,
+                                      const std::string& step, const GlObject& keys, const GlObject& entries, int tile,
+                                      Estimator estimator, int samples, GlObject& parents, GlObject& results) const {
+  if (tile > 0) parents = link(keys, frame.size, tile, frame.settings);
+  clock.stage(step + " reuse link");
+  results = cleared_texture(*context_, frame.size, 4);
+  estimate(frame, inputs, entries, tile > 0 ? &parents : nullptr, tile, estimator, samples, results);
+  clock.stage(step + (step == "4" ? " blockers" : " occlusion"));
+}
+
+GlObject PcssPipeline::bind_representatives(const PcssBlock& block, const GlObject& entries, int tile,
+                                            const GlObject& parents, const GlObject& results) const {
+  PcssBlock b = block;
+  b.reuse_tile = tile;
+  GlObject ubo = bind_uniform_buffer(*context_, 7, &b, sizeof b);
+  const auto& gl = context_->gl();
+  gl.BindTextureUnit(2, entries.id());
+  gl.BindTextureUnit(4, tile > 0 ? parents.id() : no_parents_.id());
+  gl.BindTextureUnit(5, results.id());
+  return ubo;
+}
+
 PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settings) const {
   settings.validate();
   const auto& gl = context_->gl();
@@ -216,24 +239,15 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   }
   clock.stage("3 search region");
 
-  // Step 4.
-  const int search_tile = settings.search_tile;
-  if (search_tile > 0) frame.search_parents = link(frame.search_keys, size, search_tile, settings);
-  clock.stage("4 reuse link");
-  frame.blocker_results = cleared_texture(*context_, size, 4);
-  estimate(frame, inputs, frame.search_map, search_tile > 0 ? &frame.search_parents : nullptr, search_tile,
-           settings.blockers, settings.blocker_samples, frame.blocker_results);
-  clock.stage("4 blockers");
+  // Step 4: blockers of the representatives, then every pixel's filter region.
+  reuse_and_estimate(frame, inputs, clock, "4", frame.search_keys, frame.search_map, settings.search_tile,
+                     settings.blockers, settings.blocker_samples, frame.search_parents, frame.blocker_results);
   frame.filter_map = make_float_texture(*context_, size, size, 4);
   frame.blocker_mean = make_float_texture(*context_, size, size, 1);
   frame.filter_keys = make_float_texture(*context_, size, size, 4);
   {
-    PcssBlock b = block;
-    b.reuse_tile = search_tile;
-    GlObject ubo = bind_uniform_buffer(*context_, 7, &b, sizeof b);
-    gl.BindTextureUnit(2, frame.search_map.id());
-    gl.BindTextureUnit(4, search_tile > 0 ? frame.search_parents.id() : no_parents_.id());
-    gl.BindTextureUnit(5, frame.blocker_results.id());
+    GlObject ubo = bind_representatives(block, frame.search_map, settings.search_tile, frame.search_parents,
+                                        frame.blocker_results);
     gl.BindImageTexture(0, frame.filter_map.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gl.BindImageTexture(1, frame.blocker_mean.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     gl.BindImageTexture(2, frame.filter_keys.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -241,22 +255,13 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   }
   clock.stage("4 filter region");
 
-  // Step 5.
-  const int filter_tile = settings.filter_tile;
-  if (filter_tile > 0) frame.filter_parents = link(frame.filter_keys, size, filter_tile, settings);
-  clock.stage("5 reuse link");
-  frame.occlusion_results = cleared_texture(*context_, size, 4);
-  estimate(frame, inputs, frame.filter_map, filter_tile > 0 ? &frame.filter_parents : nullptr, filter_tile,
-           settings.occlusion, settings.filter_samples, frame.occlusion_results);
-  clock.stage("5 occlusion");
+  // Step 5: occluded fraction of the representatives, then every pixel's visibility.
+  reuse_and_estimate(frame, inputs, clock, "5", frame.filter_keys, frame.filter_map, settings.filter_tile,
+                     settings.occlusion, settings.filter_samples, frame.filter_parents, frame.occlusion_results);
   frame.visibility = make_float_texture(*context_, size, size, 1);
   {
-    PcssBlock b = block;
-    b.reuse_tile = filter_tile;
-    GlObject ubo = bind_uniform_buffer(*context_, 7, &b, sizeof b);
-    gl.BindTextureUnit(2, frame.filter_map.id());
-    gl.BindTextureUnit(4, filter_tile > 0 ? frame.filter_parents.id() : no_parents_.id());
-    gl.BindTextureUnit(5, frame.occlusion_results.id());
+    GlObject ubo = bind_representatives(block, frame.filter_map, settings.filter_tile, frame.filter_parents,
+                                        frame.occlusion_results);
     gl.BindImageTexture(3, frame.visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     shade_.dispatch(size, size);
   }

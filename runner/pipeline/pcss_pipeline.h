@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "gl/gpu_timer.h"
 #include "gl/compute_program.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
@@ -20,6 +21,8 @@
 #include "scene/scene.h"
 
 namespace pn {
+
+struct PcssBlock;  // glsl/passes/pcss_params.glsl's uniform block
 
 // Steps 1 and 2 without the pyramid: the same for every technique.
 struct PcssInputs {
@@ -90,6 +93,15 @@ class PcssPipeline {
   void estimate(const PcssFrame& frame, const PcssInputs& inputs, const GlObject& entries, const GlObject* parents,
                 int tile, Estimator estimator, int samples, const GlObject& result) const;
   GlObject link(const GlObject& entries, int size, int tile, const PcssSettings& settings) const;
+  // Steps 4 and 5's first half: links of `keys` (tile > 0) into `parents`, then the estimate of
+  // every computing pixel's region of `entries` into `results`; two stages of `clock`.
+  void reuse_and_estimate(PcssFrame& frame, const PcssInputs& inputs, StageClock& clock, const std::string& step,
+                          const GlObject& keys, const GlObject& entries, int tile, Estimator estimator, int samples,
+                          GlObject& parents, GlObject& results) const;
+  // Their second half's inputs: `entries`, parents (tile > 0) and results at units 2, 4, 5, and the
+  // uniform block with the tile (returned: bound while it lives).
+  GlObject bind_representatives(const PcssBlock& block, const GlObject& entries, int tile, const GlObject& parents,
+                                const GlObject& results) const;
 
   const Context* context_;
   ShadowMapRenderer shadow_map_;
