@@ -29,6 +29,7 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       for (const std::string& name : *methods) setup->methods.push_back(pcss_method(name));
     }
     validate_render_setup(*setup);  // bad input is reported before looking for a GL context
+    create_output_directory(setup->out);
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << "\n";

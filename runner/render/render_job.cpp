@@ -1,23 +1,18 @@
 #include "render/render_job.h"
 
 #include <iomanip>
-#include <map>
 
 #include "core/error.h"
 #include "figures/canvas.h"
 #include "figures/lit_image.h"
-#include "passes/physical_reference_pass.h"
-#include "passes/surface_pass.h"
-#include "gl/gpu_timer.h"
 #include "gl/texture.h"
 #include "metrics/ssim.h"
+#include "passes/physical_reference_pass.h"
+#include "passes/surface_pass.h"
 #include "pipeline/pcss_pipeline.h"
 #include "scene/scene.h"
 
 namespace pn {
-namespace {
-
-}  // namespace
 
 void validate_render_setup(const RenderSetup& s) {
   find_scene_fixture(s.scene);
@@ -27,6 +22,12 @@ void validate_render_setup(const RenderSetup& s) {
   if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
   if (s.methods.empty()) throw Error("no methods to render");
   for (const PcssSettings& m : s.methods) m.validate();
+}
+
+void create_output_directory(const std::filesystem::path& out) {
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  if (ec) throw Error("output directory '" + out.string() + "': cannot be created (" + ec.message() + ")");
 }
 
 namespace {
@@ -51,11 +52,11 @@ std::string file_stem(std::string name) {
   return name;
 }
 
-
 }  // namespace
 
 RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup) {
   validate_render_setup(setup);
+  create_output_directory(setup.out);
   const Scene scene = make_scene(find_scene_fixture(setup.scene), setup.map_size);
   const PcssPipeline pipeline(context, tree);
   const PcssInputs inputs = pipeline.render_inputs(scene, setup.screen_size);
@@ -85,7 +86,6 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
   for (size_t i = 0; i < setup.methods.size() && exact < 0; ++i)
     if (setup.methods[i].name == exact_pcss().name) exact = static_cast<int>(i);
 
-  std::filesystem::create_directories(setup.out);
   const auto write = [&](const std::filesystem::path& path, auto writer, const Image& image) {
     writer(image, path);
     result.written.push_back(path);

@@ -45,6 +45,9 @@ struct RenderResult {
 // Throws Error naming the first setting out of range (an unknown scene, sizes, samples, repeats).
 void validate_render_setup(const RenderSetup& setup);
 
+// Creates `out` (and its parents); throws Error naming it when it cannot.
+void create_output_directory(const std::filesystem::path& out);
+
 // Throws Error for an invalid setup (before writing anything).
 RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup);
 
