@@ -36,6 +36,16 @@ CaseResult scalar_case(const std::string& name, double target, double value, Tol
   return {name, tolerance, compare(e, o, tolerance)};
 }
 
+// Pixels where float and double may decide a rounding differently take the
+// reference's value in `observed` (left out of the comparison); returns how many.
+int leave_out_ambiguous(const PcssReference& reference, Image& observed) {
+  int count = 0;
+  for (int y = 0; y < observed.height; ++y)
+    for (int x = 0; x < observed.width; ++x)
+      if (reference.ambiguous.at(x, y) != 0.0f) observed.at(x, y) = reference.visibility.at(x, y), ++count;
+  return count;
+}
+
 // Every texel finite and in [0, 1]: the image must equal itself clamped to
 // [0, 1], with every non-finite texel replaced by -1.
 CaseResult in_unit_range(const std::string& name, const Image& image) {
@@ -114,17 +124,13 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const PcssInputs inputs = pipeline.render_inputs(scene, kScreen);
     const Image map = read1(context, inputs.shadow_map, kMap), gbuffer = read4(context, inputs.gbuffer, kScreen);
 
-    // Exact PCSS against the CPU's definition; pixels where float and double
-    // may decide a rounding differently are left out (counted in the name).
+    // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
     const PcssSettings exact = exact_pcss();
     const PcssFrame exact_frame = pipeline.run(inputs, exact);
     const Image exact_visibility = read1(context, exact_frame.soft_shadow(), kScreen);
     const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, exact.bias, exact.filter_scale, kMargin);
     Image observed = exact_visibility;
-    int ambiguous = 0;
-    for (int y = 0; y < kScreen; ++y)
-      for (int x = 0; x < kScreen; ++x)
-        if (reference.ambiguous.at(x, y) != 0.0f) observed.at(x, y) = reference.visibility.at(x, y), ++ambiguous;
+    const int ambiguous = leave_out_ambiguous(reference, observed);
     results.push_back({name + ": exact PCSS vs CPU brute force (" + std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
                        Tolerance::absolute(kFractionRounding),
                        compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
@@ -169,9 +175,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     PcssInputs bad{scene.light, kScreen, upload_float_texture(context, damaged), upload_float_texture(context, outside)};
     const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kMargin);
     Image bad_observed = read1(context, pipeline.run(bad, exact).soft_shadow(), kScreen);
-    for (int y = 0; y < kScreen; ++y)
-      for (int x = 0; x < kScreen; ++x)
-        if (bad_reference.ambiguous.at(x, y) != 0.0f) bad_observed.at(x, y) = bad_reference.visibility.at(x, y);
+    leave_out_ambiguous(bad_reference, bad_observed);
     results.push_back({name + ": exact PCSS, NaN/+Inf texels (no occluder) and receivers outside the frustum (lit)",
                        Tolerance::absolute(kFractionRounding),
                        compare(bad_reference.visibility, bad_observed, Tolerance::absolute(kFractionRounding))});

@@ -121,12 +121,10 @@ GlObject PcssPipeline::link(const GlObject& entries, int size, int tile, const P
   return reuse_.link(entries, size, size, params);
 }
 
-void PcssPipeline::estimate(const PcssFrame& frame, const PcssInputs& inputs, const GlObject& entries,
-                            const GlObject* parents, int tile, Estimator estimator, int samples,
-                            const GlObject& result) const {
+void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObject& entries, const GlObject* parents,
+                            int tile, Estimator estimator, int samples, const GlObject& result) const {
   const auto& gl = context_->gl();
   const int size = frame.size;
-  PcssBlock block = make_block(inputs.light, frame.settings);
   block.reuse_tile = parents ? tile : 0;
   block.sample_count = samples;
   gl.BindTextureUnit(0, frame.pyramid.texture.id());
@@ -137,7 +135,7 @@ void PcssPipeline::estimate(const PcssFrame& frame, const PcssInputs& inputs, co
   if (estimator == Estimator::scan) {
     // Bands of rows, ping-pong between `result` and a partner so the last band lands in `result`.
     GlObject partner = cleared_texture(*context_, size, 4);
-    const int bands = (inputs.light.map_size + kScanBandRows - 1) / kScanBandRows;
+    const int bands = (frame.pyramid.map_size + kScanBandRows - 1) / kScanBandRows;
     const GlObject* target[2] = {&result, &partner};
     const int first = (bands - 1) % 2;
     for (int band = 0; band < bands; ++band) {
@@ -171,30 +169,30 @@ void PcssPipeline::estimate(const PcssFrame& frame, const PcssInputs& inputs, co
     }
     gl.BindBufferBase(GL_UNIFORM_BUFFER, 8, disk->id());
   }
+  // The work list: its header (groups x, y, z; count), and room for every pixel only when listing.
   GlObject work(*context_, GlKind::buffer);
   const GLsizeiptr header = 4 * sizeof(std::uint32_t);
-  gl.NamedBufferData(work.id(), header + static_cast<GLsizeiptr>(size) * size * 2 * sizeof(std::uint32_t), nullptr,
-                     GL_DYNAMIC_COPY);
-  const std::uint32_t start[4] = {0, 1, 1, 0};  // groups x, y, z; count
+  const GLsizeiptr room = list ? static_cast<GLsizeiptr>(size) * size * 2 * sizeof(std::uint32_t) : 0;
+  gl.NamedBufferData(work.id(), header + room, nullptr, GL_DYNAMIC_COPY);
+  const std::uint32_t start[4] = {0, 1, 1, 0};
   gl.NamedBufferSubData(work.id(), 0, header, start);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, work.id());
   gl.BindImageTexture(3, result.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   if (list) {
     compact_.dispatch(size, size);
-    gl.BindImageTexture(3, result.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     program.dispatch_indirect(work);
   } else {
     program.dispatch(size * size, 1);
   }
 }
 
-void PcssPipeline::reuse_and_estimate(PcssFrame& frame, const PcssInputs& inputs, StageClock& clock,
+void PcssPipeline::reuse_and_estimate(PcssFrame& frame, const PcssBlock& block, StageClock& clock,
                                       const std::string& step, const GlObject& keys, const GlObject& entries, int tile,
                                       Estimator estimator, int samples, GlObject& parents, GlObject& results) const {
   if (tile > 0) parents = link(keys, frame.size, tile, frame.settings);
   clock.stage(step + " reuse link");
   results = cleared_texture(*context_, frame.size, 4);
-  estimate(frame, inputs, entries, tile > 0 ? &parents : nullptr, tile, estimator, samples, results);
+  estimate(frame, block, entries, tile > 0 ? &parents : nullptr, tile, estimator, samples, results);
   clock.stage(step + (step == "4" ? " blockers" : " occlusion"));
 }
 
@@ -240,7 +238,7 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   clock.stage("3 search region");
 
   // Step 4: blockers of the representatives, then every pixel's filter region.
-  reuse_and_estimate(frame, inputs, clock, "4", frame.search_keys, frame.search_map, settings.search_tile,
+  reuse_and_estimate(frame, block, clock, "4", frame.search_keys, frame.search_map, settings.search_tile,
                      settings.blockers, settings.blocker_samples, frame.search_parents, frame.blocker_results);
   frame.filter_map = make_float_texture(*context_, size, size, 4);
   frame.blocker_mean = make_float_texture(*context_, size, size, 1);
@@ -256,7 +254,7 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   clock.stage("4 filter region");
 
   // Step 5: occluded fraction of the representatives, then every pixel's visibility.
-  reuse_and_estimate(frame, inputs, clock, "5", frame.filter_keys, frame.filter_map, settings.filter_tile,
+  reuse_and_estimate(frame, block, clock, "5", frame.filter_keys, frame.filter_map, settings.filter_tile,
                      settings.occlusion, settings.filter_samples, frame.filter_parents, frame.occlusion_results);
   frame.visibility = make_float_texture(*context_, size, size, 1);
   {

@@ -90,12 +90,12 @@ class PcssPipeline {
   PcssMeasurement measure(const PcssInputs& inputs, const PcssSettings& settings, int repeats) const;
 
  private:
-  void estimate(const PcssFrame& frame, const PcssInputs& inputs, const GlObject& entries, const GlObject* parents,
-                int tile, Estimator estimator, int samples, const GlObject& result) const;
+  void estimate(const PcssFrame& frame, PcssBlock block, const GlObject& entries, const GlObject* parents, int tile,
+                Estimator estimator, int samples, const GlObject& result) const;
   GlObject link(const GlObject& entries, int size, int tile, const PcssSettings& settings) const;
   // Steps 4 and 5's first half: links of `keys` (tile > 0) into `parents`, then the estimate of
   // every computing pixel's region of `entries` into `results`; two stages of `clock`.
-  void reuse_and_estimate(PcssFrame& frame, const PcssInputs& inputs, StageClock& clock, const std::string& step,
+  void reuse_and_estimate(PcssFrame& frame, const PcssBlock& block, StageClock& clock, const std::string& step,
                           const GlObject& keys, const GlObject& entries, int tile, Estimator estimator, int samples,
                           GlObject& parents, GlObject& results) const;
   // Their second half's inputs: `entries`, parents (tile > 0) and results at units 2, 4, 5, and the
