@@ -86,27 +86,29 @@ Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size) {
   return scene;
 }
 
+std::optional<double> box_entry(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction, double t_max) {
+  double t0 = 0.0, t1 = t_max;
+  for (int a = 0; a < 3; ++a) {  // slab method
+    const double lo = b.lo[a], hi = b.hi[a];
+    if (std::fabs(direction[a]) < 1e-300) {
+      if (origin[a] < lo || origin[a] > hi) return std::nullopt;
+      continue;
+    }
+    double ta = (lo - origin[a]) / direction[a], tb = (hi - origin[a]) / direction[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+    if (t0 > t1) return std::nullopt;
+  }
+  return t0;
+}
+
 namespace {
 
 // Nearest box hit along origin + t·direction with t in [t_min, t_max]; +Inf when none.
 double nearest_hit(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& direction, double t_min, double t_max) {
   double nearest = std::numeric_limits<double>::infinity();
-  for (const Box& b : scene.boxes) {  // slab test
-    double t0 = 0.0, t1 = std::min(nearest, t_max);
-    bool hit = true;
-    for (int a = 0; a < 3 && hit; ++a) {
-      const double lo = b.lo[a], hi = b.hi[a];
-      if (std::fabs(direction[a]) < 1e-300) {
-        hit = origin[a] >= lo && origin[a] <= hi;
-        continue;
-      }
-      double ta = (lo - origin[a]) / direction[a], tb = (hi - origin[a]) / direction[a];
-      if (ta > tb) std::swap(ta, tb);
-      t0 = std::max(t0, ta), t1 = std::min(t1, tb);
-      hit = t0 <= t1;
-    }
-    if (hit && t0 >= t_min) nearest = std::min(nearest, t0);
-  }
+  for (const Box& b : scene.boxes)
+    if (const auto t = box_entry(b, origin, direction, std::min(nearest, t_max)); t && *t >= t_min) nearest = *t;
   return nearest;
 }
 
@@ -129,22 +131,34 @@ float ray_cast_light_depth(const Scene& scene, int x, int y) {
   return static_cast<float>(nearest_hit(scene, origin, direction, scene.light.near_plane, scene.light.far_plane));
 }
 
-Receiver ray_cast_receiver(const Scene& scene, int x, int y, int size) {
-  const glm::dvec3 eye(fixtures::kCameraPosition[0], fixtures::kCameraPosition[1], fixtures::kCameraPosition[2]);
-  const glm::dvec3 on_near = through_pixel(scene.camera_projection() * scene.camera_view(), x, y, size);
-  const glm::dvec3 direction = on_near - eye;  // t = 1 on the near plane
-  const double t = nearest_hit(scene, eye, direction, 1.0, fixtures::kCameraFar / fixtures::kCameraNear);
+std::optional<SurfacePoint> ray_cast_surface_point(const Scene& scene, int x, int y, int size) {
+  // From the camera's matrices alone, near plane to far plane, in double.
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(scene.camera_projection() * scene.camera_view()));
+  const double nx = 2.0 * (x + 0.5) / size - 1.0, ny = 2.0 * (y + 0.5) / size - 1.0;
+  const glm::dvec4 near4 = inverse * glm::dvec4(nx, ny, -1.0, 1.0), far4 = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
+  const glm::dvec3 origin = glm::dvec3(near4) / near4.w, direction = glm::dvec3(far4) / far4.w - origin;
+  std::optional<SurfacePoint> nearest;
+  double nearest_t = INFINITY;
+  for (size_t b = 0; b < scene.boxes.size(); ++b)
+    if (const auto t = box_entry(scene.boxes[b], origin, direction, 1.0); t && *t < nearest_t)
+      nearest_t = *t, nearest = SurfacePoint{origin + *t * direction, static_cast<int>(b)};
+  return nearest;
+}
+
+Receiver project_to_light(const Scene& scene, const glm::dvec3& point) {
+  const glm::dvec4 view = glm::dmat4(scene.light_view()) * glm::dvec4(point, 1.0);
+  const glm::dvec4 clip = glm::dmat4(scene.light_projection()) * view;
   Receiver r;
-  if (!std::isfinite(t)) return r;
-  const glm::dvec3 p = eye + t * direction;
-  const glm::dmat4 light_view(scene.light_view()), light_projection(scene.light_projection());
-  const glm::dvec4 view = light_view * glm::dvec4(p, 1.0);
-  const glm::dvec4 clip = light_projection * view;
-  r.valid = true;
+  r.valid = clip.w > 0.0;
   r.u = (clip.x / clip.w * 0.5 + 0.5) * scene.light.map_size;
   r.v = (clip.y / clip.w * 0.5 + 0.5) * scene.light.map_size;
   r.depth = -view.z;
   return r;
+}
+
+Receiver ray_cast_receiver(const Scene& scene, int x, int y, int size) {
+  const auto surface = ray_cast_surface_point(scene, x, y, size);
+  return surface ? project_to_light(scene, surface->position) : Receiver{};
 }
 
 bool receiver_on_surface_near_pixel(const Scene& scene, double u, double v, double depth, int x, int y, int size,

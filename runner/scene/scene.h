@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,12 +47,29 @@ Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
 // position of the surface point through the pixel's centre, in texels
 // (continuous: texel i spans [i, i + 1)), and its linear light depth.
 struct Receiver {
-  bool valid = false;  // the pixel sees a surface
+  bool valid = false;  // the pixel sees a surface (project_to_light: the point is in front of the light)
   double u = 0, v = 0, depth = 0;
 };
 
-// The G-buffer's definition by ray casting from the camera through the centre
-// of pixel (x, y) of a size×size screen (x, y from the lower left).
+// Where origin + t·direction, t in [0, t_max], enters box b (slab method); none if it misses.
+std::optional<double> box_entry(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction, double t_max);
+
+struct SurfacePoint {
+  glm::dvec3 position;
+  int box = -1;  // index into Scene::boxes
+};
+
+// Where the ray from the camera through the centre of pixel (x, y) of a
+// size×size screen (x, y from the lower left) first meets a box, within the
+// camera's near and far planes; none when it meets nothing.
+std::optional<SurfacePoint> ray_cast_surface_point(const Scene& scene, int x, int y, int size);
+
+// A world point in the shadow map's terms (u, v in texels, linear light
+// depth); valid when it lies in front of the light.
+Receiver project_to_light(const Scene& scene, const glm::dvec3& point);
+
+// The G-buffer's definition: the surface point of pixel (x, y) projected into
+// the shadow map (ray_cast_surface_point, project_to_light).
 Receiver ray_cast_receiver(const Scene& scene, int x, int y, int size);
 
 // Whether a G-buffer value (u, v, light depth) names a point on some box's

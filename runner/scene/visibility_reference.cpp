@@ -6,41 +6,6 @@
 #include "scene/light_samples.h"
 
 namespace pn {
-namespace {
-
-// Where origin + t·direction, t in [0, 1], enters box b (slab method); none if it misses.
-std::optional<double> segment_entry(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction) {
-  double t0 = 0.0, t1 = 1.0;
-  for (int a = 0; a < 3; ++a) {
-    const double lo = b.lo[a], hi = b.hi[a];
-    if (direction[a] == 0.0) {
-      if (origin[a] < lo || origin[a] > hi) return std::nullopt;
-      continue;
-    }
-    double ta = (lo - origin[a]) / direction[a], tb = (hi - origin[a]) / direction[a];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta), t1 = std::min(t1, tb);
-    if (t0 > t1) return std::nullopt;
-  }
-  return t0;
-}
-
-}  // namespace
-
-std::optional<SurfacePoint> ray_cast_surface_point(const Scene& scene, int x, int y, int size) {
-  // Built here from the camera's matrices alone (near plane to far plane), so that this definition owes
-  // nothing to the G-buffer's caster or to the light.
-  const glm::dmat4 inverse = glm::inverse(glm::dmat4(scene.camera_projection() * scene.camera_view()));
-  const double nx = 2.0 * (x + 0.5) / size - 1.0, ny = 2.0 * (y + 0.5) / size - 1.0;
-  const glm::dvec4 near4 = inverse * glm::dvec4(nx, ny, -1.0, 1.0), far4 = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
-  const glm::dvec3 origin = glm::dvec3(near4) / near4.w, direction = glm::dvec3(far4) / far4.w - origin;
-  std::optional<SurfacePoint> nearest;
-  double nearest_t = INFINITY;
-  for (size_t b = 0; b < scene.boxes.size(); ++b)
-    if (const auto t = segment_entry(scene.boxes[b], origin, direction); t && *t < nearest_t)
-      nearest_t = *t, nearest = SurfacePoint{origin + *t * direction, static_cast<int>(b)};
-  return nearest;
-}
 
 bool sees_point(const Scene& scene, const glm::dvec3& point, const glm::dvec3& light) {
   const glm::dvec3 to_light = light - point;
@@ -48,7 +13,7 @@ bool sees_point(const Scene& scene, const glm::dvec3& point, const glm::dvec3& l
   if (length <= kSelfOffset) return true;
   const glm::dvec3 start = point + to_light * (kSelfOffset / length);
   return std::none_of(scene.boxes.begin(), scene.boxes.end(),
-                      [&](const Box& b) { return segment_entry(b, start, light - start).has_value(); });
+                      [&](const Box& b) { return box_entry(b, start, light - start, 1.0).has_value(); });
 }
 
 double visible_fraction(const Scene& scene, const glm::dvec3& point, const std::vector<glm::vec3>& lights) {
@@ -59,20 +24,18 @@ double visible_fraction(const Scene& scene, const glm::dvec3& point, const std::
 }
 
 ShadowMapAnswers shadow_map_answers(const Scene& scene, const glm::dvec3& point, double bias) {
-  const glm::dvec4 view = glm::dmat4(scene.light_view()) * glm::dvec4(point, 1.0);
-  const glm::dvec4 clip = glm::dmat4(scene.light_projection()) * view;
+  const Receiver p = project_to_light(scene, point);
   ShadowMapAnswers answers;
-  if (!(clip.w > 0.0)) {
+  if (!p.valid) {
     answers.lit = true;
     return answers;
   }
-  const double n = scene.light.map_size, depth = -view.z;
-  const double u = (clip.x / clip.w * 0.5 + 0.5) * n, v = (clip.y / clip.w * 0.5 + 0.5) * n;
+  const double n = scene.light.map_size;
   for (double du : {-kTexelTie, kTexelTie})
     for (double dv : {-kTexelTie, kTexelTie}) {
-      const double tu = std::floor(u + du), tv = std::floor(v + dv);
+      const double tu = std::floor(p.u + du), tv = std::floor(p.v + dv);
       const bool inside = tu >= 0 && tv >= 0 && tu < n && tv < n;
-      if (inside && ray_cast_light_depth(scene, static_cast<int>(tu), static_cast<int>(tv)) < depth - bias)
+      if (inside && ray_cast_light_depth(scene, static_cast<int>(tu), static_cast<int>(tv)) < p.depth - bias)
         answers.shadowed = true;
       else
         answers.lit = true;

@@ -1,7 +1,7 @@
-// The physical reference's CPU definition, independent of rasterisation: the
-// surface point a camera pixel sees (a ray through its centre, the G-buffer's
-// definition) and the fraction of the light's sample points
-// (scene/light_samples.h) that the point sees, by segment-versus-box tests.
+// The physical reference's CPU definition, independent of rasterisation: for
+// the surface point a camera pixel sees (ray_cast_surface_point, scene.h),
+// the fraction of the light's sample points (scene/light_samples.h) that the
+// point sees, by segment-versus-box tests.
 // Beside it, what hard shadows from shadow maps may answer instead: a shadow
 // map knows the scene only along the rays through its texel centres, so a
 // receiver is tested against what the ray through its texel's centre sees.
@@ -16,16 +16,6 @@
 #include "scene/scene.h"
 
 namespace pn {
-
-struct SurfacePoint {
-  glm::dvec3 position;
-  int box = -1;  // index into Scene::boxes
-};
-
-// Where the ray from the camera through the centre of pixel (x, y) of a
-// size x size screen (x, y from the lower left) first meets a box, within the
-// camera's near and far planes; none when it meets nothing.
-std::optional<SurfacePoint> ray_cast_surface_point(const Scene& scene, int x, int y, int size);
 
 // Whether the segment from `point` to `light` misses every box. It starts
 // kSelfOffset world units from `point` toward `light`, so the face the point
