@@ -27,6 +27,10 @@
 //   float pnLightSearchWidthTexels(PnLight light, float receiverDepth)     = window for z = near
 //   float pnLightPenumbraWorld(PnLight light, float receiverDepth, float blockerDepth)
 //   float pnLightPenumbraTexels(PnLight light, float receiverDepth, float blockerDepth)
+//   vec3  pnLightProject(mat4 lightView, mat4 lightProjection, float mapSize, vec3 world)
+//         a world point in the shadow map's terms: (u, v) in texels (continuous, texel i
+//         spans [i, i + 1)) and its linear light depth; depth <= 0: behind the light
+//         (u, v then meaningless). What the G-buffer stores and a hard shadow looks up.
 //
 // cost: a few ALU operations.
 
@@ -66,6 +70,12 @@ float pnLightPenumbraTexels(PnLight light, float receiverDepth, float blockerDep
   if (!(receiverDepth >= light.near) || !(light.near > 0.0) || !(light.nearPlaneWidth > 0.0)) return 0.0;
   float world = pnLightPenumbraWorld(light, receiverDepth, blockerDepth);
   return pnLightPositiveOrZero(world * (light.near / receiverDepth) / light.nearPlaneWidth * light.mapSize);
+}
+
+vec3 pnLightProject(mat4 lightView, mat4 lightProjection, float mapSize, vec3 world) {
+  vec4 view = lightView * vec4(world, 1.0);
+  vec4 clip = lightProjection * view;
+  return vec3((clip.xy / clip.w * 0.5 + 0.5) * mapSize, -view.z);
 }
 
 #endif  // PENUMBRA_LIGHT_MODEL_GLSL

@@ -47,8 +47,8 @@ TEST_CASE("negative: a shadow map of window depth instead of linear light depth 
 }
 
 TEST_CASE("negative: a G-buffer with the light depth's sign flipped fails the shadow_map check") {
-  const BrokenCopy copy("passes/gbuffer.frag", "pnReceiver = vec4(texel, -view.z, 1.0);",
-                        "pnReceiver = vec4(texel, view.z, 1.0);");
+  const BrokenCopy copy("light_model.glsl", "return vec3((clip.xy / clip.w * 0.5 + 0.5) * mapSize, -view.z);",
+                        "return vec3((clip.xy / clip.w * 0.5 + 0.5) * mapSize, view.z);");
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("shadow_map"), copy.root())) > 0);
 }

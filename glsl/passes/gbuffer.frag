@@ -6,6 +6,8 @@
 // its light depth, so that faces seen edge-on by the light (box walls) do not
 // shadow themselves in stripes; 0 keeps the surface point itself.
 
+#include "light_model.glsl"
+
 layout(location = 0) in vec3 pnWorld;
 layout(location = 0) out vec4 pnReceiver;
 
@@ -27,8 +29,5 @@ void main() {
     float depth = -(pnParams.lightView * vec4(pnWorld, 1.0)).z;
     world += n * (pnParams.normalOffset * pnParams.texelPerDepth * depth);
   }
-  vec4 view = pnParams.lightView * vec4(world, 1.0);
-  vec4 clip = pnParams.lightProjection * view;
-  vec2 texel = (clip.xy / clip.w * 0.5 + 0.5) * pnParams.mapSize;
-  pnReceiver = vec4(texel, -view.z, 1.0);
+  pnReceiver = vec4(pnLightProject(pnParams.lightView, pnParams.lightProjection, pnParams.mapSize, world), 1.0);
 }

@@ -5,7 +5,7 @@
 // divides by the number of samples, so the result is the visible fraction.
 //
 // Lookup: the receiver's nearest shadow-map texel, the G-buffer's convention
-// (texel = (clip.xy / clip.w * 0.5 + 0.5) * N, texel i spans [i, i + 1));
+// (pnLightProject, light_model.glsl: texel i spans [i, i + 1));
 // a receiver outside the map, or behind the light, is lit. A texel of linear
 // depth d occludes receiver depth dP when d < dP - bias (SPEC §3); +Inf and
 // NaN ("no occluder") never compare less, so they light the receiver.
@@ -13,6 +13,8 @@
 //   binding 0: PnHardShadowParams (std140)
 //   binding 1: pnShadowMap (R32F, N x N linear depth of the sample point's view)
 //   binding 2: pnPreviousCount (R32F, screen-sized, the passes so far)
+
+#include "light_model.glsl"
 
 layout(location = 0) in vec3 pnWorld;
 layout(location = 0) out vec4 pnVisibility;
@@ -30,12 +32,11 @@ layout(binding = 1) uniform sampler2D pnShadowMap;
 layout(binding = 2) uniform sampler2D pnPreviousCount;
 
 void main() {
-  vec4 view = pnParams.lightView * vec4(pnWorld, 1.0);
-  vec4 clip = pnParams.lightProjection * view;
-  float receiverDepth = -view.z;
+  vec3 receiver = pnLightProject(pnParams.lightView, pnParams.lightProjection, pnParams.mapSize, pnWorld);
+  float receiverDepth = receiver.z;
   bool occluded = false;
-  if (clip.w > 0.0) {
-    vec2 texel = (clip.xy / clip.w * 0.5 + 0.5) * pnParams.mapSize;
+  if (receiverDepth > 0.0) {  // in front of the light (the perspective's clip w is the depth)
+    vec2 texel = receiver.xy;
     if (all(greaterThanEqual(texel, vec2(0.0))) && all(lessThan(texel, vec2(pnParams.mapSize)))) {
       // Clamped as well: float rounding of the bounds test must never read outside the map.
       ivec2 last = textureSize(pnShadowMap, 0) - 1;
