@@ -8,7 +8,8 @@ packages="
   glslang-dev glslang-tools spirv-tools
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   libglm-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
-  python3 python3-glad python3-skimage
+  python3 python3-glad python3-skimage python3-matplotlib
+  libembree-dev libassimp-dev assimp-testmodels fonts-dejavu-core
 "
 
 missing=""
