@@ -27,22 +27,12 @@
 //   PN_BLUR_SIGMA             default sigma for callers (1.0: 3 sigma = radius)
 //   PN_BLUR_MAX_RADIUS        loop bound (16)
 //   PN_BLUR_NONFINITE_VALUE   value substituted for NaN/±Inf texels (0.0)
+//   (all four in blur.h, shared with the runner)
 
 #ifndef PENUMBRA_BLUR_GLSL
 #define PENUMBRA_BLUR_GLSL
 
-#ifndef PN_BLUR_RADIUS
-#define PN_BLUR_RADIUS 3
-#endif
-#ifndef PN_BLUR_SIGMA
-#define PN_BLUR_SIGMA 1.0
-#endif
-#ifndef PN_BLUR_MAX_RADIUS
-#define PN_BLUR_MAX_RADIUS 16
-#endif
-#ifndef PN_BLUR_NONFINITE_VALUE
-#define PN_BLUR_NONFINITE_VALUE 0.0
-#endif
+#include "blur.h"  // PN_BLUR_RADIUS, PN_BLUR_SIGMA, PN_BLUR_MAX_RADIUS, PN_BLUR_NONFINITE_VALUE
 
 float pnBlurGaussian(int offset, float sigma) {
   float t = float(offset) / sigma;

@@ -4,7 +4,7 @@
 // description:
 //   Seed 000 §1, SPEC §4.7. An entry is (receiver light depth d, region
 //   centre x, y in shadow-map texels, region side s in texels); s < 0
-//   (PN_REGION_LIT) marks a pixel known to be lit: no region, nothing to do.
+//   (PN_REGION_LIT, pcss_regions.h) marks a pixel known to be lit: no region, nothing to do.
 //   Step 3 — search region: PCSS's blocker-search width for d (blockers as
 //   near as the near plane, light_model.glsl), then, when refining (HQEPCSS),
 //   repeated at most `iterations` times:
@@ -35,10 +35,11 @@
 //         (reuse.glsl): in the window modes the side is the window's power of two, as the paper's
 //         maps hold it (§5.2: "the sizes are already approximated", hence sigma1 = 0); else the entry
 //   regionMode: PN_REGION_WINDOW (the paper's Steps 1-7), PN_REGION_EXACT (pnRegionSquare),
-//               PN_REGION_CENTRED (the window's side, centred on the region: pnRegionApproximateCentred)
+//               PN_REGION_CENTRED (the window's side, centred on the region: pnRegionApproximateCentred);
+//               pcss_regions.h, shared with the runner
 //
 // options:
-//   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement
+//   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement (pcss_regions.h, shared with the runner)
 //
 // cost: search entry: 4 fetches per refinement iteration; filter entry: ALU only.
 
@@ -47,17 +48,8 @@
 
 #include "depth_pyramid.glsl"
 #include "light_model.glsl"
+#include "pcss_regions.h"
 #include "region.glsl"
-
-#ifndef PN_REFINE_MAX_ITERATIONS
-#define PN_REFINE_MAX_ITERATIONS 16
-#endif
-
-#define PN_REGION_LIT -1.0
-
-#define PN_REGION_WINDOW 0
-#define PN_REGION_EXACT 1
-#define PN_REGION_CENTRED 2
 
 bool pnEntryLit(vec4 entry) {
   return !(entry.w >= 0.0);

@@ -27,20 +27,15 @@
 //   Defaults (§5.2): sigma1 = 0, sigma2 = sigma3 = 0.1; k = 4 for Step 4, 2 for Step 5.
 //
 // options:
-//   PN_REUSE_MAX_TILE 16   largest k (loop bound of pnReuseRepresentative)
+//   PN_REUSE_MAX_TILE 16   largest k (loop bound of pnReuseRepresentative; reuse.h, shared with
+//                          the runner like the parent codes PN_REUSE_*)
 //
 // cost: link: 3 fetches per pixel; representative: at most 2(k - 1) fetches.
 
 #ifndef PENUMBRA_REUSE_GLSL
 #define PENUMBRA_REUSE_GLSL
 
-#ifndef PN_REUSE_MAX_TILE
-#define PN_REUSE_MAX_TILE 16
-#endif
-
-#define PN_REUSE_NONE 0
-#define PN_REUSE_LEFT 1
-#define PN_REUSE_TOP 2
+#include "reuse.h"  // PN_REUSE_MAX_TILE, PN_REUSE_NONE, PN_REUSE_LEFT, PN_REUSE_TOP
 
 bool pnReuseClose(float a, float b, float sigma) {
   float m = max(abs(a), abs(b));

@@ -22,19 +22,15 @@
 //   ivec2 pnSampleTexel(vec2 position, ivec2 origin, ivec2 size)    inside [origin, origin + size)
 //
 // options:
-//   PN_SAMPLE_TABLE_COLUMNS 21, PN_SAMPLE_TABLE_SETS 8, PN_SAMPLE_MAX_COUNT 16 (loop bound for callers)
+//   PN_SAMPLE_TABLE_COLUMNS 21, PN_SAMPLE_TABLE_SETS 8 (the table's layout: sample_table.h, shared
+//   with the runner), PN_SAMPLE_MAX_COUNT 16 (loop bound for callers)
 //
 // cost: one fetch per sample.
 
 #ifndef PENUMBRA_SAMPLE_TABLE_GLSL
 #define PENUMBRA_SAMPLE_TABLE_GLSL
 
-#ifndef PN_SAMPLE_TABLE_COLUMNS
-#define PN_SAMPLE_TABLE_COLUMNS 21
-#endif
-#ifndef PN_SAMPLE_TABLE_SETS
-#define PN_SAMPLE_TABLE_SETS 8
-#endif
+#include "sample_table.h"  // PN_SAMPLE_TABLE_COLUMNS, PN_SAMPLE_TABLE_SETS
 #ifndef PN_SAMPLE_MAX_COUNT
 #define PN_SAMPLE_MAX_COUNT 16
 #endif

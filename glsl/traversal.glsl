@@ -43,7 +43,8 @@
 //   Counts are floats: sampled leaves add fractional counts (exact: c / m is dyadic).
 //
 // options:
-//   PN_TRAVERSAL_MAX_LEVEL 13   largest root level (regions up to 8192 texels a side)
+//   PN_TRAVERSAL_MAX_LEVEL 13   largest root level (regions up to 8192 texels a side; traversal.h,
+//                               shared with the runner like the leaf modes PN_LEAF_*)
 //
 // cost: one fetch per node inside the region, 4^k <= 16 per sampled leaf;
 //   nodes <= min(4/3 · side², nodeBudget + 3 · rootLevel + 1).
@@ -54,13 +55,7 @@
 #include "depth_pyramid.glsl"
 #include "region.glsl"
 #include "sample_table.glsl"
-
-#ifndef PN_TRAVERSAL_MAX_LEVEL
-#define PN_TRAVERSAL_MAX_LEVEL 13
-#endif
-
-#define PN_LEAF_SAMPLED 0
-#define PN_LEAF_MIN 1
+#include "traversal.h"  // PN_TRAVERSAL_MAX_LEVEL, PN_LEAF_SAMPLED, PN_LEAF_MIN
 
 struct PnTraversal {
   float occluders;

@@ -74,16 +74,15 @@ TEST_CASE("exact PCSS reference: a 4x4 blocker at depth 2 over a receiver at dep
   CHECK(pn::exact_pcss_reference(nan_map, one_receiver(8.0, 8.0, 4.0), hand_light(), 0.01, 1.0, 1e-4).visibility.at(0, 0) == 1.0f);
 }
 
-TEST_CASE("method settings: the four techniques, ablations and overrides") {
-  CHECK(pn::pcss_methods().size() == 4);
+TEST_CASE("PCSS settings: all-off preset and key=value overrides") {
   const pn::PcssSettings off = pn::fast_pcss_all_off();
   CHECK((off.refine_iterations == 0 && off.leaf_side == 1 && off.search_tile == 0 && off.filter_tile == 0 &&
          off.region == pn::RegionMode::exact && !off.blur));
-  const pn::PcssSettings s = pn::pcss_method("fast:leaf=4:reuse=off:region=centred:c=1.5");
+  pn::PcssSettings s = pn::fast_pcss();
+  for (const auto& [key, value] : {std::pair{"leaf", "4"}, {"reuse", "off"}, {"region", "centred"}, {"c", "1.5"}})
+    pn::set_pcss_setting(s, key, value);
   CHECK((s.leaf_side == 4 && s.search_tile == 0 && s.filter_tile == 0 && s.region == pn::RegionMode::centred &&
-         s.filter_scale == 1.5f && s.name == "fast:leaf=4:reuse=off:region=centred:c=1.5"));
-  CHECK_THROWS_WITH(pn::pcss_method("fast:leaf"), "method 'fast:leaf': 'leaf': expected key=value");
-  CHECK_THROWS_WITH(pn::pcss_method("fast:colour=red"), Catch::StartsWith("method 'fast:colour=red': unknown setting 'colour'"));
-  CHECK_THROWS_WITH(pn::pcss_method("fast:bias=-1"), "method 'fast:bias=-1': bias -1: expected a finite number >= 0");
-  CHECK_THROWS_WITH(pn::pcss_method("fast:search-tile=17"), "method 'fast:search-tile=17': search reuse tile 17: expected 0 (off) or 1..16");
+         s.filter_scale == 1.5f));
+  CHECK_THROWS_WITH(pn::set_pcss_setting(s, "leaf", "x"), "method 'fast': leaf=x: expected an integer");
+  CHECK_THROWS_WITH(pn::set_pcss_setting(s, "colour", "red"), Catch::StartsWith("method 'fast': unknown setting 'colour': expected refine, region"));
 }

@@ -1,5 +1,5 @@
-// sample_table and traversal on a real GL context, and copies with the
-// mistakes the traversal check exists to catch.
+// traversal on a real GL context, and copies with the mistakes the traversal
+// check exists to catch.
 #include <catch2/catch.hpp>
 
 #include "broken_copy.h"
@@ -8,10 +8,6 @@ using pn::test::BrokenCopy;
 using pn::test::check_all_pass;
 using pn::test::failing_cases;
 using pn::test::run_check;
-
-TEST_CASE("sample_table: strata, selection and scaling equal the paper's arithmetic") {
-  check_all_pass(run_check(pn::find_module_check("sample_table"), PENUMBRA_GLSL_DIR));
-}
 
 TEST_CASE("traversal: exact at leaf 1, sampled and min leaves and budgets equal the CPU recursion") {
   const auto results = run_check(pn::find_module_check("traversal"), PENUMBRA_GLSL_DIR);
@@ -31,18 +27,4 @@ TEST_CASE("negative: a traversal that drops a child fails the exact check") {
                         "");
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root())) > 0);
-}
-
-TEST_CASE("negative: a sample table selection with the wrong set rule fails the sample_table check") {
-  const BrokenCopy copy("sample_table.glsl", "return (pixel.x + pixel.y) & (PN_SAMPLE_TABLE_SETS - 1);",
-                        "return (pixel.x * pixel.y) & (PN_SAMPLE_TABLE_SETS - 1);");
-  REQUIRE(copy.found());
-  CHECK(failing_cases(run_check(pn::find_module_check("sample_table"), copy.root())) > 0);
-}
-
-TEST_CASE("negative: a stateless generator that forgets to scale the sub-stratum fails the sample_table check") {
-  const BrokenCopy copy("correlated_multi_jitter.glsl", "(float(column) + (float(sy) + jx) / float(un)) / float(um)",
-                        "(float(column) + (float(sy) + jx)) / float(um)");
-  REQUIRE(copy.found());
-  CHECK(failing_cases(run_check(pn::find_module_check("sample_table"), copy.root())) > 0);
 }

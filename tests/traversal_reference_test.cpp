@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "fixture/texture_fixture.h"
-#include "reference/pyramid_reference.h"
+#include "reference/depth_pyramid_reference.h"
 #include "reference/traversal_reference.h"
 
 TEST_CASE("at leaf side 1 the recursion equals brute force: counts exactly, blocker mean to rounding") {

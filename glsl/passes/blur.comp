@@ -1,22 +1,14 @@
 // blur.comp — one 1-D pass of blur.glsl over a whole R32F image.
 // The runner dispatches it twice: axis (1,0) into a temporary, then axis
-// (0,1) into the target. Bindings are distinct across resource kinds so the
-// pass is valid Vulkan GLSL as well as GL 4.50 and ES 3.10.
-//   binding 0: source (sampler2D, R32F)      binding 2: target (image2D, r32f)
-//   binding 1: depth  (sampler2D, R32F)      binding 3: PnBlurPassParams (std140)
+// (0,1) into the target. Bindings and the parameter block: blur.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnBlurSource;
-layout(binding = 1) uniform sampler2D pnBlurDepth;
-layout(r32f, binding = 2) writeonly uniform image2D pnBlurTarget;
-layout(std140, binding = 3) uniform PnBlurPassParams {
-  ivec2 axis;
-  int radius;
-  float sigma;
-  int depthAware;  // 0: plain Gaussian, 1: depth-aware
-  float depthTolerance;
-} pnParams;
+#include "blur.h"
+
+layout(binding = PN_BLUR_SOURCE_BINDING) uniform sampler2D pnBlurSource;
+layout(binding = PN_BLUR_DEPTH_BINDING) uniform sampler2D pnBlurDepth;
+layout(r32f, binding = PN_BLUR_TARGET_BINDING) writeonly uniform image2D pnBlurTarget;
 
 #include "blur.glsl"
 

@@ -4,19 +4,15 @@
 // from layer i-1 of the pyramid itself (read through the sampler, written
 // through the image; the layers differ, so no texel is read and written in
 // the same dispatch).
-//   binding 0: shadow map (sampler2D, R32F, N×N)
-//   binding 1: pyramid    (sampler2DArray, RGBA32F), the same texture as binding 2
-//   binding 2: pyramid    (image2DArray, rgba32f, layered)
-//   binding 3: PnPyramidBuildParams (std140)
+//   bindings and block: depth_pyramid.h
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnShadowMap;
-layout(binding = 1) uniform sampler2DArray pnPyramidRead;
-layout(rgba32f, binding = 2) writeonly uniform image2DArray pnPyramidWrite;
-layout(std140, binding = 3) uniform PnPyramidBuildParams {
-  int level;
-} pnParams;
+#include "depth_pyramid.h"
+
+layout(binding = PN_PYRAMID_BUILD_MAP_BINDING) uniform sampler2D pnShadowMap;
+layout(binding = PN_PYRAMID_BUILD_READ_BINDING) uniform sampler2DArray pnPyramidRead;
+layout(rgba32f, binding = PN_PYRAMID_BUILD_WRITE_IMAGE) writeonly uniform image2DArray pnPyramidWrite;
 
 #include "depth_pyramid.glsl"
 

@@ -1,14 +1,15 @@
 // depth_pyramid_query.comp — any-square min/max queries against a built pyramid.
 // Query k is texel k of the query image: (u, v, side, unused) as floats;
 // result k is (min, max, 0, 0).
-//   binding 0: pyramid (sampler2DArray)      binding 2: results (image2D, rgba32f)
-//   binding 1: queries (sampler2D, RGBA32F)
+//   bindings: depth_pyramid.h
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2DArray pnPyramid;
-layout(binding = 1) uniform sampler2D pnQueries;
-layout(rgba32f, binding = 2) writeonly uniform image2D pnResults;
+#include "depth_pyramid.h"
+
+layout(binding = PN_PYRAMID_QUERY_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_PYRAMID_QUERY_QUERIES_BINDING) uniform sampler2D pnQueries;
+layout(rgba32f, binding = PN_PYRAMID_QUERY_RESULTS_IMAGE) writeonly uniform image2D pnResults;
 
 #include "depth_pyramid.glsl"
 

@@ -5,21 +5,13 @@
 // the face normal (towards the camera), by normalOffset shadow-map texels at
 // its light depth, so that faces seen edge-on by the light (box walls) do not
 // shadow themselves in stripes; 0 keeps the surface point itself.
+// The parameter block (shared with gbuffer.vert), its binding and the locations: gbuffer.h.
 
+#include "gbuffer.h"
 #include "light_model.glsl"
 
-layout(location = 0) in vec3 pnWorld;
-layout(location = 0) out vec4 pnReceiver;
-
-layout(std140, binding = 0) uniform PnGBufferParams {
-  mat4 cameraViewProjection;
-  mat4 lightView;
-  mat4 lightProjection;
-  vec4 cameraPosition;  // xyz
-  float mapSize;
-  float normalOffset;   // texels
-  float texelPerDepth;  // a texel's world width per unit of light depth: W_n / (n N)
-} pnParams;
+layout(location = PN_GBUFFER_WORLD_LOCATION) in vec3 pnWorld;
+layout(location = PN_SCENE_TARGET_LOCATION) out vec4 pnReceiver;
 
 void main() {
   vec3 world = pnWorld;

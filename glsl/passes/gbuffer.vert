@@ -1,19 +1,11 @@
 // gbuffer.vert — Step 2's vertex stage: world position to the camera's clip
 // space; the world position goes on to the fragment stage.
-//   location 0: world position        binding 0: PnGBufferParams (std140)
+// The parameter block (shared with gbuffer.frag), its binding and the locations: gbuffer.h.
 
-layout(location = 0) in vec3 pnPosition;
-layout(location = 0) out vec3 pnWorld;
+#include "gbuffer.h"
 
-layout(std140, binding = 0) uniform PnGBufferParams {
-  mat4 cameraViewProjection;
-  mat4 lightView;
-  mat4 lightProjection;
-  vec4 cameraPosition;
-  float mapSize;
-  float normalOffset;
-  float texelPerDepth;
-} pnParams;
+layout(location = PN_SCENE_POSITION_LOCATION) in vec3 pnPosition;
+layout(location = PN_GBUFFER_WORLD_LOCATION) out vec3 pnWorld;
 
 void main() {
   pnWorld = pnPosition;

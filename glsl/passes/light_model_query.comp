@@ -1,18 +1,13 @@
 // light_model_query.comp — light_model.glsl over a batch of (receiver depth, blocker depth).
 // Result k: (blocker window texels, search width texels, penumbra world, penumbra texels).
-//   binding 0: queries (sampler2D, RGBA32F: receiver, blocker, -, -)   binding 2: results (image2D, rgba32f)
-//   binding 3: PnLightParams (std140)
+// Bindings and the light's parameter block: light_model_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnQueries;
-layout(rgba32f, binding = 2) writeonly uniform image2D pnResults;
-layout(std140, binding = 3) uniform PnLightParams {
-  float width;
-  float near;
-  float nearPlaneWidth;
-  float mapSize;
-} pnParams;
+#include "light_model_query.h"
+
+layout(binding = PN_LIGHT_MODEL_QUERY_QUERIES_BINDING) uniform sampler2D pnQueries;
+layout(rgba32f, binding = PN_LIGHT_MODEL_QUERY_RESULTS_BINDING) writeonly uniform image2D pnResults;
 
 #include "light_model.glsl"
 

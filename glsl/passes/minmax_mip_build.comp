@@ -2,19 +2,16 @@
 // aligned min / max / mean mip chain that HQEPCSS-style methods build.
 // Level i has ceil(N / 2^i)² texels; texel (x, y) combines texels 2x, 2x+1 ×
 // 2y, 2y+1 of level i-1 (clamped at odd edges). One dispatch per level.
-//   binding 0: shadow map (sampler2D, R32F)
-//   binding 1: mip chain (sampler2D, RGBA32F, all levels), the same texture as binding 2
-//   binding 2: mip chain (image2D, rgba32f, bound at the level being written)
-//   binding 3: PnMipBuildParams (std140)
+// The chain is read (all levels) and written (the level being built) through
+// the same texture. Bindings and the parameter block: minmax_mip_build.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnShadowMap;
-layout(binding = 1) uniform sampler2D pnMipRead;
-layout(rgba32f, binding = 2) writeonly uniform image2D pnMipWrite;
-layout(std140, binding = 3) uniform PnMipBuildParams {
-  int level;
-} pnParams;
+#include "minmax_mip_build.h"
+
+layout(binding = PN_MINMAX_MIP_SHADOW_MAP_BINDING) uniform sampler2D pnShadowMap;
+layout(binding = PN_MINMAX_MIP_READ_BINDING) uniform sampler2D pnMipRead;
+layout(rgba32f, binding = PN_MINMAX_MIP_WRITE_BINDING) writeonly uniform image2D pnMipWrite;
 
 #include "depth_pyramid.glsl"
 

@@ -2,15 +2,15 @@
 // every representative (no parent, reuse.glsl) whose entry is not lit,
 // appended in any order. The header counts work groups of 64 as they fill,
 // so it is the dispatch-indirect argument of PN_WORK_LIST (pcss_work.glsl).
-//   binding 2: entries (sampler2D, rgba32f)   binding 4: parent codes (sampler2D, R32F)
-//   SSBO binding 0: the list (header zeroed, groups[1] = groups[2] = 1, by the runner)
-//   binding 7: PnPcssParams (reuseTile 0: no parents are read)
+//   bindings and blocks: pcss_params.h
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 2) uniform sampler2D pnEntries;
-layout(binding = 4) uniform sampler2D pnParents;
-layout(std430, binding = 0) buffer PnWorkList {
+#include "pcss_params.h"
+
+layout(binding = PN_PCSS_ENTRIES_BINDING) uniform sampler2D pnEntries;
+layout(binding = PN_PCSS_PARENTS_BINDING) uniform sampler2D pnParents;
+layout(std430, binding = PN_PCSS_WORK_LIST_BINDING) buffer PnWorkList {
   uint groups[3];
   uint count;
   uvec2 pixels[];

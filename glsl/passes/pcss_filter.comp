@@ -1,19 +1,18 @@
 // pcss_filter.comp — end of Step 4: each pixel takes the blocker result of
 // its representative (reuse.glsl; itself without reuse), and its filter
 // region follows from its own entry (pcss_regions.glsl).
-//   binding 2: search map (sampler2D)           image 0: filter map (rgba32f) out
-//   binding 4: parent codes (sampler2D, R32F)   image 1: blocker mean (r32f) out, 0 if none
-//   binding 5: blocker results (sampler2D)      image 2: link keys (rgba32f) out
-//   binding 7: PnPcssParams
+//   bindings and blocks: pcss_params.h
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 2) uniform sampler2D pnSearchMap;
-layout(binding = 4) uniform sampler2D pnParents;
-layout(binding = 5) uniform sampler2D pnBlockers;
-layout(rgba32f, binding = 0) writeonly uniform image2D pnFilterMap;
-layout(r32f, binding = 1) writeonly uniform image2D pnBlockerMean;
-layout(rgba32f, binding = 2) writeonly uniform image2D pnLinkKeys;
+#include "pcss_params.h"
+
+layout(binding = PN_PCSS_ENTRIES_BINDING) uniform sampler2D pnSearchMap;
+layout(binding = PN_PCSS_PARENTS_BINDING) uniform sampler2D pnParents;
+layout(binding = PN_PCSS_RESULTS_BINDING) uniform sampler2D pnBlockers;
+layout(rgba32f, binding = PN_PCSS_FILTER_MAP_IMAGE) writeonly uniform image2D pnFilterMap;
+layout(r32f, binding = PN_PCSS_BLOCKER_MEAN_IMAGE) writeonly uniform image2D pnBlockerMean;
+layout(rgba32f, binding = PN_PCSS_FILTER_KEYS_IMAGE) writeonly uniform image2D pnLinkKeys;
 
 #include "pcss_params.glsl"
 #include "pcss_regions.glsl"

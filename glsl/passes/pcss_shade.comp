@@ -1,16 +1,16 @@
 // pcss_shade.comp — end of Step 5: each pixel takes the occluded fraction of
 // its representative (reuse.glsl; itself without reuse); visibility = 1 -
 // fraction, 1 for a lit entry. This is the soft-shadow map before the blur.
-//   binding 2: filter map (sampler2D)           binding 3: visibility (image2D, r32f) out
-//   binding 4: parent codes (sampler2D, R32F)   binding 7: PnPcssParams
-//   binding 5: occlusion results (sampler2D)
+//   bindings and blocks: pcss_params.h
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 2) uniform sampler2D pnFilterMap;
-layout(binding = 4) uniform sampler2D pnParents;
-layout(binding = 5) uniform sampler2D pnOcclusion;
-layout(r32f, binding = 3) writeonly uniform image2D pnVisibility;
+#include "pcss_params.h"
+
+layout(binding = PN_PCSS_ENTRIES_BINDING) uniform sampler2D pnFilterMap;
+layout(binding = PN_PCSS_PARENTS_BINDING) uniform sampler2D pnParents;
+layout(binding = PN_PCSS_RESULTS_BINDING) uniform sampler2D pnOcclusion;
+layout(r32f, binding = PN_PCSS_VISIBILITY_IMAGE) writeonly uniform image2D pnVisibility;
 
 #include "pcss_params.glsl"
 #include "pcss_regions.glsl"

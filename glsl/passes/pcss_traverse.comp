@@ -1,16 +1,16 @@
 // pcss_traverse.comp — Steps 4 and 5 by traversal (traversal.glsl) over each
 // entry's region: the exact rectangle or a region.glsl window (pcss_regions.glsl).
 // Result per computed pixel: (occluders, depth sum, texels, nodes visited).
-//   binding 0: pyramid (sampler2DArray)     binding 3: result (image2D, rgba32f)
-//   binding 1: sample table (sampler2D)     binding 4 / SSBO 0: pcss_work.glsl
-//   binding 2: entries (sampler2D, rgba32f) binding 7: PnPcssParams
+//   bindings and blocks: pcss_params.h
 
 layout(local_size_x = 64) in;  // pcss_work.glsl
 
-layout(binding = 0) uniform sampler2DArray pnPyramid;
-layout(binding = 1) uniform sampler2D pnSampleTable;
-layout(binding = 2) uniform sampler2D pnEntries;
-layout(rgba32f, binding = 3) writeonly uniform image2D pnResult;
+#include "pcss_params.h"
+
+layout(binding = PN_PCSS_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_PCSS_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
+layout(binding = PN_PCSS_ENTRIES_BINDING) uniform sampler2D pnEntries;
+layout(rgba32f, binding = PN_PCSS_RESULT_IMAGE) writeonly uniform image2D pnResult;
 
 #include "pcss_params.glsl"
 #include "pcss_regions.glsl"

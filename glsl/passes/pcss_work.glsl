@@ -10,8 +10,7 @@
 // The including pass declares layout(local_size_x = 64) in; (the runner
 // dispatches 64-wide groups, and the list's header counts groups of 64);
 // a pixel index i is (i mod W, i div W).
-//   binding 4: parent codes (sampler2D, R32F; reuse.glsl)
-//   SSBO binding 0: PnWorkList (dispatch-indirect header, count, pixels)
+//   bindings and blocks: pcss_params.h
 
 #ifndef PENUMBRA_PCSS_WORK_GLSL
 #define PENUMBRA_PCSS_WORK_GLSL
@@ -19,8 +18,8 @@
 #include "pcss_params.glsl"
 #include "reuse.glsl"
 
-layout(binding = 4) uniform sampler2D pnParents;
-layout(std430, binding = 0) readonly buffer PnWorkList {
+layout(binding = PN_PCSS_PARENTS_BINDING) uniform sampler2D pnParents;
+layout(std430, binding = PN_PCSS_WORK_LIST_BINDING) readonly buffer PnWorkList {
   uint groups[3];
   uint count;
   uvec2 pixels[];

@@ -1,17 +1,14 @@
 // region_query.comp — region.glsl over a batch of regions.
 // Query k is texel k of the query image: (x, y, side, unused); result k is
 // (origin.x, origin.y, side, level) as floats (exact below 2^24).
-//   binding 0: queries (sampler2D, RGBA32F)   binding 2: results (image2D, rgba32f)
-//   binding 3: PnRegionQueryParams (std140)
+// Bindings and the parameter block: region_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnQueries;
-layout(rgba32f, binding = 2) writeonly uniform image2D pnResults;
-layout(std140, binding = 3) uniform PnRegionQueryParams {
-  int mapSize;
-  int centred;  // 0: literal Steps 1–7, 1: centred variant
-} pnParams;
+#include "region_query.h"
+
+layout(binding = PN_REGION_QUERY_QUERIES_BINDING) uniform sampler2D pnQueries;
+layout(rgba32f, binding = PN_REGION_QUERY_RESULTS_BINDING) writeonly uniform image2D pnResults;
 
 #include "region.glsl"
 

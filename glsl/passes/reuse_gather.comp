@@ -1,16 +1,14 @@
 // reuse_gather.comp — every pixel takes its representative's value (reuse.glsl).
 // Writes (representative x, representative y, value at the representative, 0).
-//   binding 0: parents (sampler2D, R32F)   binding 2: result (image2D, rgba32f)
-//   binding 1: values  (sampler2D, R32F)   binding 3: PnReuseGatherParams (std140)
+// Bindings and the parameter block: reuse_gather.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnParents;
-layout(binding = 1) uniform sampler2D pnValues;
-layout(rgba32f, binding = 2) writeonly uniform image2D pnResult;
-layout(std140, binding = 3) uniform PnReuseGatherParams {
-  int tile;
-} pnParams;
+#include "reuse_gather.h"
+
+layout(binding = PN_REUSE_GATHER_PARENTS_BINDING) uniform sampler2D pnParents;
+layout(binding = PN_REUSE_GATHER_VALUES_BINDING) uniform sampler2D pnValues;
+layout(rgba32f, binding = PN_REUSE_GATHER_RESULT_BINDING) writeonly uniform image2D pnResult;
 
 #include "reuse.glsl"
 

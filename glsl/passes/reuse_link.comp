@@ -1,17 +1,12 @@
 // reuse_link.comp — the parent code of every pixel (reuse.glsl), as a float in an r32f image.
-//   binding 0: entries (sampler2D, RGBA32F: d, x, y, s)   binding 2: parents (image2D, r32f)
-//   binding 3: PnReuseParams (std140)
+// Bindings and the parameter block: reuse_link.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnEntries;
-layout(r32f, binding = 2) writeonly uniform image2D pnParents;
-layout(std140, binding = 3) uniform PnReuseParams {
-  float sigma1;
-  float sigma2;
-  float sigma3;
-  int tile;
-} pnParams;
+#include "reuse_link.h"
+
+layout(binding = PN_REUSE_LINK_ENTRIES_BINDING) uniform sampler2D pnEntries;
+layout(r32f, binding = PN_REUSE_LINK_PARENTS_BINDING) writeonly uniform image2D pnParents;
 
 #include "reuse.glsl"
 

@@ -3,15 +3,16 @@
 // Result A: (k, first column, last column, set).
 // Result B: (column of the i-th selected sample, texel x, texel y, 0) for that
 //           sample scaled to a region of the given side at origin (0, 0).
-//   binding 0: queries (sampler2D, RGBA32F)   binding 2: result A (image2D, rgba32f)
-//   binding 1: table   (sampler2D, RG32F)     binding 3: result B (image2D, rgba32f)
+// Bindings: sample_table_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnQueries;
-layout(binding = 1) uniform sampler2D pnSampleTable;
-layout(rgba32f, binding = 2) writeonly uniform image2D pnResultA;
-layout(rgba32f, binding = 3) writeonly uniform image2D pnResultB;
+#include "sample_table_query.h"
+
+layout(binding = PN_SAMPLE_TABLE_QUERY_QUERIES_BINDING) uniform sampler2D pnQueries;
+layout(binding = PN_SAMPLE_TABLE_QUERY_TABLE_BINDING) uniform sampler2D pnSampleTable;
+layout(rgba32f, binding = PN_SAMPLE_TABLE_QUERY_RESULT_A_BINDING) writeonly uniform image2D pnResultA;
+layout(rgba32f, binding = PN_SAMPLE_TABLE_QUERY_RESULT_B_BINDING) writeonly uniform image2D pnResultB;
 
 #include "sample_table.glsl"
 

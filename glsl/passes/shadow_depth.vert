@@ -1,15 +1,12 @@
 // shadow_depth.vert — the shadow map's vertex stage: world position to clip
 // space of the light, and the linear light depth (distance along the light's
 // axis, SPEC §3) for the fragment stage.
-//   location 0: world position        binding 0: PnShadowDepthParams (std140)
+// The parameter block, its binding and the locations: shadow_depth.h.
 
-layout(location = 0) in vec3 pnPosition;
-layout(location = 0) out float pnLinearDepth;
+#include "shadow_depth.h"
 
-layout(std140, binding = 0) uniform PnShadowDepthParams {
-  mat4 lightView;
-  mat4 lightProjection;
-} pnParams;
+layout(location = PN_SCENE_POSITION_LOCATION) in vec3 pnPosition;
+layout(location = PN_SHADOW_DEPTH_LINEAR_DEPTH_LOCATION) out float pnLinearDepth;
 
 void main() {
   vec4 view = pnParams.lightView * vec4(pnPosition, 1.0);

@@ -10,7 +10,7 @@
 // inside its box, widened by PN_SURFACE_GROUND_TOLERANCE world units (boxes
 // stand on it and touch it only along their bottom edges).
 // Cost: a few ALU operations per fragment, no texture reads.
-//   binding 0: PnSurfaceParams (std140)
+// The parameter block (shared with surface.vert), its binding and the locations: surface.h.
 //
 // Options: PN_SURFACE_GROUND_TOLERANCE (world units, default 1e-3).
 
@@ -18,18 +18,10 @@
 #define PN_SURFACE_GROUND_TOLERANCE 1e-3
 #endif
 
-layout(location = 0) in vec3 pnWorld;
-layout(location = 0) out vec4 pnSurface;
+#include "surface.h"
 
-layout(std140, binding = 0) uniform PnSurfaceParams {
-  mat4 cameraViewProjection;
-  vec4 cameraPosition;
-  vec4 lightPosition;
-  vec4 groundLo;
-  vec4 groundHi;
-  vec4 groundAlbedo;
-  vec4 boxAlbedo;
-} pnParams;
+layout(location = PN_SURFACE_WORLD_LOCATION) in vec3 pnWorld;
+layout(location = PN_SCENE_TARGET_LOCATION) out vec4 pnSurface;
 
 void main() {
   vec3 normal = cross(dFdx(pnWorld), dFdy(pnWorld));

@@ -1,19 +1,11 @@
 // surface.vert — the surface pass's vertex stage: world position to the
 // camera's clip space; the world position goes on to the fragment stage.
-//   location 0: world position        binding 0: PnSurfaceParams (std140)
+// The parameter block (shared with surface.frag), its binding and the locations: surface.h.
 
-layout(location = 0) in vec3 pnPosition;
-layout(location = 0) out vec3 pnWorld;
+#include "surface.h"
 
-layout(std140, binding = 0) uniform PnSurfaceParams {
-  mat4 cameraViewProjection;
-  vec4 cameraPosition;  // xyz: world
-  vec4 lightPosition;   // xyz: world, the area light's centre
-  vec4 groundLo;        // xyz: the ground slab's box
-  vec4 groundHi;
-  vec4 groundAlbedo;    // rgb
-  vec4 boxAlbedo;       // rgb
-} pnParams;
+layout(location = PN_SCENE_POSITION_LOCATION) in vec3 pnPosition;
+layout(location = PN_SURFACE_WORLD_LOCATION) out vec3 pnWorld;
 
 void main() {
   pnWorld = pnPosition;

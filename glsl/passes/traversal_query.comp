@@ -2,25 +2,18 @@
 // Query k: texel k of query image A = (region origin x, y, region width, height),
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0).
 // Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches, 0, 0).
-//   binding 0: pyramid (sampler2DArray)      binding 3: result C (image2D, rgba32f)
-//   binding 1: sample table (sampler2D)      binding 4: result D (image2D, rgba32f)
-//   binding 2: query A (sampler2D)           binding 5: query B (sampler2D)
-//   binding 6: PnTraversalQueryParams (std140)
+// Bindings and the parameter block: traversal_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2DArray pnPyramid;
-layout(binding = 1) uniform sampler2D pnSampleTable;
-layout(binding = 2) uniform sampler2D pnQueryA;
-layout(binding = 5) uniform sampler2D pnQueryB;
-layout(rgba32f, binding = 3) writeonly uniform image2D pnResultC;
-layout(rgba32f, binding = 4) writeonly uniform image2D pnResultD;
-layout(std140, binding = 6) uniform PnTraversalQueryParams {
-  float bias;
-  int leafSide;
-  int leafMode;
-  int nodeBudget;
-} pnParams;
+#include "traversal_query.h"
+
+layout(binding = PN_TRAVERSAL_QUERY_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
+layout(binding = PN_TRAVERSAL_QUERY_A_BINDING) uniform sampler2D pnQueryA;
+layout(binding = PN_TRAVERSAL_QUERY_B_BINDING) uniform sampler2D pnQueryB;
+layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_C_BINDING) writeonly uniform image2D pnResultC;
+layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_D_BINDING) writeonly uniform image2D pnResultD;
 
 #include "traversal.glsl"
 

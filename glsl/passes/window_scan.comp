@@ -1,19 +1,19 @@
 // window_scan.comp — the brute-force baseline of traversal_query.comp: every
 // texel of each query's region is fetched and compared (PCSS's blocker search
-// over the whole window). Same bindings and result layout as traversal_query.comp;
-// level 0 of the pyramid is the (sanitized) shadow map. On llvmpipe, windows
-// stay exact while rows × ceil(width / 8) <= 65535 (any window up to 720²).
+// over the whole window). Same query and result layout as traversal_query.comp
+// (bindings and the parameter block: window_scan.h); level 0 of the pyramid is
+// the (sanitized) shadow map. On llvmpipe, windows stay exact while
+// rows × ceil(width / 8) <= 65535 (any window up to 720²).
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2DArray pnPyramid;
-layout(binding = 2) uniform sampler2D pnQueryA;
-layout(binding = 5) uniform sampler2D pnQueryB;
-layout(rgba32f, binding = 3) writeonly uniform image2D pnResultC;
-layout(rgba32f, binding = 4) writeonly uniform image2D pnResultD;
-layout(std140, binding = 6) uniform PnWindowScanParams {
-  float bias;
-} pnParams;
+#include "window_scan.h"
+
+layout(binding = PN_WINDOW_SCAN_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_WINDOW_SCAN_A_BINDING) uniform sampler2D pnQueryA;
+layout(binding = PN_WINDOW_SCAN_B_BINDING) uniform sampler2D pnQueryB;
+layout(rgba32f, binding = PN_WINDOW_SCAN_RESULT_C_BINDING) writeonly uniform image2D pnResultC;
+layout(rgba32f, binding = PN_WINDOW_SCAN_RESULT_D_BINDING) writeonly uniform image2D pnResultD;
 
 #include "depth_pyramid.glsl"
 

@@ -3,96 +3,100 @@
 #include <iomanip>
 
 #include "core/error.h"
-#include "figures/lit_image.h"
-#include "gl/texture.h"
-#include "passes/surface_pass.h"
-#include "metrics/ssim.h"
-#include "pipeline/pcss_pipeline.h"
 #include "scene/scene.h"
+#include "technique/technique_registry.h"
 
 namespace pn {
 
-std::vector<PipelineBenchRow> bench_pipeline(const Context& context, const SourceTree& tree, PipelineBenchSetup setup) {
+std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const SourceTree& tree,
+                                              const PipelineBenchSetup& setup) {
   const auto& fixture = find_scene_fixture(setup.scene);
   for (int n : setup.sizes)
     if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
   if (setup.repeats < 1) throw Error("repeats " + std::to_string(setup.repeats) + ": expected >= 1");
-  if (setup.methods.empty()) {
-    setup.methods = pcss_methods();
-    for (const PcssSettings& s : fast_pcss_ablations())
-      if (s.name != fast_pcss_all_off().name) setup.methods.push_back(s);
-  }
-  const PcssPipeline pipeline(context, tree);
-  std::vector<PipelineBenchRow> rows;
+  std::vector<std::unique_ptr<TechniqueConfig>> own;
+  ComparisonSetup cs;
+  cs.repeats = setup.repeats;
+  cs.truth_samples = setup.truth_samples;
+  if (setup.methods.empty())
+    for (const std::string& spec : bench_techniques()) own.push_back(parse_technique(spec));
+  for (const auto& m : own) cs.techniques.push_back(m.get());
+  for (const auto& m : setup.methods) cs.techniques.push_back(m.get());
+
+  std::vector<PipelineBenchSize> out;
   for (int n : setup.sizes) {
-    const Scene scene = make_scene(fixture, n);
-    const PcssInputs inputs = pipeline.render_inputs(scene, n);
-    const Image surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, n), n, n, 4);
-    const size_t first = rows.size();
-    Image exact;
-    double exact_ms = 0.0, poisson_ms = 0.0;
-    std::vector<Image> shadows;
-    for (const PcssSettings& method : setup.methods) {
-      const PcssMeasurement m = pipeline.measure(inputs, method, setup.repeats);
-      PipelineBenchRow row;
-      row.size = n;
-      row.method = method.name;
-      row.total_ms = m.total_ms;
-      row.stage_ms = m.stage_ms;
-      row.representative_fraction = m.stats.representative_fraction();
-      row.work_per_receiver = m.stats.work_per_receiver();
-      shadows.push_back(read_float_texture(context, m.frame.soft_shadow(), n, n, 1));
-      if (method.name == exact_pcss().name) exact = shadows.back(), exact_ms = m.total_ms;
-      if (method.name == poisson_pcss().name) poisson_ms = m.total_ms;
-      rows.push_back(row);
+    cs.screen_size = n;
+    PipelineBenchSize s;
+    s.size = n;
+    s.comparison = compare_techniques(context, tree, make_scene(fixture, n), cs);
+    const TechniqueResult* exact = s.comparison.find(kExactTechnique);
+    const TechniqueResult* poisson = s.comparison.find(kPoissonTechnique);
+    for (const TechniqueResult& r : s.comparison.results) {
+      s.speedup_vs_exact.push_back(exact ? exact->measurement.total_ms / r.measurement.total_ms : 0.0);
+      s.speedup_vs_poisson.push_back(poisson ? poisson->measurement.total_ms / r.measurement.total_ms : 0.0);
     }
-    for (size_t i = first; i < rows.size(); ++i) {
-      if (exact_ms > 0) rows[i].speedup_vs_exact = exact_ms / rows[i].total_ms;
-      if (poisson_ms > 0) rows[i].speedup_vs_poisson = poisson_ms / rows[i].total_ms;
-      if (exact.width > 0) {
-        rows[i].ssim_vs_exact = ssim(exact, shadows[i - first]);
-        rows[i].lit_ssim_vs_exact = lit_ssim(surface, exact, shadows[i - first]);
-      }
-    }
+    out.push_back(std::move(s));
   }
-  return rows;
+  return out;
 }
 
-void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchRow>& rows) {
-  out << std::left << std::setw(6) << "size" << std::setw(22) << "method" << std::right << std::setw(11) << "total ms"
-      << std::setw(10) << "x exact" << std::setw(10) << "x Poisson" << std::setw(8) << "SSIM" << std::setw(9) << "lit SSIM" << std::setw(8)
-      << "repr." << std::setw(10) << "work/px" << "   stages (ms)\n";
-  for (const PipelineBenchRow& r : rows) {
-    out << std::left << std::setw(6) << r.size << std::setw(22) << r.method << std::right << std::fixed
-        << std::setprecision(2) << std::setw(11) << r.total_ms << std::setw(10) << r.speedup_vs_exact << std::setw(10)
-        << r.speedup_vs_poisson << std::setprecision(4) << std::setw(8) << r.ssim_vs_exact << std::setw(9) << r.lit_ssim_vs_exact
-        << std::setprecision(3)
-        << std::setw(8) << r.representative_fraction << std::setprecision(1) << std::setw(10) << r.work_per_receiver
-        << "  ";
-    for (const auto& [name, ms] : r.stage_ms)
-      if (ms > 0.005) out << " " << name << " " << std::setprecision(2) << ms << ";";
-    out << "\n";
+void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize>& sizes) {
+  for (const PipelineBenchSize& s : sizes) {
+    out << "size " << s.size << " (shadow map = screen), shadow map " << std::fixed << std::setprecision(2)
+        << s.comparison.shadow_map_ms << " ms:\n";
+    out << std::left << std::setw(22) << "method" << std::right << std::setw(11) << "total ms" << std::setw(10)
+        << "x exact" << std::setw(10) << "x Poisson" << "   stages (ms)\n";
+    for (size_t i = 0; i < s.comparison.results.size(); ++i) {
+      const TechniqueResult& r = s.comparison.results[i];
+      out << std::left << std::setw(22) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(11)
+          << r.measurement.total_ms << std::setw(10) << s.speedup_vs_exact[i] << std::setw(10)
+          << s.speedup_vs_poisson[i] << "  ";
+      for (const auto& [name, ms] : r.measurement.stage_ms)
+        if (ms > 0.005) out << " " << name << " " << ms << ";";
+      out << "\n";
+    }
+    out.unsetf(std::ios::floatfield);
+    print_score_tables(out, s.comparison);
   }
-  out.unsetf(std::ios::floatfield);
 }
 
-nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::vector<PipelineBenchRow>& rows) {
+namespace {
+
+nlohmann::json scores_json(const Scores& s) {
+  const auto one = [](const ImageScore& i) { return nlohmann::json{{"ssim", i.ssim}, {"mae", i.mae}}; };
+  return {{"whole", one(s.whole)}, {"light_facing", one(s.light_facing)}, {"lit", one(s.lit)}};
+}
+
+nlohmann::json named_json(const NamedValues& values) {
+  nlohmann::json o = nlohmann::json::object();
+  for (const auto& [name, v] : values) o[name] = v;
+  return o;
+}
+
+}  // namespace
+
+nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::vector<PipelineBenchSize>& sizes) {
   nlohmann::json list = nlohmann::json::array();
-  for (const PipelineBenchRow& r : rows) {
-    nlohmann::json stages = nlohmann::json::object();
-    for (const auto& [name, ms] : r.stage_ms) stages[name] = ms;
-    list.push_back({{"size", r.size},
-                    {"method", r.method},
-                    {"total_ms", r.total_ms},
-                    {"stage_ms", stages},
-                    {"speedup_vs_exact", r.speedup_vs_exact},
-                    {"speedup_vs_poisson", r.speedup_vs_poisson},
-                    {"ssim_vs_exact", r.ssim_vs_exact},
-                    {"lit_ssim_vs_exact", r.lit_ssim_vs_exact},
-                    {"representative_fraction", r.representative_fraction},
-                    {"work_per_receiver", r.work_per_receiver}});
-  }
-  return {{"scene", setup.scene}, {"repeats", setup.repeats}, {"rows", list}};
+  for (const PipelineBenchSize& s : sizes)
+    for (size_t i = 0; i < s.comparison.results.size(); ++i) {
+      const TechniqueResult& r = s.comparison.results[i];
+      list.push_back({{"size", s.size},
+                      {"method", r.name},
+                      {"total_ms", r.measurement.total_ms},
+                      {"stage_ms", named_json(r.measurement.stage_ms)},
+                      {"stats", named_json(r.measurement.frame.stats)},
+                      {"speedup_vs_exact", s.speedup_vs_exact[i]},
+                      {"speedup_vs_poisson", s.speedup_vs_poisson[i]},
+                      {"vs_truth", scores_json(r.vs_truth)},
+                      {"vs_exact", r.vs_exact ? scores_json(*r.vs_exact) : nlohmann::json(nullptr)}});
+    }
+  nlohmann::json truth = nlohmann::json::array();
+  for (const PipelineBenchSize& s : sizes)
+    truth.push_back({{"size", s.size},
+                     {"cpu_ms", s.comparison.truth_ms},
+                     {"vs_exact", s.comparison.truth_vs_exact ? scores_json(*s.comparison.truth_vs_exact) : nlohmann::json(nullptr)}});
+  return {{"scene", setup.scene}, {"repeats", setup.repeats}, {"truth_samples", setup.truth_samples},
+          {"rows", list}, {"truth", truth}};
 }
 
 }  // namespace pn

@@ -1,19 +1,20 @@
-// `penumbra bench pipeline`: every PCSS technique and every Fast PCSS
-// ablation on one scene, per stage (GPU timestamps, medians), at several
-// sizes (shadow map = screen), with speedups against exact PCSS and Poisson
-// PCSS measured in the same run, SSIM against exact PCSS, the fraction of
-// representatives and the work per receiver pixel (SPEC §9).
+// `penumbra bench pipeline`: every technique and ablation of the registry on
+// one scene, through the technique seam, per stage (GPU timestamps, medians),
+// at several sizes (shadow map = screen), with speed-ups against exact PCSS
+// and Poisson PCSS measured in the same run and the scores of
+// metrics/scores.h against the ray-traced truth and exact PCSS (SPEC §9).
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "gl/context.h"
-#include "pipeline/pcss_settings.h"
 #include "shader/source_tree.h"
+#include "technique/comparison.h"
+#include "technique/technique.h"
 
 namespace pn {
 
@@ -21,26 +22,22 @@ struct PipelineBenchSetup {
   std::string scene = "boxes";
   std::vector<int> sizes{512, 1024};
   int repeats = 5;
-  std::vector<PcssSettings> methods;  // empty: pcss_methods() then fast_pcss_ablations() without all-off
+  int truth_samples = 16;
+  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: bench_techniques()
 };
 
-struct PipelineBenchRow {
+struct PipelineBenchSize {
   int size = 0;
-  std::string method;
-  double total_ms = 0.0;  // median, Steps 1 (pyramid) .. 6
-  std::vector<std::pair<std::string, double>> stage_ms;
-  double speedup_vs_exact = 0.0;    // 0 when exact PCSS was not run
-  double speedup_vs_poisson = 0.0;  // 0 when Poisson PCSS was not run
-  double ssim_vs_exact = 0.0;       // soft-shadow maps
-  double lit_ssim_vs_exact = 0.0;   // lit images (figures/lit_image.h)
-  double representative_fraction = 0.0;
-  double work_per_receiver = 0.0;   // nodes (traversal), texels (scan) or samples (Poisson)
+  Comparison comparison;
+  // Per result: exact PCSS's / Poisson PCSS's total over its own (0 when that baseline did not run).
+  std::vector<double> speedup_vs_exact, speedup_vs_poisson;
 };
 
 // Throws Error for an unknown scene, sizes outside 16..4096 or repeats < 1.
-std::vector<PipelineBenchRow> bench_pipeline(const Context& context, const SourceTree& tree, PipelineBenchSetup setup);
+std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const SourceTree& tree,
+                                              const PipelineBenchSetup& setup);
 
-void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchRow>& rows);
-nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::vector<PipelineBenchRow>& rows);
+void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize>& sizes);
+nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::vector<PipelineBenchSize>& sizes);
 
 }  // namespace pn

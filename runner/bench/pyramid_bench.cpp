@@ -9,7 +9,7 @@
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
-#include "reference/pyramid_reference.h"
+#include "reference/depth_pyramid_reference.h"
 
 namespace pn {
 

@@ -10,7 +10,7 @@
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
-#include "reference/pyramid_reference.h"
+#include "reference/depth_pyramid_reference.h"
 #include "reference/region_reference.h"
 
 namespace pn {
@@ -47,7 +47,7 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
   const int n = setup.map_size;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
   const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(upload_float_texture(context, map), n, n, 31);
-  const GlObject table = upload_sample_table(context, generate_sample_table(0x5eed0005u));
+  const GlObject table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
   const TraversalPass traversal(context, tree);
   const WindowScanPass scan(context, tree);
   const GpuTimer timer(context);

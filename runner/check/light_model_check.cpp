@@ -3,7 +3,6 @@
 // float rounding, the grid keeping dP / z >= 1.01 so the difference does not
 // cancel), and degenerate inputs give exactly 0 where the definition says 0.
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -11,14 +10,22 @@
 #include "core/format.h"
 #include "core/query_grid.h"
 #include "gl/compute_program.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "gl/texture.h"
 #include "scene/light_model.h"
+
+namespace pn::glsl {
+#include "passes/light_model_query.h"
+PN_STD140_SIZE(PnLightParams, 16);
+PN_STD140_OFFSET(PnLightParams, nearPlaneWidth, 8);
+PN_STD140_OFFSET(PnLightParams, mapSize, 12);
+}  // namespace pn::glsl
 
 namespace pn {
 
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
   const ComputeProgram program = compile_pass(env.context, env.tree, "passes/light_model_query.comp");
-  const auto& gl = env.context.gl();
   std::vector<CaseResult> results;
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   for (LightModel light : {LightModel{2.0, 1.0, 100.0, 1.5707963267948966, 1024},
@@ -38,12 +45,16 @@ std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
       const Image input = query_image(queries);
       const GlObject query_texture = upload_float_texture(env.context, input);
       const GlObject result = make_float_texture(env.context, input.width, input.height, 4);
-      const float block[4] = {static_cast<float>(light.width), n, static_cast<float>(light.near_plane_width()),
-                              static_cast<float>(light.map_size)};
-      GlObject ubo = bind_uniform_buffer(env.context, 3, block, sizeof block);
-      gl.BindTextureUnit(0, query_texture.id());
-      gl.BindImageTexture(2, result.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-      program.dispatch(input.width, input.height);
+      {
+        const glsl::PnLightParams block{static_cast<float>(light.width), n,
+                                        static_cast<float>(light.near_plane_width()),
+                                        static_cast<float>(light.map_size)};
+        PassBindings bind(env.context);
+        bind.uniform(block);
+        bind.texture(PN_LIGHT_MODEL_QUERY_QUERIES_BINDING, query_texture);
+        bind.image(PN_LIGHT_MODEL_QUERY_RESULTS_BINDING, result, GL_WRITE_ONLY, GL_RGBA32F);
+        program.dispatch(input.width, input.height);
+      }
       const Image observed = read_float_texture(env.context, result, input.width, input.height, 4);
       Image expected(input.width, input.height, 4);
       for (int y = 0; y < input.height; ++y)

@@ -8,8 +8,8 @@ const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
       {"blur", "separable Gaussian (two 1-D passes) vs direct 2-D convolution; depth-aware vs its 1-D definition",
        &run_blur_check},
-      {"pyramid", "depth_pyramid levels vs window scans (min/max exact); any-square min/max vs square scans",
-       &run_pyramid_check},
+      {"depth_pyramid", "depth_pyramid levels vs window scans (min/max exact); any-square min/max vs square scans",
+       &run_depth_pyramid_check},
       {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
        &run_region_check},
       {"sample_table", "multi-jittered strata of the table; the 3.2 selection and scaling vs the paper's arithmetic",
@@ -22,10 +22,17 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_light_model_check},
       {"shadow_map", "each scene's shadow map and G-buffer vs CPU ray casts through every texel / pixel centre",
        &run_shadow_map_check},
+      {"pcss_regions", "search entries (lit decisions, refined sides), filter entries and their regions in every mode vs "
+                       "the CPU definition; no lit receiver a texel can shadow (exact mode)",
+       &run_pcss_regions_check},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
        &run_pipeline_check},
-      {"physical_reference", "averaged hard shadows from 4x4 light sample points vs CPU segment tests to each point",
-       &run_physical_reference_check},
+      {"pcf", "brute-force window scan (whole, banded, bounded side) vs the definition in double; counts exact",
+       &run_pcf_check},
+      {"poisson_pcss", "Poisson-disk samples (parameter and constant disks, rotation) vs the definition in double",
+       &run_poisson_pcss_check},
+      {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
+       &run_truth_check},
   };
   return checks;
 }

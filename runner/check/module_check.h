@@ -42,14 +42,17 @@ const ModuleCheck& find_module_check(const std::string& module);  // throws Erro
 
 // One entry point per module check.
 std::vector<CaseResult> run_blur_check(const CheckEnvironment& env);
-std::vector<CaseResult> run_pyramid_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_region_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env);
-std::vector<CaseResult> run_physical_reference_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_truth_check(const CheckEnvironment& env);
 
 }  // namespace pn

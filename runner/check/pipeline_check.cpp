@@ -14,10 +14,13 @@
 #include "gl/texture.h"
 #include "passes/surface_pass.h"
 #include "metrics/ssim.h"
+#include "passes/gbuffer_pass.h"
 #include "pipeline/pcss_pipeline.h"
 #include "reference/pcss_reference.h"
-#include "reference/pyramid_reference.h"
+#include "reference/depth_pyramid_reference.h"
 #include "reference/reuse_reference.h"
+#include "technique/scene_frame.h"
+#include "technique/technique_registry.h"
 
 namespace pn {
 namespace {
@@ -80,9 +83,10 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
     const GlObject& keys;
     const GlObject& parents;
     int tile;
+    bool shades;  // Step 5: its representatives' results are the visibility
   };
-  for (const Step& step : {Step{"Step 4", frame.search_keys, frame.search_parents, s.search_tile},
-                           Step{"Step 5", frame.filter_keys, frame.filter_parents, s.filter_tile}}) {
+  for (const Step& step : {Step{"Step 4", frame.search_keys, frame.search_parents, s.search_tile, false},
+                           Step{"Step 5", frame.filter_keys, frame.filter_parents, s.filter_tile, true}}) {
     ReuseParams params;
     params.sigma1 = s.sigma1, params.sigma2 = s.sigma2, params.sigma3 = s.sigma3, params.tile = step.tile;
     const std::vector<int> parents = reuse_parents(read4(context, step.keys, n), params);
@@ -101,7 +105,7 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
                    Tolerance::exact(), compare(expected, codes, Tolerance::exact())});
     out.push_back({name + ": " + step.what + " every group inside its k x k tile (1 = inside)", Tolerance::exact(),
                    compare(same_tile, tiles, Tolerance::exact())});
-    if (step.tile == s.filter_tile && &step.parents == &frame.filter_parents) {
+    if (step.shades) {
       const Image visibility = read1(context, frame.visibility, n);
       Image of_root(n, n);
       for (int i = 0; i < n * n; ++i) of_root.at(i % n, i / n) = visibility.at(roots[i] % n, roots[i] / n);
@@ -116,13 +120,24 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
 std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const Context& context = env.context;
   const PcssPipeline pipeline(context, env.tree);
+  FullRenderSource source(context, env.tree);
+  const GBufferRenderer gbuffers(context, env.tree);
+  TechniqueResources resources(context, env.tree);
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";
-    const PcssInputs inputs = pipeline.render_inputs(scene, kScreen);
-    const Image map = read1(context, inputs.shadow_map, kMap), gbuffer = read4(context, inputs.gbuffer, kScreen);
+    const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, kScreen);
+    const TechniqueInputs inputs = scene_frame.inputs();
+    const Image map = read1(context, scene_frame.shadow_map, kMap), gbuffer = read4(context, scene_frame.gbuffer, kScreen);
+
+    // Every registry entry through the technique seam: a visibility image, finite and in [0, 1].
+    for (const TechniqueEntry& entry : technique_registry()) {
+      const std::unique_ptr<Technique> technique = entry.make()->create(resources);
+      results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]",
+                                      read1(context, technique->run(inputs, true).visibility, kScreen)));
+    }
 
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
     const PcssSettings exact = exact_pcss();
@@ -159,7 +174,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const PcssFrame fast_frame = pipeline.run(inputs, fast_pcss());
     reuse_cases(context, name, fast_frame, results);
     const Image listed = read1(context, fast_frame.soft_shadow(), kScreen);
-    const Image branched = read1(context, pipeline.run(inputs, pcss_method("fast:skip=branch")).soft_shadow(), kScreen);
+    PcssSettings branch = fast_pcss();
+    branch.skip = WorkSkip::branch;
+    const Image branched = read1(context, pipeline.run(inputs, branch).soft_shadow(), kScreen);
     results.push_back({name + ": Fast PCSS, representatives compacted into a list vs branching in place",
                        Tolerance::exact(), compare(listed, branched, Tolerance::exact())});
 
@@ -172,7 +189,8 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     Image outside = gbuffer;
     for (int y = 0; y < kScreen; ++y)
       for (int x = 0; x < kScreen / 2; ++x) outside.at(x, y, 0) += (y % 2 ? 3.0f : -3.0f) * kMap;
-    PcssInputs bad{scene.light, kScreen, upload_float_texture(context, damaged), upload_float_texture(context, outside)};
+    const GlObject damaged_map = upload_float_texture(context, damaged), outside_gbuffer = upload_float_texture(context, outside);
+    const TechniqueInputs bad{scene.light, kScreen, &damaged_map, &outside_gbuffer};
     const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kMargin);
     Image bad_observed = read1(context, pipeline.run(bad, exact).soft_shadow(), kScreen);
     leave_out_ambiguous(bad_reference, bad_observed);
@@ -185,9 +203,14 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // A zero-size light: every region is one texel, a hard shadow.
     Scene point = scene;
     point.light.width = 0.0;
-    const PcssInputs point_inputs = pipeline.render_inputs(point, kScreen);
-    const Image hard = hard_shadow(read1(context, point_inputs.shadow_map, kMap), read4(context, point_inputs.gbuffer, kScreen), exact.bias);
-    for (const PcssSettings& s : {exact, pcss_method("fast:region=exact:blur=off")})
+    const SceneFrame point_frame = render_scene_frame(context, source, gbuffers, point, kScreen);
+    const TechniqueInputs point_inputs = point_frame.inputs();
+    const Image hard = hard_shadow(read1(context, point_frame.shadow_map, kMap), read4(context, point_frame.gbuffer, kScreen), exact.bias);
+    PcssSettings fast_exact_region = fast_pcss();
+    fast_exact_region.name = "fast:region=exact:blur=off";
+    fast_exact_region.region = RegionMode::exact;
+    fast_exact_region.blur = false;
+    for (const PcssSettings& s : {exact, fast_exact_region})
       results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
                          compare(hard, read1(context, pipeline.run(point_inputs, s).soft_shadow(), kScreen), Tolerance::exact())});
     results.push_back(in_unit_range(name + ", zero-size light: Fast PCSS (2x2-texel windows): finite, in [0, 1]",
@@ -198,7 +221,8 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   // scene at 512²: the lit images' SSIM is held to 0.97; the soft-shadow maps'
   // own SSIM, lower (docs/pipeline.md says why), is printed with it.
   const Scene scene = make_scene(fixtures::kScenes[0], 512);
-  const PcssInputs inputs = pipeline.render_inputs(scene, 512);
+  const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, 512);
+  const TechniqueInputs inputs = scene_frame.inputs();
   const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512), 512, 512, 4);
   const Image exact = read1(context, pipeline.run(inputs, exact_pcss()).soft_shadow(), 512);
   for (const PcssSettings& s : {fast_pcss(), hqepcss()}) {

@@ -14,6 +14,7 @@
 #include "gl/texture.h"
 #include "passes/reuse_pass.h"
 #include "reference/reuse_reference.h"
+#include "reuse.h"  // glsl/reuse.h: the parent codes PN_REUSE_*
 
 namespace pn {
 namespace {
@@ -68,7 +69,8 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
       for (int y = 0; y < size.h; ++y)
         for (int x = 0; x < size.w; ++x) {
           const int i = y * size.w + x, p = parent[static_cast<size_t>(i)], r = root[static_cast<size_t>(i)];
-          expected_parents.at(x, y) = p < 0 ? 0.0f : (p == i - 1 ? 1.0f : 2.0f);
+          const int code = p < 0 ? PN_REUSE_NONE : p == i - 1 ? PN_REUSE_LEFT : PN_REUSE_TOP;
+          expected_parents.at(x, y) = static_cast<float>(code);
           expected.at(x, y, 0) = static_cast<float>(r % size.w);
           expected.at(x, y, 1) = static_cast<float>(r / size.w);
           expected.at(x, y, 2) = values.at(r % size.w, r / size.w);

@@ -10,13 +10,14 @@
 
 #include "check/module_check.h"
 #include "core/query_grid.h"
+#include "gl/pass_bindings.h"
 #include "gl/texture.h"
+#include "passes/correlated_multi_jitter_query.h"
+#include "passes/sample_table_query.h"
 #include "passes/traversal_pass.h"
 
 namespace pn {
 namespace {
-
-constexpr std::uint32_t kTableSeed = 0x5eed0005u;
 
 // For a group of n² samples: how many fall in each thin column, thin row and
 // cell (3 n² counts; all must be 1).
@@ -37,7 +38,7 @@ Image stratum_counts(const std::vector<Sample>& group, int n) {
 }  // namespace
 
 std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
-  const SampleTable table = generate_sample_table(kTableSeed);
+  const SampleTable table = generate_sample_table(kSampleTableSeed);
   const Tolerance exact = Tolerance::exact();
   std::vector<CaseResult> results;
   for (int set = 0; set < SampleTable::kSets; ++set)
@@ -61,12 +62,14 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
   const GlObject result_a = make_float_texture(env.context, input.width, input.height, 4);
   const GlObject result_b = make_float_texture(env.context, input.width, input.height, 4);
   const ComputeProgram program = compile_pass(env.context, env.tree, "passes/sample_table_query.comp");
-  const auto& gl = env.context.gl();
-  gl.BindTextureUnit(0, query_texture.id());
-  gl.BindTextureUnit(1, table_texture.id());
-  gl.BindImageTexture(2, result_a.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  gl.BindImageTexture(3, result_b.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  program.dispatch(input.width, input.height);
+  {
+    PassBindings bind(env.context);
+    bind.texture(PN_SAMPLE_TABLE_QUERY_QUERIES_BINDING, query_texture);
+    bind.texture(PN_SAMPLE_TABLE_QUERY_TABLE_BINDING, table_texture);
+    bind.image(PN_SAMPLE_TABLE_QUERY_RESULT_A_BINDING, result_a, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.image(PN_SAMPLE_TABLE_QUERY_RESULT_B_BINDING, result_b, GL_WRITE_ONLY, GL_RGBA32F);
+    program.dispatch(input.width, input.height);
+  }
 
   Image expected_a(input.width, input.height, 4), expected_b(input.width, input.height, 4);
   for (int y = 0; y < input.height; ++y)
@@ -97,10 +100,13 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
   const Image cmj_input = query_image(cmj);
   const GlObject cmj_queries = upload_float_texture(env.context, cmj_input);
   const GlObject cmj_result = make_float_texture(env.context, cmj_input.width, cmj_input.height, 4);
-  const ComputeProgram cmj_program = compile_pass(env.context, env.tree, "passes/cmj_query.comp");
-  gl.BindTextureUnit(0, cmj_queries.id());
-  gl.BindImageTexture(2, cmj_result.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  cmj_program.dispatch(cmj_input.width, cmj_input.height);
+  const ComputeProgram cmj_program = compile_pass(env.context, env.tree, "passes/correlated_multi_jitter_query.comp");
+  {
+    PassBindings bind(env.context);
+    bind.texture(PN_CMJ_QUERY_QUERIES_BINDING, cmj_queries);
+    bind.image(PN_CMJ_QUERY_RESULTS_BINDING, cmj_result, GL_WRITE_ONLY, GL_RGBA32F);
+    cmj_program.dispatch(cmj_input.width, cmj_input.height);
+  }
   const Image positions = read_float_texture(env.context, cmj_result, cmj_input.width, cmj_input.height, 4);
   size_t at = 0;
   for (int seed : {1, 2, 12345})

@@ -21,13 +21,12 @@
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
-#include "reference/pyramid_reference.h"
+#include "reference/depth_pyramid_reference.h"
 
 namespace pn {
 namespace {
 
 constexpr int kMapSize = 300;
-constexpr std::uint32_t kTableSeed = 0x5eed0005u;
 
 struct Scene {
   Image map;    // as generated
@@ -83,7 +82,7 @@ void add_comparison(std::vector<CaseResult>& results, const std::string& name, c
 std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
   const DepthPyramidBuilder builder(env.context, env.tree);
   const TraversalPass pass(env.context, env.tree);
-  const SampleTable table = generate_sample_table(kTableSeed);
+  const SampleTable table = generate_sample_table(kSampleTableSeed);
   const GlObject table_texture = upload_sample_table(env.context, table);
   std::vector<CaseResult> results;
 

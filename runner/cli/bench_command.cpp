@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/write_file.h"
+#include "technique/technique_registry.h"
 
 namespace pn::cli {
 
@@ -27,7 +28,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline: map = screen sizes (default 512 1024)")->delimiter(',');
   auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline)");
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
-  cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: all four and every Fast PCSS ablation)")->delimiter(',');
+  cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off)")->delimiter(',');
+  cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline: S for the ray-traced truth's S x S light samples (default 16)");
   cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)");
   cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)");
   cmd->add_option("--receivers", opt->traversal.receivers, "traversal: receivers in the batch (default 4096)");
@@ -38,7 +40,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->callback([opt, repeats, sizes, &global, &exit_code] {
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline")
       throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline");
-    for (const std::string& name : opt->methods) opt->pipeline.methods.push_back(pcss_method(name));
+    for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "

@@ -1,9 +1,11 @@
 #include <iostream>
+#include <string>
 
 #include "check/report.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "gl/context.h"
+#include "reference/blur_reference.h"
 
 namespace pn::cli {
 
@@ -20,7 +22,8 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("modules", opt->modules, "Modules to check (default: all)");
   cmd->add_option("--glsl-root", global.glsl_root, "Check the modules in this directory (a copy of glsl/)");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->add_option("--blur-radius", opt->blur_radius, "Check blur with this radius only (0 to 16)");
+  cmd->add_option("--blur-radius", opt->blur_radius,
+                  "Check blur with this radius only (0 to " + std::to_string(kBlurMaxRadius) + ")");
   cmd->add_option("--blur-sigma", opt->blur_sigma, "Check blur with this sigma only (texels, > 0)");
   cmd->add_flag("--blur-depth-aware", opt->blur_depth_aware, "Check the depth-aware blur only");
   cmd->add_flag("-v,--every-case", opt->every_case, "List every case with its worst element, passing ones too");

@@ -2,19 +2,23 @@
 
 #include "cli/commands.h"
 #include "core/write_file.h"
+#include "poisson_pcss.h"
 #include "sampling/poisson_disk.h"
 
 namespace pn::cli {
 
 void add_poisson_command(CLI::App& app, int& exit_code) {
   struct Options {
-    int count = 64;
+    int count = PN_POISSON_PCF_SAMPLES;
     std::uint32_t seed = 1;
     std::string name = "PN_POISSON_DISK", output;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("poisson", "Poisson-disk samples (Bridson) in the unit disk as a GLSL constant array");
-  cmd->add_option("--count", opt->count, "Number of samples (default 64; PCSS uses 36 for the blocker search)");
+  cmd->add_option("--count", opt->count,
+                  "Number of samples, 1 to 4096 (default 64; PCSS uses 36 for the blocker search). poisson_pcss.glsl "
+                  "takes any count as a constant disk read in place (PN_POISSON_DISK_ARRAY), at most PN_POISSON_MAX_SAMPLES "
+                  "(64) as a parameter array");
   cmd->add_option("--seed", opt->seed, "Seed (default 1)");
   cmd->add_option("--name", opt->name, "GLSL constant name (default PN_POISSON_DISK)");
   cmd->add_option("-o,--output", opt->output, "Output file (default: standard output)");

@@ -1,6 +1,7 @@
 #include "figures/canvas.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <string>
 
@@ -9,9 +10,22 @@
 #include <stb/stb_image_write.h>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/write_file.h"
 
 namespace pn {
+
+Rgb signed_colour(float value, float limit) {
+  if (!std::isfinite(limit) || !(limit > 0.0f))
+    throw Error("signed map limit " + format_number("%g", limit) + ": expected a finite number > 0");
+  if (!std::isfinite(value)) return kSignedNonFinite;
+  const Rgb& end = value < 0.0f ? kSignedNegative : kSignedPositive;
+  const float t = std::min(std::fabs(value) / limit, 1.0f);
+  Rgb colour;
+  for (int c = 0; c < 3; ++c)
+    colour[c] = static_cast<unsigned char>(std::lround(kSignedZero[c] + (static_cast<float>(end[c]) - kSignedZero[c]) * t));
+  return colour;
+}
 
 Canvas::Canvas(int width, int height, Rgb background)
     : width_(width), height_(height), pixels_(static_cast<size_t>(width) * height * 3) {
@@ -20,11 +34,21 @@ Canvas::Canvas(int width, int height, Rgb background)
 
 void Canvas::fill(int x, int y, int w, int h, Rgb colour, float alpha) {
   for (int py = std::max(y, 0); py < std::min(y + h, height_); ++py) {
-    for (int px = std::max(x, 0); px < std::min(x + w, width_); ++px) {
-      unsigned char* p = &pixels_[(static_cast<size_t>(py) * width_ + px) * 3];
-      for (int c = 0; c < 3; ++c) p[c] = static_cast<unsigned char>(std::lround(p[c] * (1 - alpha) + colour[c] * alpha));
-    }
+    for (int px = std::max(x, 0); px < std::min(x + w, width_); ++px) blend(px, py, colour, alpha);
   }
+}
+
+void Canvas::blend(int x, int y, Rgb colour, float alpha) {
+  unsigned char* p = &pixels_[(static_cast<size_t>(y) * width_ + x) * 3];
+  for (int c = 0; c < 3; ++c) p[c] = static_cast<unsigned char>(std::lround(p[c] * (1 - alpha) + colour[c] * alpha));
+}
+
+Rgb Canvas::pixel(int x, int y) const {
+  if (x < 0 || y < 0 || x >= width_ || y >= height_)
+    throw Error("pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): outside the " + std::to_string(width_) +
+                "x" + std::to_string(height_) + " canvas");
+  const unsigned char* p = &pixels_[(static_cast<size_t>(y) * width_ + x) * 3];
+  return {p[0], p[1], p[2]};
 }
 
 void Canvas::outline(int x, int y, int w, int h, Rgb colour, int thickness) {
@@ -47,6 +71,50 @@ void Canvas::grey(const Image& image, int channel, int x, int y, int scale, floa
       fill(x + tx * scale, y + ty * scale, scale, scale, colour);
     }
   }
+}
+
+void Canvas::signed_map(const Image& image, int channel, int x, int y, int scale, float limit) {
+  signed_colour(0.0f, limit);  // refuses a bad limit before drawing anything
+  for (int ty = 0; ty < image.height; ++ty)
+    for (int tx = 0; tx < image.width; ++tx)
+      fill(x + tx * scale, y + ty * scale, scale, scale, signed_colour(image.at(tx, ty, channel), limit));
+}
+
+PixelBox Canvas::colour_bar(const Font& font, int x, int y, int width, int height, float limit, int pixel_height, Rgb ink) {
+  signed_colour(0.0f, limit);
+  for (int row = 0; row < height; ++row) {
+    const float value = limit * (1.0f - 2.0f * (static_cast<float>(row) + 0.5f) / static_cast<float>(height));
+    fill(x, y + row, width, 1, signed_colour(value, limit));
+  }
+  outline(x - 1, y - 1, width + 2, height + 2, {120, 120, 120});
+  const std::string magnitude = format_number("%g", limit);
+  const int lx = x + width + 4;
+  const PixelBox labels[] = {text(font, lx, y, "+" + magnitude, pixel_height, ink),
+                        text(font, lx, y + height / 2 - pixel_height / 2, "0", pixel_height, ink),
+                        text(font, lx, y + height - pixel_height, "\u2212" + magnitude, pixel_height, ink)};
+  int x0 = x - 1, y0 = y - 1, x1 = x + width + 1, y1 = y + height + 1;
+  for (const PixelBox& b : labels) {
+    if (b.width == 0) continue;
+    x0 = std::min(x0, b.x), y0 = std::min(y0, b.y);
+    x1 = std::max(x1, b.x + b.width), y1 = std::max(y1, b.y + b.height);
+  }
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+PixelBox Canvas::text(const Font& font, int x, int y, const std::string& text, int pixel_height, Rgb colour) {
+  const TextCoverage coverage = font.rasterise(text, pixel_height);
+  if (coverage.width == 0) return {x, y, 0, 0};
+  // In 64 bits: a label far outside the canvas must not wrap around into it.
+  const long long left = static_cast<long long>(x) + coverage.left, top = static_cast<long long>(y) + coverage.top;
+  const long long x0 = std::max(left, 0LL), x1 = std::min(left + coverage.width, static_cast<long long>(width_));
+  const long long y0 = std::max(top, 0LL), y1 = std::min(top + coverage.height, static_cast<long long>(height_));
+  for (long long py = y0; py < y1; ++py)
+    for (long long px = x0; px < x1; ++px) {
+      const unsigned char a = coverage.at(static_cast<int>(px - left), static_cast<int>(py - top));
+      if (a) blend(static_cast<int>(px), static_cast<int>(py), colour, static_cast<float>(a) / 255.0f);
+    }
+  return {static_cast<int>(std::clamp<long long>(left, INT_MIN, INT_MAX)),
+          static_cast<int>(std::clamp<long long>(top, INT_MIN, INT_MAX)), coverage.width, coverage.height};
 }
 
 void Canvas::rgb(const Image& image, int x, int y, int scale) {

@@ -105,9 +105,9 @@ void region_figure(const Context& context, const SourceTree& tree, const fs::pat
 // The table: one row per group (1, 4, 16 samples), one column per set; the
 // n×n cells of each group are drawn, and every cell holds one sample.
 void sample_table_figure(const fs::path& path) {
-  const SampleTable table = generate_sample_table(0x5eed0005u);
+  const SampleTable table = generate_sample_table(kSampleTableSeed);
   const int box = 96, gap = 12;
-  Canvas canvas(8 * box + 9 * gap, 3 * box + 4 * gap, kPaper);
+  Canvas canvas(SampleTable::kSets * box + (SampleTable::kSets + 1) * gap, 3 * box + 4 * gap, kPaper);
   int row = 0;
   for (auto [n, first] : {std::pair{1, 0}, std::pair{2, 1}, std::pair{4, 5}}) {
     for (int set = 0; set < SampleTable::kSets; ++set) {
@@ -138,7 +138,7 @@ void traversal_figure(const Context& context, const SourceTree& tree, const fs::
   const int n = 256, gap = 10;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
   const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(upload_float_texture(context, map), n, n, 31);
-  const GlObject table = upload_sample_table(context, generate_sample_table(0x5eed0005u));
+  const GlObject table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
   const auto& boxes = find_fixture("boxes");
   std::vector<TraversalQuery> queries;
   for (int y = 0; y < n; ++y)

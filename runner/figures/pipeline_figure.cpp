@@ -7,6 +7,7 @@
 #include "figures/figures.h"
 #include "gl/texture.h"
 #include "pipeline/pcss_pipeline.h"
+#include "technique/scene_frame.h"
 #include "scene/scene.h"
 
 namespace pn {
@@ -15,12 +16,13 @@ void pipeline_stages_figure(const Context& context, const SourceTree& tree, cons
   const int n = 256, gap = 6;
   const Scene scene = make_scene(fixtures::kScenes[0], n);
   const PcssPipeline pipeline(context, tree);
-  const PcssInputs inputs = pipeline.render_inputs(scene, n);
-  const PcssFrame frame = pipeline.run(inputs, fast_pcss());
+  FullRenderSource source(context, tree);
+  const SceneFrame scene_frame = render_scene_frame(context, source, GBufferRenderer(context, tree), scene, n);
+  const PcssFrame frame = pipeline.run(scene_frame.inputs(), fast_pcss());
   const auto read = [&](const GlObject& t, int size, int channels) {
     return flip_rows(read_float_texture(context, t, size, size, channels));
   };
-  const Image map = read(inputs.shadow_map, n, 1), gbuffer = read(inputs.gbuffer, n, 4);
+  const Image map = read(scene_frame.shadow_map, n, 1), gbuffer = read(scene_frame.gbuffer, n, 4);
   const Image search = read(frame.search_map, n, 4), filter = read(frame.filter_map, n, 4);
   // Region sides on a log scale from 1 to 64 texels; lit entries (s < 0) white.
   const auto sides = [&](const Image& entries) {

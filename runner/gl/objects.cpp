@@ -6,6 +6,7 @@ namespace pn {
 GlObject::GlObject(const Context& context, GlKind kind, GLenum target) : gl_(&context.gl()), kind_(kind) {
   switch (kind) {
     case GlKind::texture: gl_->CreateTextures(target, 1, &id_); break;
+    case GlKind::texture_view: gl_->GenTextures(1, &id_); break;
     case GlKind::buffer: gl_->CreateBuffers(1, &id_); break;
     case GlKind::shader: id_ = gl_->CreateShader(target); break;
     case GlKind::program: id_ = gl_->CreateProgram(); break;
@@ -19,7 +20,8 @@ GlObject::GlObject(const Context& context, GlKind kind, GLenum target) : gl_(&co
 void GlObject::release() {
   if (id_ == 0) return;
   switch (kind_) {
-    case GlKind::texture: gl_->DeleteTextures(1, &id_); break;
+    case GlKind::texture:
+    case GlKind::texture_view: gl_->DeleteTextures(1, &id_); break;
     case GlKind::buffer: gl_->DeleteBuffers(1, &id_); break;
     case GlKind::shader: gl_->DeleteShader(id_); break;
     case GlKind::program: gl_->DeleteProgram(id_); break;

@@ -9,7 +9,9 @@
 
 namespace pn {
 
-enum class GlKind { texture, buffer, shader, program, query, vertex_array, framebuffer, renderbuffer };
+// texture_view: a texture name that glGenTextures reserves without creating the object, as
+// glTextureView requires (texture.h's make_texture_view); released like a texture.
+enum class GlKind { texture, texture_view, buffer, shader, program, query, vertex_array, framebuffer, renderbuffer };
 
 class GlObject {
  public:

@@ -56,6 +56,15 @@ GlObject make_float_texture_array(const Context& context, int width, int height,
   return texture;
 }
 
+GlObject make_texture_view_layer(const Context& context, const GlObject& array, int layer, int channels) {
+  GlObject view(context, GlKind::texture_view);
+  const auto& gl = context.gl();
+  gl.TextureView(view.id(), GL_TEXTURE_2D, array.id(), float_format(channels), 0, 1, static_cast<GLuint>(layer), 1);
+  set_nearest_clamped(gl, view.id());
+  context.throw_if_gl_error("making a 2-D view of layer " + std::to_string(layer) + " of an array texture");
+  return view;
+}
+
 GlObject upload_float_texture(const Context& context, const Image& image) {
   GlObject texture = make_float_texture(context, image.width, image.height, image.channels);
   const auto& gl = context.gl();

@@ -14,6 +14,9 @@ Image read_float_texture(const Context& context, const GlObject& texture, int wi
 
 // Immutable-storage 2-D array texture, `layers` layers of width × height floats.
 GlObject make_float_texture_array(const Context& context, int width, int height, int layers, int channels);
+// A GL_TEXTURE_2D view (glTextureView) of one layer of an immutable-storage array texture:
+// same texels, no copy, `channels` floats per texel (the array's format), nearest filtering.
+GlObject make_texture_view_layer(const Context& context, const GlObject& array, int layer, int channels);
 // The top-left width × height texels of one layer of an array texture (layer 0 of a 2-D one).
 Image read_float_texture_layer(const Context& context, const GlObject& texture, int layer, int width, int height,
                                int channels);

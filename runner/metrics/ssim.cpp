@@ -32,7 +32,10 @@ std::vector<double> window_mean(const std::vector<double>& v, int w, int h, cons
 
 }  // namespace
 
-double ssim(const Image& a, const Image& b, const SsimParams& p) {
+namespace {
+
+// The SSIM of every pixel whose window fits, row-major over (w − 2r)×(h − 2r), the window's centre at (x + r, y + r).
+std::vector<double> ssim_map(const Image& a, const Image& b, const SsimParams& p) {
   if (a.width != b.width || a.height != b.height || a.channels != 1 || b.channels != 1)
     throw Error("SSIM of a " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and a " +
                 std::to_string(b.width) + "x" + std::to_string(b.height) +
@@ -53,12 +56,36 @@ double ssim(const Image& a, const Image& b, const SsimParams& p) {
   const auto mx = window_mean(x, w, h, g, r), my = window_mean(y, w, h, g, r);
   const auto mxx = window_mean(xx, w, h, g, r), myy = window_mean(yy, w, h, g, r), mxy = window_mean(xy, w, h, g, r);
   const double c1 = (p.k1 * p.data_range) * (p.k1 * p.data_range), c2 = (p.k2 * p.data_range) * (p.k2 * p.data_range);
-  double sum = 0.0;
+  std::vector<double> out(mx.size());
   for (size_t i = 0; i < mx.size(); ++i) {
     const double vx = mxx[i] - mx[i] * mx[i], vy = myy[i] - my[i] * my[i], cxy = mxy[i] - mx[i] * my[i];
-    sum += ((2 * mx[i] * my[i] + c1) * (2 * cxy + c2)) / ((mx[i] * mx[i] + my[i] * my[i] + c1) * (vx + vy + c2));
+    out[i] = ((2 * mx[i] * my[i] + c1) * (2 * cxy + c2)) / ((mx[i] * mx[i] + my[i] * my[i] + c1) * (vx + vy + c2));
   }
-  return sum / static_cast<double>(mx.size());
+  return out;
+}
+
+}  // namespace
+
+double ssim(const Image& a, const Image& b, const SsimParams& p) {
+  const std::vector<double> map = ssim_map(a, b, p);
+  double sum = 0.0;
+  for (double v : map) sum += v;
+  return sum / static_cast<double>(map.size());
+}
+
+double ssim(const Image& a, const Image& b, const Image& mask, const SsimParams& p) {
+  if (mask.width != a.width || mask.height != a.height || mask.channels != 1)
+    throw Error("SSIM mask " + std::to_string(mask.width) + "x" + std::to_string(mask.height) +
+                ": expected a single-channel image the size of the compared ones");
+  const std::vector<double> map = ssim_map(a, b, p);
+  const int r = p.radius, ow = a.width - 2 * r;
+  double sum = 0.0;
+  long count = 0;
+  for (size_t i = 0; i < map.size(); ++i) {
+    const int x = static_cast<int>(i % static_cast<size_t>(ow)) + r, y = static_cast<int>(i / static_cast<size_t>(ow)) + r;
+    if (mask.at(x, y) != 0.0f) sum += map[i], ++count;
+  }
+  return count > 0 ? sum / static_cast<double>(count) : 1.0;
 }
 
 }  // namespace pn

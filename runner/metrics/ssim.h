@@ -21,4 +21,8 @@ struct SsimParams {
 // different sizes, images smaller than the window or non-finite values.
 double ssim(const Image& a, const Image& b, const SsimParams& params = {});
 
+// The same SSIM map averaged over the pixels whose window fits and whose `mask` texel is non-zero
+// (1 when there are none). Throws Error also for a mask of another size.
+double ssim(const Image& a, const Image& b, const Image& mask, const SsimParams& params = {});
+
 }  // namespace pn

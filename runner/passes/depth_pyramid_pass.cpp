@@ -4,8 +4,16 @@
 #include <string>
 
 #include "core/error.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "gl/texture.h"
-#include "reference/pyramid_reference.h"
+#include "reference/depth_pyramid_reference.h"
+
+namespace pn::glsl {
+#include "passes/depth_pyramid.h"
+PN_STD140_SIZE(PnPyramidBuildParams, 16);
+PN_STD140_OFFSET(PnPyramidBuildParams, level, 0);
+}  // namespace pn::glsl
 
 namespace pn {
 
@@ -30,18 +38,18 @@ DepthPyramid DepthPyramidBuilder::build(const GlObject& shadow_map, int width, i
   pyramid.map_size = width;
   pyramid.levels = pyramid_level_count(width, max_level);
   pyramid.texture = make_float_texture_array(*context_, width, width, pyramid.levels, 4);
+  pyramid.level0 = make_texture_view_layer(*context_, pyramid.texture, 0, 4);  // immutable storage: a view
   build_into(shadow_map, pyramid);
   return pyramid;
 }
 
 void DepthPyramidBuilder::build_into(const GlObject& shadow_map, const DepthPyramid& pyramid) const {
-  const auto& gl = context_->gl();
-  gl.BindTextureUnit(0, shadow_map.id());
-  gl.BindTextureUnit(1, pyramid.texture.id());
-  gl.BindImageTexture(2, pyramid.texture.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   for (int level = 0; level < pyramid.levels; ++level) {
-    const std::int32_t block[4] = {level, 0, 0, 0};
-    GlObject params = bind_uniform_buffer(*context_, 3, block, sizeof block);
+    PassBindings bind(*context_);
+    bind.texture(PN_PYRAMID_BUILD_MAP_BINDING, shadow_map);
+    bind.texture(PN_PYRAMID_BUILD_READ_BINDING, pyramid.texture);
+    bind.image(PN_PYRAMID_BUILD_WRITE_IMAGE, pyramid.texture, GL_WRITE_ONLY, GL_RGBA32F, 0, true);
+    bind.uniform(glsl::PnPyramidBuildParams{level});
     const int size = pyramid.map_size - (1 << level) + 1;
     program_.dispatch(size, size);  // ends with the barrier the next level's fetches need
   }
@@ -53,11 +61,13 @@ DepthPyramidQuery::DepthPyramidQuery(const Context& context, const SourceTree& t
 Image DepthPyramidQuery::run(const DepthPyramid& pyramid, const Image& queries) const {
   const GlObject query_texture = upload_float_texture(*context_, queries);
   const GlObject results = make_float_texture(*context_, queries.width, queries.height, 4);
-  const auto& gl = context_->gl();
-  gl.BindTextureUnit(0, pyramid.texture.id());
-  gl.BindTextureUnit(1, query_texture.id());
-  gl.BindImageTexture(2, results.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  program_.dispatch(queries.width, queries.height);
+  {
+    PassBindings bind(*context_);
+    bind.texture(PN_PYRAMID_QUERY_PYRAMID_BINDING, pyramid.texture);
+    bind.texture(PN_PYRAMID_QUERY_QUERIES_BINDING, query_texture);
+    bind.image(PN_PYRAMID_QUERY_RESULTS_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
+    program_.dispatch(queries.width, queries.height);
+  }
   return read_float_texture(*context_, results, queries.width, queries.height, 4);
 }
 

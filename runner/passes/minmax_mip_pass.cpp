@@ -1,9 +1,15 @@
 #include "passes/minmax_mip_pass.h"
 
 #include <algorithm>
-#include <cstdint>
 
-#include "reference/pyramid_reference.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
+#include "reference/depth_pyramid_reference.h"
+
+namespace pn::glsl {
+#include "passes/minmax_mip_build.h"
+PN_STD140_SIZE(PnMipBuildParams, 16);
+}  // namespace pn::glsl
 
 namespace pn {
 namespace {
@@ -36,13 +42,13 @@ MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
 }
 
 void MinMaxMipBuilder::build_into(const GlObject& shadow_map, const MinMaxMipChain& chain) const {
-  const auto& gl = context_->gl();
-  gl.BindTextureUnit(0, shadow_map.id());
-  gl.BindTextureUnit(1, chain.texture.id());
   for (int level = 0; level < chain.levels; ++level) {
-    const std::int32_t block[4] = {level, 0, 0, 0};
-    GlObject params = bind_uniform_buffer(*context_, 3, block, sizeof block);
-    gl.BindImageTexture(2, chain.texture.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const glsl::PnMipBuildParams block{level};
+    PassBindings bind(*context_);
+    bind.uniform(block);
+    bind.texture(PN_MINMAX_MIP_SHADOW_MAP_BINDING, shadow_map);
+    bind.texture(PN_MINMAX_MIP_READ_BINDING, chain.texture);
+    bind.image(PN_MINMAX_MIP_WRITE_BINDING, chain.texture, GL_WRITE_ONLY, GL_RGBA32F, level);
     const int size = level_size(chain.map_size, level);
     program_.dispatch(size, size);
   }

@@ -1,8 +1,17 @@
 #include "passes/reuse_pass.h"
 
-#include <cstdint>
-
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "gl/texture.h"
+
+namespace pn::glsl {
+#include "passes/reuse_gather.h"
+#include "passes/reuse_link.h"
+PN_STD140_SIZE(PnReuseParams, 16);
+PN_STD140_OFFSET(PnReuseParams, sigma3, 8);
+PN_STD140_OFFSET(PnReuseParams, tile, 12);
+PN_STD140_SIZE(PnReuseGatherParams, 16);
+}  // namespace pn::glsl
 
 namespace pn {
 
@@ -13,26 +22,24 @@ ReusePass::ReusePass(const Context& context, const SourceTree& tree)
 
 GlObject ReusePass::link(const GlObject& entries, int width, int height, const ReuseParams& params) const {
   params.validate();
-  // std140 block PnReuseParams.
-  const struct {
-    float sigma1, sigma2, sigma3;
-    std::int32_t tile;
-  } block{params.sigma1, params.sigma2, params.sigma3, params.tile};
   GlObject parents = make_float_texture(*context_, width, height, 1);
-  GlObject ubo = bind_uniform_buffer(*context_, 3, &block, sizeof block);
-  context_->gl().BindTextureUnit(0, entries.id());
-  context_->gl().BindImageTexture(2, parents.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  const glsl::PnReuseParams block{params.sigma1, params.sigma2, params.sigma3, params.tile};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_REUSE_LINK_ENTRIES_BINDING, entries);
+  bind.image(PN_REUSE_LINK_PARENTS_BINDING, parents, GL_WRITE_ONLY, GL_R32F);
   link_.dispatch(width, height);
   return parents;
 }
 
 GlObject ReusePass::gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const {
-  const std::int32_t block[4] = {tile, 0, 0, 0};  // std140 block PnReuseGatherParams
   GlObject gathered = make_float_texture(*context_, width, height, 4);
-  GlObject ubo = bind_uniform_buffer(*context_, 3, block, sizeof block);
-  context_->gl().BindTextureUnit(0, parents.id());
-  context_->gl().BindTextureUnit(1, values.id());
-  context_->gl().BindImageTexture(2, gathered.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  const glsl::PnReuseGatherParams block{tile};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_REUSE_GATHER_PARENTS_BINDING, parents);
+  bind.texture(PN_REUSE_GATHER_VALUES_BINDING, values);
+  bind.image(PN_REUSE_GATHER_RESULT_BINDING, gathered, GL_WRITE_ONLY, GL_RGBA32F);
   gather_.dispatch(width, height);
   return gathered;
 }

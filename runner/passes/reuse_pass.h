@@ -13,7 +13,8 @@ class ReusePass {
  public:
   ReusePass(const Context& context, const SourceTree& tree);
 
-  // R32F parent codes (0 none, 1 left, 2 top) of a width × height RGBA32F (d, x, y, s) entry texture.
+  // R32F parent codes (PN_REUSE_NONE, PN_REUSE_LEFT, PN_REUSE_TOP: glsl/reuse.h) of a width × height
+  // RGBA32F (d, x, y, s) entry texture.
   GlObject link(const GlObject& entries, int width, int height, const ReuseParams& params) const;
 
   // RGBA32F (representative x, y, value at the representative, 0) for every pixel.

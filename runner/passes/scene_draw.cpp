@@ -3,13 +3,16 @@
 #include <string>
 
 #include "core/error.h"
-#include "gl/compute_program.h"
 #include "gl/texture.h"
+#include "passes/scene_raster.h"
 
 namespace pn {
 
+// The program's output goes to draw buffer 0, which a new framebuffer maps to colour attachment 0.
+static_assert(PN_SCENE_TARGET_LOCATION == 0, "draw_scene renders into draw buffer 0 (colour attachment 0)");
+
 GlObject draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
-                    const float clear[4], const void* block, std::size_t block_size) {
+                    const float clear[4]) {
   const auto& gl = context.gl();
   GlObject target = make_float_texture(context, size, size, channels);
   GlObject depth(context, GlKind::renderbuffer);
@@ -24,11 +27,11 @@ GlObject draw_scene(const Context& context, const GlObject& program, const Scene
   GlObject buffer(context, GlKind::buffer);
   gl.NamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec3)), vertices.data(), 0);
   GlObject vertex_array(context, GlKind::vertex_array);
-  gl.VertexArrayVertexBuffer(vertex_array.id(), 0, buffer.id(), 0, sizeof(glm::vec3));
-  gl.EnableVertexArrayAttrib(vertex_array.id(), 0);
-  gl.VertexArrayAttribFormat(vertex_array.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-  gl.VertexArrayAttribBinding(vertex_array.id(), 0, 0);
-  GlObject params = bind_uniform_buffer(context, 0, block, block_size);
+  constexpr GLuint kBufferSlot = 0;  // the vertex array's one buffer binding (not a shader binding)
+  gl.VertexArrayVertexBuffer(vertex_array.id(), kBufferSlot, buffer.id(), 0, sizeof(glm::vec3));
+  gl.EnableVertexArrayAttrib(vertex_array.id(), PN_SCENE_POSITION_LOCATION);
+  gl.VertexArrayAttribFormat(vertex_array.id(), PN_SCENE_POSITION_LOCATION, 3, GL_FLOAT, GL_FALSE, 0);
+  gl.VertexArrayAttribBinding(vertex_array.id(), PN_SCENE_POSITION_LOCATION, kBufferSlot);
 
   const float one = 1.0f;
   gl.ClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);

@@ -1,11 +1,18 @@
 #include "passes/surface_pass.h"
 
-#include <algorithm>
-#include <glm/gtc/type_ptr.hpp>
 #include <string>
 
 #include "core/error.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "passes/scene_draw.h"
+
+namespace pn::glsl {
+#include "passes/surface.h"
+PN_STD140_SIZE(PnSurfaceParams, 160);
+PN_STD140_OFFSET(PnSurfaceParams, cameraPosition, 64);
+PN_STD140_OFFSET(PnSurfaceParams, boxAlbedo, 144);
+}  // namespace pn::glsl
 
 namespace pn {
 
@@ -15,21 +22,19 @@ SurfaceRenderer::SurfaceRenderer(const Context& context, const SourceTree& tree)
 GlObject SurfaceRenderer::render(const Scene& scene, int screen_size) const {
   if (screen_size < 1) throw Error("screen size " + std::to_string(screen_size) + ": expected at least 1");
   if (scene.boxes.empty()) throw Error("scene '" + scene.name + "': expected a ground box (boxes[0])");
-  struct {
-    float camera[16];
-    float camera_position[4], light_position[4], ground_lo[4], ground_hi[4], ground_albedo[4], box_albedo[4];
-  } block{};
-  const glm::mat4 camera = scene.camera_projection() * scene.camera_view();
-  std::copy_n(glm::value_ptr(camera), 16, block.camera);
-  const auto put = [](float* out, const glm::vec3& v) { std::copy_n(glm::value_ptr(v), 3, out); };
-  put(block.camera_position, glm::vec3(glm::inverse(scene.camera_view())[3]));
-  put(block.light_position, scene.light_position);
-  put(block.ground_lo, scene.boxes[0].lo);
-  put(block.ground_hi, scene.boxes[0].hi);
-  put(block.ground_albedo, kGroundAlbedo);
-  put(block.box_albedo, kBoxAlbedo);
+  const auto point = [](const glm::vec3& v) { return glsl::std140_vec4(glm::vec4(v, 0.0f)); };
+  glsl::PnSurfaceParams block{};
+  block.cameraViewProjection = glsl::std140_mat4(scene.camera_projection() * scene.camera_view());
+  block.cameraPosition = point(glm::vec3(glm::inverse(scene.camera_view())[3]));
+  block.lightPosition = point(scene.light_position);
+  block.groundLo = point(scene.boxes[0].lo);
+  block.groundHi = point(scene.boxes[0].hi);
+  block.groundAlbedo = point(kGroundAlbedo);
+  block.boxAlbedo = point(kBoxAlbedo);
   const float nothing[4] = {0, 0, 0, 0};
-  return draw_scene(*context_, program_, scene, screen_size, 4, nothing, &block, sizeof block);
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  return draw_scene(*context_, program_, scene, screen_size, 4, nothing);
 }
 
 }  // namespace pn

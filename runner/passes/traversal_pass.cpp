@@ -1,9 +1,19 @@
 #include "passes/traversal_pass.h"
 
-#include <cstdint>
-
 #include "core/query_grid.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "gl/texture.h"
+
+namespace pn::glsl {
+#include "passes/traversal_query.h"
+#include "passes/window_scan.h"
+PN_STD140_SIZE(PnTraversalQueryParams, 16);
+PN_STD140_OFFSET(PnTraversalQueryParams, leafSide, 4);
+PN_STD140_OFFSET(PnTraversalQueryParams, leafMode, 8);
+PN_STD140_OFFSET(PnTraversalQueryParams, nodeBudget, 12);
+PN_STD140_SIZE(PnWindowScanParams, 16);
+}  // namespace pn::glsl
 
 namespace pn {
 
@@ -43,18 +53,16 @@ TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
 
 void TraversalPass::dispatch(const DepthPyramid& pyramid, const GlObject& sample_table, const TraversalBatch& batch,
                              const TraversalSettings& settings) const {
-  struct Block {
-    float bias;
-    std::int32_t leaf_side, leaf_mode, node_budget;
-  } block{settings.bias, settings.leaf_side, static_cast<std::int32_t>(settings.leaf_mode), settings.node_budget};
-  GlObject params = bind_uniform_buffer(*context_, 6, &block, sizeof block);
-  const auto& gl = context_->gl();
-  gl.BindTextureUnit(0, pyramid.texture.id());
-  gl.BindTextureUnit(1, sample_table.id());
-  gl.BindTextureUnit(2, batch.query_a_.id());
-  gl.BindTextureUnit(5, batch.query_b_.id());
-  gl.BindImageTexture(3, batch.result_c_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  gl.BindImageTexture(4, batch.result_d_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  const glsl::PnTraversalQueryParams block{settings.bias, settings.leaf_side, static_cast<int>(settings.leaf_mode),
+                                           settings.node_budget};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_TRAVERSAL_QUERY_PYRAMID_BINDING, pyramid.texture);
+  bind.texture(PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, sample_table);
+  bind.texture(PN_TRAVERSAL_QUERY_A_BINDING, batch.query_a_);
+  bind.texture(PN_TRAVERSAL_QUERY_B_BINDING, batch.query_b_);
+  bind.image(PN_TRAVERSAL_QUERY_RESULT_C_BINDING, batch.result_c_, GL_WRITE_ONLY, GL_RGBA32F);
+  bind.image(PN_TRAVERSAL_QUERY_RESULT_D_BINDING, batch.result_d_, GL_WRITE_ONLY, GL_RGBA32F);
   program_.dispatch(batch.width_, batch.height_);
 }
 
@@ -62,14 +70,14 @@ WindowScanPass::WindowScanPass(const Context& context, const SourceTree& tree)
     : context_(&context), program_(compile_pass(context, tree, "passes/window_scan.comp")) {}
 
 void WindowScanPass::dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const {
-  const float block[4] = {bias, 0.0f, 0.0f, 0.0f};
-  GlObject params = bind_uniform_buffer(*context_, 6, block, sizeof block);
-  const auto& gl = context_->gl();
-  gl.BindTextureUnit(0, pyramid.texture.id());
-  gl.BindTextureUnit(2, batch.query_a_.id());
-  gl.BindTextureUnit(5, batch.query_b_.id());
-  gl.BindImageTexture(3, batch.result_c_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  gl.BindImageTexture(4, batch.result_d_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  const glsl::PnWindowScanParams block{bias};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_WINDOW_SCAN_PYRAMID_BINDING, pyramid.texture);
+  bind.texture(PN_WINDOW_SCAN_A_BINDING, batch.query_a_);
+  bind.texture(PN_WINDOW_SCAN_B_BINDING, batch.query_b_);
+  bind.image(PN_WINDOW_SCAN_RESULT_C_BINDING, batch.result_c_, GL_WRITE_ONLY, GL_RGBA32F);
+  bind.image(PN_WINDOW_SCAN_RESULT_D_BINDING, batch.result_d_, GL_WRITE_ONLY, GL_RGBA32F);
   program_.dispatch(batch.width_, batch.height_);
 }
 

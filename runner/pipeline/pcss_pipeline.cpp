@@ -4,43 +4,45 @@
 #include <cstdint>
 
 #include "gl/gpu_timer.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
 #include "sampling/poisson_disk.h"
 #include "sampling/sample_table.h"
 
+namespace pn::glsl {
+#include "passes/pcss_params.h"
+PN_STD140_SIZE(PnPcssParams, 80);
+PN_STD140_OFFSET(PnPcssParams, refineIterations, 24);
+PN_STD140_OFFSET(PnPcssParams, sigma3, 72);
+PN_STD140_SIZE(PnPoissonDisk, 16 * PN_POISSON_MAX_SAMPLES);
+PN_STD140_OFFSET(PnPoissonDisk, points[1], 16);
+}  // namespace pn::glsl
+
 namespace pn {
 
-// glsl/passes/pcss_params.glsl, std140.
-struct PcssBlock {
-  float light_width, light_near, light_near_plane_width, map_size, bias, filter_scale;
-  std::int32_t refine_iterations, region_mode, leaf_side, leaf_mode, node_budget, reuse_tile, work_mode, band_start,
-      band_rows, sample_count;
-  float sigma1, sigma2, sigma3, padding;
-};
+using PcssBlock = glsl::PnPcssParams;
 
 namespace {
 
-constexpr std::uint32_t kSampleTableSeed = 0x5eed0005u;
 constexpr std::uint32_t kBlockerDiskSeed = 0x5eed0036u;
 constexpr std::uint32_t kFilterDiskSeed = 0x5eed0064u;
 constexpr int kScanBandRows = 128;  // pcss_scan.comp: 128 × ceil(8192 / 16) < 65535 loop iterations
 
-enum WorkMode : std::int32_t { work_all = 0, work_branch = 1, work_list = 2 };
-
 PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   PcssBlock b{};
-  b.light_width = static_cast<float>(light.width);
-  b.light_near = static_cast<float>(light.near_plane);
-  b.light_near_plane_width = static_cast<float>(light.near_plane_width());
-  b.map_size = static_cast<float>(light.map_size);
+  b.lightWidth = static_cast<float>(light.width);
+  b.lightNear = static_cast<float>(light.near_plane);
+  b.lightNearPlaneWidth = static_cast<float>(light.near_plane_width());
+  b.mapSize = static_cast<float>(light.map_size);
   b.bias = s.bias;
-  b.filter_scale = s.filter_scale;
-  b.refine_iterations = s.refine_iterations;
-  b.region_mode = static_cast<std::int32_t>(s.region);
-  b.leaf_side = s.leaf_side;
-  b.leaf_mode = static_cast<std::int32_t>(s.leaf_mode);
-  b.node_budget = s.node_budget;
+  b.filterScale = s.filter_scale;
+  b.refineIterations = s.refine_iterations;
+  b.regionMode = static_cast<std::int32_t>(s.region);
+  b.leafSide = s.leaf_side;
+  b.leafMode = static_cast<std::int32_t>(s.leaf_mode);
+  b.nodeBudget = s.node_budget;
   b.sigma1 = s.sigma1;
   b.sigma2 = s.sigma2;
   b.sigma3 = s.sigma3;
@@ -48,14 +50,12 @@ PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
 }
 
 GlObject upload_disk(const Context& context, int count, std::uint32_t seed) {
-  float points[64][4] = {};  // std140 vec4 points[64]
+  glsl::PnPoissonDisk block{};
   const PoissonDisk disk = poisson_disk(count, seed);
-  for (size_t i = 0; i < disk.points.size() && i < 64; ++i) {
-    points[i][0] = static_cast<float>(disk.points[i].x);
-    points[i][1] = static_cast<float>(disk.points[i].y);
-  }
+  for (size_t i = 0; i < disk.points.size() && i < PN_POISSON_MAX_SAMPLES; ++i)
+    block.points[i] = {static_cast<float>(disk.points[i].x), static_cast<float>(disk.points[i].y)};
   GlObject buffer(context, GlKind::buffer);
-  context.gl().NamedBufferStorage(buffer.id(), sizeof points, points, 0);
+  context.gl().NamedBufferStorage(buffer.id(), sizeof block, &block, 0);
   return buffer;
 }
 
@@ -72,12 +72,6 @@ bool uses_pyramid_levels(const PcssSettings& s) {
 
 }  // namespace
 
-double PcssFrame::total_ms() const {
-  double sum = 0.0;
-  for (const auto& stage : stages) sum += stage.second;
-  return sum;
-}
-
 double PcssStats::representative_fraction() const {
   const long regions = searched + filtered;
   return regions > 0 ? static_cast<double>(search_computed + filter_computed) / static_cast<double>(regions) : 0.0;
@@ -89,8 +83,6 @@ double PcssStats::work_per_receiver() const {
 
 PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
     : context_(&context),
-      shadow_map_(context, tree),
-      gbuffer_(context, tree),
       pyramid_(context, tree),
       reuse_(context, tree),
       blur_(context, tree),
@@ -106,12 +98,6 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       filter_disk_(upload_disk(context, PcssSettings{}.filter_samples, kFilterDiskSeed)),
       no_parents_(cleared_texture(context, 1, 1)) {}
 
-PcssInputs PcssPipeline::render_inputs(const Scene& scene, int screen_size) const {
-  if (screen_size < 1 || screen_size > 8192)
-    throw Error("screen size " + std::to_string(screen_size) + ": expected 1..8192");
-  return {scene.light, screen_size, shadow_map_.render(scene), gbuffer_.render(scene, screen_size, fixtures::kNormalOffsetTexels)};
-}
-
 GlObject PcssPipeline::link(const GlObject& entries, int size, int tile, const PcssSettings& s) const {
   ReuseParams params;
   params.sigma1 = s.sigma1;
@@ -125,12 +111,16 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
                             int tile, Estimator estimator, int samples, const GlObject& result) const {
   const auto& gl = context_->gl();
   const int size = frame.size;
-  block.reuse_tile = parents ? tile : 0;
-  block.sample_count = samples;
-  gl.BindTextureUnit(0, frame.pyramid.texture.id());
-  gl.BindTextureUnit(1, sample_table_.id());
-  gl.BindTextureUnit(2, entries.id());
-  gl.BindTextureUnit(4, parents ? parents->id() : no_parents_.id());
+  block.reuseTile = parents ? tile : 0;
+  block.sampleCount = samples;
+  // What every estimator reads; each dispatch below binds it in its own scope.
+  const auto bind_inputs = [&](PassBindings& bind) {
+    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid.texture);
+    bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
+    bind.texture(PN_PCSS_ENTRIES_BINDING, entries);
+    bind.texture(PN_PCSS_PARENTS_BINDING, parents ? *parents : no_parents_);
+    bind.texture(PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid.level0);  // sampler2D of the sanitized map
+  };
 
   if (estimator == Estimator::scan) {
     // Bands of rows, ping-pong between `result` and a partner so the last band lands in `result`.
@@ -139,13 +129,13 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
     const GlObject* target[2] = {&result, &partner};
     const int first = (bands - 1) % 2;
     for (int band = 0; band < bands; ++band) {
-      block.band_start = band * kScanBandRows;
-      block.band_rows = kScanBandRows;
-      GlObject ubo = bind_uniform_buffer(*context_, 7, &block, sizeof block);
-      const GlObject& out = *target[(first + band) % 2];
-      const GlObject& previous = *target[(first + band + 1) % 2];
-      gl.BindTextureUnit(5, previous.id());
-      gl.BindImageTexture(3, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      block.bandStart = band * kScanBandRows;
+      block.bandRows = kScanBandRows;
+      PassBindings bind(*context_);
+      bind_inputs(bind);
+      bind.uniform(block);
+      bind.texture(PN_PCSS_RESULTS_BINDING, *target[(first + band + 1) % 2]);  // the previous band
+      bind.image(PN_PCSS_RESULT_IMAGE, *target[(first + band) % 2], GL_WRITE_ONLY, GL_RGBA32F);
       scan_.dispatch(size, size);
     }
     return;
@@ -155,19 +145,18 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   // The list holds the pixels that must compute — not lit, and representatives
   // when reuse is on — so lit pixels are skipped with or without reuse.
   const bool list = frame.settings.skip == WorkSkip::list;
-  block.work_mode = list ? work_list : parents ? work_branch : work_all;
-  GlObject ubo = bind_uniform_buffer(*context_, 7, &block, sizeof block);
+  block.workMode = list ? PN_WORK_LIST : parents ? PN_WORK_BRANCH : PN_WORK_ALL;
+  PassBindings bind(*context_);
+  bind_inputs(bind);
+  bind.uniform(block);
   GlObject other_disk;  // a sample count other than the defaults gets its own disk
   if (estimator == Estimator::poisson) {
-    const PcssSettings defaults;
-    const GlObject* disk = samples == defaults.blocker_samples ? &blocker_disk_
-                           : samples == defaults.filter_samples ? &filter_disk_
-                                                                : nullptr;
-    if (!disk) {
+    if (samples == PN_POISSON_BLOCKER_SAMPLES) bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, blocker_disk_);
+    else if (samples == PN_POISSON_PCF_SAMPLES) bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, filter_disk_);
+    else {
       other_disk = upload_disk(*context_, samples, kFilterDiskSeed);
-      disk = &other_disk;
+      bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, other_disk);
     }
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, 8, disk->id());
   }
   // The work list: its header (groups x, y, z; count), and room for every pixel only when listing.
   GlObject work(*context_, GlKind::buffer);
@@ -176,8 +165,8 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   gl.NamedBufferData(work.id(), header + room, nullptr, GL_DYNAMIC_COPY);
   const std::uint32_t start[4] = {0, 1, 1, 0};
   gl.NamedBufferSubData(work.id(), 0, header, start);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, work.id());
-  gl.BindImageTexture(3, result.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  bind.storage_buffer(PN_PCSS_WORK_LIST_BINDING, work);
+  bind.image(PN_PCSS_RESULT_IMAGE, result, GL_WRITE_ONLY, GL_RGBA32F);
   if (list) {
     compact_.dispatch(size, size);
     program.dispatch_indirect(work);
@@ -187,29 +176,28 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
 }
 
 void PcssPipeline::reuse_and_estimate(PcssFrame& frame, const PcssBlock& block, StageClock& clock,
-                                      const std::string& step, const GlObject& keys, const GlObject& entries, int tile,
+                                      StageNames stages, const GlObject& keys, const GlObject& entries, int tile,
                                       Estimator estimator, int samples, GlObject& parents, GlObject& results) const {
   if (tile > 0) parents = link(keys, frame.size, tile, frame.settings);
-  clock.stage(step + " reuse link");
+  clock.stage(stages.link);
   results = cleared_texture(*context_, frame.size, 4);
   estimate(frame, block, entries, tile > 0 ? &parents : nullptr, tile, estimator, samples, results);
-  clock.stage(step + (step == "4" ? " blockers" : " occlusion"));
+  clock.stage(stages.estimate);
 }
 
-GlObject PcssPipeline::bind_representatives(const PcssBlock& block, const GlObject& entries, int tile,
-                                            const GlObject& parents, const GlObject& results) const {
-  PcssBlock b = block;
-  b.reuse_tile = tile;
-  GlObject ubo = bind_uniform_buffer(*context_, 7, &b, sizeof b);
-  const auto& gl = context_->gl();
-  gl.BindTextureUnit(2, entries.id());
-  gl.BindTextureUnit(4, tile > 0 ? parents.id() : no_parents_.id());
-  gl.BindTextureUnit(5, results.id());
-  return ubo;
+void PcssPipeline::bind_representatives(PassBindings& bind, PcssBlock block, const GlObject& entries, int tile,
+                                        const GlObject& parents, const GlObject& results) const {
+  block.reuseTile = tile;
+  bind.uniform(block);
+  bind.texture(PN_PCSS_ENTRIES_BINDING, entries);
+  bind.texture(PN_PCSS_PARENTS_BINDING, tile > 0 ? parents : no_parents_);
+  bind.texture(PN_PCSS_RESULTS_BINDING, results);
 }
 
-PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settings) const {
+PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& settings) const {
   settings.validate();
+  if (!inputs.shadow_map || !inputs.gbuffer || inputs.screen_size < 1)
+    throw Error("PCSS frame '" + settings.name + "': expected a shadow map, a G-buffer and a screen size >= 1");
   const auto& gl = context_->gl();
   PcssFrame frame;
   frame.settings = settings;
@@ -220,7 +208,7 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   clock.start();
 
   // Step 1's pyramid: all levels when something reads them, else level 0 (the sanitized map) only.
-  frame.pyramid = pyramid_.build(inputs.shadow_map, n, n, uses_pyramid_levels(settings) ? 31 : 0);
+  frame.pyramid = pyramid_.build(*inputs.shadow_map, n, n, uses_pyramid_levels(settings) ? 31 : 0);
   clock.stage("pyramid");
 
   // Step 3.
@@ -228,39 +216,40 @@ PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settin
   frame.search_map = make_float_texture(*context_, size, size, 4);
   frame.search_keys = make_float_texture(*context_, size, size, 4);
   {
-    GlObject ubo = bind_uniform_buffer(*context_, 7, &block, sizeof block);
-    gl.BindTextureUnit(0, frame.pyramid.texture.id());
-    gl.BindTextureUnit(1, inputs.gbuffer.id());
-    gl.BindImageTexture(2, frame.search_map.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl.BindImageTexture(3, frame.search_keys.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    PassBindings bind(*context_);
+    bind.uniform(block);
+    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid.texture);
+    bind.texture(PN_PCSS_GBUFFER_BINDING, *inputs.gbuffer);
+    bind.image(PN_PCSS_SEARCH_MAP_IMAGE, frame.search_map, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.image(PN_PCSS_SEARCH_KEYS_IMAGE, frame.search_keys, GL_WRITE_ONLY, GL_RGBA32F);
     search_.dispatch(size, size);
   }
   clock.stage("3 search region");
 
   // Step 4: blockers of the representatives, then every pixel's filter region.
-  reuse_and_estimate(frame, block, clock, "4", frame.search_keys, frame.search_map, settings.search_tile,
+  reuse_and_estimate(frame, block, clock, {"4 reuse link", "4 blockers"}, frame.search_keys, frame.search_map, settings.search_tile,
                      settings.blockers, settings.blocker_samples, frame.search_parents, frame.blocker_results);
   frame.filter_map = make_float_texture(*context_, size, size, 4);
   frame.blocker_mean = make_float_texture(*context_, size, size, 1);
   frame.filter_keys = make_float_texture(*context_, size, size, 4);
   {
-    GlObject ubo = bind_representatives(block, frame.search_map, settings.search_tile, frame.search_parents,
-                                        frame.blocker_results);
-    gl.BindImageTexture(0, frame.filter_map.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl.BindImageTexture(1, frame.blocker_mean.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    gl.BindImageTexture(2, frame.filter_keys.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    PassBindings bind(*context_);
+    bind_representatives(bind, block, frame.search_map, settings.search_tile, frame.search_parents, frame.blocker_results);
+    bind.image(PN_PCSS_FILTER_MAP_IMAGE, frame.filter_map, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.image(PN_PCSS_BLOCKER_MEAN_IMAGE, frame.blocker_mean, GL_WRITE_ONLY, GL_R32F);
+    bind.image(PN_PCSS_FILTER_KEYS_IMAGE, frame.filter_keys, GL_WRITE_ONLY, GL_RGBA32F);
     filter_.dispatch(size, size);
   }
   clock.stage("4 filter region");
 
   // Step 5: occluded fraction of the representatives, then every pixel's visibility.
-  reuse_and_estimate(frame, block, clock, "5", frame.filter_keys, frame.filter_map, settings.filter_tile,
+  reuse_and_estimate(frame, block, clock, {"5 reuse link", "5 occlusion"}, frame.filter_keys, frame.filter_map, settings.filter_tile,
                      settings.occlusion, settings.filter_samples, frame.filter_parents, frame.occlusion_results);
   frame.visibility = make_float_texture(*context_, size, size, 1);
   {
-    GlObject ubo = bind_representatives(block, frame.filter_map, settings.filter_tile, frame.filter_parents,
-                                        frame.occlusion_results);
-    gl.BindImageTexture(3, frame.visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    PassBindings bind(*context_);
+    bind_representatives(bind, block, frame.filter_map, settings.filter_tile, frame.filter_parents, frame.occlusion_results);
+    bind.image(PN_PCSS_VISIBILITY_IMAGE, frame.visibility, GL_WRITE_ONLY, GL_R32F);
     shade_.dispatch(size, size);
   }
   clock.stage("5 shade");
@@ -302,24 +291,6 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
       }
     }
   return s;
-}
-
-PcssMeasurement PcssPipeline::measure(const PcssInputs& inputs, const PcssSettings& settings, int repeats) const {
-  if (repeats < 1) throw Error("repeats " + std::to_string(repeats) + ": expected >= 1");
-  PcssMeasurement m;
-  run(inputs, settings);  // untimed: the driver compiles shader variants on first use (llvmpipe: ~1 s)
-  std::vector<double> totals;
-  std::vector<std::vector<double>> stages;
-  for (int r = 0; r < repeats; ++r) {
-    m.frame = run(inputs, settings);
-    totals.push_back(m.frame.total_ms());
-    stages.resize(m.frame.stages.size());
-    for (size_t i = 0; i < m.frame.stages.size(); ++i) stages[i].push_back(m.frame.stages[i].second);
-  }
-  m.total_ms = median(totals);
-  for (size_t i = 0; i < stages.size(); ++i) m.stage_ms.emplace_back(m.frame.stages[i].first, median(stages[i]));
-  m.stats = stats(m.frame);
-  return m;
 }
 
 }  // namespace pn

@@ -14,23 +14,16 @@
 #include "gl/compute_program.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
-#include "passes/gbuffer_pass.h"
 #include "passes/reuse_pass.h"
-#include "passes/shadow_map_pass.h"
 #include "pipeline/pcss_settings.h"
-#include "scene/scene.h"
+#include "technique/technique.h"
 
 namespace pn {
 
-struct PcssBlock;  // glsl/passes/pcss_params.glsl's uniform block
-
-// Steps 1 and 2 without the pyramid: the same for every technique.
-struct PcssInputs {
-  LightModel light;
-  int screen_size = 0;
-  GlObject shadow_map;  // N×N R32F linear light depth, +Inf where empty
-  GlObject gbuffer;     // screen² RGBA32F (u, v in texels, light depth, valid)
-};
+namespace glsl {
+struct PnPcssParams;  // glsl/passes/pcss_params.h's uniform block
+}
+class PassBindings;
 
 struct PcssFrame {
   PcssSettings settings;
@@ -50,7 +43,6 @@ struct PcssFrame {
   std::vector<std::pair<std::string, double>> stages;  // GPU ms, in order
 
   const GlObject& soft_shadow() const { return settings.blur ? blurred : visibility; }
-  double total_ms() const;
 };
 
 // What a frame did, counted on the CPU from its maps.
@@ -66,46 +58,35 @@ struct PcssStats {
   double work_per_receiver() const;
 };
 
-// Repeated runs of one technique: the last frame, medians of the GPU times, its stats.
-struct PcssMeasurement {
-  PcssFrame frame;
-  double total_ms = 0.0;
-  std::vector<std::pair<std::string, double>> stage_ms;
-  PcssStats stats;
-};
-
 class PcssPipeline {
  public:
   PcssPipeline(const Context& context, const SourceTree& tree);
 
-  PcssInputs render_inputs(const Scene& scene, int screen_size) const;
-
   // One frame of `settings` over `inputs`; timestamps between the stages.
-  // Throws Error for invalid settings.
-  PcssFrame run(const PcssInputs& inputs, const PcssSettings& settings) const;
+  // Throws Error for invalid settings or inputs.
+  PcssFrame run(const TechniqueInputs& inputs, const PcssSettings& settings) const;
 
   PcssStats stats(const PcssFrame& frame) const;
 
-  // One untimed warm-up run, then `repeats` >= 1 runs; medians of the total and of each stage.
-  PcssMeasurement measure(const PcssInputs& inputs, const PcssSettings& settings, int repeats) const;
-
  private:
-  void estimate(const PcssFrame& frame, PcssBlock block, const GlObject& entries, const GlObject* parents, int tile,
+  void estimate(const PcssFrame& frame, glsl::PnPcssParams block, const GlObject& entries, const GlObject* parents, int tile,
                 Estimator estimator, int samples, const GlObject& result) const;
   GlObject link(const GlObject& entries, int size, int tile, const PcssSettings& settings) const;
   // Steps 4 and 5's first half: links of `keys` (tile > 0) into `parents`, then the estimate of
-  // every computing pixel's region of `entries` into `results`; two stages of `clock`.
-  void reuse_and_estimate(PcssFrame& frame, const PcssBlock& block, StageClock& clock, const std::string& step,
+  // every computing pixel's region of `entries` into `results`; two stages of `clock`, named `stages`.
+  struct StageNames {
+    const char* link;
+    const char* estimate;
+  };
+  void reuse_and_estimate(PcssFrame& frame, const glsl::PnPcssParams& block, StageClock& clock, StageNames stages,
                           const GlObject& keys, const GlObject& entries, int tile, Estimator estimator, int samples,
                           GlObject& parents, GlObject& results) const;
-  // Their second half's inputs: `entries`, parents (tile > 0) and results at units 2, 4, 5, and the
-  // uniform block with the tile (returned: bound while it lives).
-  GlObject bind_representatives(const PcssBlock& block, const GlObject& entries, int tile, const GlObject& parents,
-                                const GlObject& results) const;
+  // Their second half's inputs into `bind`: `entries`, parents (tile > 0), results, and the
+  // uniform block with the tile.
+  void bind_representatives(PassBindings& bind, glsl::PnPcssParams block, const GlObject& entries, int tile,
+                            const GlObject& parents, const GlObject& results) const;
 
   const Context* context_;
-  ShadowMapRenderer shadow_map_;
-  GBufferRenderer gbuffer_;
   DepthPyramidBuilder pyramid_;
   ReusePass reuse_;
   BlurPass blur_;

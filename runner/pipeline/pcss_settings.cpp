@@ -21,8 +21,11 @@ void PcssSettings::validate() const {
   if (filter_tile < 0 || filter_tile > 16) throw bad("filter reuse tile", filter_tile, "0 (off) or 1..16");
   for (float s : {sigma1, sigma2, sigma3})
     if (!(s >= 0) || !std::isfinite(s)) throw bad("similarity bound", s, "a finite number >= 0");
-  if (blocker_samples < 1 || blocker_samples > 64) throw bad("blocker samples", blocker_samples, "1..64");
-  if (filter_samples < 1 || filter_samples > 64) throw bad("filter samples", filter_samples, "1..64");
+  const std::string samples = "1.." + std::to_string(PN_POISSON_MAX_SAMPLES);  // poisson_pcss.glsl's disk array
+  if (blocker_samples < 1 || blocker_samples > PN_POISSON_MAX_SAMPLES)
+    throw bad("blocker samples", blocker_samples, samples.c_str());
+  if (filter_samples < 1 || filter_samples > PN_POISSON_MAX_SAMPLES)
+    throw bad("filter samples", filter_samples, samples.c_str());
   if (blur) blur_params.validate();
 }
 
@@ -71,30 +74,15 @@ PcssSettings fast_pcss_all_off() {
   return s;
 }
 
-std::vector<PcssSettings> fast_pcss_ablations() {
-  std::vector<PcssSettings> out;
-  const auto add = [&](const char* name, auto change) {
-    PcssSettings s = fast_pcss();
-    s.name = name;
-    change(s);
-    out.push_back(s);
-  };
-  add("fast-no-refine", [](PcssSettings& s) { s.refine_iterations = 0; });
-  add("fast-leaf-1", [](PcssSettings& s) { s.leaf_side = 1; });
-  add("fast-no-reuse", [](PcssSettings& s) { s.search_tile = s.filter_tile = 0; });
-  add("fast-reuse-branch", [](PcssSettings& s) { s.skip = WorkSkip::branch; });
-  add("fast-exact-region", [](PcssSettings& s) { s.region = RegionMode::exact; });
-  add("fast-centred-region", [](PcssSettings& s) { s.region = RegionMode::centred; });
-  add("fast-no-blur", [](PcssSettings& s) { s.blur = false; });
-  out.push_back(fast_pcss_all_off());
-  return out;
+const std::vector<std::string>& pcss_setting_keys() {
+  static const std::vector<std::string> keys{"refine", "region", "leaf", "leaf-mode", "budget", "reuse",
+                                             "search-tile", "filter-tile", "skip", "blur", "blur-radius",
+                                             "blur-sigma", "bias", "c", "sigma1", "sigma2", "sigma3",
+                                             "blockers", "occlusion", "blocker-samples", "filter-samples"};
+  return keys;
 }
 
-std::vector<PcssSettings> pcss_methods() { return {exact_pcss(), poisson_pcss(), hqepcss(), fast_pcss()}; }
-
-namespace {
-
-void apply_override(PcssSettings& s, const std::string& key, const std::string& value) {
+void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string& value) {
   const auto bad = [&](const char* expected) {
     return Error("method '" + s.name + "': " + key + "=" + value + ": expected " + expected);
   };
@@ -161,41 +149,11 @@ void apply_override(PcssSettings& s, const std::string& key, const std::string& 
   else if (key == "occlusion") s.occlusion = estimator();
   else if (key == "blocker-samples") s.blocker_samples = integer();
   else if (key == "filter-samples") s.filter_samples = integer();
-  else
-    throw Error("method '" + s.name + "': unknown setting '" + key +
-                "': expected refine, region, leaf, leaf-mode, budget, reuse, search-tile, filter-tile, skip, blur, "
-                "blur-radius, blur-sigma, bias, c, sigma1, sigma2, sigma3, blockers, occlusion, blocker-samples, "
-                "filter-samples");
-}
-
-PcssSettings named_method(const std::string& name) {
-  std::string known;
-  std::vector<PcssSettings> all = pcss_methods();
-  for (const PcssSettings& s : fast_pcss_ablations()) all.push_back(s);
-  for (const PcssSettings& s : all) {
-    if (s.name == name) return s;
-    known += (known.empty() ? "" : ", ") + s.name;
+  else {
+    std::string known;
+    for (const std::string& k : pcss_setting_keys()) known += (known.empty() ? "" : ", ") + k;
+    throw Error("method '" + s.name + "': unknown setting '" + key + "': expected " + known);
   }
-  throw Error("unknown method '" + name + "': expected one of " + known);
-}
-
-}  // namespace
-
-PcssSettings pcss_method(const std::string& spec) {
-  size_t colon = spec.find(':');
-  PcssSettings s = named_method(spec.substr(0, colon));
-  if (colon == std::string::npos) return s;
-  s.name = spec;
-  while (colon != std::string::npos) {
-    const size_t next = spec.find(':', colon + 1);
-    const std::string item = spec.substr(colon + 1, next == std::string::npos ? std::string::npos : next - colon - 1);
-    const size_t equals = item.find('=');
-    if (equals == std::string::npos) throw Error("method '" + spec + "': '" + item + "': expected key=value");
-    apply_override(s, item.substr(0, equals), item.substr(equals + 1));
-    colon = next;
-  }
-  s.validate();
-  return s;
 }
 
 }  // namespace pn

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "poisson_pcss.h"  // PN_POISSON_*: glsl/poisson_pcss.h, shared with the shaders
 #include "reference/blur_reference.h"
 #include "reference/traversal_reference.h"
 
@@ -48,8 +49,8 @@ struct PcssSettings {
   int filter_tile = 2;         // reuse k for Step 5; 0 = no reuse
   float sigma1 = 0.0f, sigma2 = 0.1f, sigma3 = 0.1f;  // Eq. 7 (§5.2 defaults)
   WorkSkip skip = WorkSkip::list;
-  int blocker_samples = 36;    // Poisson PCSS
-  int filter_samples = 64;
+  int blocker_samples = PN_POISSON_BLOCKER_SAMPLES;  // Poisson PCSS: 36, 1..PN_POISSON_MAX_SAMPLES (64)
+  int filter_samples = PN_POISSON_PCF_SAMPLES;       // 64
   bool blur = true;            // Step 6
   BlurParams blur_params;      // radius 3 (§5.3)
 
@@ -62,20 +63,13 @@ PcssSettings poisson_pcss();  // 36 blocker / 64 PCF Poisson-disk samples
 PcssSettings hqepcss();       // refined search, min-estimated leaves for blockers, brute-force PCF
 PcssSettings fast_pcss();     // seed 000 with the paper's defaults
 
-// Fast PCSS with one improvement off at a time, then all of them off (which
-// must equal exact PCSS: the wiring check).
-std::vector<PcssSettings> fast_pcss_ablations();
+// Fast PCSS with every improvement off, which must equal exact PCSS (the wiring check).
 PcssSettings fast_pcss_all_off();
 
-// The four techniques, in the order of every table.
-std::vector<PcssSettings> pcss_methods();
-
-// By name ("exact", "poisson", "hqepcss", "fast", or an ablation's name),
-// optionally followed by overrides ":key=value" (e.g. "fast:leaf=4:blur=off",
-// keys as in PcssSettings: refine, region, leaf, leaf-mode, budget, reuse,
-// search-tile, filter-tile, skip, blur, blur-radius, blur-sigma, bias, c,
-// sigma1..3, blockers, occlusion, blocker-samples, filter-samples).
-// Throws Error naming the method, the setting and what it expects.
-PcssSettings pcss_method(const std::string& spec);
+// The override keys of every PCSS technique, and setting one: Throws Error
+// naming the technique (s.name), the key and what it expects. The caller
+// validates once all keys are set.
+const std::vector<std::string>& pcss_setting_keys();
+void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string& value);
 
 }  // namespace pn

@@ -6,17 +6,18 @@
 
 #include <vector>
 
+#include "blur.h"  // glsl/blur.h: PN_BLUR_*, shared with the shader
 #include "core/image.h"
 
 namespace pn {
 
-// Limits shared with the shader (passed to it as defines by the runner).
-inline constexpr int kBlurMaxRadius = 16;
-inline constexpr float kBlurNonfiniteValue = 0.0f;
+// The shader's limits (glsl/blur.h), which the reference applies too.
+inline constexpr int kBlurMaxRadius = PN_BLUR_MAX_RADIUS;
+inline constexpr float kBlurNonfiniteValue = static_cast<float>(PN_BLUR_NONFINITE_VALUE);
 
 struct BlurParams {
-  int radius = 3;       // seed 000 §5.3
-  double sigma = 1.0;   // 3 sigma = radius
+  int radius = PN_BLUR_RADIUS;   // seed 000 §5.3
+  double sigma = PN_BLUR_SIGMA;  // 3 sigma = radius
   bool depth_aware = false;
   double depth_tolerance = 0.05;  // relative, depth-aware only
 

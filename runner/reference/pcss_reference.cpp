@@ -3,29 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "reference/pyramid_reference.h"
+#include "reference/depth_pyramid_reference.h"
 
 namespace pn {
-
-Rect pcss_square(double x, double y, double side, int n, double* margin) {
-  const double s = std::isfinite(side) ? std::max(side, 0.0) : 0.0;
-  const double size = std::clamp(std::round(s), 1.0, 4.0 * n);
-  double closest = std::fabs(std::fabs(s - std::floor(s)) - 0.5);  // distance of s from a .5 rounding point
-  const auto axis = [&](double c, int& start, int& length) {
-    const double lo = c - 0.5 * size + 0.5;
-    closest = std::min({closest, lo - std::floor(lo), std::ceil(lo) - lo});
-    const double first = std::floor(lo);
-    const double a = std::clamp(first, 0.0, static_cast<double>(n));
-    const double b = std::clamp(first + size, a, static_cast<double>(n));
-    start = static_cast<int>(a);
-    length = static_cast<int>(b - a);
-  };
-  Rect r;
-  axis(std::isfinite(x) ? x : 0.0, r.x, r.width);
-  axis(std::isfinite(y) ? y : 0.0, r.y, r.height);
-  if (margin) *margin = closest;
-  return r;
-}
 
 PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
                                    double filter_scale, double margin) {

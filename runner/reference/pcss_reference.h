@@ -4,18 +4,16 @@
 // the depths below dP - bias, penumbra by Eq. (1), and count the occluding
 // texels of the filter square — in double precision, from LightModel.
 // A square of side s around (x, y) is the n×n texels, n = max(1, round(s)),
-// whose centres are nearest (x, y), clipped to the map (docs/pipeline.md).
+// whose centres are nearest (x, y), clipped to the map: pcss_square, defined
+// with the other regions of PCSS in pcss_regions_reference.h.
 #pragma once
 
 #include "core/image.h"
+#include "reference/pcss_regions_reference.h"
 #include "reference/traversal_reference.h"
 #include "scene/light_model.h"
 
 namespace pn {
-
-// The square of side `side` around (x, y) clipped to an n×n map; `margin` is
-// how far (texels) the rounding of its side and origin was from flipping.
-Rect pcss_square(double x, double y, double side, int n, double* margin);
 
 struct PcssReference {
   Image visibility;  // 1 - occluded fraction; 1 where lit or no surface

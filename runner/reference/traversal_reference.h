@@ -10,10 +10,11 @@
 
 #include "core/image.h"
 #include "sampling/sample_table.h"
+#include "traversal.h"  // glsl/traversal.h: the leaf modes PN_LEAF_*, shared with the shaders
 
 namespace pn {
 
-enum class LeafMode { sampled = 0, min = 1 };
+enum class LeafMode { sampled = PN_LEAF_SAMPLED, min = PN_LEAF_MIN };
 
 struct Rect {
   int x = 0, y = 0, width = 0, height = 0;

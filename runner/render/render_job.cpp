@@ -1,36 +1,33 @@
 #include "render/render_job.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <iomanip>
 
 #include "core/error.h"
 #include "figures/canvas.h"
 #include "figures/lit_image.h"
-#include "gl/texture.h"
-#include "metrics/ssim.h"
-#include "passes/physical_reference_pass.h"
-#include "passes/surface_pass.h"
-#include "pipeline/pcss_pipeline.h"
+#include "scene/model.h"
 #include "scene/scene.h"
+#include "technique/shadow_map_source.h"
+#include "technique/technique_registry.h"
 
 namespace pn {
 
-void validate_render_setup(const RenderSetup& s) {
-  find_scene_fixture(s.scene);
-  if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
-  if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
-  if (s.light_samples < 1 || s.light_samples > 64) throw Error("light samples " + std::to_string(s.light_samples) + ": expected 1..64 per side");
-  if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
-  if (s.methods.empty()) throw Error("no methods to render");
-  for (const PcssSettings& m : s.methods) m.validate();
-}
-
-void create_output_directory(const std::filesystem::path& out) {
-  std::error_code ec;
-  std::filesystem::create_directories(out, ec);
-  if (ec) throw Error("output directory '" + out.string() + "': cannot be created (" + ec.message() + ")");
-}
-
 namespace {
+
+constexpr float kErrorLimit = 0.5f;  // the error pictures saturate at ±0.5 visibility
+
+std::vector<const TechniqueConfig*> configs(const RenderSetup& setup, std::vector<std::unique_ptr<TechniqueConfig>>& own) {
+  std::vector<const TechniqueConfig*> out;
+  if (setup.methods.empty()) {
+    for (const std::string& spec : render_techniques()) own.push_back(parse_technique(spec));
+    for (const auto& c : own) out.push_back(c.get());
+  } else {
+    for (const auto& c : setup.methods) out.push_back(c.get());
+  }
+  return out;
+}
 
 void write_grey(const Image& image, const std::filesystem::path& path) {
   Canvas canvas(image.width, image.height, {0, 0, 0});
@@ -44,6 +41,18 @@ void write_rgb(const Image& image, const std::filesystem::path& path) {
   canvas.write_png(path);
 }
 
+void write_signed(const Image& image, const std::filesystem::path& path) {
+  Canvas canvas(image.width, image.height, {0, 0, 0});
+  canvas.signed_map(flip_rows(image), 0, 0, 0, 1, kErrorLimit);
+  canvas.write_png(path);
+}
+
+Image difference(const Image& observed, const Image& reference) {
+  Image out = observed;
+  for (size_t i = 0; i < out.texels.size(); ++i) out.texels[i] -= reference.texels[i];
+  return out;
+}
+
 // A method's name as a file name: overrides "fast:leaf=4" become "fast_leaf-4".
 std::string file_stem(std::string name) {
   for (char& c : name)
@@ -52,91 +61,117 @@ std::string file_stem(std::string name) {
   return name;
 }
 
+std::string score_label(const char* what, const std::optional<Scores>& s) {
+  if (!s) return std::string(what) + " -";
+  char text[96];
+  std::snprintf(text, sizeof text, "%s %.3f / %.3f", what, s->light_facing.ssim, s->light_facing.mae);
+  return text;
+}
+
+// The sheet: a column per picture (the truth, then every method), rows lit
+// image, soft-shadow map and signed error against the truth, each column
+// headed by its name and its light-facing SSIM / MAE against the truth and
+// exact PCSS.
+Canvas draw_sheet(const std::string& title, const Comparison& c) {
+  const Font font;
+  const int size = c.truth.width, gap = 6, text = 13, line = text + 3;
+  const int label_width = 104, header = 3 * line + 4, title_height = line + 6;
+  const int column = std::max(size, 190);
+  const int columns = 1 + static_cast<int>(c.results.size());
+  Canvas sheet(label_width + columns * (column + gap), title_height + header + 3 * (size + gap), {255, 255, 255});
+  const Rgb ink{20, 20, 20};
+  sheet.text(font, 4, 3, title, text, ink);
+  const int top = title_height + header;
+  const char* rows[] = {"lit", "soft shadow", "error vs truth"};
+  for (int r = 0; r < 3; ++r) sheet.text(font, 4, top + r * (size + gap) + size / 2 - text / 2, rows[r], text, ink);
+  const Image zero(size, size);
+  for (int i = 0; i < columns; ++i) {
+    const int x = label_width + i * (column + gap), y = title_height;
+    const TechniqueResult* r = i == 0 ? nullptr : &c.results[static_cast<size_t>(i - 1)];
+    const Image& visibility = r ? r->visibility : c.truth;
+    sheet.text(font, x, y, r ? r->name : "truth (ray traced)", text, ink);
+    sheet.text(font, x, y + line, score_label("truth", r ? std::optional<Scores>(r->vs_truth) : std::nullopt), text - 2, ink);
+    sheet.text(font, x, y + 2 * line, score_label("exact", r ? r->vs_exact : c.truth_vs_exact), text - 2, ink);
+    sheet.rgb(flip_rows(compose_lit_image(c.surface, visibility)), x, top, 1);
+    sheet.grey(flip_rows(visibility), 0, x, top + size + gap, 1, 0.0f, 1.0f, {255, 0, 255});
+    if (r) sheet.signed_map(flip_rows(difference(r->visibility, c.truth)), 0, x, top + 2 * (size + gap), 1, kErrorLimit);
+    else sheet.colour_bar(font, x, top + 2 * (size + gap), 12, size, kErrorLimit, text - 2, ink);
+  }
+  return sheet;
+}
+
 }  // namespace
 
-RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup) {
+void validate_render_setup(const RenderSetup& s) {
+  if (s.model.empty()) find_scene_fixture(s.scene);
+  find_shadow_map_source(s.source);
+  if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
+  if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
+  if (s.truth_samples < 1 || s.truth_samples > 64) throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
+  if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
+  for (const auto& m : s.methods) m->validate();
+}
+
+Scene load_render_scene(const RenderSetup& s) {
+  return s.model.empty() ? make_scene(find_scene_fixture(s.scene), s.map_size) : make_model_scene(s.model, s.map_size);
+}
+
+void create_output_directory(const std::filesystem::path& out) {
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  if (ec) throw Error("output directory '" + out.string() + "': cannot be created (" + ec.message() + ")");
+}
+
+RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup, const Scene& scene) {
   validate_render_setup(setup);
-  create_output_directory(setup.out);
-  const Scene scene = make_scene(find_scene_fixture(setup.scene), setup.map_size);
-  const PcssPipeline pipeline(context, tree);
-  const PcssInputs inputs = pipeline.render_inputs(scene, setup.screen_size);
-  const int size = setup.screen_size;
-
-  // The physical reference: the average of light_samples² point-light hard shadows.
-  const PhysicalReferenceRenderer physical_renderer(context, tree);
-  const Image physical = read_float_texture(
-      context, physical_renderer.render(scene, size, setup.light_samples, setup.methods.front().bias), size, size, 1);
-  const Image surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size), size, size, 4);
-
-  std::vector<Image> shadows;
+  std::vector<std::unique_ptr<TechniqueConfig>> own;
+  ComparisonSetup cs;
+  cs.source = setup.source;
+  cs.screen_size = setup.screen_size;
+  cs.repeats = setup.repeats;
+  cs.truth_samples = setup.truth_samples;
+  cs.techniques = configs(setup, own);
   RenderResult result;
-  for (const PcssSettings& method : setup.methods) {
-    const PcssMeasurement m = pipeline.measure(inputs, method, setup.repeats);
-    shadows.push_back(read_float_texture(context, m.frame.soft_shadow(), size, size, 1));
-    RenderRow row;
-    row.method = method.name;
-    row.gpu_ms = m.total_ms;
-    row.representative_fraction = m.stats.representative_fraction();
-    row.work_per_receiver = m.stats.work_per_receiver();
-    row.stages = m.stage_ms;
-    result.rows.push_back(row);
-  }
-  // SSIM against the first method that is exact PCSS, when one was rendered.
-  int exact = -1;
-  for (size_t i = 0; i < setup.methods.size() && exact < 0; ++i)
-    if (setup.methods[i].name == exact_pcss().name) exact = static_cast<int>(i);
+  result.scene_name = scene.name;
+  result.comparison = compare_techniques(context, tree, scene, cs);
+  const Comparison& c = result.comparison;
 
-  const auto write = [&](const std::filesystem::path& path, auto writer, const Image& image) {
+  create_output_directory(setup.out);
+  const std::string prefix = scene.name + "_";
+  const auto write = [&](const std::string& stem, auto writer, const Image& image) {
+    const auto path = setup.out / (prefix + stem + ".png");
     writer(image, path);
     result.written.push_back(path);
   };
-  const std::string prefix = setup.scene + "_";
-  write(setup.out / (prefix + "physical_shadow.png"), write_grey, physical);
-  const Image physical_lit = compose_lit_image(surface, physical);
-  write(setup.out / (prefix + "physical_lit.png"), write_rgb, physical_lit);
-  std::vector<Image> lit{physical_lit};
-  for (size_t i = 0; i < shadows.size(); ++i) {
-    lit.push_back(compose_lit_image(surface, shadows[i]));
-    RenderRow& row = result.rows[i];
-    row.ssim_exact = exact >= 0 ? ssim(shadows[exact], shadows[i]) : 0.0;
-    row.ssim_physical = ssim(physical, shadows[i]);
-    row.ssim_exact_lit = exact >= 0 ? lit_ssim(surface, shadows[exact], shadows[i]) : 0.0;
-    const std::string stem = prefix + file_stem(setup.methods[i].name);
-    write(setup.out / (stem + "_shadow.png"), write_grey, shadows[i]);
-    write(setup.out / (stem + "_lit.png"), write_rgb, lit.back());
+  write("truth_shadow", write_grey, c.truth);
+  write("truth_lit", write_rgb, compose_lit_image(c.surface, c.truth));
+  for (const TechniqueResult& r : c.results) {
+    const std::string stem = file_stem(r.name);
+    write(stem + "_shadow", write_grey, r.visibility);
+    write(stem + "_lit", write_rgb, compose_lit_image(c.surface, r.visibility));
+    write(stem + "_error", write_signed, difference(r.visibility, c.truth));
   }
-  // The sheet: the physical reference, then every method, lit images above their soft-shadow maps.
-  const int gap = 4;
-  Canvas sheet(static_cast<int>(lit.size()) * (size + gap) - gap, 2 * size + gap, {255, 255, 255});
-  for (size_t i = 0; i < lit.size(); ++i) {
-    const int x = static_cast<int>(i) * (size + gap);
-    sheet.rgb(flip_rows(lit[i]), x, 0, 1);
-    sheet.grey(flip_rows(i == 0 ? physical : shadows[i - 1]), 0, x, size + gap, 1, 0.0f, 1.0f, {255, 0, 255});
-  }
+  const std::string title = "scene " + scene.name + ", shadow map " + std::to_string(setup.map_size) + "², screen " +
+                            std::to_string(setup.screen_size) + "², truth " + std::to_string(setup.truth_samples) +
+                            "×" + std::to_string(setup.truth_samples) +
+                            " light samples; scores on light-facing pixels: SSIM / MAE";
   const auto sheet_path = setup.out / (prefix + "sheet.png");
-  sheet.write_png(sheet_path);
+  draw_sheet(title, c).write_png(sheet_path);
   result.written.push_back(sheet_path);
   return result;
 }
 
 void print_render_table(std::ostream& out, const RenderSetup& setup, const RenderResult& result, bool stages) {
-  out << "sheet columns: physical reference";
-  for (const RenderRow& r : result.rows) out << ", " << r.method;
-  out << " (lit images above soft-shadow maps)\n";
-  out << "scene " << setup.scene << ", shadow map " << setup.map_size << "x" << setup.map_size << ", screen "
-      << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats << " runs\n";
-  out << std::left << std::setw(20) << "method" << std::right << std::setw(12) << "GPU ms" << std::setw(12)
-      << "SSIM exact" << std::setw(14) << "SSIM physical" << std::setw(10) << "lit SSIM" << std::setw(10) << "repr." << std::setw(12)
-      << "work/px" << "\n";
-  for (const RenderRow& r : result.rows)
-    out << std::left << std::setw(20) << r.method << std::right << std::fixed << std::setprecision(2) << std::setw(12)
-        << r.gpu_ms << std::setprecision(4) << std::setw(12) << r.ssim_exact << std::setw(14) << r.ssim_physical << std::setw(10) << r.ssim_exact_lit
-        << std::setprecision(3) << std::setw(10) << r.representative_fraction << std::setprecision(1)
-        << std::setw(12) << r.work_per_receiver << "\n";
+  out << "scene " << result.scene_name << ", shadow map " << setup.map_size << "x" << setup.map_size << " (source "
+      << setup.source << ", " << std::fixed << std::setprecision(2) << result.comparison.shadow_map_ms
+      << " ms), screen " << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats
+      << " runs, truth " << setup.truth_samples << "x" << setup.truth_samples << " light samples\n";
+  out.unsetf(std::ios::floatfield);
+  print_score_tables(out, result.comparison);
   if (stages)
-    for (const RenderRow& r : result.rows) {
-      out << r.method << ":";
-      for (const auto& [name, ms] : r.stages) out << "  " << name << " " << std::fixed << std::setprecision(2) << ms;
+    for (const TechniqueResult& r : result.comparison.results) {
+      out << r.name << ":";
+      for (const auto& [name, ms] : r.measurement.stage_ms) out << "  " << name << " " << std::fixed << std::setprecision(2) << ms;
       out << "\n";
     }
   out.unsetf(std::ios::floatfield);

@@ -1,55 +1,55 @@
-// `penumbra render`, the project's main job: one scene rendered by every PCSS
-// technique in the same run and compared — per technique the soft-shadow map
-// and a lit image as PNG, a side-by-side sheet, and a table of GPU time and
-// SSIM against exact PCSS and against the physical reference (the average of
-// many hard shadows over the area light).
+// `penumbra render`, the project's main job: one scene — a box scene or a
+// model from a mesh file — rendered by every technique in the same run
+// through the technique seam, each scored against the ray-traced truth and
+// against exact PCSS (metrics/scores.h); per technique its soft-shadow map, lit
+// image and error against the truth as PNG, a labelled sheet, and a table.
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "gl/context.h"
-#include "pipeline/pcss_settings.h"
+#include "scene/scene.h"
 #include "shader/source_tree.h"
+#include "technique/comparison.h"
+#include "technique/technique.h"
 
 namespace pn {
 
 struct RenderSetup {
   std::string scene = "boxes";
+  std::filesystem::path model;  // non-empty: a model scene from this mesh file (scene/model.h) instead
+  std::string source = "full";  // the shadow-map source (technique/shadow_map_source.h)
   int map_size = 512;
   int screen_size = 512;
-  int light_samples = 8;  // per side of the physical reference's grid of point lights
-  int repeats = 3;        // timed runs per technique (the median is reported)
-  std::vector<PcssSettings> methods = pcss_methods();
+  int truth_samples = 16;  // per side of the truth's S×S light samples
+  int repeats = 3;         // timed runs per technique (the median is reported)
+  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: render_techniques()
   std::filesystem::path out = "render";
 };
 
-struct RenderRow {
-  std::string method;
-  double gpu_ms = 0.0;           // median total of Steps 1 (pyramid) to 6
-  double ssim_exact = 0.0;       // of the soft-shadow map, against exact PCSS
-  double ssim_physical = 0.0;    // against the physical reference
-  double ssim_exact_lit = 0.0;   // of the lit image's luma, against exact PCSS's
-  double representative_fraction = 0.0;
-  double work_per_receiver = 0.0;
-  std::vector<std::pair<std::string, double>> stages;  // median GPU ms per stage
-};
-
 struct RenderResult {
-  std::vector<RenderRow> rows;
+  std::string scene_name;
+  Comparison comparison;
   std::vector<std::filesystem::path> written;
 };
 
-// Throws Error naming the first setting out of range (an unknown scene, sizes, samples, repeats).
+// Throws Error naming the first setting out of range (scene, source, sizes, samples, repeats, methods).
 void validate_render_setup(const RenderSetup& setup);
 
 // Creates `out` (and its parents); throws Error naming it when it cannot.
 void create_output_directory(const std::filesystem::path& out);
 
+// The setup's scene: the box scene `scene`, or the model in `model`. Throws Error for an unknown
+// scene or a model file that cannot be loaded (scene/model.h).
+Scene load_render_scene(const RenderSetup& setup);
+
+// Renders and scores every technique, then creates `out` and writes the PNGs and the sheet.
 // Throws Error for an invalid setup (before writing anything).
-RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup);
+RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup, const Scene& scene);
 
 // `stages`: also each method's per-stage GPU times.
 void print_render_table(std::ostream& out, const RenderSetup& setup, const RenderResult& result, bool stages);

@@ -10,8 +10,15 @@
 #include <vector>
 
 #include "core/image.h"
+// glsl/sample_table.h (PN_SAMPLE_TABLE_*, shared with the shaders): angle brackets, because the
+// quoted form would find this file first.
+#include <sample_table.h>
 
 namespace pn {
+
+// The seed of the table every pass and check uploads (the pipeline, the traversal's check and
+// benchmark, the figures): one table, so their results agree.
+inline constexpr std::uint32_t kSampleTableSeed = 0x5eed0005u;
 
 struct Sample {
   float x = 0.0f, y = 0.0f;
@@ -23,8 +30,8 @@ struct Sample {
 std::vector<Sample> multi_jittered_set(int n, std::uint32_t seed);
 
 struct SampleTable {
-  static constexpr int kColumns = 21;
-  static constexpr int kSets = 8;
+  static constexpr int kColumns = PN_SAMPLE_TABLE_COLUMNS;
+  static constexpr int kSets = PN_SAMPLE_TABLE_SETS;
   std::array<Sample, kColumns * kSets> samples{};
 
   const Sample& at(int column, int set) const { return samples[static_cast<size_t>(set * kColumns + column)]; }

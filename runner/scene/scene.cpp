@@ -29,6 +29,7 @@ glm::mat4 Scene::camera_projection() const {
 
 std::vector<glm::vec3> Scene::triangles() const {
   std::vector<glm::vec3> out;
+  out.reserve(36 * boxes.size() + mesh.size());
   for (const Box& b : boxes) {
     const glm::vec3 c[8] = {{b.lo.x, b.lo.y, b.lo.z}, {b.hi.x, b.lo.y, b.lo.z}, {b.hi.x, b.hi.y, b.lo.z},
                             {b.lo.x, b.hi.y, b.lo.z}, {b.lo.x, b.lo.y, b.hi.z}, {b.hi.x, b.lo.y, b.hi.z},
@@ -38,6 +39,7 @@ std::vector<glm::vec3> Scene::triangles() const {
     for (const auto& f : faces)
       for (int i : {0, 1, 2, 0, 2, 3}) out.push_back(c[f[i]]);
   }
+  out.insert(out.end(), mesh.begin(), mesh.end());
   return out;
 }
 

@@ -1,7 +1,10 @@
-// A scene as geometry: axis-aligned boxes (the ground is one) and the area
-// light (SPEC §4.7) with its view and projection; and a CPU ray caster that
-// gives the shadow map's definition — the linear light depth of the nearest
-// surface through each texel centre — independently of rasterisation.
+// A scene as geometry: axis-aligned boxes (the ground is one), optionally a
+// model's triangles (scene/model.h), and the area light (SPEC §4.7) with its
+// view and projection; and a CPU ray caster that gives the box scenes' shadow
+// map's definition — the linear light depth of the nearest surface through each
+// texel centre — independently of rasterisation. The analytic casters below
+// see the boxes only, never the mesh: they are the box scenes' independent
+// check; a model scene needs a triangle ray tracer over triangles().
 #pragma once
 
 #include <glm/glm.hpp>
@@ -22,6 +25,7 @@ struct Box {
 struct Scene {
   std::string name;
   std::vector<Box> boxes;  // boxes[0] is the ground slab
+  std::vector<glm::vec3> mesh;  // a model's triangles, world space, 3 vertices each (empty for the box scenes)
   LightModel light;        // width, planes, field of view, shadow-map size
   glm::vec3 light_position{0.0f};
 
@@ -33,7 +37,8 @@ struct Scene {
   glm::mat4 camera_view() const;
   glm::mat4 camera_projection() const;
 
-  // Triangles of every box, 36 vertices a box, counter-clockwise seen from outside.
+  // Triangles of every box, 36 vertices a box, counter-clockwise seen from
+  // outside, followed by the mesh's (in the file's winding).
   std::vector<glm::vec3> triangles() const;
 };
 
@@ -50,6 +55,8 @@ struct Receiver {
   bool valid = false;  // the pixel sees a surface (project_to_light: the point is in front of the light)
   double u = 0, v = 0, depth = 0;
 };
+
+// The casters from here on see Scene::boxes only, not Scene::mesh.
 
 // Where origin + t·direction, t in [0, t_max], enters box b (slab method); none if it misses.
 std::optional<double> box_entry(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction, double t_max);

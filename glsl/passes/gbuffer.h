@@ -1,0 +1,24 @@
+// gbuffer.h — what passes/gbuffer.vert, gbuffer.frag and their runner side
+// (runner/passes/gbuffer_pass.cpp) share: the parameter block, its binding
+// and the varying between the stages. Valid as GLSL and as C++.
+
+#ifndef PENUMBRA_PASSES_GBUFFER_H
+#define PENUMBRA_PASSES_GBUFFER_H
+
+#include "scene_raster.h"
+#include "uniform_block.h"
+
+#define PN_GBUFFER_PARAMS_BINDING 0
+#define PN_GBUFFER_WORLD_LOCATION 0  // vertex -> fragment: vec3, world position
+
+PN_UNIFORM_BLOCK(PnGBufferParams, PN_GBUFFER_PARAMS_BINDING)
+  mat4 cameraViewProjection;
+  mat4 lightView;
+  mat4 lightProjection;
+  vec4 cameraPosition;  // xyz
+  float mapSize;
+  float normalOffset;   // texels
+  float texelPerDepth;  // a texel's world width per unit of light depth: W_n / (n N)
+PN_END_UNIFORM_BLOCK(pnParams)
+
+#endif  // PENUMBRA_PASSES_GBUFFER_H

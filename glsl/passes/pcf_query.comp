@@ -1,0 +1,38 @@
+// pcf_query.comp — pcf.glsl over a batch of windows.
+// Query k: texel k of query image A = (window origin x, y, width, height),
+//          texel k of query image B = (receiver depth, bias, band rows, 0).
+//   band rows 0: one pnPcfWindow call; band rows b > 0: bands of b rows from
+//   row 0 of the map to its last, added up with pnPcfAddRows (what
+//   pcss_scan.comp does across dispatches, here in one invocation).
+// Result k: (occluders, depth sum, texels, 0).
+//   binding 0: depth map (sampler2D, R32F)    binding 3: result (image2D, rgba32f)
+//   binding 1: query A (sampler2D, RGBA32F)   binding 2: query B (sampler2D, RGBA32F)
+// The check also compiles it with a small PN_PCF_MAX_SIDE to exercise the bound.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D pnDepthMap;
+layout(binding = 1) uniform sampler2D pnQueryA;
+layout(binding = 2) uniform sampler2D pnQueryB;
+layout(rgba32f, binding = 3) writeonly uniform image2D pnResult;
+
+#include "pcf.glsl"
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(pnResult)))) return;
+  vec4 a = texelFetch(pnQueryA, p, 0);
+  vec4 b = texelFetch(pnQueryB, p, 0);
+  ivec2 origin = ivec2(a.xy), size = ivec2(a.zw);
+  int rows = int(b.z);
+  PnPcf s;
+  if (rows <= 0) {
+    s = pnPcfWindow(pnDepthMap, origin, size, b.x, b.y);
+  } else {
+    s = pnPcfZero();
+    int height = textureSize(pnDepthMap, 0).y;
+    for (int first = 0; first < height; first += rows)
+      s = pnPcfAddRows(pnDepthMap, origin, size, b.x, b.y, first, rows, s);
+  }
+  imageStore(pnResult, p, vec4(s.occluders, s.depthSum, s.texels, 0.0));
+}

@@ -1,0 +1,67 @@
+// pcss_params.h — what the pipeline's pcss_*.comp passes and their runner
+// side (runner/pipeline/pcss_pipeline.cpp) share: binding points, the work
+// modes, the frame's parameter block and the Poisson disk's block. Valid as
+// GLSL and as C++ (uniform_block.h).
+
+#ifndef PENUMBRA_PASSES_PCSS_PARAMS_H
+#define PENUMBRA_PASSES_PCSS_PARAMS_H
+
+#include "uniform_block.h"
+#include "../poisson_pcss.h"
+
+// Texture units.
+#define PN_PCSS_PYRAMID_BINDING 0       // sampler2DArray: the decreased pyramid (depth_pyramid.glsl)
+#define PN_PCSS_GBUFFER_BINDING 1       // sampler2D: Step 2's G-buffer (pcss_search)
+#define PN_PCSS_SAMPLE_TABLE_BINDING 1  // sampler2D: the multi-jittered table (pcss_traverse)
+#define PN_PCSS_ENTRIES_BINDING 2       // sampler2D: the region map a pass reads, (d, x, y, s)
+#define PN_PCSS_PARENTS_BINDING 4       // sampler2D: reuse parent codes (reuse.glsl)
+#define PN_PCSS_RESULTS_BINDING 5       // sampler2D: the representatives' results; pcss_scan: the previous band
+#define PN_PCSS_DEPTH_MAP_BINDING 6     // sampler2D: the pyramid's layer 0, the sanitized map (pcf, poisson_pcss)
+
+// Image units (GLSL ES 3.1 guarantees 4: 0..3).
+#define PN_PCSS_FILTER_MAP_IMAGE 0    // pcss_filter: the filter-region map
+#define PN_PCSS_BLOCKER_MEAN_IMAGE 1  // pcss_filter: the blocker mean, 0 if none
+#define PN_PCSS_FILTER_KEYS_IMAGE 2   // pcss_filter: what Step 5's reuse compares
+#define PN_PCSS_SEARCH_MAP_IMAGE 2    // pcss_search: the search-region map
+#define PN_PCSS_SEARCH_KEYS_IMAGE 3   // pcss_search: what Step 4's reuse compares
+#define PN_PCSS_RESULT_IMAGE 3        // pcss_traverse, pcss_scan, pcss_poisson: per-pixel result
+#define PN_PCSS_VISIBILITY_IMAGE 3    // pcss_shade: 1 − occluded fraction
+
+// Buffers.
+#define PN_PCSS_WORK_LIST_BINDING 0     // SSBO: pcss_work.glsl's list
+#define PN_PCSS_PARAMS_BINDING 7
+#define PN_PCSS_POISSON_DISK_BINDING 8
+
+// How an estimating pass picks its pixels (pcss_work.glsl).
+#define PN_WORK_ALL 0     // every pixel computes
+#define PN_WORK_BRANCH 1  // every pixel is dispatched; non-representatives return at once
+#define PN_WORK_LIST 2    // only the compacted representatives are dispatched
+
+PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
+  float lightWidth;
+  float lightNear;
+  float lightNearPlaneWidth;
+  float mapSize;
+  float bias;
+  float filterScale;    // c: filter side = c · penumbra
+  int refineIterations; // 0: PCSS's search width as is
+  int regionMode;       // PN_REGION_* (pcss_regions.glsl)
+  int leafSide;
+  int leafMode;
+  int nodeBudget;
+  int reuseTile;        // k; 0: no reuse
+  int workMode;         // PN_WORK_*
+  int bandStart;        // pcss_scan: first row of this dispatch's band
+  int bandRows;
+  int sampleCount;      // pcss_poisson
+  float sigma1;
+  float sigma2;
+  float sigma3;
+PN_END_UNIFORM_BLOCK(pnPcss)
+
+// Points in the unit disk (Bridson's, runner/sampling/poisson_disk.h), count = sampleCount.
+PN_UNIFORM_BLOCK(PnPoissonDisk, PN_PCSS_POISSON_DISK_BINDING)
+  PN_VEC2_ARRAY(points, PN_POISSON_MAX_SAMPLES)
+PN_END_UNIFORM_BLOCK(pnDisk)
+
+#endif  // PENUMBRA_PASSES_PCSS_PARAMS_H

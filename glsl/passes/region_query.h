@@ -1,0 +1,20 @@
+// region_query.h — what passes/region_query.comp and its runner side
+// (runner/passes/region_pass.cpp) share: binding points and the parameter
+// block. Valid as GLSL and as C++.
+
+#ifndef PENUMBRA_PASSES_REGION_QUERY_H
+#define PENUMBRA_PASSES_REGION_QUERY_H
+
+#include "uniform_block.h"
+
+// Distinct across resource kinds, so the pass is valid Vulkan GLSL as well.
+#define PN_REGION_QUERY_QUERIES_BINDING 0  // sampler2D, RGBA32F: (x, y, side, -)
+#define PN_REGION_QUERY_RESULTS_BINDING 2  // image2D, rgba32f: (origin x, y, side, level)
+#define PN_REGION_QUERY_PARAMS_BINDING 3
+
+PN_UNIFORM_BLOCK(PnRegionQueryParams, PN_REGION_QUERY_PARAMS_BINDING)
+  int mapSize;
+  int centred;  // 0: literal Steps 1–7, 1: centred variant
+PN_END_UNIFORM_BLOCK(pnParams)
+
+#endif  // PENUMBRA_PASSES_REGION_QUERY_H

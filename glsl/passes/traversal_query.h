@@ -1,0 +1,27 @@
+// traversal_query.h — what passes/traversal_query.comp and its runner side
+// (runner/passes/traversal_pass.cpp, TraversalPass) share: binding points and
+// the parameter block. window_scan.h gives its baseline the same layout.
+// Valid as GLSL and as C++.
+
+#ifndef PENUMBRA_PASSES_TRAVERSAL_QUERY_H
+#define PENUMBRA_PASSES_TRAVERSAL_QUERY_H
+
+#include "uniform_block.h"
+
+// Distinct across resource kinds, so the pass is valid Vulkan GLSL as well.
+#define PN_TRAVERSAL_QUERY_PYRAMID_BINDING 0       // sampler2DArray, RGBA32F (depth_pyramid.glsl)
+#define PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING 1  // sampler2D, RG32F (sample_table.glsl)
+#define PN_TRAVERSAL_QUERY_A_BINDING 2             // sampler2D, RGBA32F: region origin x, y, width, height
+#define PN_TRAVERSAL_QUERY_RESULT_C_BINDING 3      // image2D, rgba32f: occluders, depth sum, texels, 0
+#define PN_TRAVERSAL_QUERY_RESULT_D_BINDING 4      // image2D, rgba32f: nodes, fetches, 0, 0
+#define PN_TRAVERSAL_QUERY_B_BINDING 5             // sampler2D, RGBA32F: receiver depth, pixel x, y, 0
+#define PN_TRAVERSAL_QUERY_PARAMS_BINDING 6
+
+PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
+  float bias;
+  int leafSide;
+  int leafMode;  // PN_LEAF_SAMPLED or PN_LEAF_MIN (traversal.h)
+  int nodeBudget;
+PN_END_UNIFORM_BLOCK(pnParams)
+
+#endif  // PENUMBRA_PASSES_TRAVERSAL_QUERY_H

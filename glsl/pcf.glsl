@@ -1,0 +1,117 @@
+// pcf.glsl — brute-force blocker search and percentage-closer filtering over a
+// rectangular window of the shadow map (what exact PCSS does).
+//
+// description:
+//   SPEC §3, §4.8 ("exact PCSS"). For receiver depth dP, a bias and the
+//   window W = [origin, origin + size) of texels, every texel of W that lies
+//   in the map is fetched once:
+//     occluders = #{ q in W : d(q) < dP - bias }
+//     depthSum  = sum of d(q) over those texels
+//     texels    = #{ q in W }                     (the texels covered)
+//   so blocker mean = depthSum / occluders (PCSS's blocker search) and
+//   occluded fraction = occluders / texels (PCF; visibility = 1 - fraction).
+//   Non-finite texels (NaN, ±Inf) never occlude (SPEC §3): they count as
+//   covered, never as occluders, and never enter depthSum, so no NaN comes
+//   out of a map that holds them. A NaN receiver depth occludes nothing.
+//   The window is clipped to the map; of what remains, at most
+//   PN_PCF_MAX_SIDE columns and rows (from its top-left texel) are read —
+//   the loop bound. Origins and sizes in texels; origin + size and
+//   firstRow + rowCount must not overflow an int (if they do, which texels
+//   are read is unspecified, but no read ever leaves the map). Sizes <= 0
+//   give an empty window.
+//   Banded scans: pnPcfAddRows adds only the window's rows that fall in
+//   [firstRow, firstRow + rowCount) to running sums, in row order, so that a
+//   caller can split a large window over several dispatches (llvmpipe ends
+//   an invocation's loops after 65535 iterations in total) and get exactly
+//   the sums of one whole-window scan, bit for bit: the additions happen in
+//   the same order. Within a row, PN_PCF_ROW_STEP texels are handled per
+//   loop iteration (a constant-trip inner loop that compilers unroll), so a
+//   band of r rows of a w-wide window costs r * (ceil(w / PN_PCF_ROW_STEP) + 1)
+//   loop iterations.
+//
+// use:
+//   PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias)
+//   PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias,
+//                      int firstRow, int rowCount, PnPcf sums)      sums + the band's rows (map rows)
+//   PnPcf pnPcfZero()
+//   float pnPcfBlockerMean(PnPcf s)         depthSum / occluders, 0 without occluders
+//   float pnPcfOccludedFraction(PnPcf s)    occluders / texels, 0 without texels
+//   bool  pnPcfOccludes(float depth, float threshold)   depth < threshold and finite
+//   struct PnPcf { float occluders; float depthSum; float texels; }
+//   depthMap: linear light depth in .r (R32F, or any float format; one level,
+//   texelFetch only, no filtering), textureSize(depthMap, 0) texels.
+//   Counts travel as floats: exact up to 2^24 texels (a 4096² window).
+//
+// options:
+//   PN_PCF_MAX_SIDE   loop bound: most columns and rows read per window (8192)
+//   PN_PCF_ROW_STEP   texels per inner loop iteration (16)
+//
+// cost: one texelFetch and one compare per covered texel; w·h fetches for a
+//   w×h window (exact PCSS: O(s²) per pixel for a side-s region).
+
+#ifndef PENUMBRA_PCF_GLSL
+#define PENUMBRA_PCF_GLSL
+
+#ifndef PN_PCF_MAX_SIDE
+#define PN_PCF_MAX_SIDE 8192
+#endif
+#ifndef PN_PCF_ROW_STEP
+#define PN_PCF_ROW_STEP 16
+#endif
+
+struct PnPcf {
+  float occluders;  // texels with depth < dP - bias
+  float depthSum;   // their depth sum
+  float texels;     // texels covered (read)
+};
+
+PnPcf pnPcfZero() {
+  return PnPcf(0.0, 0.0, 0.0);
+}
+
+bool pnPcfOccludes(float depth, float threshold) {
+  // NaN compares false; +Inf is never below a threshold; -Inf is excluded here.
+  return depth < threshold && !isinf(depth);
+}
+
+float pnPcfBlockerMean(PnPcf s) {
+  return s.occluders > 0.0 ? s.depthSum / s.occluders : 0.0;
+}
+
+float pnPcfOccludedFraction(PnPcf s) {
+  return s.texels > 0.0 ? s.occluders / s.texels : 0.0;
+}
+
+PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias, int firstRow,
+                   int rowCount, PnPcf sums) {
+  ivec2 n = textureSize(depthMap, 0);
+  // Clip to the map, then bound each side by PN_PCF_MAX_SIDE from the clipped origin.
+  ivec2 lo = clamp(origin, ivec2(0), n);
+  ivec2 hi = clamp(origin + max(size, ivec2(0)), lo, n);
+  hi = min(hi, lo + ivec2(PN_PCF_MAX_SIDE));
+  int rowStart = max(lo.y, firstRow);
+  int rowEnd = min(hi.y, firstRow + max(rowCount, 0));
+  float t = receiverDepth - bias;
+  for (int y = rowStart; y < rowEnd; ++y) {
+    for (int x = lo.x; x < hi.x; x += PN_PCF_ROW_STEP) {
+      for (int i = 0; i < PN_PCF_ROW_STEP; ++i) {  // constant trip count: unrolled
+        if (x + i < hi.x) {
+          float d = texelFetch(depthMap, ivec2(x + i, y), 0).r;
+          if (pnPcfOccludes(d, t)) {
+            sums.occluders += 1.0;
+            sums.depthSum += d;
+          }
+        }
+      }
+    }
+    sums.texels += float(hi.x - lo.x);
+  }
+  return sums;
+}
+
+PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias) {
+  // Every row of the map: the clipped window's rows lie in [0, map height).
+  return pnPcfAddRows(depthMap, origin, size, receiverDepth, bias, 0, textureSize(depthMap, 0).y, pnPcfZero());
+}
+
+#endif  // PENUMBRA_PCF_GLSL

@@ -1,0 +1,120 @@
+// poisson_pcss.glsl — blocker search and percentage-closer filtering with a
+// Poisson disk of samples, as engines ship PCSS (seeds 002 / 004).
+//
+// description:
+//   SPEC §4.8 ("Poisson PCSS"). A disk of diameter s (texels) around the
+//   centre c = (x, y) (texels, continuous: texel (i, j) covers [i, i+1) ×
+//   [j, j+1)), and offsets o_k in the unit disk (k < count). Sample k lies at
+//     p_k = c + (s / 2) · R o_k,   R = [r.x  -r.y; r.y  r.x]
+//   (r = (cos θ, sin θ) a per-pixel rotation; r = (1, 0) is none) and reads
+//   the texel it falls in, floor(p_k). Then, with t = dP - bias,
+//     occluders = #{ k : p_k inside the map, d(floor(p_k)) < t }
+//     depthSum  = sum of those d
+//     samples   = count (every sample, those outside the map included)
+//   blocker mean = depthSum / occluders (PCSS's blocker search), occluded
+//   fraction = occluders / samples (PCF; visibility = 1 - fraction).
+//   A sample outside the map occludes nothing (nor does one at a non-finite
+//   position); non-finite texels (NaN, ±Inf) never occlude (SPEC §3), so no
+//   NaN comes out. s = 0 puts every sample in the centre's texel: a hard
+//   shadow. r is used as given (not normalised): |r| != 1 scales the disk.
+//   The disk comes in one of two ways:
+//   - as a parameter, vec2 points[PN_POISSON_MAX_SAMPLES], with a runtime
+//     count clamped to [0, PN_POISSON_MAX_SAMPLES] (arrays are passed by
+//     value: drivers may copy it per call);
+//   - read in place from a vec2 array the engine declares before the include
+//     and names in PN_POISSON_DISK_ARRAY: a constant, e.g. the output of
+//     `penumbra poisson --count 36` (`const vec2 PN_POISSON_DISK[36] =
+//     vec2[](...);` with `#define PN_POISSON_DISK_ARRAY PN_POISSON_DISK`), or
+//     a uniform-block member (`vec2 points[64]`, std140 stride 16: the layout
+//     of a vec4 array's xy; `#define PN_POISSON_DISK_ARRAY pnDisk.points`);
+//     the count is then clamped to [0, its length()].
+//
+// use:
+//   PnPoisson pnPoissonOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
+//                                float bias, vec2 points[PN_POISSON_MAX_SAMPLES], int count, vec2 rotation)
+//   PnPoisson pnPoissonOcclusionDisk(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
+//                                    float bias, int count, vec2 rotation)   (with PN_POISSON_DISK_ARRAY)
+//   PnPoisson pnPoissonAddSample(sampler2D depthMap, vec2 centre, float radius, vec2 offset, vec2 rotation,
+//                                float threshold, PnPoisson sums)   one sample (radius = s / 2, threshold = t)
+//   float pnPoissonBlockerMean(PnPoisson s)        depthSum / occluders, 0 without occluders
+//   float pnPoissonOccludedFraction(PnPoisson s)   occluders / samples, 0 without samples
+//   vec2  pnPoissonRotation(float angle)           (cos, sin) of an angle in radians
+//   struct PnPoisson { float occluders; float depthSum; float samples; }
+//   depthMap: linear light depth in .r (R32F or any float format), texelFetch only.
+//
+// options:
+//   PN_POISSON_MAX_SAMPLES      size of the parameter array (64; poisson_pcss.h, shared with the runner)
+//   PN_POISSON_BLOCKER_SAMPLES  default blocker-search count for callers (36; poisson_pcss.h)
+//   PN_POISSON_PCF_SAMPLES      default PCF count for callers (64; poisson_pcss.h)
+//   PN_POISSON_DISK_ARRAY       a vec2 array to read the disk from in place (undefined: none)
+//
+// cost: per sample one texelFetch, ~8 ALU operations; `count` samples per call,
+//   independent of the disk's size.
+
+#ifndef PENUMBRA_POISSON_PCSS_GLSL
+#define PENUMBRA_POISSON_PCSS_GLSL
+
+#include "poisson_pcss.h"
+
+struct PnPoisson {
+  float occluders;  // samples with depth < dP - bias
+  float depthSum;   // their depth sum
+  float samples;    // samples taken
+};
+
+vec2 pnPoissonRotation(float angle) {
+  return vec2(cos(angle), sin(angle));
+}
+
+float pnPoissonBlockerMean(PnPoisson s) {
+  return s.occluders > 0.0 ? s.depthSum / s.occluders : 0.0;
+}
+
+float pnPoissonOccludedFraction(PnPoisson s) {
+  return s.samples > 0.0 ? s.occluders / s.samples : 0.0;
+}
+
+PnPoisson pnPoissonAddSample(sampler2D depthMap, vec2 centre, float radius, vec2 offset, vec2 rotation,
+                             float threshold, PnPoisson sums) {
+  vec2 o = vec2(rotation.x * offset.x - rotation.y * offset.y, rotation.y * offset.x + rotation.x * offset.y);
+  vec2 p = centre + radius * o;
+  sums.samples += 1.0;
+  // Inside the map, compared as floats before any conversion (NaN and ±Inf fail).
+  vec2 n = vec2(textureSize(depthMap, 0));
+  if (!(all(greaterThanEqual(p, vec2(0.0))) && all(lessThan(p, n)))) return sums;
+  float d = texelFetch(depthMap, ivec2(floor(p)), 0).r;
+  if (d < threshold && !isinf(d)) {  // NaN compares false
+    sums.occluders += 1.0;
+    sums.depthSum += d;
+  }
+  return sums;
+}
+
+PnPoisson pnPoissonOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth, float bias,
+                             vec2 points[PN_POISSON_MAX_SAMPLES], int count, vec2 rotation) {
+  PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
+  float radius = 0.5 * diameter;
+  float t = receiverDepth - bias;
+  int k = clamp(count, 0, PN_POISSON_MAX_SAMPLES);
+  for (int i = 0; i < PN_POISSON_MAX_SAMPLES; ++i) {
+    if (i >= k) break;
+    sums = pnPoissonAddSample(depthMap, centre, radius, points[i], rotation, t, sums);
+  }
+  return sums;
+}
+
+#ifdef PN_POISSON_DISK_ARRAY
+PnPoisson pnPoissonOcclusionDisk(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth, float bias,
+                                 int count, vec2 rotation) {
+  PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
+  float radius = 0.5 * diameter;
+  float t = receiverDepth - bias;
+  for (int i = 0; i < PN_POISSON_DISK_ARRAY.length(); ++i) {
+    if (i >= count) break;
+    sums = pnPoissonAddSample(depthMap, centre, radius, PN_POISSON_DISK_ARRAY[i], rotation, t, sums);
+  }
+  return sums;
+}
+#endif
+
+#endif  // PENUMBRA_POISSON_PCSS_GLSL

@@ -1,0 +1,189 @@
+// Cases of the pcf check: glsl/pcf.glsl through passes/pcf_query.comp against
+// pcf_reference (the definition in double), on every fixture at 300×300 (the
+// raw maps: NaN and ±Inf texels included), for windows of side 1…640 inside
+// the map, straddling each edge, wholly outside, covering it, non-square,
+// empty; receivers at the window's min and max depth (bias 0: a texel equal to
+// dP - bias must not occlude), below, above, between (bias 0.01), NaN and +Inf.
+// Three ways per fixture: one pnPcfWindow call; bands of 1, 7 or 128 rows added
+// up with pnPcfAddRows (the pipeline's banded scan); and the pass compiled with
+// PN_PCF_MAX_SIDE 64, so that windows beyond the bound are cut to it.
+// Occluder and texel counts must be exact. The depth sum is a float sum of n
+// non-negative terms (every fixture depth is >= 0) in some order: its relative
+// error is at most (n - 1) u / (1 - (n - 1) u), u = 2^-24, plus u for rounding
+// the reference to float — the bound is (n + 1) u (1 + n u), n the case's
+// largest occluder count (small windows, side <= 16, are their own cases so
+// that their bound stays tight). A query with bias != 0 whose threshold
+// dP - bias lies within one float ulp of a covered texel is left out (the
+// float subtraction may decide that texel either way); the number is printed,
+// and a last case requires it to stay below 1 % of the queries.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <string>
+
+#include "check/module_check.h"
+#include "core/error.h"
+#include "fixture/texture_fixture.h"
+#include "gl/texture.h"
+#include "passes/pcf_pass.h"
+#include "reference/pcf_reference.h"
+
+namespace pn {
+namespace {
+
+constexpr int kMapSize = 300;
+constexpr int kSmallMaxSide = 64;  // the bounded variant's PN_PCF_MAX_SIDE
+constexpr double kUnit = 1.0 / 16777216.0;  // u = 2^-24
+
+struct Window {
+  PcfWindow w;
+  const char* where;
+};
+
+std::vector<Window> windows() {
+  const int n = kMapSize;
+  std::vector<Window> out;
+  for (int s : {1, 2, 3, 5, 8, 16, 17, 31, 64, 100, 255, 300, 301, 640}) {
+    if (s <= n) out.push_back({{(s * 7) % (n - s + 1), (s * 13) % (n - s + 1), s, s}, "inside"});
+    out.push_back({{-s / 2 - 1, (s * 5) % n, s, s}, "straddling left"});
+    out.push_back({{(s * 3) % n, -s / 2 - 1, s, s}, "straddling top"});
+    out.push_back({{n - s / 2 - 1, n - s / 2 - 1, s, s}, "straddling bottom right"});
+    out.push_back({{n + 2, (s * 11) % n, s, s}, "outside right"});
+    out.push_back({{(s * 11) % n, -s - 3, s, s}, "outside top"});
+    if (s > n) out.push_back({{-(s - n) / 2, -(s - n) / 3, s, s}, "covering the map"});
+    if (s <= n) out.push_back({{(s * 17) % (n - s + 1), 4, s, std::max(1, s / 3)}, "non-square"});
+  }
+  out.push_back({{10, 10, 0, 5}, "empty (width 0)"});
+  out.push_back({{10, 10, 5, -3}, "empty (height < 0)"});
+  out.push_back({{-1000, -1000, 1 << 20, 1 << 20}, "huge, covering the map"});
+  out.push_back({{0, 0, n, n}, "the whole map"});
+  out.push_back({{n - 1, n - 1, 1, 1}, "the last texel"});
+  return out;
+}
+
+struct Receiver {
+  float depth, bias;
+};
+
+// Relative to the covered texels' finite depths: at the min and max (bias 0),
+// below and above, between with a bias, NaN, +Inf.
+std::vector<Receiver> receivers_for(const Image& map, const PcfCover& c, size_t salt) {
+  float lo = INFINITY, hi = -INFINITY;
+  for (long y = c.y0; y < c.y1; ++y)
+    for (long x = c.x0; x < c.x1; ++x) {
+      const float d = map.at(static_cast<int>(x), static_cast<int>(y));
+      if (std::isfinite(d)) lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+  if (!(lo <= hi)) lo = 0.25f, hi = 0.75f;  // nothing finite covered
+  std::vector<Receiver> r{{lo, 0.0f}, {hi, 0.0f}, {lo - 0.05f, 0.0f}, {hi + 0.05f, 0.0f},
+                          {0.5f * (lo + hi) + 0.0137f, 0.01f}};  // threshold off the fixtures' levels
+  r.push_back(salt % 2 == 0 ? Receiver{NAN, 0.0f} : Receiver{INFINITY, 0.0f});
+  return r;
+}
+
+// Whether float rounding of dP - bias may decide a covered texel differently from the definition.
+bool threshold_tie(const Image& map, const PcfCover& c, const Receiver& r) {
+  if (r.bias == 0.0f || !std::isfinite(r.depth)) return false;  // dP - 0 is exact
+  const double t = static_cast<double>(r.depth) - r.bias;
+  const double margin = 2.0 * FLT_EPSILON * std::max(std::fabs(t), static_cast<double>(FLT_MIN));
+  for (long y = c.y0; y < c.y1; ++y)
+    for (long x = c.x0; x < c.x1; ++x)
+      if (std::fabs(map.at(static_cast<int>(x), static_cast<int>(y)) - t) <= margin) return true;
+  return false;
+}
+
+struct Group {
+  std::vector<PcfSums> expected;
+  std::vector<PcfQueryResult> observed;
+  long left_out = 0;
+};
+
+void add_group(std::vector<CaseResult>& results, const std::string& name, const Group& g) {
+  const int n = static_cast<int>(g.expected.size());
+  if (n == 0) return;
+  Image e_counts(n, 1, 2), o_counts(n, 1, 2), e_sum(n, 1), o_sum(n, 1);
+  long most = 0;
+  for (int k = 0; k < n; ++k) {
+    const PcfSums& e = g.expected[static_cast<size_t>(k)];
+    const PcfQueryResult& o = g.observed[static_cast<size_t>(k)];
+    e_counts.at(k, 0, 0) = static_cast<float>(e.occluders), o_counts.at(k, 0, 0) = o.occluders;
+    e_counts.at(k, 0, 1) = static_cast<float>(e.texels), o_counts.at(k, 0, 1) = o.texels;
+    e_sum.at(k, 0) = static_cast<float>(e.depth_sum), o_sum.at(k, 0) = o.depth_sum;
+    most = std::max(most, e.occluders);
+  }
+  const std::string count = " (" + std::to_string(n) + " queries, query k at (k, 0)";
+  const std::string left = g.left_out > 0 ? "; " + std::to_string(g.left_out) + " left out: dP - bias ties a texel" : "";
+  const Tolerance exact = Tolerance::exact();
+  results.push_back({name + ": occluders, texels" + count + ")", exact, compare(e_counts, o_counts, exact)});
+  const double m = static_cast<double>(most);
+  const Tolerance sum_tol = Tolerance::relative((m + 1.0) * kUnit * (1.0 + m * kUnit));
+  results.push_back({name + ": depth sum" + count + left + ")", sum_tol, compare(e_sum, o_sum, sum_tol)});
+}
+
+}  // namespace
+
+std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
+  const PcfQueryPass pass(env.context, env.tree);
+  const PcfQueryPass bounded(env.context, env.tree, kSmallMaxSide);
+  const std::vector<Window> all_windows = windows();
+  std::vector<CaseResult> results;
+  long queries_total = 0, left_out_total = 0;
+
+  for (const auto& fixture : fixtures::kTextureFixtures) {
+    const Image map = generate_fixture(fixture, kMapSize, kMapSize);
+    for (float d : map.texels)
+      if (std::isfinite(d) && d < 0.0f) throw Error(std::string("pcf check: fixture '") + fixture.name + "' has depths < 0");
+    const GlObject texture = upload_float_texture(env.context, map);
+    const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
+
+    struct Variant {
+      const char* name;
+      const PcfQueryPass* pass;
+      int max_side;
+      bool bands;
+    };
+    const Variant variants[] = {{"whole window", &pass, kPcfMaxSide, false},
+                                {"bands of 1, 7, 128 rows", &pass, kPcfMaxSide, true},
+                                {"PN_PCF_MAX_SIDE 64", &bounded, kSmallMaxSide, false}};
+    for (const Variant& v : variants) {
+      std::vector<PcfQuery> queries;
+      std::vector<PcfSums> expected;
+      std::vector<bool> small, tie;
+      for (size_t i = 0; i < all_windows.size(); ++i) {
+        const PcfWindow& w = all_windows[i].w;
+        const PcfCover c = pcf_cover(w, map.width, map.height, v.max_side);
+        for (const Receiver& r : receivers_for(map, c, i)) {
+          static constexpr int kBands[3] = {1, 7, 128};
+          const int band = v.bands ? kBands[queries.size() % 3] : 0;
+          queries.push_back({w.x, w.y, w.width, w.height, r.depth, r.bias, band});
+          expected.push_back(pcf_reference(map, w, r.depth, r.bias, v.max_side));
+          small.push_back(std::max(c.x1 - c.x0, c.y1 - c.y0) <= 16);
+          tie.push_back(threshold_tie(map, c, r));
+        }
+      }
+      const std::vector<PcfQueryResult> observed = v.pass->run(texture, queries);
+      Group groups[2];
+      for (size_t k = 0; k < queries.size(); ++k) {
+        Group& g = groups[small[k] ? 0 : 1];
+        if (tie[k]) {
+          ++g.left_out;
+          continue;
+        }
+        g.expected.push_back(expected[k]);
+        g.observed.push_back(observed[k]);
+      }
+      queries_total += static_cast<long>(queries.size());
+      left_out_total += groups[0].left_out + groups[1].left_out;
+      add_group(results, label + " " + v.name + ", sides <= 16", groups[0]);
+      add_group(results, label + " " + v.name + ", sides > 16", groups[1]);
+    }
+  }
+  const bool few = left_out_total * 100 <= queries_total;
+  const Image want(1, 1, 1, 1.0f), got(1, 1, 1, few ? 1.0f : 0.0f);
+  results.push_back({"queries left out for rounding ties: " + std::to_string(left_out_total) + " of " +
+                         std::to_string(queries_total) + " (<= 1 %)",
+                     Tolerance::exact(), compare(want, got, Tolerance::exact())});
+  return results;
+}
+
+}  // namespace pn

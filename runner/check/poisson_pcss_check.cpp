@@ -1,0 +1,178 @@
+// Cases of the poisson_pcss check: glsl/poisson_pcss.glsl through
+// passes/poisson_pcss_query.comp against poisson_pcss_reference (the
+// definition in double), on every fixture at 257×257 (the raw maps: NaN and
+// ±Inf texels included), for disks of diameter 0…700 texels centred inside the
+// map, straddling an edge or a corner, and wholly outside; rotation off
+// ((1, 0)) and on (a seeded angle per query); receivers at the centre texel's
+// depth (bias 0: a texel equal to dP - bias must not occlude), random with
+// bias 0.01, above and below every depth, NaN and +Inf. Three disks:
+// - the pipeline's 64-point PCF disk as a parameter array (vec2
+//   points[PN_POISSON_MAX_SAMPLES], pnPoissonOcclusion) and read in place from a
+//   uniform block (PN_POISSON_DISK_ARRAY, pnPoissonOcclusionDisk, what
+//   pcss_poisson.comp does): counts 1, 16, 36, 64 and the clamped 0, 70, -3;
+// - the constant array pasted into the pass from `penumbra poisson --count 16
+//   --seed 1`, read in place (pnPoissonOcclusionDisk): counts 1, 9, 16 and the
+//   clamped 0, 40 — which also checks that the pasted text is the generator's disk.
+// Occluder and sample counts must be exact; the depth sum is a float sum of
+// n <= 64 non-negative terms: relative error <= (n + 1) u (1 + n u), u = 2^-24
+// (as in the pcf check). A query with a sample that lies within
+// 4 FLT_EPSILON (|p| + s/2 + 1) of a texel edge of the map (float rounding of
+// its position may put it in either texel), or, with bias != 0, a sampled
+// texel within one ulp of dP - bias, is left out; the number is printed, and a
+// last case requires it to stay below 5 % of the queries.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <string>
+
+#include "check/module_check.h"
+#include "core/error.h"
+#include "core/seeded_random.h"
+#include "fixture/texture_fixture.h"
+#include "gl/texture.h"
+#include "passes/poisson_pcss_pass.h"
+#include "poisson_pcss.h"
+#include "reference/poisson_pcss_reference.h"
+#include "sampling/poisson_disk.h"
+
+namespace pn {
+namespace {
+
+constexpr int kMapSize = 257;
+constexpr std::uint32_t kParameterDiskSeed = 0x5eed0064u;  // the pipeline's PCF disk
+constexpr double kUnit = 1.0 / 16777216.0;                 // u = 2^-24
+
+// Whether float rounding may change which texel a sample reads, or how a read texel compares.
+bool ambiguous(const Image& map, const std::vector<Sample>& points, const PoissonPcssQuery& q) {
+  const int count = std::clamp(q.count, 0, static_cast<int>(points.size()));
+  const double t = q.receiver_depth - q.bias;
+  const double tie = 2.0 * FLT_EPSILON * std::max(std::fabs(t), static_cast<double>(FLT_MIN));
+  for (int k = 0; k < count; ++k) {
+    const PoissonPcssPosition p = poisson_pcss_position(q, points[static_cast<size_t>(k)]);
+    const double margin = 4.0 * FLT_EPSILON * (std::max(std::fabs(p.x), std::fabs(p.y)) + 0.5 * q.diameter + 1.0);
+    if (!(p.x >= -margin && p.y >= -margin && p.x < map.width + margin && p.y < map.height + margin)) continue;
+    const auto near_edge = [margin](double v) { return std::fabs(v - std::round(v)) <= margin; };
+    if (near_edge(p.x) || near_edge(p.y)) return true;
+    if (q.bias != 0.0 && p.x >= 0.0 && p.y >= 0.0 && p.x < map.width && p.y < map.height &&
+        std::fabs(map.at(static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y))) - t) <= tie)
+      return true;
+  }
+  return false;
+}
+
+struct Group {
+  std::vector<PoissonPcssSums> expected;
+  std::vector<PoissonPcssGpuResult> observed;
+  long left_out = 0;
+};
+
+void add_group(std::vector<CaseResult>& results, const std::string& name, const Group& g) {
+  const int n = static_cast<int>(g.expected.size());
+  if (n == 0) return;
+  Image e_counts(n, 1, 2), o_counts(n, 1, 2), e_sum(n, 1), o_sum(n, 1);
+  long most = 0;
+  for (int k = 0; k < n; ++k) {
+    const PoissonPcssSums& e = g.expected[static_cast<size_t>(k)];
+    const PoissonPcssGpuResult& o = g.observed[static_cast<size_t>(k)];
+    e_counts.at(k, 0, 0) = static_cast<float>(e.occluders), o_counts.at(k, 0, 0) = o.occluders;
+    e_counts.at(k, 0, 1) = static_cast<float>(e.samples), o_counts.at(k, 0, 1) = o.samples;
+    e_sum.at(k, 0) = static_cast<float>(e.depth_sum), o_sum.at(k, 0) = o.depth_sum;
+    most = std::max(most, e.occluders);
+  }
+  const std::string count = " (" + std::to_string(n) + " queries, query k at (k, 0)";
+  const std::string left =
+      g.left_out > 0 ? "; " + std::to_string(g.left_out) + " left out: a sample on a texel edge or a tie" : "";
+  const Tolerance exact = Tolerance::exact();
+  results.push_back({name + ": occluders, samples" + count + left + ")", exact, compare(e_counts, o_counts, exact)});
+  const double m = static_cast<double>(most);
+  const Tolerance sum_tol = Tolerance::relative((m + 1.0) * kUnit * (1.0 + m * kUnit));
+  results.push_back({name + ": depth sum" + count + ")", sum_tol, compare(e_sum, o_sum, sum_tol)});
+}
+
+}  // namespace
+
+std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
+  const PoissonPcssQueryPass pass(env.context, env.tree);
+  const std::vector<Sample> parameter_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, kParameterDiskSeed).points;
+  const std::vector<Sample> const_disk = poisson_disk(kPoissonQueryConstCount, kPoissonQueryConstSeed).points;
+  std::vector<CaseResult> results;
+  long queries_total = 0, left_out_total = 0;
+  SeededRandom random(0x5eed0010u);
+
+  for (const auto& fixture : fixtures::kTextureFixtures) {
+    const Image map = generate_fixture(fixture, kMapSize, kMapSize);
+    for (float d : map.texels)
+      if (std::isfinite(d) && d < 0.0f) throw Error(std::string("poisson_pcss check: fixture '") + fixture.name + "' has depths < 0");
+    const GlObject texture = upload_float_texture(env.context, map);
+    const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
+
+    for (const PoissonDiskSource source :
+         {PoissonDiskSource::parameter, PoissonDiskSource::block, PoissonDiskSource::constant}) {
+      const bool constant = source == PoissonDiskSource::constant;
+      const std::vector<Sample>& points = constant ? const_disk : parameter_disk;
+      const std::vector<int> counts = constant ? std::vector<int>{1, 9, 16, 0, 40}
+                                               : std::vector<int>{1, 16, 36, PN_POISSON_MAX_SAMPLES, 0,
+                                                                  PN_POISSON_MAX_SAMPLES + 6, -3};
+      std::vector<PoissonPcssGpuQuery> gpu;
+      std::vector<PoissonPcssQuery> cpu;
+      for (const bool rotate : {false, true})
+        for (const float diameter : {0.0f, 0.5f, 1.0f, 2.5f, 7.0f, 20.0f, 64.0f, 150.0f, 700.0f})
+          for (int placement = 0; placement < 4; ++placement)
+            for (int repeat = 0; repeat < 6; ++repeat) {
+              const float n = static_cast<float>(kMapSize), r = 0.5f * diameter;
+              float x = random.uniform_float(0.0f, n), y = random.uniform_float(0.0f, n);
+              if (placement == 1) x = random.uniform_float(-0.5f, 0.5f) * (r + 1.0f);  // straddling the left edge
+              if (placement == 2) {  // straddling the bottom-right corner
+                x = n + random.uniform_float(-0.5f, 0.5f) * (r + 1.0f);
+                y = n + random.uniform_float(-0.5f, 0.5f) * (r + 1.0f);
+              }
+              if (placement == 3) y = -r - random.uniform_float(1.0f, 20.0f);  // wholly above the map
+              const int count = counts[static_cast<size_t>(gpu.size()) % counts.size()];
+              const float angle = random.uniform_float(0.0f, 6.2831853f);
+              const float rx = rotate ? std::cos(angle) : 1.0f, ry = rotate ? std::sin(angle) : 0.0f;
+              float receiver = 0.0f, bias = 0.0f;
+              switch (repeat) {
+                case 0: {  // the centre texel's depth, bias 0
+                  const int cx = std::clamp(static_cast<int>(std::floor(x)), 0, kMapSize - 1);
+                  const int cy = std::clamp(static_cast<int>(std::floor(y)), 0, kMapSize - 1);
+                  receiver = map.at(cx, cy);
+                  break;
+                }
+                case 1: receiver = random.uniform_float(0.0f, 1.1f), bias = 0.01f; break;
+                case 2: receiver = 1.5f; break;
+                case 3: receiver = -0.5f; break;
+                case 4: receiver = NAN; break;
+                default: receiver = INFINITY; break;
+              }
+              gpu.push_back({x, y, diameter, receiver, bias, count, rx, ry});
+              cpu.push_back({x, y, diameter, receiver, bias, count, rx, ry});
+            }
+      const std::vector<PoissonPcssGpuResult> observed = pass.run(texture, parameter_disk, source, gpu);
+      Group groups[2];  // rotation off, on
+      for (size_t k = 0; k < cpu.size(); ++k) {
+        Group& g = groups[cpu[k].rotation_y != 0.0 || cpu[k].rotation_x != 1.0 ? 1 : 0];
+        if (ambiguous(map, points, cpu[k])) {
+          ++g.left_out;
+          continue;
+        }
+        g.expected.push_back(poisson_pcss_reference(map, points, cpu[k]));
+        g.observed.push_back(observed[k]);
+      }
+      queries_total += static_cast<long>(cpu.size());
+      left_out_total += groups[0].left_out + groups[1].left_out;
+      const std::string disk = constant ? " constant disk (16 in place, pnPoissonOcclusionDisk)"
+                               : source == PoissonDiskSource::block ? " block disk (64 in place, pnPoissonOcclusionDisk)"
+                                                                    : " parameter disk (64, pnPoissonOcclusion)";
+      add_group(results, label + disk + ", rotation off", groups[0]);
+      add_group(results, label + disk + ", rotation on", groups[1]);
+    }
+  }
+  const bool few = left_out_total * 20 <= queries_total;
+  const Image want(1, 1, 1, 1.0f), got(1, 1, 1, few ? 1.0f : 0.0f);
+  results.push_back({"queries left out for rounding: " + std::to_string(left_out_total) + " of " +
+                         std::to_string(queries_total) + " (<= 5 %)",
+                     Tolerance::exact(), compare(want, got, Tolerance::exact())});
+  return results;
+}
+
+}  // namespace pn

@@ -1,0 +1,46 @@
+#include "metrics/scores.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "figures/lit_image.h"
+#include "metrics/ssim.h"
+
+namespace pn {
+
+double mean_absolute_error(const Image& a, const Image& b, const Image* mask) {
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels ||
+      (mask && (mask->width != a.width || mask->height != a.height || mask->channels != 1)))
+    throw Error("mean absolute error of a " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and a " +
+                std::to_string(b.width) + "x" + std::to_string(b.height) + " image: expected the same sizes");
+  double sum = 0.0;
+  long count = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      if (mask && mask->at(x, y) == 0.0f) continue;
+      for (int c = 0; c < a.channels; ++c) sum += std::fabs(static_cast<double>(a.at(x, y, c)) - b.at(x, y, c));
+      ++count;
+    }
+  return count > 0 ? sum / (static_cast<double>(count) * a.channels) : 0.0;
+}
+
+Image light_facing_mask(const Image& surface) {
+  Image mask(surface.width, surface.height);
+  for (int y = 0; y < surface.height; ++y)
+    for (int x = 0; x < surface.width; ++x) mask.at(x, y) = surface.at(x, y, 3) > 0.0f ? 1.0f : 0.0f;
+  return mask;
+}
+
+Scores score_visibility(const Image& reference, const Image& observed, const Image& surface) {
+  const Image facing = light_facing_mask(surface);
+  const Image lit_reference = luma(compose_lit_image(surface, reference));
+  const Image lit_observed = luma(compose_lit_image(surface, observed));
+  Scores s;
+  s.whole = {ssim(reference, observed), mean_absolute_error(reference, observed)};
+  s.light_facing = {ssim(reference, observed, facing), mean_absolute_error(reference, observed, &facing)};
+  s.lit = {ssim(lit_reference, lit_observed), mean_absolute_error(lit_reference, lit_observed)};
+  return s;
+}
+
+}  // namespace pn

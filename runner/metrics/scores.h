@@ -1,0 +1,31 @@
+// How close a visibility image is to a reference, on the pixels a viewer sees
+// (SPEC §4.9): SSIM and mean absolute error over the whole soft-shadow map,
+// over the pixels whose surface faces the light (N·L > 0: surfaces facing
+// away are dark from shading, and acne there is no shadow technique's error —
+// the headline), and over the lit image (its luma, figures/lit_image.h).
+#pragma once
+
+#include "core/image.h"
+
+namespace pn {
+
+struct ImageScore {
+  double ssim = 0.0;
+  double mae = 0.0;
+};
+
+struct Scores {
+  ImageScore whole, light_facing, lit;
+};
+
+// Mean |a − b| over the texels where `mask` (same size, one channel) is non-zero, or over all
+// texels when mask is null; 0 when none count. Throws Error for images of different sizes.
+double mean_absolute_error(const Image& a, const Image& b, const Image* mask = nullptr);
+
+// 1 where the surface faces the light: `surface` is SurfaceRenderer's image (channel 3: max(N·L, 0)).
+Image light_facing_mask(const Image& surface);
+
+// `reference` and `observed`: single-channel visibility, same size as `surface`.
+Scores score_visibility(const Image& reference, const Image& observed, const Image& surface);
+
+}  // namespace pn

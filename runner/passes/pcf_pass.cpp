@@ -1,0 +1,50 @@
+#include "passes/pcf_pass.h"
+
+#include <string>
+
+#include "core/query_grid.h"
+#include "gl/pass_bindings.h"
+#include "gl/texture.h"
+
+namespace pn {
+namespace {
+
+std::vector<Define> max_side_define(int max_side) {
+  if (max_side <= 0) return {};
+  return {{"PN_PCF_MAX_SIDE", std::to_string(max_side)}};
+}
+
+}  // namespace
+
+PcfQueryPass::PcfQueryPass(const Context& context, const SourceTree& tree, int max_side)
+    : context_(&context), program_(compile_pass(context, tree, "passes/pcf_query.comp", max_side_define(max_side))) {}
+
+std::vector<PcfQueryResult> PcfQueryPass::run(const GlObject& depth_map, const std::vector<PcfQuery>& queries) const {
+  if (queries.empty()) return {};
+  std::vector<Query> a, b;
+  for (const PcfQuery& q : queries) {
+    a.push_back({float(q.x), float(q.y), float(q.width), float(q.height)});
+    b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 0.0f});
+  }
+  const Image image_a = query_image(a), image_b = query_image(b);
+  const GlObject texture_a = upload_float_texture(*context_, image_a);
+  const GlObject texture_b = upload_float_texture(*context_, image_b);
+  const GlObject results = make_float_texture(*context_, image_a.width, image_a.height, 4);
+  {
+    PassBindings bind(*context_);
+    bind.texture(0, depth_map);
+    bind.texture(1, texture_a);
+    bind.texture(2, texture_b);
+    bind.image(3, results, GL_WRITE_ONLY, GL_RGBA32F);
+    program_.dispatch(image_a.width, image_a.height);
+  }
+  const Image r = read_float_texture(*context_, results, image_a.width, image_a.height, 4);
+  std::vector<PcfQueryResult> out;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const int x = static_cast<int>(k) % image_a.width, y = static_cast<int>(k) / image_a.width;
+    out.push_back({r.at(x, y, 0), r.at(x, y, 1), r.at(x, y, 2)});
+  }
+  return out;
+}
+
+}  // namespace pn

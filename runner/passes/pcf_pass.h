@@ -1,0 +1,35 @@
+// Runner side of glsl/passes/pcf_query.comp: pcf.glsl over a batch of windows.
+#pragma once
+
+#include <vector>
+
+#include "gl/compute_program.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+struct PcfQuery {
+  int x = 0, y = 0, width = 0, height = 0;  // window origin and size, texels
+  float receiver_depth = 0.0f;
+  float bias = 0.0f;
+  int band_rows = 0;  // 0: pnPcfWindow; b > 0: bands of b rows added up with pnPcfAddRows
+};
+
+struct PcfQueryResult {
+  float occluders = 0.0f, depth_sum = 0.0f, texels = 0.0f;
+};
+
+class PcfQueryPass {
+ public:
+  // max_side > 0 compiles the pass with that PN_PCF_MAX_SIDE; 0 keeps the module's default.
+  PcfQueryPass(const Context& context, const SourceTree& tree, int max_side = 0);
+
+  // `depth_map` is a single-channel float texture; one result per query.
+  std::vector<PcfQueryResult> run(const GlObject& depth_map, const std::vector<PcfQuery>& queries) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;
+};
+
+}  // namespace pn

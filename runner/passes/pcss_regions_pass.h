@@ -1,0 +1,49 @@
+// Runner side of glsl/passes/pcss_regions_query.comp: pcss_regions.glsl's search
+// entry (over a pyramid), filter entry, and the regions of an entry, over a batch
+// of queries.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "gl/compute_program.h"
+#include "passes/depth_pyramid_pass.h"
+#include "pipeline/pcss_settings.h"  // RegionMode
+#include "scene/light_model.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+struct PcssRegionsQuery {
+  enum class Kind { search = 0, filter = 1, entry = 2 };  // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h)
+  Kind kind = Kind::search;
+  RegionMode mode = RegionMode::window;
+  std::array<float, 4> input{};  // search: receiver (u, v, d, valid); filter: search entry; entry: the entry
+  float bias = 0.0f;             // search
+  int iterations = 0;            // search
+  float blocker_mean = 0.0f;     // filter
+  bool has_blocker = false;      // filter
+  float filter_scale = 1.0f;     // filter
+};
+
+struct PcssRegionsResult {
+  std::array<float, 4> entry{};   // (d, x, y, s); s < 0: lit
+  std::array<float, 4> rect{};    // pnEntryRect: origin x, y, size x, y
+  std::array<float, 4> window{};  // pnEntryWindow in the query's mode: origin x, y, side; then pnEntryLit (1 or 0)
+  std::array<float, 4> key{};     // pnEntryLinkKey in the query's mode
+};
+
+class PcssRegionsQueryPass {
+ public:
+  PcssRegionsQueryPass(const Context& context, const SourceTree& tree);
+
+  // One result per query; the light's map size must be the pyramid's N (Throws Error otherwise).
+  std::vector<PcssRegionsResult> run(const DepthPyramid& pyramid, const LightModel& light,
+                                     const std::vector<PcssRegionsQuery>& queries) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;
+};
+
+}  // namespace pn

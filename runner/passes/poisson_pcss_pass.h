@@ -1,0 +1,52 @@
+// Runner side of glsl/passes/poisson_pcss_query.comp: poisson_pcss.glsl over a
+// batch of disks, the disk as a parameter array, read in place from the pass's
+// uniform block, or read in place from the pass's constant (`penumbra poisson
+// --count 16 --seed 1`, pasted into the pass).
+#pragma once
+
+#include <vector>
+
+#include "gl/compute_program.h"
+#include "sampling/sample_table.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+// Where the pass takes its disk from.
+enum class PoissonDiskSource {
+  parameter,  // the block's points copied into vec2 points[PN_POISSON_MAX_SAMPLES] (pnPoissonOcclusion)
+  block,      // the block's points in place (PN_POISSON_DISK_ARRAY, pnPoissonOcclusionDisk), as the pipeline
+  constant,   // the pasted constant in place (PN_POISSON_DISK_ARRAY, pnPoissonOcclusionDisk)
+};
+
+// The constant disk pasted into poisson_pcss_query.comp.
+inline constexpr int kPoissonQueryConstCount = 16;
+inline constexpr unsigned kPoissonQueryConstSeed = 1;
+
+struct PoissonPcssGpuQuery {
+  float centre_x = 0.0f, centre_y = 0.0f, diameter = 0.0f;  // texels
+  float receiver_depth = 0.0f, bias = 0.0f;
+  int count = 0;
+  float rotation_x = 1.0f, rotation_y = 0.0f;
+};
+
+struct PoissonPcssGpuResult {
+  float occluders = 0.0f, depth_sum = 0.0f, samples = 0.0f;
+};
+
+class PoissonPcssQueryPass {
+ public:
+  PoissonPcssQueryPass(const Context& context, const SourceTree& tree);
+
+  // `points` (at most PN_POISSON_MAX_SAMPLES; the rest of the block's array is zero) go into the
+  // uniform block; `source` says which disk the module reads (constant: the pasted one, points unused).
+  std::vector<PoissonPcssGpuResult> run(const GlObject& depth_map, const std::vector<Sample>& points,
+                                        PoissonDiskSource source, const std::vector<PoissonPcssGpuQuery>& queries) const;
+
+ private:
+  const Context* context_;
+  ComputeProgram program_;        // PN_POISSON_DISK_ARRAY = the pasted constant
+  ComputeProgram block_program_;  // PN_POISSON_DISK_ARRAY = the block's array (PN_QUERY_DISK_IN_BLOCK)
+};
+
+}  // namespace pn

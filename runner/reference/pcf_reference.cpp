@@ -1,0 +1,34 @@
+#include "reference/pcf_reference.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pn {
+
+PcfCover pcf_cover(const PcfWindow& window, int map_width, int map_height, int max_side) {
+  // In 64-bit: no overflow whatever the window.
+  const auto axis = [max_side](long origin, long size, long extent, long& lo, long& hi) {
+    lo = std::clamp(origin, 0L, extent);
+    hi = std::clamp(origin + std::max(size, 0L), lo, extent);
+    hi = std::min(hi, lo + static_cast<long>(max_side));
+  };
+  PcfCover c;
+  axis(window.x, window.width, map_width, c.x0, c.x1);
+  axis(window.y, window.height, map_height, c.y0, c.y1);
+  return c;
+}
+
+PcfSums pcf_reference(const Image& depth, const PcfWindow& window, double receiver_depth, double bias, int max_side) {
+  const PcfCover c = pcf_cover(window, depth.width, depth.height, max_side);
+  const double t = receiver_depth - bias;
+  PcfSums s;
+  for (long y = c.y0; y < c.y1; ++y)
+    for (long x = c.x0; x < c.x1; ++x) {
+      const double d = depth.at(static_cast<int>(x), static_cast<int>(y));
+      ++s.texels;
+      if (std::isfinite(d) && d < t) ++s.occluders, s.depth_sum += d;
+    }
+  return s;
+}
+
+}  // namespace pn

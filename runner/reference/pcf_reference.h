@@ -1,0 +1,41 @@
+// CPU reference for glsl/pcf.glsl, written from its definition: clip the
+// window to the map, keep at most `max_side` columns and rows of what is left
+// (from its top-left texel), and scan every texel in double — a texel of
+// depth d occludes receiver depth dP when d is finite and d < dP - bias
+// (SPEC §3). Nothing is sanitised beforehand: the map is the raw input.
+#pragma once
+
+#include "core/image.h"
+
+namespace pn {
+
+// glsl/pcf.glsl's default PN_PCF_MAX_SIDE.
+inline constexpr int kPcfMaxSide = 8192;
+
+struct PcfWindow {
+  int x = 0, y = 0;           // origin, texels (may lie outside the map)
+  int width = 0, height = 0;  // <= 0: empty
+};
+
+struct PcfSums {
+  long occluders = 0;
+  double depth_sum = 0.0;
+  long texels = 0;  // covered: inside the map and within the bound
+
+  double blocker_mean() const { return occluders > 0 ? depth_sum / static_cast<double>(occluders) : 0.0; }
+  double occluded_fraction() const {
+    return texels > 0 ? static_cast<double>(occluders) / static_cast<double>(texels) : 0.0;
+  }
+};
+
+// The covered part of `window` on a width × height map: [x0, x1) × [y0, y1).
+struct PcfCover {
+  long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+PcfCover pcf_cover(const PcfWindow& window, int map_width, int map_height, int max_side = kPcfMaxSide);
+
+// `depth` is the raw single-channel map (NaN and ±Inf allowed).
+PcfSums pcf_reference(const Image& depth, const PcfWindow& window, double receiver_depth, double bias,
+                      int max_side = kPcfMaxSide);
+
+}  // namespace pn

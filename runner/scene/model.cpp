@@ -1,0 +1,147 @@
+#include "scene/model.h"
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+
+namespace pn {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string model_name(const fs::path& file) { return "model '" + file.string() + "'"; }
+
+// Assimp's messages may span lines; an Error's message is one line.
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    const bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
+    if (space && (out.empty() || out.back() == ' ')) continue;
+    out += space ? ' ' : c;
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out.empty() ? "no reason given" : out;
+}
+
+// What Assimp would otherwise report in its own words, or not at all: a path
+// that is not a readable, non-empty regular file within the size limit.
+void check_model_file(const fs::path& file, const ModelLimits& limits) {
+  const std::string name = model_name(file);
+  std::error_code ec;
+  const fs::file_status status = fs::status(file, ec);
+  if (status.type() == fs::file_type::not_found) throw Error(name + ": no such file");
+  if (ec) throw Error(name + ": cannot be read: " + ec.message());
+  if (fs::is_directory(status)) throw Error(name + ": is a directory, expected a mesh file");
+  if (!fs::is_regular_file(status)) throw Error(name + ": not a regular file, expected a mesh file");
+  if (!std::ifstream(file, std::ios::binary)) throw Error(name + ": cannot be read: " + std::strerror(errno));
+  const std::uintmax_t bytes = fs::file_size(file, ec);
+  if (ec) throw Error(name + ": cannot be read: " + ec.message());
+  if (bytes == 0) throw Error(name + ": empty file, expected a mesh file (glTF, OBJ or another format Assimp reads)");
+  if (bytes > limits.max_file_bytes)
+    throw Error(name + ": " + std::to_string(bytes) + " bytes, expected at most " + std::to_string(limits.max_file_bytes));
+}
+
+// Faces of `min_corners` or more corners (also run before validation: no pointer trusted).
+std::size_t count_faces(const aiScene& scene, unsigned min_corners) {
+  std::size_t count = 0;
+  for (unsigned m = 0; m < scene.mNumMeshes && scene.mMeshes != nullptr; ++m) {
+    const aiMesh* mesh = scene.mMeshes[m];
+    if (mesh == nullptr || mesh->mFaces == nullptr) continue;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) count += mesh->mFaces[f].mNumIndices >= min_corners;
+  }
+  return count;
+}
+
+std::vector<glm::vec3> read_triangles(const fs::path& file, const ModelLimits& limits) {
+  const std::string name = model_name(file);
+  const auto unreadable = [&](const Assimp::Importer& importer) {
+    return Error(name + ": not a mesh file Assimp can read: " + one_line(importer.GetErrorString()));
+  };
+  Assimp::Importer importer;  // owns the scene it returns; Assimp logs nowhere unless a logger is created
+  // Read as is first: a file without a polygon (only vertices, points or lines) is "no triangles",
+  // not the validation's "mesh contains no faces" or "mNumMeshes is 0".
+  const aiScene* scene = importer.ReadFile(file.string(), 0);
+  if (scene == nullptr) throw unreadable(importer);
+  if (count_faces(*scene, 3) == 0)
+    throw Error(name + ": no triangles (points and lines are ignored), expected a triangle mesh");
+  // Then validated (indices in range), polygons split into triangles, node transforms baked into
+  // the vertices (a mesh that several nodes draw is repeated).
+  scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                       aiProcess_PreTransformVertices);
+  if (scene == nullptr) throw unreadable(importer);
+
+  const std::size_t triangles = count_faces(*scene, 3);  // every polygon is a triangle now
+  if (triangles > limits.max_triangles)
+    throw Error(name + ": " + std::to_string(triangles) + " triangles, expected at most " +
+                std::to_string(limits.max_triangles));
+  std::vector<glm::vec3> out;
+  out.reserve(3 * triangles);
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene->mMeshes[m];
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // a point or a line
+      for (unsigned k = 0; k < 3; ++k) {
+        const aiVector3D& v = mesh.mVertices[face.mIndices[k]];  // in range: validated
+        out.emplace_back(v.x, v.y, v.z);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> load_model_triangles(const fs::path& file, const ModelLimits& limits) {
+  check_model_file(file, limits);
+  try {
+    return read_triangles(file, limits);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {  // Assimp's own, std::bad_alloc: never past this function
+    throw Error(model_name(file) + ": cannot be read: " + one_line(e.what()));
+  } catch (...) {
+    throw Error(model_name(file) + ": cannot be read: unknown failure in Assimp");
+  }
+}
+
+std::vector<glm::vec3> place_model_on_ground(const std::vector<glm::vec3>& triangles, const fs::path& file) {
+  // In double, so that the extent of coordinates near FLT_MAX does not overflow.
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::vec3& v : triangles) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+      throw Error(model_name(file) + ": a vertex coordinate is not finite, expected finite coordinates");
+    lo = glm::min(lo, glm::dvec3(v)), hi = glm::max(hi, glm::dvec3(v));
+  }
+  const glm::dvec3 extent = hi - lo;
+  const double longest = std::max({extent.x, extent.y, extent.z});
+  const double scale = kModelFitSide / longest;
+  if (!(longest > 0) || !std::isfinite(scale))
+    throw Error(model_name(file) + ": zero extent (every vertex at one point), expected a model with a size");
+  // The origin of the placed model: the centre of its footprint, at its lowest point.
+  const glm::dvec3 base(0.5 * (lo.x + hi.x), lo.y, 0.5 * (lo.z + hi.z));
+  std::vector<glm::vec3> out;
+  out.reserve(triangles.size());
+  for (const glm::vec3& v : triangles) out.emplace_back((glm::dvec3(v) - base) * scale);
+  return out;
+}
+
+Scene make_model_scene(const fs::path& file, int shadow_map_size, float light_width, const ModelLimits& limits) {
+  // The ground and the light exactly as the box scenes have them: a random-boxes fixture with no boxes.
+  const fixtures::SceneFixture ground_only{"", fixtures::SceneKind::random_boxes, 0, 0, light_width};
+  Scene scene = make_scene(ground_only, shadow_map_size);
+  scene.name = file.stem().string();
+  scene.mesh = place_model_on_ground(load_model_triangles(file, limits), file);
+  return scene;
+}
+
+}  // namespace pn

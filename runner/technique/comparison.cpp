@@ -1,0 +1,118 @@
+#include "technique/comparison.h"
+
+#include <chrono>
+#include <iomanip>
+
+#include "core/error.h"
+#include "gl/texture.h"
+#include "passes/surface_pass.h"
+#include "technique/technique_registry.h"
+#include "truth/ray_traced_truth.h"
+
+namespace pn {
+
+const TechniqueResult* Comparison::find(const std::string& name) const {
+  for (const TechniqueResult& r : results)
+    if (r.name == name) return &r;
+  return nullptr;
+}
+
+Comparison compare_techniques(const Context& context, const SourceTree& tree, const Scene& scene,
+                              const ComparisonSetup& setup) {
+  if (setup.techniques.empty()) throw Error("no methods to compare");
+  const int size = setup.screen_size;
+  const auto source = find_shadow_map_source(setup.source).make(context, tree);
+  const GBufferRenderer gbuffer(context, tree);
+  const SceneFrame frame = render_scene_frame(context, *source, gbuffer, scene, size);
+
+  Comparison c;
+  c.shadow_map_ms = frame.shadow_map_ms;
+  c.surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size), size, size, 4);
+  TruthSettings truth_settings;
+  truth_settings.samples_per_side = setup.truth_samples;
+  const auto start = std::chrono::steady_clock::now();
+  c.truth = trace_truth(scene, size, truth_settings).visibility;
+  c.truth_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  TechniqueResources resources(context, tree);
+  for (const TechniqueConfig* config : setup.techniques) {
+    const std::unique_ptr<Technique> technique = config->create(resources);
+    TechniqueResult r;
+    r.name = config->name();
+    r.measurement = measure_technique(*technique, frame.inputs(), setup.repeats);
+    r.visibility = read_float_texture(context, r.measurement.frame.visibility, size, size, 1);
+    r.vs_truth = score_visibility(c.truth, r.visibility, c.surface);
+    c.results.push_back(std::move(r));
+  }
+  if (const TechniqueResult* exact = c.find(kExactTechnique)) {
+    const Image reference = exact->visibility;
+    for (TechniqueResult& r : c.results) r.vs_exact = score_visibility(reference, r.visibility, c.surface);
+    c.truth_vs_exact = score_visibility(reference, c.truth, c.surface);
+  }
+  return c;
+}
+
+}  // namespace pn
+
+namespace pn {
+namespace {
+
+void score_cells(std::ostream& out, const ImageScore& s) {
+  out << std::fixed << std::setprecision(4) << std::setw(11) << s.ssim << std::setw(10) << s.mae;
+}
+
+void score_cells(std::ostream& out, const std::optional<ImageScore>& s) {
+  if (s) score_cells(out, *s);
+  else out << std::setw(11) << "-" << std::setw(10) << "-";
+}
+
+template <class Member>
+std::optional<ImageScore> part(const std::optional<Scores>& s, Member member) {
+  if (!s) return std::nullopt;
+  return (*s).*member;
+}
+
+}  // namespace
+
+void print_score_tables(std::ostream& out, const Comparison& c) {
+  constexpr int kName = 22;
+  out << "light-facing pixels (N.L > 0):\n"
+      << std::left << std::setw(kName) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(11)
+      << "SSIM truth" << std::setw(10) << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10)
+      << "MAE exact" << "   stats\n";
+  for (const TechniqueResult& r : c.results) {
+    out << std::left << std::setw(kName) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(10)
+        << r.measurement.total_ms;
+    score_cells(out, r.vs_truth.light_facing);
+    score_cells(out, part(r.vs_exact, &Scores::light_facing));
+    out << "  ";
+    for (const auto& [name, value] : r.measurement.frame.stats)
+      out << " " << name << " " << std::setprecision(value < 10 ? 3 : 1) << value;
+    out << "\n";
+  }
+  out << std::left << std::setw(kName) << "truth (ray traced)" << std::right << std::setw(10) << "-";
+  score_cells(out, ImageScore{1.0, 0.0});
+  score_cells(out, part(c.truth_vs_exact, &Scores::light_facing));
+  out << "   CPU " << std::setprecision(0) << c.truth_ms << " ms\n";
+
+  out << "whole soft-shadow map | lit image:\n"
+      << std::left << std::setw(kName) << "method" << std::right;
+  for (int i = 0; i < 2; ++i)
+    out << std::setw(11) << "SSIM truth" << std::setw(10) << "MAE truth" << std::setw(11) << "SSIM exact"
+        << std::setw(10) << "MAE exact";
+  out << "\n";
+  const auto row = [&](const std::string& name, const Scores& truth, const std::optional<Scores>& exact) {
+    out << std::left << std::setw(kName) << name << std::right;
+    score_cells(out, truth.whole);
+    score_cells(out, part(exact, &Scores::whole));
+    score_cells(out, truth.lit);
+    score_cells(out, part(exact, &Scores::lit));
+    out << "\n";
+  };
+  for (const TechniqueResult& r : c.results) row(r.name, r.vs_truth, r.vs_exact);
+  const Scores self{{1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}};
+  row("truth (ray traced)", self, c.truth_vs_exact);
+  out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace pn

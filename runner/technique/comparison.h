@@ -1,0 +1,60 @@
+// Techniques compared on one frame of one scene, as render and bench both
+// need it: each technique timed through the seam (medians), its visibility
+// read back, and scored (metrics/scores.h) against the ray-traced truth and
+// against exact PCSS when exact PCSS is among the techniques.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "metrics/scores.h"
+#include "scene/scene.h"
+#include "technique/scene_frame.h"
+#include "technique/technique.h"
+
+namespace pn {
+
+struct ComparisonSetup {
+  std::string source = "full";  // shadow_map_sources()
+  int screen_size = 512;
+  int repeats = 3;
+  int truth_samples = 16;  // per side: S×S light samples per pixel
+  std::vector<const TechniqueConfig*> techniques;  // validated; not owned
+};
+
+struct TechniqueResult {
+  std::string name;
+  TechniqueMeasurement measurement;
+  Image visibility;                // rows from the bottom
+  Scores vs_truth;
+  std::optional<Scores> vs_exact;  // when exact PCSS ran
+};
+
+struct Comparison {
+  Image truth;             // visibility, rows from the bottom
+  double truth_ms = 0.0;   // CPU wall time of the ray tracing
+  Image surface;           // SurfaceRenderer's image: albedo, N·L
+  double shadow_map_ms = 0.0;
+  std::vector<TechniqueResult> results;  // in the order of setup.techniques
+  std::optional<Scores> truth_vs_exact;
+
+  const TechniqueResult* find(const std::string& name) const;  // null when not run
+};
+
+// Throws Error for a bad setup (before any GL work) or a technique that fails.
+Comparison compare_techniques(const Context& context, const SourceTree& tree, const Scene& scene,
+                              const ComparisonSetup& setup);
+
+}  // namespace pn
+
+namespace pn {
+
+// The two score tables: light-facing pixels (the headline: time, stats, SSIM and MAE against the
+// truth and exact PCSS), then the whole map and the lit image; a row for the truth itself
+// against exact PCSS. "-" where exact PCSS did not run.
+void print_score_tables(std::ostream& out, const Comparison& comparison);
+
+}  // namespace pn

@@ -1,0 +1,86 @@
+// The seam every shadow technique plugs into (SPEC §4.9): a technique turns
+// one frame's inputs — the shadow map a ShadowMapSource made, the G-buffer
+// and the light — into a visibility image, with its per-stage GPU times and
+// its stats. render, bench and check drive techniques only through this
+// interface and the registry (technique_registry.h); none of them knows which
+// technique it runs.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <typeindex>
+#include <utility>
+#include <vector>
+
+#include "gl/objects.h"
+#include "scene/light_model.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+// What a technique reads for one frame (non-owning: see SceneFrame).
+struct TechniqueInputs {
+  LightModel light;
+  int screen_size = 0;
+  const GlObject* shadow_map = nullptr;  // N×N R32F linear light depth, +Inf where empty (N = light.map_size)
+  const GlObject* gbuffer = nullptr;     // screen² RGBA32F (u, v in texels, light depth, valid), rows from the bottom
+};
+
+// Named values, in the order they are printed.
+using NamedValues = std::vector<std::pair<std::string, double>>;
+
+struct TechniqueFrame {
+  GlObject visibility;  // screen² R32F, rows from the bottom: 1 lit, 0 in shadow
+  NamedValues stages;   // GPU ms per stage, in order (timestamps between them)
+  NamedValues stats;    // what the frame did (e.g. "representatives", "work/px"); filled when asked
+  double total_ms() const;
+};
+
+// A configured technique, bound to one GL context.
+class Technique {
+ public:
+  virtual ~Technique() = default;
+  // One frame. `with_stats`: also count the frame's stats (a readback, after the last timestamp).
+  // Throws Error for inputs it cannot take.
+  virtual TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const = 0;
+};
+
+// GL resources that techniques of one family share (compiled passes, tables),
+// built once per context on first use and owned here, not in globals.
+class TechniqueResources {
+ public:
+  TechniqueResources(const Context& context, const SourceTree& tree) : context_(&context), tree_(&tree) {}
+  const Context& context() const { return *context_; }
+  const SourceTree& tree() const { return *tree_; }
+
+  // The one T of these resources, constructed as T(context, tree) the first time it is asked for.
+  template <class T>
+  const T& shared() {
+    std::shared_ptr<void>& slot = shared_[std::type_index(typeid(T))];
+    if (!slot) slot = std::make_shared<T>(*context_, *tree_);
+    return *static_cast<const T*>(slot.get());
+  }
+
+ private:
+  const Context* context_;
+  const SourceTree* tree_;
+  std::map<std::type_index, std::shared_ptr<void>> shared_;
+};
+
+// A technique's settings before any GL: made by a registry entry, changed by
+// its own override keys, validated on the command line before a context exists.
+class TechniqueConfig {
+ public:
+  virtual ~TechniqueConfig() = default;
+  virtual std::string name() const = 0;  // as the user wrote it, overrides included ("fast:leaf=4")
+  virtual void rename(const std::string& name) = 0;
+  virtual std::vector<std::string> keys() const = 0;  // the override keys it owns
+  // Throws Error naming the technique, the key and what it expects.
+  virtual void set(const std::string& key, const std::string& value) = 0;
+  virtual void validate() const = 0;  // throws Error naming the setting and its range
+  virtual std::unique_ptr<Technique> create(TechniqueResources& resources) const = 0;
+  virtual std::unique_ptr<TechniqueConfig> clone() const = 0;
+};
+
+}  // namespace pn

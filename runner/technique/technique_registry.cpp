@@ -1,0 +1,66 @@
+#include "technique/technique_registry.h"
+
+#include "core/error.h"
+#include "pipeline/pcss_technique.h"
+
+namespace pn {
+
+const std::vector<TechniqueEntry>& technique_registry() {
+  using Made = std::unique_ptr<TechniqueConfig>;
+  static const std::vector<TechniqueEntry> entries{
+      {"exact", "exact PCSS: brute-force blocker search and PCF over the whole regions (pcf.glsl)",
+       []() -> Made { return pcss_config(exact_pcss()); }},
+      {"poisson", "Poisson PCSS: 36 blocker / 64 PCF Poisson-disk samples, as engines ship it (poisson_pcss.glsl)",
+       []() -> Made { return pcss_config(poisson_pcss()); }},
+      {"hqepcss", "HQEPCSS: refined search, min-estimated traversal leaves for blockers, brute-force PCF",
+       []() -> Made { return pcss_config(hqepcss()); }},
+      {"fast", "Fast PCSS (seed 000) with the paper's defaults", []() -> Made { return pcss_config(fast_pcss()); }},
+      {"fast-no-refine", "Fast PCSS without Step 3's refinement", []() -> Made { return pcss_ablation("fast-no-refine", "refine", "0"); }},
+      {"fast-leaf-1", "Fast PCSS with leaf side 1 (no sampled leaves)", []() -> Made { return pcss_ablation("fast-leaf-1", "leaf", "1"); }},
+      {"fast-no-reuse", "Fast PCSS without reuse", []() -> Made { return pcss_ablation("fast-no-reuse", "reuse", "off"); }},
+      {"fast-reuse-branch", "Fast PCSS, non-representatives branch out instead of a compacted list",
+       []() -> Made { return pcss_ablation("fast-reuse-branch", "skip", "branch"); }},
+      {"fast-exact-region", "Fast PCSS over exact regions instead of power-of-two windows",
+       []() -> Made { return pcss_ablation("fast-exact-region", "region", "exact"); }},
+      {"fast-centred-region", "Fast PCSS with centred power-of-two windows",
+       []() -> Made { return pcss_ablation("fast-centred-region", "region", "centred"); }},
+      {"fast-no-blur", "Fast PCSS without Step 6's blur", []() -> Made { return pcss_ablation("fast-no-blur", "blur", "off"); }},
+      {"fast-all-off", "Fast PCSS with every improvement off: must equal exact PCSS (the wiring check)",
+       []() -> Made { return pcss_config(fast_pcss_all_off()); }, false},
+  };
+  return entries;
+}
+
+std::unique_ptr<TechniqueConfig> parse_technique(const std::string& spec) {
+  size_t colon = spec.find(':');
+  const std::string name = spec.substr(0, colon);
+  std::unique_ptr<TechniqueConfig> config;
+  std::string known;
+  for (const TechniqueEntry& e : technique_registry()) {
+    if (name == e.name) config = e.make();
+    known += (known.empty() ? "" : ", ") + std::string(e.name);
+  }
+  if (!config) throw Error("unknown method '" + name + "': expected one of " + known);
+  config->rename(spec);
+  while (colon != std::string::npos) {
+    const size_t next = spec.find(':', colon + 1);
+    const std::string item = spec.substr(colon + 1, next == std::string::npos ? std::string::npos : next - colon - 1);
+    const size_t equals = item.find('=');
+    if (equals == std::string::npos) throw Error("method '" + spec + "': '" + item + "': expected key=value");
+    config->set(item.substr(0, equals), item.substr(equals + 1));
+    colon = next;
+  }
+  config->validate();
+  return config;
+}
+
+std::vector<std::string> render_techniques() { return {"exact", "poisson", "hqepcss", "fast"}; }
+
+std::vector<std::string> bench_techniques() {
+  std::vector<std::string> out;
+  for (const TechniqueEntry& e : technique_registry())
+    if (e.benched) out.push_back(e.name);
+  return out;
+}
+
+}  // namespace pn

@@ -1,0 +1,37 @@
+// Every technique and ablation, found by name: one entry each. A new
+// technique is one module, one pass, one entry here and one check
+// (docs/architecture.md, "Adding a technique").
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "technique/technique.h"
+
+namespace pn {
+
+struct TechniqueEntry {
+  const char* name;
+  const char* summary;
+  std::unique_ptr<TechniqueConfig> (*make)();  // the entry's settings, named `name`
+  bool benched = true;  // in bench's default list (false: a check's construct, e.g. equal to another by design)
+};
+
+// In the order of every table.
+const std::vector<TechniqueEntry>& technique_registry();
+
+// "name" or "name:key=value:key=value" (keys: the entry's own). Validated.
+// Throws Error naming the spec: an unknown name (listing the known ones), a
+// malformed item, an unknown key or a value out of range.
+std::unique_ptr<TechniqueConfig> parse_technique(const std::string& spec);
+
+// What render draws by default, and what bench times by default.
+std::vector<std::string> render_techniques();
+std::vector<std::string> bench_techniques();
+
+// The techniques scores and speed-ups are measured against (same run).
+inline constexpr const char* kExactTechnique = "exact";
+inline constexpr const char* kPoissonTechnique = "poisson";
+
+}  // namespace pn

@@ -1,0 +1,39 @@
+#include "truth/jittered_light_samples.h"
+
+#include "core/integer_hash.h"
+
+namespace pn {
+
+double sample_jitter(std::uint32_t seed, int x, int y, int sample, int axis) {
+  // Chained, so that every input moves every output bit.
+  std::uint32_t h = integer_hash(seed ^ 0x9e3779b9U);
+  h = integer_hash(h ^ static_cast<std::uint32_t>(x));
+  h = integer_hash(h ^ static_cast<std::uint32_t>(y));
+  h = integer_hash(h ^ static_cast<std::uint32_t>(sample));
+  h = integer_hash(h ^ static_cast<std::uint32_t>(axis));
+  return static_cast<double>(h >> 8) * (1.0 / 16777216.0);
+}
+
+LightFrame light_frame(const Scene& scene) {
+  // The inverse light view's first two columns are the light plane's x and y axes in world space.
+  const glm::dmat4 to_world = glm::inverse(glm::dmat4(scene.light_view()));
+  return {glm::dvec3(scene.light_position), glm::normalize(glm::dvec3(to_world[0])),
+          glm::normalize(glm::dvec3(to_world[1])), scene.light.width};
+}
+
+std::vector<glm::dvec3> jittered_light_samples(const LightFrame& light, int samples_per_side, std::uint32_t seed, int x,
+                                               int y) {
+  const double n = samples_per_side;
+  std::vector<glm::dvec3> points;
+  points.reserve(static_cast<size_t>(samples_per_side) * samples_per_side);
+  for (int j = 0; j < samples_per_side; ++j)
+    for (int i = 0; i < samples_per_side; ++i) {
+      const int k = j * samples_per_side + i;
+      const double a = light.width * ((i + sample_jitter(seed, x, y, k, 0)) / n - 0.5);
+      const double b = light.width * ((j + sample_jitter(seed, x, y, k, 1)) / n - 0.5);
+      points.push_back(light.centre + a * light.right + b * light.up);
+    }
+  return points;
+}
+
+}  // namespace pn

@@ -1,0 +1,36 @@
+// depth_pyramid on a real GL context against its CPU reference, and a copy
+// with one deliberate mistake that the check must catch.
+#include <catch2/catch.hpp>
+
+#include "broken_copy.h"
+#include "check/module_check.h"
+#include "gl/texture.h"
+#include "gl_test_context.h"
+#include "passes/depth_pyramid_pass.h"
+
+using pn::test::BrokenCopy;
+using pn::test::check_all_pass;
+using pn::test::failing_cases;
+using pn::test::run_check;
+
+TEST_CASE("depth_pyramid: every level of every fixture and every square query equals the scans") {
+  const auto results = run_check(pn::find_module_check("depth_pyramid"), PENUMBRA_GLSL_DIR);
+  REQUIRE(results.size() > 500);
+  check_all_pass(results);
+}
+
+TEST_CASE("negative: a depth_pyramid copy with a wrong child offset fails the depth_pyramid check") {
+  const BrokenCopy copy("depth_pyramid.glsl", "origin + ivec2(h, 0)", "origin + ivec2(h - 1, 0)");
+  REQUIRE(copy.found());
+  CHECK(failing_cases(run_check(pn::find_module_check("depth_pyramid"), copy.root())) > 0);
+}
+
+TEST_CASE("depth_pyramid: a maximum level beyond floor(log2 N) is clamped; non-square maps are refused before any GL work") {
+  const auto& context = pn::test::gl_context();
+  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
+  const pn::DepthPyramidBuilder builder(context, tree);
+  const pn::GlObject map = pn::make_float_texture(context, 64, 64, 1);
+  CHECK(builder.build(map, 64, 64, 99).levels == 7);
+  CHECK(builder.build(map, 64, 64, 3).levels == 4);
+  CHECK_THROWS_WITH(builder.build(map, 64, 32, 99), "shadow map 64x32: expected a square map (N x N)");
+}

@@ -1,0 +1,77 @@
+// pcf.glsl on a real GL context against the definition in double, and copies
+// of it with one deliberate mistake.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "broken_copy.h"
+#include "check/module_check.h"
+#include "fixture/texture_fixture.h"
+#include "gl/objects.h"
+#include "gl_test_context.h"
+#include "shader/flatten.h"
+#include "shader/target.h"
+
+namespace {
+
+const pn::ModuleCheck& pcf() { return pn::find_module_check("pcf"); }
+
+bool named(const pn::CaseResult& r, const char* part) { return r.name.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("pcf window scans equal the definition: whole, in bands of 1/7/128 rows, and bounded to 64 texels a side") {
+  const auto results = pn::test::run_check(pcf(), PENUMBRA_GLSL_DIR);
+  // fixtures × (whole, bands, bounded) × (sides <= 16, > 16) × (counts, depth sum), and the leave-out case.
+  CHECK(results.size() == std::size(pn::fixtures::kTextureFixtures) * 3 * 2 * 2 + 1);
+  pn::test::check_all_pass(results);
+}
+
+TEST_CASE("negative: a copy of pcf.glsl that lets -Inf texels occlude fails on the NaN/Inf fixture, and only there") {
+  const pn::test::BrokenCopy copy("pcf.glsl", "return depth < threshold && !isinf(depth);", "return depth < threshold;");
+  REQUIRE(copy.found());
+  const auto results = pn::test::run_check(pcf(), copy.root());
+  size_t nonfinite_failures = 0;
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    if (r.name.rfind("nonfinite ", 0) == 0) nonfinite_failures += r.comparison.pass ? 0 : 1;
+    else CHECK(r.comparison.pass);
+  }
+  CHECK(nonfinite_failures > 0);
+  CHECK(pn::test::failing_cases(results) == nonfinite_failures);
+}
+
+TEST_CASE("negative: a copy of pcf.glsl whose bands start one row early fails every banded case, no other") {
+  const pn::test::BrokenCopy copy("pcf.glsl", "int rowStart = max(lo.y, firstRow);",
+                                  "int rowStart = max(lo.y, firstRow - 1);");
+  REQUIRE(copy.found());
+  const auto results = pn::test::run_check(pcf(), copy.root());
+  size_t banded = 0;
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    if (named(r, "bands of") && named(r, "occluders, texels")) {
+      ++banded;
+      CHECK_FALSE(r.comparison.pass);  // rows counted twice: more texels
+    } else if (!named(r, "bands of")) {
+      CHECK(r.comparison.pass);  // a whole window starts at row 0: max(lo.y, -1) = lo.y
+    }
+  }
+  CHECK(banded == std::size(pn::fixtures::kTextureFixtures) * 2);
+  CHECK(pn::test::failing_cases(results) >= banded);
+}
+
+TEST_CASE("the bundles of pcf.glsl, pcf_query.comp and pcss_scan.comp compile with the GL driver") {
+  const auto& context = pn::test::gl_context();
+  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
+  for (const char* module : {"pcf.glsl", "passes/pcf_query.comp", "passes/pcss_scan.comp"}) {
+    const pn::ShaderSource bundle = pn::standalone_source(pn::flatten(tree, module), pn::Target::gl450);
+    pn::GlObject shader(context, pn::GlKind::shader, GL_COMPUTE_SHADER);
+    const char* text = bundle.text.c_str();
+    context.gl().ShaderSource(shader.id(), 1, &text, nullptr);
+    context.gl().CompileShader(shader.id());
+    GLint ok = 0;
+    context.gl().GetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+    INFO(module);
+    CHECK(ok == GL_TRUE);
+  }
+}

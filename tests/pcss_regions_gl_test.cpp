@@ -1,0 +1,102 @@
+// pcss_regions on a real GL context against its CPU definition, copies of it
+// with one deliberate mistake each, and the known failure of issue 11 (the
+// window modes' lit decision, SPEC §4.7 Step 3).
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "broken_copy.h"
+#include "check/pcss_regions_check.h"
+
+using pn::test::BrokenCopy;
+using pn::test::check_all_pass;
+using pn::test::failing_cases;
+using pn::test::run_check;
+
+namespace {
+
+const pn::ModuleCheck& regions() { return pn::find_module_check("pcss_regions"); }
+
+bool named(const pn::CaseResult& r, const char* part) { return r.name.find(part) != std::string::npos; }
+
+// Failing cases whose name has `part`; every failing case must say where / expected / observed.
+size_t failing_named(const std::vector<pn::CaseResult>& results, const char* part) {
+  size_t n = 0;
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    if (!r.comparison.pass && named(r, part)) ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("pcss_regions: search and filter entries and their regions equal the CPU definition in every mode, "
+          "and no receiver a texel can shadow is marked lit in the exact mode") {
+  const auto results = run_check(regions(), PENUMBRA_GLSL_DIR);
+  // 12 maps x (3 modes x 3 + the property) + 3 lights x 3 (filter) + 1 (given entries)
+  // + tall_blocker (3 modes x 3 + the property) + the left-out bound.
+  CHECK(results.size() == 12 * 10 + 9 + 1 + 10 + 1);
+  check_all_pass(results);
+}
+
+TEST_CASE("negative: a copy of pcss_regions.glsl with half the filter side fails the filter sides, and nothing else") {
+  const BrokenCopy copy("pcss_regions.glsl", "float side = scale * pnLightPenumbraTexels(",
+                        "float side = 0.5 * scale * pnLightPenumbraTexels(");
+  REQUIRE(copy.found());
+  const auto results = run_check(regions(), copy.root());
+  CHECK(failing_named(results, "filter entries") >= 2);  // the sides of the two lights with a width
+  for (const auto& r : results)
+    if (!named(r, "filter entries")) CHECK(r.comparison.pass);
+  CHECK(failing_cases(results) == failing_named(results, "filter entries"));
+}
+
+TEST_CASE("negative: a lit decision that lets a texel at exactly d - bias occlude fails the search decisions") {
+  const BrokenCopy copy("pcss_regions.glsl", "if (!(zmin < d - bias)) return", "if (!(zmin <= d - bias)) return");
+  REQUIRE(copy.found());
+  const auto results = run_check(regions(), copy.root());
+  CHECK(failing_named(results, "lit decisions") > 0);  // receivers at the depth of the texel under them, bias 0
+  CHECK(failing_cases(results) > 0);
+}
+
+TEST_CASE("negative: an exact-mode lit decision over the square of the region's shorter side fails, "
+          "the lit-coverage property included") {
+  const BrokenCopy copy("pcss_regions.glsl", "max(r.size.x, r.size.y)", "min(r.size.x, r.size.y)");
+  REQUIRE(copy.found());
+  const auto results = run_check(regions(), copy.root());
+  CHECK(failing_named(results, "exact region: ") > 0);  // clipped regions at the map's edges
+  CHECK(failing_named(results, "although a texel can shadow them") > 0);
+  for (const auto& r : results)
+    if (named(r, "window region") || named(r, "centred region") || named(r, "filter entries")) CHECK(r.comparison.pass);
+}
+
+// Issue 11: the window modes decide "lit" from the power-of-two window alone,
+// which can miss blockers on its +u/+v side. Expected to fail until the module
+// reads a square covering the whole region (SPEC §4.7 Step 3); the lead decides.
+TEST_CASE("known failure (issue 11): the literal window's lit decision marks receivers a texel can shadow as lit "
+          "on the tall-blocker scene", "[!shouldfail]") {
+  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
+  const pn::CheckOptions options;
+  const pn::LitCoverage c = pn::pcss_regions_lit_coverage({pn::test::gl_context(), tree, options}, pn::RegionMode::window);
+  WARN(c.result.name);
+  CHECK(c.result.comparison.pass);
+}
+
+TEST_CASE("known failure (issue 11): the centred window's lit decision marks receivers a texel can shadow as lit "
+          "on the tall-blocker scene", "[!shouldfail]") {
+  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
+  const pn::CheckOptions options;
+  const pn::LitCoverage c = pn::pcss_regions_lit_coverage({pn::test::gl_context(), tree, options}, pn::RegionMode::centred);
+  WARN(c.result.name);
+  CHECK(c.result.comparison.pass);
+}
+
+TEST_CASE("the exact region's lit decision on the tall-blocker scene misses no receiver a texel can shadow") {
+  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
+  const pn::CheckOptions options;
+  const pn::LitCoverage c = pn::pcss_regions_lit_coverage({pn::test::gl_context(), tree, options}, pn::RegionMode::exact);
+  INFO(c.result.name << ": " << c.result.comparison.where(c.result.tolerance));
+  CHECK(c.violations == 0);
+  CHECK(c.shadowable > 0);  // the scene has receivers to miss
+  CHECK(c.lit > 0);
+}

@@ -1,0 +1,41 @@
+// The technique registry: every entry found by its name, owning its override
+// keys; specs with overrides parsed and validated; bad specs refused with the
+// spec named.
+#include <catch2/catch.hpp>
+
+#include <set>
+#include <string>
+
+#include "core/error.h"
+#include "pipeline/pcss_settings.h"
+#include "technique/technique_registry.h"
+
+TEST_CASE("technique registry: every entry parses by its own name, names are unique") {
+  std::set<std::string> names;
+  for (const pn::TechniqueEntry& e : pn::technique_registry()) {
+    const auto config = pn::parse_technique(e.name);
+    CHECK(config->name() == e.name);
+    CHECK(!config->keys().empty());
+    CHECK(names.insert(e.name).second);
+  }
+  for (const std::string& spec : pn::render_techniques()) CHECK(names.count(spec) == 1);
+  for (const std::string& spec : pn::bench_techniques()) CHECK(names.count(spec) == 1);
+  CHECK(names.count(pn::kExactTechnique) == 1);
+  CHECK(names.count(pn::kPoissonTechnique) == 1);
+}
+
+TEST_CASE("technique registry: a spec with overrides keeps its full name and its entry's keys") {
+  const auto config = pn::parse_technique("fast:leaf=4:reuse=off:region=centred:c=1.5");
+  CHECK(config->name() == "fast:leaf=4:reuse=off:region=centred:c=1.5");
+  CHECK(config->keys() == pn::pcss_setting_keys());
+  const auto copy = config->clone();
+  CHECK(copy->name() == config->name());
+}
+
+TEST_CASE("technique registry: bad specs are refused naming the spec (negative)") {
+  CHECK_THROWS_WITH(pn::parse_technique("slow"), Catch::StartsWith("unknown method 'slow': expected one of exact, poisson, hqepcss, fast, fast-no-refine"));
+  CHECK_THROWS_WITH(pn::parse_technique("fast:leaf"), "method 'fast:leaf': 'leaf': expected key=value");
+  CHECK_THROWS_WITH(pn::parse_technique("fast:colour=red"), Catch::StartsWith("method 'fast:colour=red': unknown setting 'colour'"));
+  CHECK_THROWS_WITH(pn::parse_technique("fast:bias=-1"), "method 'fast:bias=-1': bias -1: expected a finite number >= 0");
+  CHECK_THROWS_WITH(pn::parse_technique("fast:search-tile=17"), "method 'fast:search-tile=17': search reuse tile 17: expected 0 (off) or 1..16");
+}
