@@ -5,16 +5,17 @@
 //   row 0 of the map to its last, added up with pnPcfAddRows (what
 //   pcss_scan.comp does across dispatches, here in one invocation).
 // Result k: (occluders, depth sum, texels, 0).
-//   binding 0: depth map (sampler2D, R32F)    binding 3: result (image2D, rgba32f)
-//   binding 1: query A (sampler2D, RGBA32F)   binding 2: query B (sampler2D, RGBA32F)
+//   bindings: pcf_query.h
 // The check also compiles it with a small PN_PCF_MAX_SIDE to exercise the bound.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnDepthMap;
-layout(binding = 1) uniform sampler2D pnQueryA;
-layout(binding = 2) uniform sampler2D pnQueryB;
-layout(rgba32f, binding = 3) writeonly uniform image2D pnResult;
+#include "pcf_query.h"
+
+layout(binding = PN_PCF_QUERY_MAP_BINDING) uniform sampler2D pnDepthMap;
+layout(binding = PN_PCF_QUERY_A_BINDING) uniform sampler2D pnQueryA;
+layout(binding = PN_PCF_QUERY_B_BINDING) uniform sampler2D pnQueryB;
+layout(rgba32f, binding = PN_PCF_QUERY_RESULT_IMAGE) writeonly uniform image2D pnResult;
 
 #include "pcf.glsl"
 

@@ -2,11 +2,7 @@
 // Query k: texel k of query image A = (centre x, y, diameter, receiver depth),
 //          texel k of query image B = (bias, sample count, rotation cos, sin).
 // Result k: (occluders, depth sum, samples, 0).
-//   binding 0: depth map (sampler2D, R32F)    binding 3: result (image2D, rgba32f)
-//   binding 1: query A (sampler2D, RGBA32F)   binding 2: query B (sampler2D, RGBA32F)
-//   binding 4: PnPoissonQueryParams (std140): a disk; inPlace != 0 reads the disk in
-//              place (pnPoissonOcclusionDisk), else copies the block's disk into a
-//              parameter array (pnPoissonOcclusion)
+//   bindings and block: poisson_pcss_query.h
 // The in-place disk is the constant below — `penumbra poisson --count 16 --seed 1`
 // pasted as it prints, as an engine would (the check compares it with the
 // generator's points) — or, compiled with PN_QUERY_DISK_IN_BLOCK, the block's
@@ -14,17 +10,12 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D pnDepthMap;
-layout(binding = 1) uniform sampler2D pnQueryA;
-layout(binding = 2) uniform sampler2D pnQueryB;
-layout(rgba32f, binding = 3) writeonly uniform image2D pnResult;
+#include "poisson_pcss_query.h"
 
-#include "poisson_pcss.h"
-
-layout(std140, binding = 4) uniform PnPoissonQueryParams {
-  vec2 points[PN_POISSON_MAX_SAMPLES];  // std140: stride 16 bytes
-  int inPlace;
-} pnParams;
+layout(binding = PN_POISSON_QUERY_MAP_BINDING) uniform sampler2D pnDepthMap;
+layout(binding = PN_POISSON_QUERY_A_BINDING) uniform sampler2D pnQueryA;
+layout(binding = PN_POISSON_QUERY_B_BINDING) uniform sampler2D pnQueryB;
+layout(rgba32f, binding = PN_POISSON_QUERY_RESULT_IMAGE) writeonly uniform image2D pnResult;
 
 #ifdef PN_QUERY_DISK_IN_BLOCK
 #define PN_POISSON_DISK_ARRAY pnParams.points

@@ -11,16 +11,12 @@
 #include "check/module_check.h"
 #include "core/query_grid.h"
 #include "passes/region_pass.h"
-#include "pcss_regions.h"  // glsl/pcss_regions.h: PN_REGION_WINDOW, _EXACT, _CENTRED
 #include "pipeline/pcss_settings.h"
 #include "reference/region_reference.h"
 
 namespace pn {
 
 // The pipeline hands RegionMode to pcss_regions.glsl as its int value (regionMode).
-static_assert(static_cast<int>(RegionMode::window) == PN_REGION_WINDOW, "RegionMode::window == PN_REGION_WINDOW");
-static_assert(static_cast<int>(RegionMode::exact) == PN_REGION_EXACT, "RegionMode::exact == PN_REGION_EXACT");
-static_assert(static_cast<int>(RegionMode::centred) == PN_REGION_CENTRED, "RegionMode::centred == PN_REGION_CENTRED");
 
 namespace {
 

@@ -108,12 +108,4 @@ GlObject link_raster_pass(const Context& context, const SourceTree& tree, const 
   return link_program(context, stem, {&vertex, &fragment});
 }
 
-GlObject bind_uniform_buffer(const Context& context, GLuint binding, const void* data, size_t size) {
-  GlObject buffer(context, GlKind::buffer);
-  context.gl().NamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(size), data, 0);
-  context.gl().BindBufferBase(GL_UNIFORM_BUFFER, binding, buffer.id());
-  context.throw_if_gl_error("uniform buffer");
-  return buffer;
-}
-
 }  // namespace pn

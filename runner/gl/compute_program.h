@@ -45,7 +45,4 @@ ComputeProgram compile_pass(const Context& context, const SourceTree& tree, cons
 // Links `stem`.vert and `stem`.frag (paths under the glsl root, e.g. "passes/gbuffer").
 GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& stem);
 
-// A std140 uniform buffer holding `size` bytes, bound to `binding`.
-GlObject bind_uniform_buffer(const Context& context, GLuint binding, const void* data, size_t size);
-
 }  // namespace pn

@@ -5,6 +5,7 @@
 #include "core/query_grid.h"
 #include "gl/pass_bindings.h"
 #include "gl/texture.h"
+#include "passes/pcf_query.h"
 
 namespace pn {
 namespace {
@@ -32,10 +33,10 @@ std::vector<PcfQueryResult> PcfQueryPass::run(const GlObject& depth_map, const s
   const GlObject results = make_float_texture(*context_, image_a.width, image_a.height, 4);
   {
     PassBindings bind(*context_);
-    bind.texture(0, depth_map);
-    bind.texture(1, texture_a);
-    bind.texture(2, texture_b);
-    bind.image(3, results, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.texture(PN_PCF_QUERY_MAP_BINDING, depth_map);
+    bind.texture(PN_PCF_QUERY_A_BINDING, texture_a);
+    bind.texture(PN_PCF_QUERY_B_BINDING, texture_b);
+    bind.image(PN_PCF_QUERY_RESULT_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
     program_.dispatch(image_a.width, image_a.height);
   }
   const Image r = read_float_texture(*context_, results, image_a.width, image_a.height, 4);

@@ -7,22 +7,17 @@
 #include "core/error.h"
 #include "core/query_grid.h"
 #include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "gl/texture.h"
-#include "poisson_pcss.h"
+
+namespace pn::glsl {
+#include "passes/poisson_pcss_query.h"
+PN_STD140_SIZE(PnPoissonQueryParams, 16 * PN_POISSON_MAX_SAMPLES + 16);
+PN_STD140_OFFSET(PnPoissonQueryParams, points[1], 16);
+PN_STD140_OFFSET(PnPoissonQueryParams, inPlace, 16 * PN_POISSON_MAX_SAMPLES);
+}  // namespace pn::glsl
 
 namespace pn {
-namespace {
-
-// passes/poisson_pcss_query.comp's PnPoissonQueryParams, std140: vec2 points[PN_POISSON_MAX_SAMPLES]
-// (array stride 16: the xy of each 4-float row), then int inPlace.
-constexpr GLuint kQueryBlockBinding = 4;
-struct QueryBlock {
-  float points[PN_POISSON_MAX_SAMPLES][4];
-  std::int32_t in_place, padding[3];
-};
-static_assert(offsetof(QueryBlock, in_place) == 16 * PN_POISSON_MAX_SAMPLES, "std140 layout of PnPoissonQueryParams");
-
-}  // namespace
 
 PoissonPcssQueryPass::PoissonPcssQueryPass(const Context& context, const SourceTree& tree)
     : context_(&context),
@@ -36,9 +31,9 @@ std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const GlObject& dept
   if (points.size() > PN_POISSON_MAX_SAMPLES)
     throw Error("Poisson disk of " + std::to_string(points.size()) + " points: expected at most " +
                 std::to_string(PN_POISSON_MAX_SAMPLES));
-  QueryBlock block{};
-  for (size_t i = 0; i < points.size(); ++i) block.points[i][0] = points[i].x, block.points[i][1] = points[i].y;
-  block.in_place = source == PoissonDiskSource::parameter ? 0 : 1;
+  glsl::PnPoissonQueryParams block{};
+  for (size_t i = 0; i < points.size(); ++i) block.points[i] = {points[i].x, points[i].y};
+  block.inPlace = source == PoissonDiskSource::parameter ? 0 : 1;
 
   std::vector<Query> a, b;
   for (const PoissonPcssGpuQuery& q : queries) {
@@ -51,11 +46,11 @@ std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const GlObject& dept
   const GlObject results = make_float_texture(*context_, image_a.width, image_a.height, 4);
   {
     PassBindings bind(*context_);
-    bind.uniform_data(kQueryBlockBinding, &block, sizeof block);
-    bind.texture(0, depth_map);
-    bind.texture(1, texture_a);
-    bind.texture(2, texture_b);
-    bind.image(3, results, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.uniform(block);
+    bind.texture(PN_POISSON_QUERY_MAP_BINDING, depth_map);
+    bind.texture(PN_POISSON_QUERY_A_BINDING, texture_a);
+    bind.texture(PN_POISSON_QUERY_B_BINDING, texture_b);
+    bind.image(PN_POISSON_QUERY_RESULT_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
     (source == PoissonDiskSource::block ? block_program_ : program_).dispatch(image_a.width, image_a.height);
   }
   const Image r = read_float_texture(*context_, results, image_a.width, image_a.height, 4);

@@ -277,14 +277,14 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
       if (search.at(x, y, 0) > 0.0f) ++s.receivers;
       if (search.at(x, y, 3) >= 0.0f) {
         ++s.searched;
-        if (search_parents.at(x, y) == 0.0f) {
+        if (search_parents.at(x, y) == static_cast<float>(PN_REUSE_NONE)) {
           ++s.search_computed;
           s.blocker_work += blockers.at(x, y, 3);
         }
       }
       if (filter.at(x, y, 3) >= 0.0f) {
         ++s.filtered;
-        if (filter_parents.at(x, y) == 0.0f) {
+        if (filter_parents.at(x, y) == static_cast<float>(PN_REUSE_NONE)) {
           ++s.filter_computed;
           s.occlusion_work += occlusion.at(x, y, 3);
         }

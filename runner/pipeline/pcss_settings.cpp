@@ -14,11 +14,14 @@ void PcssSettings::validate() const {
   };
   if (!std::isfinite(bias) || bias < 0) throw bad("bias", bias, "a finite number >= 0");
   if (!std::isfinite(filter_scale) || filter_scale < 0) throw bad("filter scale", filter_scale, "a finite number >= 0");
-  if (refine_iterations < 0 || refine_iterations > 16) throw bad("refine iterations", refine_iterations, "0..16");
+  const std::string iterations = "0.." + std::to_string(PN_REFINE_MAX_ITERATIONS);  // pcss_regions.glsl's loop bound
+  if (refine_iterations < 0 || refine_iterations > PN_REFINE_MAX_ITERATIONS)
+    throw bad("refine iterations", refine_iterations, iterations.c_str());
   if (leaf_side < 1 || leaf_side > 8192) throw bad("leaf side", leaf_side, "1..8192");
   if (node_budget < 1) throw bad("node budget", node_budget, ">= 1");
-  if (search_tile < 0 || search_tile > 16) throw bad("search reuse tile", search_tile, "0 (off) or 1..16");
-  if (filter_tile < 0 || filter_tile > 16) throw bad("filter reuse tile", filter_tile, "0 (off) or 1..16");
+  const std::string tiles = "0 (off) or 1.." + std::to_string(kReuseMaxTile);  // reuse.glsl
+  if (search_tile < 0 || search_tile > kReuseMaxTile) throw bad("search reuse tile", search_tile, tiles.c_str());
+  if (filter_tile < 0 || filter_tile > kReuseMaxTile) throw bad("filter reuse tile", filter_tile, tiles.c_str());
   for (float s : {sigma1, sigma2, sigma3})
     if (!(s >= 0) || !std::isfinite(s)) throw bad("similarity bound", s, "a finite number >= 0");
   const std::string samples = "1.." + std::to_string(PN_POISSON_MAX_SAMPLES);  // poisson_pcss.glsl's disk array

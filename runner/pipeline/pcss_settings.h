@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "poisson_pcss.h"  // PN_POISSON_*: glsl/poisson_pcss.h, shared with the shaders
+#include "pcss_regions.h"
 #include "reference/blur_reference.h"
+#include "reference/reuse_reference.h"
 #include "reference/traversal_reference.h"
 
 namespace pn {
@@ -21,9 +23,9 @@ enum class Estimator {
 
 // Which texels stand for a region of centre (x, y) and side s (pcss_regions.glsl).
 enum class RegionMode {
-  window = 0,    // the paper's power-of-two window, Steps 1-7 literally (region.glsl)
-  exact = 1,     // the n×n texels nearest the centre, n = round(s) (no approximation)
-  centred = 2,   // the window's side, centred on (x, y) (pnRegionApproximateCentred)
+  window = PN_REGION_WINDOW,    // the paper's power-of-two window, Steps 1-7 literally (region.glsl)
+  exact = PN_REGION_EXACT,      // the n×n texels nearest the centre, n = round(s) (no approximation)
+  centred = PN_REGION_CENTRED,  // the window's side, centred on (x, y) (pnRegionApproximateCentred)
 };
 
 // How the GPU skips the pixels that need not compute in Steps 4 and 5 — lit

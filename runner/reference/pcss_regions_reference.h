@@ -27,16 +27,16 @@
 #include "core/image.h"
 #include "pipeline/pcss_settings.h"  // RegionMode
 #include "reference/traversal_reference.h"  // Rect
+#include "pcss_regions.h"
 #include "scene/light_model.h"
 
 namespace pn {
 
-// The module's loop bound (PN_REFINE_MAX_ITERATIONS, pcss_regions.glsl): more
-// iterations than this refine no further.
-inline constexpr int kRefineMaxIterations = 16;
+// The module's loop bound (pcss_regions.h): more iterations than this refine no further.
+inline constexpr int kRefineMaxIterations = PN_REFINE_MAX_ITERATIONS;
 
-// The side of an entry known to be lit (PN_REGION_LIT).
-inline constexpr double kRegionLit = -1.0;
+// The side of an entry known to be lit.
+inline constexpr double kRegionLit = PN_REGION_LIT;
 
 struct RegionEntry {
   double depth = 0.0, x = 0.0, y = 0.0, side = kRegionLit;
