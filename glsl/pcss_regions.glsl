@@ -8,16 +8,19 @@
 //   Step 3 — search region: PCSS's blocker-search width for d (blockers as
 //   near as the near plane, light_model.glsl), then, when refining (HQEPCSS),
 //   repeated at most `iterations` times:
-//     zmin = min depth of the region (the pyramid, 4 fetches);
+//     zmin = min depth of a square covering the region (the pyramid, 4 fetches);
 //     zmin >= d - bias            -> nothing in the region occludes: lit;
 //     s' = width a blocker at zmin needs (light_model.glsl);
 //     s' >= s                     -> stop; else s = s' and repeat.
 //   The width is decreasing in the blocker depth, so every blocker that can
 //   shadow the receiver (depth >= the true zmin) lies in the shrunk region
-//   as long as zmin is the min of a square covering the region: the exact
-//   mode reads the square that covers pnRegionSquare's rectangle, which makes
-//   refinement lossless; the window modes read the region.glsl window, which
-//   can be smaller than the region (the paper's approximation).
+//   as long as zmin is the min of a square covering the region: Step 3 reads
+//   the square that covers pnRegionSquare's rectangle in every region mode,
+//   so no pixel with a blocker in its search region is marked lit and
+//   refinement is lossless (SPEC §4.7). The region mode applies from Step 4
+//   on: the paper's power-of-two window, pinned to the region's clamped
+//   corner and rounded down, can miss blockers on its +u/+v side, and read
+//   for the lit decision it marked shadowed pixels lit (issue 11).
 //   Step 4 — filter region: from the blocker mean dz (Step 4's traversal),
 //   penumbra by Eq. (1) in texels at the receiver (light_model.glsl), side
 //   s = c · penumbra; no blocker -> lit.
@@ -26,7 +29,7 @@
 //
 // use:
 //   vec4  pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias,
-//                       int iterations, int regionMode)          receiver = G-buffer (u, v, d, valid)
+//                       int iterations)                          receiver = G-buffer (u, v, d, valid)
 //   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
 //   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
@@ -69,26 +72,21 @@ vec4 pnEntryLinkKey(vec4 entry, int mapSize, int regionMode) {
   return vec4(entry.xyz, float(pnEntryWindow(entry, mapSize, regionMode).side));
 }
 
-// Min depth over a square that covers the region (exact), or over its window (literal).
-float pnSearchRegionMin(sampler2DArray pyramid, vec4 entry, int regionMode) {
+// Min depth over a square that covers the entry's exact region (4 fetches).
+float pnSearchRegionMin(sampler2DArray pyramid, vec4 entry) {
   int n = pnPyramidMapSize(pyramid);
-  if (regionMode == PN_REGION_EXACT) {
-    PnRect r = pnEntryRect(entry, n);
-    if (r.size.x == 0 || r.size.y == 0) return pnPyramidFar();
-    return pnPyramidSquareMinMax(pyramid, r.origin, max(r.size.x, r.size.y)).x;
-  }
-  PnWindow w = pnEntryWindow(entry, n, regionMode);
-  return pnPyramidSquareMinMax(pyramid, w.origin, w.side).x;
+  PnRect r = pnEntryRect(entry, n);
+  if (r.size.x == 0 || r.size.y == 0) return pnPyramidFar();
+  return pnPyramidSquareMinMax(pyramid, r.origin, max(r.size.x, r.size.y)).x;
 }
 
-vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations,
-                   int regionMode) {
+vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations) {
   float d = receiver.z;
   if (receiver.w == 0.0 || isnan(d)) return vec4(0.0, 0.0, 0.0, PN_REGION_LIT);
   vec4 entry = vec4(d, receiver.xy, pnLightSearchWidthTexels(light, d));
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations) break;
-    float zmin = pnSearchRegionMin(pyramid, entry, regionMode);
+    float zmin = pnSearchRegionMin(pyramid, entry);
     if (!(zmin < d - bias)) return vec4(entry.xyz, PN_REGION_LIT);
     float side = pnLightBlockerWindowTexels(light, d, zmin);
     if (!(side < entry.w)) break;

@@ -32,7 +32,7 @@ void main() {
   int n = pnPyramidMapSize(pnPyramid);
   PnLight light = PnLight(pnParams.lightWidth, pnParams.lightNear, pnParams.lightNearPlaneWidth, pnParams.mapSize);
   vec4 entry = a;
-  if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z), mode);
+  if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_FILTER) entry = pnFilterEntry(light, a, c.y, b.w != 0.0, c.z);
   PnRect r = pnEntryRect(entry, n);
   PnWindow w = pnEntryWindow(entry, n, mode);

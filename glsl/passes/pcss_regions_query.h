@@ -20,7 +20,7 @@
 #define PN_PCSS_REGIONS_QUERY_PARAMS_BINDING 8
 
 // Query kinds (B.x): what produces the entry whose regions the pass then reports.
-#define PN_PCSS_REGIONS_QUERY_SEARCH 0  // pnSearchEntry(pyramid, light, A, C.x, int(B.z), int(B.y))
+#define PN_PCSS_REGIONS_QUERY_SEARCH 0  // pnSearchEntry(pyramid, light, A, C.x, int(B.z)); B.y: the mode of the regions it reports
 #define PN_PCSS_REGIONS_QUERY_FILTER 1  // pnFilterEntry(light, A, C.y, B.w != 0, C.z)
 #define PN_PCSS_REGIONS_QUERY_ENTRY 2   // A itself
 

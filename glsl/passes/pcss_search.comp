@@ -17,7 +17,7 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnSearchMap)))) return;
   vec4 entry = pnSearchEntry(pnPyramid, pnPcssLight(), texelFetch(pnGBuffer, p, 0), pnPcss.bias,
-                             pnPcss.refineIterations, pnPcss.regionMode);
+                             pnPcss.refineIterations);
   imageStore(pnSearchMap, p, entry);
   imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, pnPyramidMapSize(pnPyramid), pnPcss.regionMode));
 }

@@ -72,9 +72,8 @@ Rect entry_region(const RegionEntry& entry, int n, RegionMode mode) {
   return pcss_square(entry.x, entry.y, entry.side, n, nullptr);
 }
 
-Rect search_min_square(const RegionEntry& entry, int n, RegionMode mode) {
-  const Rect r = entry_region(entry, n, mode);
-  if (mode != RegionMode::exact) return r;
+Rect search_min_square(const RegionEntry& entry, int n) {
+  const Rect r = pcss_square(entry.x, entry.y, entry.side, n, nullptr);
   if (r.width == 0 || r.height == 0) return Rect{};
   const int side = std::min(std::max(r.width, r.height), n);
   return {std::clamp(r.x, 0, n - side), std::clamp(r.y, 0, n - side), side, side};
@@ -96,15 +95,15 @@ double DepthScan::min(const Rect& r) const {
 }
 
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, RegionMode mode, Rounding* rounding) {
+                         int iterations, Rounding* rounding) {
   const double d = receiver.depth;
   if (receiver.valid == 0.0f || std::isnan(d)) return {0.0, 0.0, 0.0, kRegionLit};
   const int n = scan.size();
   const double threshold = d - bias;
   RegionEntry e{d, receiver.u, receiver.v, light.search_width_texels(d)};
   for (int i = 0; i < std::min(iterations, kRefineMaxIterations); ++i) {
-    if (rounding) note_region(e, n, mode, *rounding);
-    const double zmin = scan.min(search_min_square(e, n, mode));
+    if (rounding) note_region(e, n, RegionMode::exact, *rounding);
+    const double zmin = scan.min(search_min_square(e, n));
     if (rounding && bias != 0.0 && std::isfinite(zmin) && std::isfinite(threshold) &&
         std::fabs(zmin - threshold) <= rounding->relative * std::fabs(threshold))
       rounding->ambiguous = true;  // float rounds d - bias

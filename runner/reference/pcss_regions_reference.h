@@ -9,7 +9,7 @@
 //   power-of-two window of SPEC §4.2 (region_reference.h), literal or centred;
 // - Step 3: PCSS's search width for d (blockers as near as the near plane),
 //   refined at most `iterations` times (the module's bound is 16): read zmin,
-//   the min depth over the square the mode reads for the region; zmin >= d - bias
+//   the min depth over a square covering the exact region, in every mode; zmin >= d - bias
 //   → lit; the width a blocker at zmin needs; stop when it no longer shrinks;
 // - Step 4: side = c · penumbra (Eq. 1, in texels at the receiver), lit when
 //   there is no blocker;
@@ -56,11 +56,10 @@ Rect pcss_square(double x, double y, double side, int n, double* margin);
 // (evaluated from the entry's float values, as SPEC §4.2's Step 1 is in float32).
 Rect entry_region(const RegionEntry& entry, int n, RegionMode mode);
 
-// The square whose min depth Step 3 reads for an entry. Exact mode: the square of
-// side max(w, h) at the exact region's origin, moved inside the map — it covers the
-// region (SPEC §4.7), empty when the region is; window modes: the window itself
-// (the paper's approximation, which may miss part of the region).
-Rect search_min_square(const RegionEntry& entry, int n, RegionMode mode);
+// The square whose min depth Step 3 reads for an entry, in every region mode: the
+// square of side max(w, h) at the exact region's origin, moved inside the map — it
+// covers the region (SPEC §4.7); empty when the region is.
+Rect search_min_square(const RegionEntry& entry, int n);
 
 // Min sanitized depth over rectangles of one map, by scanning every texel of each
 // (remembered per rectangle: refinement and the check's cases read the same ones often).
@@ -92,7 +91,7 @@ struct Rounding {
 // Step 3. Invalid receivers and NaN depths: lit (0, 0, 0, lit). `iterations` is
 // bounded by kRefineMaxIterations; 0 gives PCSS's search width as is.
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, RegionMode mode, Rounding* rounding = nullptr);
+                         int iterations, Rounding* rounding = nullptr);
 
 // Step 4, from the search entry and the blocker mean of its pixel.
 RegionEntry filter_entry(const LightModel& light, const RegionEntry& search, double blocker_mean, bool has_blocker,
