@@ -22,6 +22,7 @@
 #include <string>
 
 #include "check/module_check.h"
+#include "check/occlusion_sums.h"
 #include "core/error.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
@@ -33,7 +34,6 @@ namespace {
 
 constexpr int kMapSize = 300;
 constexpr int kSmallMaxSide = 64;  // the bounded variant's PN_PCF_MAX_SIDE
-constexpr double kUnit = 1.0 / 16777216.0;  // u = 2^-24
 
 struct Window {
   PcfWindow w;
@@ -92,33 +92,11 @@ bool threshold_tie(const Image& map, const PcfCover& c, const Receiver& r) {
   return false;
 }
 
-struct Group {
-  std::vector<PcfSums> expected;
-  std::vector<PcfQueryResult> observed;
-  long left_out = 0;
-};
-
-void add_group(std::vector<CaseResult>& results, const std::string& name, const Group& g) {
-  const int n = static_cast<int>(g.expected.size());
-  if (n == 0) return;
-  Image e_counts(n, 1, 2), o_counts(n, 1, 2), e_sum(n, 1), o_sum(n, 1);
-  long most = 0;
-  for (int k = 0; k < n; ++k) {
-    const PcfSums& e = g.expected[static_cast<size_t>(k)];
-    const PcfQueryResult& o = g.observed[static_cast<size_t>(k)];
-    e_counts.at(k, 0, 0) = static_cast<float>(e.occluders), o_counts.at(k, 0, 0) = o.occluders;
-    e_counts.at(k, 0, 1) = static_cast<float>(e.texels), o_counts.at(k, 0, 1) = o.texels;
-    e_sum.at(k, 0) = static_cast<float>(e.depth_sum), o_sum.at(k, 0) = o.depth_sum;
-    most = std::max(most, e.occluders);
-  }
-  const std::string count = " (" + std::to_string(n) + " queries, query k at (k, 0)";
-  const std::string left = g.left_out > 0 ? "; " + std::to_string(g.left_out) + " left out: dP - bias ties a texel" : "";
-  const Tolerance exact = Tolerance::exact();
-  results.push_back({name + ": occluders, texels" + count + ")", exact, compare(e_counts, o_counts, exact)});
-  const double m = static_cast<double>(most);
-  const Tolerance sum_tol = Tolerance::relative((m + 1.0) * kUnit * (1.0 + m * kUnit));
-  results.push_back({name + ": depth sum" + count + left + ")", sum_tol, compare(e_sum, o_sum, sum_tol)});
+OcclusionSums sums(const PcfSums& s) {
+  return {static_cast<double>(s.occluders), s.depth_sum, static_cast<double>(s.texels)};
 }
+
+OcclusionSums sums(const PcfQueryResult& s) { return {s.occluders, s.depth_sum, s.texels}; }
 
 }  // namespace
 
@@ -162,20 +140,20 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
         }
       }
       const std::vector<PcfQueryResult> observed = v.pass->run(texture, queries);
-      Group groups[2];
+      OcclusionBatch groups[2];
       for (size_t k = 0; k < queries.size(); ++k) {
-        Group& g = groups[small[k] ? 0 : 1];
+        OcclusionBatch& g = groups[small[k] ? 0 : 1];
         if (tie[k]) {
           ++g.left_out;
           continue;
         }
-        g.expected.push_back(expected[k]);
-        g.observed.push_back(observed[k]);
+        g.expected.push_back(sums(expected[k]));
+        g.observed.push_back(sums(observed[k]));
       }
       queries_total += static_cast<long>(queries.size());
       left_out_total += groups[0].left_out + groups[1].left_out;
-      add_group(results, label + " " + v.name + ", sides <= 16", groups[0]);
-      add_group(results, label + " " + v.name + ", sides > 16", groups[1]);
+      add_occlusion_cases(results, label + " " + v.name + ", sides <= 16", groups[0], "texels", "dP - bias ties a texel");
+      add_occlusion_cases(results, label + " " + v.name + ", sides > 16", groups[1], "texels", "dP - bias ties a texel");
     }
   }
   const bool few = left_out_total * 100 <= queries_total;

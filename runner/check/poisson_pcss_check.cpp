@@ -26,6 +26,7 @@
 #include <string>
 
 #include "check/module_check.h"
+#include "check/occlusion_sums.h"
 #include "core/error.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
@@ -40,7 +41,6 @@ namespace {
 
 constexpr int kMapSize = 257;
 constexpr std::uint32_t kParameterDiskSeed = 0x5eed0064u;  // the pipeline's PCF disk
-constexpr double kUnit = 1.0 / 16777216.0;                 // u = 2^-24
 
 // Whether float rounding may change which texel a sample reads, or how a read texel compares.
 bool ambiguous(const Image& map, const std::vector<Sample>& points, const PoissonPcssQuery& q) {
@@ -60,34 +60,11 @@ bool ambiguous(const Image& map, const std::vector<Sample>& points, const Poisso
   return false;
 }
 
-struct Group {
-  std::vector<PoissonPcssSums> expected;
-  std::vector<PoissonPcssGpuResult> observed;
-  long left_out = 0;
-};
-
-void add_group(std::vector<CaseResult>& results, const std::string& name, const Group& g) {
-  const int n = static_cast<int>(g.expected.size());
-  if (n == 0) return;
-  Image e_counts(n, 1, 2), o_counts(n, 1, 2), e_sum(n, 1), o_sum(n, 1);
-  long most = 0;
-  for (int k = 0; k < n; ++k) {
-    const PoissonPcssSums& e = g.expected[static_cast<size_t>(k)];
-    const PoissonPcssGpuResult& o = g.observed[static_cast<size_t>(k)];
-    e_counts.at(k, 0, 0) = static_cast<float>(e.occluders), o_counts.at(k, 0, 0) = o.occluders;
-    e_counts.at(k, 0, 1) = static_cast<float>(e.samples), o_counts.at(k, 0, 1) = o.samples;
-    e_sum.at(k, 0) = static_cast<float>(e.depth_sum), o_sum.at(k, 0) = o.depth_sum;
-    most = std::max(most, e.occluders);
-  }
-  const std::string count = " (" + std::to_string(n) + " queries, query k at (k, 0)";
-  const std::string left =
-      g.left_out > 0 ? "; " + std::to_string(g.left_out) + " left out: a sample on a texel edge or a tie" : "";
-  const Tolerance exact = Tolerance::exact();
-  results.push_back({name + ": occluders, samples" + count + left + ")", exact, compare(e_counts, o_counts, exact)});
-  const double m = static_cast<double>(most);
-  const Tolerance sum_tol = Tolerance::relative((m + 1.0) * kUnit * (1.0 + m * kUnit));
-  results.push_back({name + ": depth sum" + count + ")", sum_tol, compare(e_sum, o_sum, sum_tol)});
+OcclusionSums sums(const PoissonPcssSums& s) {
+  return {static_cast<double>(s.occluders), s.depth_sum, static_cast<double>(s.samples)};
 }
+
+OcclusionSums sums(const PoissonPcssGpuResult& s) { return {s.occluders, s.depth_sum, s.samples}; }
 
 }  // namespace
 
@@ -148,23 +125,23 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
               cpu.push_back({x, y, diameter, receiver, bias, count, rx, ry});
             }
       const std::vector<PoissonPcssGpuResult> observed = pass.run(texture, parameter_disk, source, gpu);
-      Group groups[2];  // rotation off, on
+      OcclusionBatch groups[2];  // rotation off, on
       for (size_t k = 0; k < cpu.size(); ++k) {
-        Group& g = groups[cpu[k].rotation_y != 0.0 || cpu[k].rotation_x != 1.0 ? 1 : 0];
+        OcclusionBatch& g = groups[cpu[k].rotation_y != 0.0 || cpu[k].rotation_x != 1.0 ? 1 : 0];
         if (ambiguous(map, points, cpu[k])) {
           ++g.left_out;
           continue;
         }
-        g.expected.push_back(poisson_pcss_reference(map, points, cpu[k]));
-        g.observed.push_back(observed[k]);
+        g.expected.push_back(sums(poisson_pcss_reference(map, points, cpu[k])));
+        g.observed.push_back(sums(observed[k]));
       }
       queries_total += static_cast<long>(cpu.size());
       left_out_total += groups[0].left_out + groups[1].left_out;
       const std::string disk = constant ? " constant disk (16 in place, pnPoissonOcclusionDisk)"
                                : source == PoissonDiskSource::block ? " block disk (64 in place, pnPoissonOcclusionDisk)"
                                                                     : " parameter disk (64, pnPoissonOcclusion)";
-      add_group(results, label + disk + ", rotation off", groups[0]);
-      add_group(results, label + disk + ", rotation on", groups[1]);
+      add_occlusion_cases(results, label + disk + ", rotation off", groups[0], "samples", "a sample on a texel edge or a tie");
+      add_occlusion_cases(results, label + disk + ", rotation on", groups[1], "samples", "a sample on a texel edge or a tie");
     }
   }
   const bool few = left_out_total * 20 <= queries_total;

@@ -133,12 +133,17 @@ float ray_cast_light_depth(const Scene& scene, int x, int y) {
   return static_cast<float>(nearest_hit(scene, origin, direction, scene.light.near_plane, scene.light.far_plane));
 }
 
-std::optional<SurfacePoint> ray_cast_surface_point(const Scene& scene, int x, int y, int size) {
-  // From the camera's matrices alone, near plane to far plane, in double.
-  const glm::dmat4 inverse = glm::inverse(glm::dmat4(scene.camera_projection() * scene.camera_view()));
+CameraRay camera_ray(const glm::dmat4& inverse_view_projection, int x, int y, int size) {
   const double nx = 2.0 * (x + 0.5) / size - 1.0, ny = 2.0 * (y + 0.5) / size - 1.0;
-  const glm::dvec4 near4 = inverse * glm::dvec4(nx, ny, -1.0, 1.0), far4 = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
-  const glm::dvec3 origin = glm::dvec3(near4) / near4.w, direction = glm::dvec3(far4) / far4.w - origin;
+  const glm::dvec4 near4 = inverse_view_projection * glm::dvec4(nx, ny, -1.0, 1.0);
+  const glm::dvec4 far4 = inverse_view_projection * glm::dvec4(nx, ny, 1.0, 1.0);
+  const glm::dvec3 origin = glm::dvec3(near4) / near4.w;
+  return {origin, glm::dvec3(far4) / far4.w - origin};
+}
+
+std::optional<SurfacePoint> ray_cast_surface_point(const Scene& scene, int x, int y, int size) {
+  const auto [origin, direction] =
+      camera_ray(glm::inverse(glm::dmat4(scene.camera_projection() * scene.camera_view())), x, y, size);
   std::optional<SurfacePoint> nearest;
   double nearest_t = INFINITY;
   for (size_t b = 0; b < scene.boxes.size(); ++b)

@@ -66,6 +66,15 @@ struct SurfacePoint {
   int box = -1;  // index into Scene::boxes
 };
 
+// The ray from the camera through the centre of pixel (x, y) of a size×size
+// screen (x, y from the lower left), from the camera's matrices alone
+// (`inverse_view_projection` = inverse(P · V), in double): from the near plane
+// (t = 0) to the far plane (t = 1).
+struct CameraRay {
+  glm::dvec3 origin, direction;
+};
+CameraRay camera_ray(const glm::dmat4& inverse_view_projection, int x, int y, int size);
+
 // Where the ray from the camera through the centre of pixel (x, y) of a
 // size×size screen (x, y from the lower left) first meets a box, within the
 // camera's near and far planes; none when it meets nothing.

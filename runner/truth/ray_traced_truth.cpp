@@ -63,12 +63,7 @@ TruthTracer::TruthTracer(const Scene& scene, int screen_size, const TruthSetting
       offset_(kShadowOffsetPerExtent * extent_of(triangles_)) {}
 
 TruthTracer::Ray TruthTracer::camera_ray(int x, int y) const {
-  // As ray_cast_surface_point (scene.cpp): from the camera's matrices alone, near plane to far plane, in double.
-  const double nx = 2.0 * (x + 0.5) / screen_size_ - 1.0, ny = 2.0 * (y + 0.5) / screen_size_ - 1.0;
-  const glm::dvec4 near4 = camera_inverse_ * glm::dvec4(nx, ny, -1.0, 1.0);
-  const glm::dvec4 far4 = camera_inverse_ * glm::dvec4(nx, ny, 1.0, 1.0);
-  const glm::dvec3 origin = glm::dvec3(near4) / near4.w;
-  return {origin, glm::dvec3(far4) / far4.w - origin};
+  return pn::camera_ray(camera_inverse_, x, y, screen_size_);  // the same ray as ray_cast_surface_point's
 }
 
 TruthSurface TruthTracer::surface(int x, int y) const {

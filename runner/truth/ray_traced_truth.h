@@ -66,10 +66,8 @@ class TruthTracer {
 
   // The ray from the camera's near plane through the centre of pixel (x, y)
   // (from the lower left) to its far plane, t in [0, 1]: the convention of ray_cast_surface_point.
-  struct Ray {
-    glm::dvec3 origin, direction;
-  };
-  Ray camera_ray(int x, int y) const;
+  using Ray = CameraRay;
+  Ray camera_ray(int x, int y) const;  // scene.h's camera_ray on this screen
   TruthSurface surface(int x, int y) const;
   // A surface point's surface as the truth sees it (position, normal), e.g. one worked by hand.
   TruthSurface surface_at(const glm::dvec3& position, const glm::dvec3& camera_side_normal) const;
