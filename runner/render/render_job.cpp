@@ -90,7 +90,7 @@ Canvas draw_sheet(const std::string& title, const Comparison& c) {
     const TechniqueResult* r = i == 0 ? nullptr : &c.results[static_cast<size_t>(i - 1)];
     const Image& visibility = r ? r->visibility : c.truth;
     sheet.text(font, x, y, r ? r->name : "truth (ray traced)", text, ink);
-    sheet.text(font, x, y + line, score_label("truth", r ? std::optional<Scores>(r->vs_truth) : std::nullopt), text - 2, ink);
+    sheet.text(font, x, y + line, r ? score_label("truth", r->vs_truth) : "the reference of the scores", text - 2, ink);
     sheet.text(font, x, y + 2 * line, score_label("exact", r ? r->vs_exact : c.truth_vs_exact), text - 2, ink);
     sheet.rgb(flip_rows(compose_lit_image(c.surface, visibility)), x, top, 1);
     sheet.grey(flip_rows(visibility), 0, x, top + size + gap, 1, 0.0f, 1.0f, {255, 0, 255});
