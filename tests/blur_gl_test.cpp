@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "gl/texture.h"
 #include "broken_copy.h"
+#include "driver_bundle.h"
 #include "gl_test_context.h"
 #include "fixture/texture_fixture.h"
 #include "shader/flatten.h"
@@ -55,18 +56,9 @@ TEST_CASE("negative: a copy of blur.glsl with one wrong weight fails with where 
 }
 
 TEST_CASE("the bundle of blur.glsl, #line markers and all, compiles with the GL driver") {
-  const auto& context = pn::test::gl_context();
-  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
   for (const char* module : {"blur.glsl", "passes/blur.comp"}) {
-    const pn::ShaderSource bundle = pn::standalone_source(pn::flatten(tree, module), pn::Target::gl450);
-    pn::GlObject shader(context, pn::GlKind::shader, GL_COMPUTE_SHADER);
-    const char* text = bundle.text.c_str();
-    context.gl().ShaderSource(shader.id(), 1, &text, nullptr);
-    context.gl().CompileShader(shader.id());
-    GLint ok = 0;
-    context.gl().GetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     INFO(module);
-    CHECK(ok == GL_TRUE);
+    CHECK(pn::test::driver_compiles_bundle(module));
   }
 }
 

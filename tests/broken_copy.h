@@ -42,6 +42,17 @@ inline size_t failing_cases(const std::vector<CaseResult>& results) {
   return n;
 }
 
+// Whether a case's name contains `part`.
+inline bool named(const CaseResult& r, const char* part) { return r.name.find(part) != std::string::npos; }
+
+// Failing cases whose name contains `part`.
+inline size_t failing_named(const std::vector<CaseResult>& results, const char* part) {
+  size_t n = 0;
+  for (const auto& r : results)
+    if (!r.comparison.pass && named(r, part)) ++n;
+  return n;
+}
+
 // A copy of glsl/ with the first `from` in `file` replaced by `to` (for each
 // pair); removed on destruction.
 class BrokenCopy {

@@ -13,21 +13,13 @@ using pn::test::check_all_pass;
 using pn::test::failing_cases;
 using pn::test::run_check;
 
+using pn::test::failing_named;
+using pn::test::named;
+
 namespace {
 
 const pn::ModuleCheck& regions() { return pn::find_module_check("pcss_regions"); }
 
-bool named(const pn::CaseResult& r, const char* part) { return r.name.find(part) != std::string::npos; }
-
-// Failing cases whose name has `part`; every failing case must say where / expected / observed.
-size_t failing_named(const std::vector<pn::CaseResult>& results, const char* part) {
-  size_t n = 0;
-  for (const auto& r : results) {
-    INFO(r.name << ": " << r.comparison.where(r.tolerance));
-    if (!r.comparison.pass && named(r, part)) ++n;
-  }
-  return n;
-}
 
 }  // namespace
 

@@ -8,15 +8,14 @@
 #include "check/module_check.h"
 #include "fixture/texture_fixture.h"
 #include "gl/objects.h"
+#include "driver_bundle.h"
 #include "gl_test_context.h"
-#include "shader/flatten.h"
-#include "shader/target.h"
+
+using pn::test::named;
 
 namespace {
 
 const pn::ModuleCheck& poisson() { return pn::find_module_check("poisson_pcss"); }
-
-bool named(const pn::CaseResult& r, const char* part) { return r.name.find(part) != std::string::npos; }
 
 }  // namespace
 
@@ -68,17 +67,8 @@ TEST_CASE("negative: a copy of poisson_pcss.glsl whose in-place loop takes one s
 }
 
 TEST_CASE("the bundles of poisson_pcss.glsl, poisson_pcss_query.comp and pcss_poisson.comp compile with the GL driver") {
-  const auto& context = pn::test::gl_context();
-  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
   for (const char* module : {"poisson_pcss.glsl", "passes/poisson_pcss_query.comp", "passes/pcss_poisson.comp"}) {
-    const pn::ShaderSource bundle = pn::standalone_source(pn::flatten(tree, module), pn::Target::gl450);
-    pn::GlObject shader(context, pn::GlKind::shader, GL_COMPUTE_SHADER);
-    const char* text = bundle.text.c_str();
-    context.gl().ShaderSource(shader.id(), 1, &text, nullptr);
-    context.gl().CompileShader(shader.id());
-    GLint ok = 0;
-    context.gl().GetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     INFO(module);
-    CHECK(ok == GL_TRUE);
+    CHECK(pn::test::driver_compiles_bundle(module));
   }
 }
