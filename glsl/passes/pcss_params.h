@@ -20,6 +20,7 @@
 
 // Image units (GLSL ES 3.1 guarantees 4: 0..3).
 #define PN_PCSS_FILTER_MAP_IMAGE 0    // pcss_filter: the filter-region map
+#define PN_PCSS_RECEIVER_DEPTH_IMAGE 1  // pcss_search: r32f light depth of the receiver, +Inf where no surface (Step 6's depth)
 #define PN_PCSS_BLOCKER_MEAN_IMAGE 1  // pcss_filter: the blocker mean, 0 if none
 #define PN_PCSS_FILTER_KEYS_IMAGE 2   // pcss_filter: what Step 5's reuse compares
 #define PN_PCSS_SEARCH_MAP_IMAGE 2    // pcss_search: the search-region map

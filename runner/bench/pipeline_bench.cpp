@@ -44,11 +44,12 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
   for (const PipelineBenchSize& s : sizes) {
     out << "size " << s.size << " (shadow map = screen), shadow map " << std::fixed << std::setprecision(2)
         << s.comparison.shadow_map_ms << " ms:\n";
-    out << std::left << std::setw(22) << "method" << std::right << std::setw(11) << "total ms" << std::setw(10)
+    const int name = name_column_width(s.comparison);
+    out << std::left << std::setw(name) << "method" << std::right << std::setw(11) << "total ms" << std::setw(10)
         << "x exact" << std::setw(10) << "x Poisson" << "   stages (ms)\n";
     for (size_t i = 0; i < s.comparison.results.size(); ++i) {
       const TechniqueResult& r = s.comparison.results[i];
-      out << std::left << std::setw(22) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(11)
+      out << std::left << std::setw(name) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(11)
           << r.measurement.total_ms << std::setw(10) << s.speedup_vs_exact[i] << std::setw(10)
           << s.speedup_vs_poisson[i] << "  ";
       for (const auto& [name, ms] : r.measurement.stage_ms)

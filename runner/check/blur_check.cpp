@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "check/blur_tolerance.h"
 #include "check/module_check.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
@@ -28,13 +29,6 @@ std::vector<BlurCase> default_cases() {
       {{3, 1.0, true, 0.05}, "step_edge"},
       {{3, 1.0, true, 0.05}, "nonfinite"},
   };
-}
-
-// Float rounding bound: each of the two passes sums 2r+1 products whose
-// weights come from float exp() and a float division, so the result is within
-// a few ulps per tap of max |v|; 16 ulps per tap is a generous, stated bound.
-Tolerance blur_tolerance(const BlurParams& params, const Image& source) {
-  return Tolerance::absolute(16.0 * (2 * params.radius + 1) * FLT_EPSILON * largest_finite_magnitude(source, 1.0f));
 }
 
 std::string case_name(const char* fixture, int w, int h, const BlurCase& c) {

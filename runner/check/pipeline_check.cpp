@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <string>
 
+#include "check/blur_tolerance.h"
 #include "check/module_check.h"
 #include "figures/lit_image.h"
 #include "gl/texture.h"
@@ -47,6 +48,25 @@ int leave_out_ambiguous(const PcssReference& reference, Image& observed) {
     for (int x = 0; x < observed.width; ++x)
       if (reference.ambiguous.at(x, y) != 0.0f) observed.at(x, y) = reference.visibility.at(x, y), ++count;
   return count;
+}
+
+// Pixels that see no surface (G-buffer w = 0) must be exactly 1 (lit); elsewhere the image's own value.
+CaseResult sky_stays_lit(const std::string& name, const Image& gbuffer, const Image& visibility) {
+  Image expected = visibility;
+  int sky = 0;
+  for (int y = 0; y < visibility.height; ++y)
+    for (int x = 0; x < visibility.width; ++x)
+      if (gbuffer.at(x, y, 3) == 0.0f) expected.at(x, y) = 1.0f, ++sky;
+  return {name + " (" + std::to_string(sky) + " pixels)", Tolerance::exact(), compare(expected, visibility, Tolerance::exact())};
+}
+
+// The depth Step 6's blur cuts at, from the G-buffer on the CPU: the receiver's light depth, +Inf where none.
+Image receiver_depths(const Image& gbuffer) {
+  Image out(gbuffer.width, gbuffer.height);
+  for (int y = 0; y < gbuffer.height; ++y)
+    for (int x = 0; x < gbuffer.width; ++x)
+      out.at(x, y) = gbuffer.at(x, y, 3) != 0.0f && std::isfinite(gbuffer.at(x, y, 2)) ? gbuffer.at(x, y, 2) : INFINITY;
+  return out;
 }
 
 // Every texel finite and in [0, 1]: the image must equal itself clamped to
@@ -132,11 +152,14 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const TechniqueInputs inputs = scene_frame.inputs();
     const Image map = read1(context, scene_frame.shadow_map, kMap), gbuffer = read4(context, scene_frame.gbuffer, kScreen);
 
-    // Every registry entry through the technique seam: a visibility image, finite and in [0, 1].
+    // Every registry entry through the technique seam: a visibility image, finite and in [0, 1],
+    // exactly 1 where the pixel sees no surface (no shadow on the sky).
     for (const TechniqueEntry& entry : technique_registry()) {
       const std::unique_ptr<Technique> technique = entry.make()->create(resources);
-      results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]",
-                                      read1(context, technique->run(inputs, true).visibility, kScreen)));
+      const Image visibility = read1(context, technique->run(inputs, true).visibility, kScreen);
+      results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]", visibility));
+      results.push_back(sky_stays_lit(name + ": technique '" + entry.name + "': pixels that see no surface stay lit",
+                                      gbuffer, visibility));
     }
 
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
@@ -173,6 +196,17 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // The two ways of skipping non-representatives compute the same thing.
     const PcssFrame fast_frame = pipeline.run(inputs, fast_pcss());
     reuse_cases(context, name, fast_frame, results);
+
+    // Step 6 cuts at the G-buffer's depth edges and at pixels without a surface: Fast PCSS's blurred map
+    // equals the CPU's depth-aware blur of its unblurred map over the G-buffer's receiver depths.
+    {
+      const BlurParams& blur = fast_frame.settings.blur_params;
+      const Image unblurred = read1(context, fast_frame.visibility, kScreen);
+      const Image expected = blur_depth_aware_reference(unblurred, receiver_depths(gbuffer), blur);
+      const Tolerance tolerance = blur_tolerance(blur, unblurred);
+      results.push_back({name + ": Fast PCSS's Step 6 vs the depth-aware blur over the G-buffer's receiver depths",
+                         tolerance, compare(expected, read1(context, fast_frame.blurred, kScreen), tolerance)});
+    }
     const Image listed = read1(context, fast_frame.soft_shadow(), kScreen);
     PcssSettings branch = fast_pcss();
     branch.skip = WorkSkip::branch;

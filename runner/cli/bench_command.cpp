@@ -3,6 +3,7 @@
 
 #include "bench/pipeline_bench.h"
 #include "bench/pyramid_bench.h"
+#include "bench/sweep_bench.h"
 #include "bench/traversal_bench.h"
 #include "cli/commands.h"
 #include "core/error.h"
@@ -18,18 +19,22 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     int repeats = 15;
     TraversalBenchSetup traversal;
     PipelineBenchSetup pipeline;
+    SweepBenchSetup sweep;
     std::vector<std::string> methods;
     int max_level = 31;
     std::string json;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
-  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline")->required();
-  auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline: map = screen sizes (default 512 1024)")->delimiter(',');
-  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline)");
+  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep")->required();
+  auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
+  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline, 3 for sweep)");
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
-  cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off)")->delimiter(',');
-  cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline: S for the ray-traced truth's S x S light samples (default 16)");
+  cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes)")->delimiter(',');
+  cmd->add_option("--widths", opt->sweep.factors, "sweep: light width factors (default 1,2,4,8)")->delimiter(',');
+  cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep: run exact PCSS only at factors up to this (default: every factor)");
+  cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(',');
+  auto* truth_samples = cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline, sweep: S for the ray-traced truth's S x S light samples (default 16)");
   cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)");
   cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)");
   cmd->add_option("--receivers", opt->traversal.receivers, "traversal: receivers in the batch (default 4096)");
@@ -37,10 +42,17 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->callback([opt, repeats, sizes, &global, &exit_code] {
-    if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline")
-      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline");
+  cmd->callback([opt, repeats, sizes, truth_samples, &global, &exit_code] {
+    if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep")
+      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep");
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
+    if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
+      opt->sweep.methods = opt->pipeline.methods;
+      if (repeats->count() > 0) opt->sweep.repeats = opt->repeats;
+      if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
+      if (truth_samples->count() > 0) opt->sweep.truth_samples = opt->pipeline.truth_samples;
+      validate_sweep_setup(opt->sweep);
+    }
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "
@@ -50,6 +62,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const auto rows = bench_pyramid(*context, tree, opt->sizes, opt->repeats, opt->max_level);
       print_pyramid_bench(std::cout, rows);
       results = pyramid_bench_json(rows);
+    } else if (opt->what == "sweep") {
+      const SweepBench bench = bench_sweep(*context, tree, opt->sweep);
+      print_sweep_bench(std::cout, bench);
+      results = sweep_bench_json(opt->sweep, bench);
     } else if (opt->what == "pipeline") {
       if (repeats->count() > 0) opt->pipeline.repeats = opt->repeats;
       if (sizes->count() > 0) opt->pipeline.sizes = opt->sizes;

@@ -198,7 +198,6 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   settings.validate();
   if (!inputs.shadow_map || !inputs.gbuffer || inputs.screen_size < 1)
     throw Error("PCSS frame '" + settings.name + "': expected a shadow map, a G-buffer and a screen size >= 1");
-  const auto& gl = context_->gl();
   PcssFrame frame;
   frame.settings = settings;
   frame.size = inputs.screen_size;
@@ -215,6 +214,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   const PcssBlock block = make_block(inputs.light, settings);
   frame.search_map = make_float_texture(*context_, size, size, 4);
   frame.search_keys = make_float_texture(*context_, size, size, 4);
+  frame.receiver_depth = make_float_texture(*context_, size, size, 1);
   {
     PassBindings bind(*context_);
     bind.uniform(block);
@@ -222,6 +222,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     bind.texture(PN_PCSS_GBUFFER_BINDING, *inputs.gbuffer);
     bind.image(PN_PCSS_SEARCH_MAP_IMAGE, frame.search_map, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_SEARCH_KEYS_IMAGE, frame.search_keys, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.image(PN_PCSS_RECEIVER_DEPTH_IMAGE, frame.receiver_depth, GL_WRITE_ONLY, GL_R32F);
     search_.dispatch(size, size);
   }
   clock.stage("3 search region");
@@ -255,7 +256,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   clock.stage("5 shade");
 
   // Step 6.
-  if (settings.blur) frame.blurred = blur_.run(frame.visibility, nullptr, size, size, settings.blur_params);
+  if (settings.blur) frame.blurred = blur_.run(frame.visibility, &frame.receiver_depth, size, size, settings.blur_params);
   clock.stage("6 blur");
   frame.stages = clock.read();
   context_->throw_if_gl_error("PCSS frame '" + settings.name + "'");

@@ -29,6 +29,7 @@ struct PcssFrame {
   PcssSettings settings;
   int size = 0;  // screen side
   DepthPyramid pyramid;
+  GlObject receiver_depth;     // R32F light depth of each pixel's receiver, +Inf where it sees no surface
   GlObject search_map;         // (d, x, y, s), s < 0: lit
   GlObject search_keys;        // what reuse compares (pnEntryLinkKey)
   GlObject search_parents;     // reuse codes (k = search_tile), when reuse is on
@@ -39,7 +40,7 @@ struct PcssFrame {
   GlObject filter_parents;
   GlObject occlusion_results;
   GlObject visibility;         // Step 5: 1 - occluded fraction
-  GlObject blurred;            // Step 6, when on
+  GlObject blurred;            // Step 6, when on: depth-aware over receiver_depth (blur_params.depth_aware)
   std::vector<std::pair<std::string, double>> stages;  // GPU ms, in order
 
   const GlObject& soft_shadow() const { return settings.blur ? blurred : visibility; }

@@ -80,7 +80,7 @@ PcssSettings fast_pcss_all_off() {
 const std::vector<std::string>& pcss_setting_keys() {
   static const std::vector<std::string> keys{"refine", "region", "leaf", "leaf-mode", "budget", "reuse",
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
-                                             "blur-sigma", "bias", "c", "sigma1", "sigma2", "sigma3",
+                                             "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "bias", "c", "sigma1", "sigma2", "sigma3",
                                              "blockers", "occlusion", "blocker-samples", "filter-samples"};
   return keys;
 }
@@ -143,6 +143,8 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   } else if (key == "blur") s.blur = on_off();
   else if (key == "blur-radius") s.blur_params.radius = integer();
   else if (key == "blur-sigma") s.blur_params.sigma = real();
+  else if (key == "blur-depth-aware") s.blur_params.depth_aware = on_off();
+  else if (key == "blur-depth-tolerance") s.blur_params.depth_tolerance = real();
   else if (key == "bias") s.bias = real();
   else if (key == "c") s.filter_scale = real();
   else if (key == "sigma1") s.sigma1 = real();

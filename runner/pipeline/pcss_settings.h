@@ -36,6 +36,11 @@ enum class WorkSkip {
   list,    // the pixels that compute compacted into a list, dispatched indirectly
 };
 
+// Step 6 cuts the blur where two receivers' light depths differ by more than
+// this fraction (blur.glsl's depth-aware variant): across the G-buffer's depth
+// edges, and between a surface and a pixel that sees none (+Inf).
+inline constexpr double kBlurDepthTolerance = 0.05;
+
 struct PcssSettings {
   std::string name;
   float bias = 0.02f;          // world units of light depth: d occludes when d < dP - bias
@@ -54,7 +59,7 @@ struct PcssSettings {
   int blocker_samples = PN_POISSON_BLOCKER_SAMPLES;  // Poisson PCSS: 36, 1..PN_POISSON_MAX_SAMPLES (64)
   int filter_samples = PN_POISSON_PCF_SAMPLES;       // 64
   bool blur = true;            // Step 6
-  BlurParams blur_params;      // radius 3 (§5.3)
+  BlurParams blur_params{PN_BLUR_RADIUS, PN_BLUR_SIGMA, true, kBlurDepthTolerance};  // radius 3 (§5.3), depth-aware
 
   // Throws Error naming the setting and its accepted range.
   void validate() const;

@@ -1,6 +1,7 @@
 #include "technique/comparison.h"
 
 #include <chrono>
+#include <algorithm>
 #include <iomanip>
 
 #include "core/error.h"
@@ -74,8 +75,14 @@ std::optional<ImageScore> part(const std::optional<Scores>& s, Member member) {
 
 }  // namespace
 
+int name_column_width(const Comparison& c) {
+  size_t width = std::string("truth (ray traced)").size();
+  for (const TechniqueResult& r : c.results) width = std::max(width, r.name.size());
+  return static_cast<int>(width) + 2;
+}
+
 void print_score_tables(std::ostream& out, const Comparison& c) {
-  constexpr int kName = 22;
+  const int kName = name_column_width(c);
   out << "light-facing pixels (N.L > 0):\n"
       << std::left << std::setw(kName) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(11)
       << "SSIM truth" << std::setw(10) << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10)

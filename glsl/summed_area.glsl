@@ -1,0 +1,164 @@
+// summed_area.glsl — summed-area table of a depth map in 64-bit fixed point
+// with wrap-around arithmetic, and the sum over any texel rectangle from
+// four fetches.
+//
+// description:
+//   SPEC §5 (summed-area tables for seed 004's variance soft shadows; the
+//   clipped depth sums of seed 000's exact-region traversal). Each finite
+//   depth d becomes the integer q(d) = roundEven(clamp(d, ±2^(52-F)) * 2^F)
+//   (F = PN_SUMMED_AREA_FRACTION_BITS, step 2^-F in depth units), held as a
+//   64-bit two's complement number in two uints. For an N×M map the table T
+//   is (N+1)×(M+1) texels of uvec4 (sum low word, sum high word, finite
+//   count, 0):
+//     T(x, y) = sum over the texels [0, x) × [0, y) of (q(d), finite(d))
+//   with every addition taken modulo 2^64 (sum) and 2^32 (count). Row 0 and
+//   column 0 are zero, so a rectangle [x0, x1) × [y0, y1) is
+//     T(x1, y1) - T(x0, y1) - T(x1, y0) + T(x0, y0)          (4 fetches)
+//   Modular arithmetic is a ring homomorphism: that difference equals the
+//   exact integer sum of q over the rectangle modulo 2^64, however often the
+//   prefix sums wrapped, so it IS the exact sum (read as signed) whenever
+//   |sum of q| < 2^63 — e.g. any rectangle of up to 2^24 texels (a 4096²
+//   map) of depths below 2^19 in magnitude at F = 20. No rounding anywhere
+//   until the one conversion of the result to float (relative error
+//   <= 2^-23 (1 + 2^-25)). Against the raw depths, the only other error is
+//   the quantisation: none for |d| >= 2^(23-F) (such floats are multiples of
+//   2^-F), at most 2^-(F+1) per texel below that.
+//   Non-finite depths (NaN, ±Inf: "no occluder", SPEC §3) are excluded: they
+//   add 0 to the sum and 0 to the finite count, so nothing is poisoned; the
+//   rectangle's texels covered minus its finite count is how many it holds.
+//   Rectangles are clipped to the map (origin may lie outside; sizes <= 0
+//   give an empty rectangle); every fetch is inside the table.
+//   Build, in two passes of one invocation per line: a row-prefix table R
+//   (R(x+1, y+1) = R(x, y+1) + texel (x, y) of the map; row 0 and column 0
+//   zero), each row r a loop over x of left = pnSummedAreaRowStep(map, r, x,
+//   left), stored at (x, r); then T, each column c a loop over y of above =
+//   pnSummedAreaColumnStep(R, c, y, above), stored at (c, y). The loops and
+//   stores are the caller's (passes/summed_area_build.comp): an image cannot
+//   be a function parameter in Vulkan GLSL (glslang's SPIR-V drops its
+//   format), so the module takes none. N+1 or M+1 iterations a line,
+//   bounded through pnSummedAreaTableSize (llvmpipe-safe below 65535).
+//
+// use:
+//   ivec2 pnSummedAreaTableSize(ivec2 mapSize)   (N+1, M+1), sides bounded by PN_SUMMED_AREA_MAX_SIDE + 1
+//   uvec4 pnSummedAreaRowStep(sampler2D depthMap, int row, int x, uvec4 left)       R(x, row) from R(x-1, row)
+//   uvec4 pnSummedAreaColumnStep(usampler2D rowPrefix, int column, int y, uvec4 above)   T(column, y) from T(column, y-1)
+//   PnSummedArea pnSummedAreaRectSum(usampler2D table, ivec2 origin, ivec2 size)
+//   float pnSummedAreaMean(PnSummedArea s)       sum / count, 0 without finite texels
+//   uvec4 pnSummedAreaTexel(float depth)         one texel's (q low, q high, finite, 0)
+//   uvec4 pnSummedAreaAdd(uvec4 a, uvec4 b)      modular: 64-bit sum with carry, counts
+//   uvec4 pnSummedAreaSub(uvec4 a, uvec4 b)      modular: 64-bit difference with borrow
+//   float pnSummedAreaFixedToFloat(uvec2 q)      signed 64-bit q (low, high) times 2^-F
+//   struct PnSummedArea { uvec2 fixedSum; float sum; float count; float texels; }
+//   depthMap: linear light depth in .r (R32F), N×M texels, 1 <= N, M <=
+//   PN_SUMMED_AREA_MAX_SIDE. rowPrefix and table: RGBA32UI, (N+1)×(M+1) —
+//   written through a writeonly rgba32ui image, read through a usampler2D
+//   (no read-write image, so GLSL ES 3.10 runs it: one of its 4 image
+//   units per build pass). origin, size in texels of the map; origin + size must not
+//   overflow an int. Counts travel as floats: exact up to 2^24 texels.
+//
+// options:
+//   PN_SUMMED_AREA_FRACTION_BITS   F, the fixed-point step 2^-F (20)
+//   PN_SUMMED_AREA_MAX_SIDE        loop bound: largest map side (16384)
+//   (both in summed_area.h, shared with the runner)
+//
+// cost: build 2 passes, one fetch, a 64-bit add and a store per table texel
+//   (16 bytes a texel: 16 MiB at 1024², plus as much for the row-prefix
+//   table while building); query 4 fetches and a few integer operations,
+//   whatever the rectangle's size.
+
+#ifndef PENUMBRA_SUMMED_AREA_GLSL
+#define PENUMBRA_SUMMED_AREA_GLSL
+
+#include "summed_area.h"  // PN_SUMMED_AREA_FRACTION_BITS, _MAGNITUDE_BITS, _MAX_SIDE
+
+struct PnSummedArea {
+  uvec2 fixedSum;  // sum of q over the finite texels, two's complement mod 2^64: (low word, high word)
+  float sum;       // fixedSum as a float times 2^-F: the depth sum
+  float count;     // finite texels
+  float texels;    // texels covered: the clipped rectangle's area
+};
+
+// 2^e, exactly (-126 <= e <= 127).
+float pnSummedAreaPow2(int e) {
+  return uintBitsToFloat(uint(127 + e) << 23);
+}
+
+// NaN and ±Inf have every exponent bit set (a bit test: no reliance on isnan).
+bool pnSummedAreaFinite(float v) {
+  return (floatBitsToUint(v) & 0x7f800000u) != 0x7f800000u;
+}
+
+uvec4 pnSummedAreaTexel(float depth) {
+  if (!pnSummedAreaFinite(depth)) return uvec4(0u);
+  // Each step exact in float: scaling by powers of two, roundEven, floor, and
+  // the split x = hi * 2^32 + lo of an integer x <= 2^52.
+  float limit = pnSummedAreaPow2(PN_SUMMED_AREA_MAGNITUDE_BITS - PN_SUMMED_AREA_FRACTION_BITS);
+  float x = roundEven(min(abs(depth), limit) * pnSummedAreaPow2(PN_SUMMED_AREA_FRACTION_BITS));
+  float high = floor(x * pnSummedAreaPow2(-32));
+  uint hi = uint(high);
+  uint lo = uint(x - high * pnSummedAreaPow2(32));
+  if (depth < 0.0) {  // two's complement negation of (hi, lo)
+    lo = ~lo + 1u;
+    hi = ~hi + (lo == 0u ? 1u : 0u);
+  }
+  return uvec4(lo, hi, 1u, 0u);
+}
+
+uvec4 pnSummedAreaAdd(uvec4 a, uvec4 b) {
+  uint lo = a.x + b.x;  // uint arithmetic wraps modulo 2^32
+  uint carry = lo < a.x ? 1u : 0u;
+  return uvec4(lo, a.y + b.y + carry, a.z + b.z, a.w + b.w);
+}
+
+uvec4 pnSummedAreaSub(uvec4 a, uvec4 b) {
+  uint borrow = a.x < b.x ? 1u : 0u;
+  return uvec4(a.x - b.x, a.y - b.y - borrow, a.z - b.z, a.w - b.w);
+}
+
+float pnSummedAreaFixedToFloat(uvec2 q) {
+  bool negative = q.y >= 0x80000000u;
+  if (negative) {  // magnitude of a two's complement number (-2^63 stays 2^63, read unsigned)
+    q.x = ~q.x + 1u;
+    q.y = ~q.y + (q.x == 0u ? 1u : 0u);
+  }
+  // Two conversions and one addition of non-negative terms: relative error <= 2u + u^2, u = 2^-24.
+  float magnitude = float(q.y) * pnSummedAreaPow2(32) + float(q.x);
+  float value = magnitude * pnSummedAreaPow2(-PN_SUMMED_AREA_FRACTION_BITS);
+  return negative ? -value : value;
+}
+
+ivec2 pnSummedAreaTableSize(ivec2 mapSize) {
+  return clamp(mapSize, ivec2(0), ivec2(PN_SUMMED_AREA_MAX_SIDE)) + ivec2(1);
+}
+
+uvec4 pnSummedAreaRowStep(sampler2D depthMap, int row, int x, uvec4 left) {
+  if (row <= 0 || x <= 0) return uvec4(0u);  // row 0 and column 0 of the table are zero
+  return pnSummedAreaAdd(left, pnSummedAreaTexel(texelFetch(depthMap, ivec2(x - 1, row - 1), 0).r));
+}
+
+uvec4 pnSummedAreaColumnStep(usampler2D rowPrefix, int column, int y, uvec4 above) {
+  return pnSummedAreaAdd(above, texelFetch(rowPrefix, ivec2(column, y), 0));
+}
+
+PnSummedArea pnSummedAreaRectSum(usampler2D table, ivec2 origin, ivec2 size) {
+  ivec2 n = textureSize(table, 0) - ivec2(1);  // the map's size
+  ivec2 lo = clamp(origin, ivec2(0), n);
+  ivec2 hi = clamp(origin + max(size, ivec2(0)), lo, n);
+  uvec4 topLeft = texelFetch(table, lo, 0);
+  uvec4 topRight = texelFetch(table, ivec2(hi.x, lo.y), 0);
+  uvec4 bottomLeft = texelFetch(table, ivec2(lo.x, hi.y), 0);
+  uvec4 bottomRight = texelFetch(table, hi, 0);
+  uvec4 s = pnSummedAreaSub(pnSummedAreaAdd(bottomRight, topLeft), pnSummedAreaAdd(topRight, bottomLeft));
+  PnSummedArea r;
+  r.fixedSum = s.xy;
+  r.sum = pnSummedAreaFixedToFloat(s.xy);
+  r.count = float(s.z);
+  r.texels = float((hi.x - lo.x) * (hi.y - lo.y));
+  return r;
+}
+
+float pnSummedAreaMean(PnSummedArea s) {
+  return s.count > 0.0 ? s.sum / s.count : 0.0;
+}
+
+#endif  // PENUMBRA_SUMMED_AREA_GLSL

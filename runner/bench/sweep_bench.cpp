@@ -1,0 +1,216 @@
+#include "bench/sweep_bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+#include "core/error.h"
+#include "core/format.h"
+#include "technique/technique_registry.h"
+
+namespace pn {
+
+std::vector<std::string> sweep_techniques() { return {"exact", "poisson", "hqepcss", "fast"}; }
+
+bool is_exact_spec(const std::string& name) { return name.substr(0, name.find(':')) == kExactTechnique; }
+
+Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor) {
+  if (!std::isfinite(factor) || factor <= 0)
+    throw Error("light width factor " + format_number("%g", factor) + ": expected a finite number > 0");
+  Scene scene = make_scene(fixture, size);
+  scene.light.width *= factor;
+  scene.light.validate();
+  return scene;
+}
+
+void validate_sweep_setup(const SweepBenchSetup& s) {
+  if (s.scenes.empty()) throw Error("sweep: no scenes");
+  if (s.factors.empty()) throw Error("sweep: no light width factors");
+  if (s.sizes.empty()) throw Error("sweep: no sizes");
+  for (int n : s.sizes)
+    if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
+  if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
+  if (s.truth_samples < 1 || s.truth_samples > 64)
+    throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
+  if (!(s.exact_up_to > 0))
+    throw Error("exact up to " + format_number("%g", s.exact_up_to) + ": expected a light width factor > 0");
+  for (const std::string& name : s.scenes) {
+    const auto& fixture = find_scene_fixture(name);
+    for (double f : s.factors) sweep_scene(fixture, 16, f);  // the factor and the scaled light, without GL
+  }
+  for (const auto& m : s.methods) m->validate();
+}
+
+std::optional<TimeGrowth> time_growth(const std::vector<std::pair<double, double>>& factor_ms) {
+  std::vector<std::pair<double, double>> counted;
+  for (const auto& p : factor_ms)
+    if (std::isfinite(p.second) && p.second > 0) counted.push_back(p);
+  if (counted.size() < 2) return std::nullopt;
+  return TimeGrowth{counted.front().first, counted.back().first, counted.back().second / counted.front().second};
+}
+
+SweepBench bench_sweep(const Context& context, const SourceTree& tree, const SweepBenchSetup& setup) {
+  validate_sweep_setup(setup);
+  std::vector<std::unique_ptr<TechniqueConfig>> own;
+  std::vector<const TechniqueConfig*> all;
+  if (setup.methods.empty())
+    for (const std::string& spec : sweep_techniques()) own.push_back(parse_technique(spec));
+  for (const auto& m : own) all.push_back(m.get());
+  for (const auto& m : setup.methods) all.push_back(m.get());
+
+  SweepBench bench;
+  bench.exact_up_to = setup.exact_up_to;
+  for (const TechniqueConfig* c : all) bench.methods.push_back(c->name());
+  for (const std::string& name : setup.scenes) {
+    const auto& fixture = find_scene_fixture(name);
+    for (int n : setup.sizes)
+      for (double factor : setup.factors) {
+        ComparisonSetup cs;
+        cs.screen_size = n;
+        cs.repeats = setup.repeats;
+        cs.truth_samples = setup.truth_samples;
+        for (const TechniqueConfig* c : all)
+          if (factor <= setup.exact_up_to || !is_exact_spec(c->name())) cs.techniques.push_back(c);
+        if (cs.techniques.empty()) continue;  // only exact PCSS was asked for, and not at this factor
+        SweepPoint p;
+        p.scene = name;
+        p.size = n;
+        p.factor = factor;
+        const Scene scene = sweep_scene(fixture, n, factor);
+        p.light_width = scene.light.width;
+        p.comparison = compare_techniques(context, tree, scene, cs);
+        bench.points.push_back(std::move(p));
+      }
+  }
+  return bench;
+}
+
+namespace {
+
+// The scenes, sizes and factors in sweep order (points may be missing where nothing ran).
+template <class F>
+void for_each_group(const SweepBench& bench, F f) {
+  std::vector<std::pair<std::string, int>> groups;
+  for (const SweepPoint& p : bench.points)
+    if (std::find(groups.begin(), groups.end(), std::make_pair(p.scene, p.size)) == groups.end())
+      groups.emplace_back(p.scene, p.size);
+  for (const auto& [scene, size] : groups) {
+    std::vector<const SweepPoint*> points;
+    for (const SweepPoint& p : bench.points)
+      if (p.scene == scene && p.size == size) points.push_back(&p);
+    f(scene, size, points);
+  }
+}
+
+std::string factor_text(double f) { return format_number("%g", f); }
+
+}  // namespace
+
+std::optional<TimeGrowth> sweep_time_growth(const SweepBench& bench, const std::string& scene, int size,
+                                            const std::string& method) {
+  std::vector<std::pair<double, double>> factor_ms;
+  for (const SweepPoint& p : bench.points)
+    if (p.scene == scene && p.size == size)
+      if (const TechniqueResult* r = p.comparison.find(method)) factor_ms.emplace_back(p.factor, r->measurement.total_ms);
+  return time_growth(factor_ms);
+}
+
+void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
+  constexpr int kName = 22;
+  for_each_group(bench, [&](const std::string& scene, int size, const std::vector<const SweepPoint*>& points) {
+    out << "scene " << scene << ", " << size << "x" << size << " (shadow map = screen); light-facing pixels:\n"
+        << std::right << std::setw(7) << "factor" << std::setw(8) << "width" << "  " << std::left << std::setw(kName)
+        << "method" << std::right << std::setw(11) << "GPU ms" << std::setw(11) << "SSIM truth" << std::setw(10)
+        << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10) << "MAE exact" << "\n";
+    for (const SweepPoint* p : points) {
+      for (const std::string& method : bench.methods) {
+        out << std::right << std::setw(7) << factor_text(p->factor) << std::fixed << std::setprecision(2)
+            << std::setw(8) << p->light_width << "  " << std::left << std::setw(kName) << method << std::right;
+        const TechniqueResult* r = p->comparison.find(method);
+        if (!r) {
+          out << "    not run (above --exact-up-to " << factor_text(bench.exact_up_to) << ")\n";
+          continue;
+        }
+        out << std::setw(11) << r->measurement.total_ms << std::setprecision(4) << std::setw(11)
+            << r->vs_truth.light_facing.ssim << std::setw(10) << r->vs_truth.light_facing.mae;
+        if (r->vs_exact)
+          out << std::setw(11) << r->vs_exact->light_facing.ssim << std::setw(10) << r->vs_exact->light_facing.mae;
+        else
+          out << std::setw(11) << "-" << std::setw(10) << "-";
+        out << "\n";
+      }
+      out << std::right << std::setw(7) << factor_text(p->factor) << std::fixed << std::setprecision(2) << std::setw(8)
+          << p->light_width << "  " << std::left << std::setw(kName) << "truth (ray traced)" << std::right
+          << std::setprecision(0) << std::setw(11) << p->comparison.truth_ms << " CPU ms\n";
+    }
+    out << "time growth from the first to the last factor:";
+    for (const std::string& method : bench.methods) {
+      out << "  " << method << " ";
+      if (const auto g = sweep_time_growth(bench, scene, size, method))
+        out << std::setprecision(2) << g->ratio << "x (x" << factor_text(g->from) << " -> x" << factor_text(g->to)
+            << ")";
+      else
+        out << "-";
+    }
+    out << "\n";
+    out.unsetf(std::ios::floatfield);
+  });
+}
+
+namespace {
+
+nlohmann::json scores_json(const Scores& s) {
+  const auto one = [](const ImageScore& i) { return nlohmann::json{{"ssim", i.ssim}, {"mae", i.mae}}; };
+  return {{"whole", one(s.whole)}, {"light_facing", one(s.light_facing)}, {"lit", one(s.lit)}};
+}
+
+nlohmann::json named_json(const NamedValues& values) {
+  nlohmann::json o = nlohmann::json::object();
+  for (const auto& [name, v] : values) o[name] = v;
+  return o;
+}
+
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& bench) {
+  nlohmann::json rows = nlohmann::json::array(), truth = nlohmann::json::array(), growth = nlohmann::json::array();
+  for (const SweepPoint& p : bench.points) {
+    for (const std::string& method : bench.methods) {
+      nlohmann::json row{{"scene", p.scene}, {"size", p.size}, {"factor", p.factor}, {"light_width", p.light_width},
+                         {"method", method}};
+      const TechniqueResult* r = p.comparison.find(method);
+      row["ran"] = r != nullptr;
+      if (r) {
+        row["total_ms"] = r->measurement.total_ms;
+        row["stage_ms"] = named_json(r->measurement.stage_ms);
+        row["stats"] = named_json(r->measurement.frame.stats);
+        row["vs_truth"] = scores_json(r->vs_truth);
+        row["vs_exact"] = r->vs_exact ? scores_json(*r->vs_exact) : nlohmann::json(nullptr);
+      }
+      rows.push_back(row);
+    }
+    truth.push_back({{"scene", p.scene},
+                     {"size", p.size},
+                     {"factor", p.factor},
+                     {"light_width", p.light_width},
+                     {"cpu_ms", p.comparison.truth_ms},
+                     {"shadow_map_ms", p.comparison.shadow_map_ms},
+                     {"vs_exact", p.comparison.truth_vs_exact ? scores_json(*p.comparison.truth_vs_exact)
+                                                              : nlohmann::json(nullptr)}});
+  }
+  for_each_group(bench, [&](const std::string& scene, int size, const std::vector<const SweepPoint*>&) {
+    for (const std::string& method : bench.methods)
+      if (const auto g = sweep_time_growth(bench, scene, size, method))
+        growth.push_back({{"scene", scene}, {"size", size}, {"method", method}, {"from", g->from}, {"to", g->to},
+                          {"ratio", g->ratio}});
+  });
+  return {{"scenes", setup.scenes},     {"factors", setup.factors},
+          {"sizes", setup.sizes},       {"repeats", setup.repeats},
+          {"truth_samples", setup.truth_samples}, {"exact_up_to", finite_or_null(setup.exact_up_to)},
+          {"methods", bench.methods},   {"rows", rows},
+          {"truth", truth},             {"time_growth", growth}};
+}
+
+}  // namespace pn

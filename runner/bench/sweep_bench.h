@@ -1,0 +1,87 @@
+// `penumbra bench sweep`: the light's width scaled (×1, ×2, ×4, ×8 by
+// default: the penumbrae grow with it) on each scene, every technique timed
+// through the seam and scored against the ray-traced truth and exact PCSS by
+// compare_techniques (issue 11), so that what a technique's time and quality
+// do as the penumbra grows is read from one run. Exact PCSS's scan grows with
+// the square of the width, so it can be left out above a factor
+// (`exact_up_to`); the truth is the reference that matters.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+#include "scene/scene.h"
+#include "shader/source_tree.h"
+#include "technique/comparison.h"
+#include "technique/technique.h"
+
+namespace pn {
+
+struct SweepBenchSetup {
+  std::vector<std::string> scenes{"tall_blocker", "boxes"};
+  std::vector<double> factors{1, 2, 4, 8};  // multiply the fixture's light width
+  std::vector<int> sizes{512};              // shadow map = screen
+  int repeats = 3;
+  int truth_samples = 16;
+  // Exact PCSS (the registry's kExactTechnique, with or without overrides) runs only at
+  // factors <= this; +Inf: at every factor.
+  double exact_up_to = std::numeric_limits<double>::infinity();
+  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: sweep_techniques()
+};
+
+// exact, poisson, hqepcss, fast.
+std::vector<std::string> sweep_techniques();
+
+// Throws Error naming the first bad setting: an unknown scene, a factor that is not a finite
+// number > 0 (or that makes a light that does not validate), a size outside 16..4096, repeats
+// outside 1..100, truth samples outside 1..64, exact_up_to not > 0 (NaN included), no factors,
+// scenes or sizes. No GL.
+void validate_sweep_setup(const SweepBenchSetup& setup);
+
+// The fixture's scene at `size` with its light's width multiplied by `factor`; throws Error for a
+// factor that is not finite and > 0, or a light that does not validate.
+Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor);
+
+// Whether a technique's spec names exact PCSS ("exact" or "exact:key=value…").
+bool is_exact_spec(const std::string& name);
+
+struct SweepPoint {
+  std::string scene;
+  int size = 0;
+  double factor = 1.0;
+  double light_width = 0.0;  // world units, after scaling
+  Comparison comparison;     // the techniques that ran at this factor
+};
+
+// How a technique's time changed across a scene's sweep: from its first factor with a time to
+// its last (exact PCSS may stop early). ratio = ms at `to` / ms at `from`.
+struct TimeGrowth {
+  double from = 0.0, to = 0.0, ratio = 0.0;
+};
+// `factor_ms`: (factor, ms) in sweep order; pairs with a non-finite or non-positive ms are not
+// counted. None when fewer than two count.
+std::optional<TimeGrowth> time_growth(const std::vector<std::pair<double, double>>& factor_ms);
+
+struct SweepBench {
+  std::vector<std::string> methods;  // every technique's name, in table order
+  std::vector<SweepPoint> points;    // per scene, per size, per factor
+  double exact_up_to = std::numeric_limits<double>::infinity();
+};
+
+// Throws Error (validate_sweep_setup) before any GL work.
+SweepBench bench_sweep(const Context& context, const SourceTree& tree, const SweepBenchSetup& setup);
+
+// A technique's growth on one scene and size (none when it ran at fewer than two factors).
+std::optional<TimeGrowth> sweep_time_growth(const SweepBench& bench, const std::string& scene, int size,
+                                            const std::string& method);
+
+void print_sweep_bench(std::ostream& out, const SweepBench& bench);
+nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& bench);
+
+}  // namespace pn
