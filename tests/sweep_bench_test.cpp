@@ -73,6 +73,9 @@ TEST_CASE("sweep setup: the defaults validate; bad settings are refused naming t
   CHECK(s.scenes == std::vector<std::string>{"tall_blocker", "boxes"});
   CHECK(s.factors == std::vector<double>{1, 2, 4, 8});
   CHECK(s.sizes == std::vector<int>{512});
+  CHECK(s.exact_up_to == 2.0);
+  s.exact_up_to = kInf;  // exact PCSS at every factor
+  CHECK_NOTHROW(pn::validate_sweep_setup(s));
   const auto refused = [](auto change, const std::string& message) {
     pn::SweepBenchSetup bad;
     change(bad);

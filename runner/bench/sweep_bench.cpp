@@ -116,7 +116,9 @@ std::optional<TimeGrowth> sweep_time_growth(const SweepBench& bench, const std::
 }
 
 void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
-  constexpr int kName = 22;
+  size_t name_width = std::string("truth (ray traced)").size();
+  for (const std::string& m : bench.methods) name_width = std::max(name_width, m.size());
+  const int kName = static_cast<int>(name_width) + 2;
   for_each_group(bench, [&](const std::string& scene, int size, const std::vector<const SweepPoint*>& points) {
     out << "scene " << scene << ", " << size << "x" << size << " (shadow map = screen); light-facing pixels:\n"
         << std::right << std::setw(7) << "factor" << std::setw(8) << "width" << "  " << std::left << std::setw(kName)

@@ -32,7 +32,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
   cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes)")->delimiter(',');
   cmd->add_option("--widths", opt->sweep.factors, "sweep: light width factors (default 1,2,4,8)")->delimiter(',');
-  cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep: run exact PCSS only at factors up to this (default: every factor)");
+  cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep: run exact PCSS only at light width factors up to this (default 2; inf: at every factor)");
   cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(',');
   auto* truth_samples = cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline, sweep: S for the ray-traced truth's S x S light samples (default 16)");
   cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)");

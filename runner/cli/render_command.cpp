@@ -16,6 +16,7 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--scene", setup->scene, "boxes | fence | tall_blocker (default boxes)");
   cmd->add_option("--model", setup->model, "A mesh file (any format Assimp reads: glTF, OBJ, ...) placed on the ground instead of --scene");
   cmd->add_option("--source", setup->source, "Shadow-map source (default full)");
+  cmd->add_option("--light-scale", setup->light_scale, "Multiply the scene's light width by this (default 1): wider penumbrae");
   cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 512)");
   cmd->add_option("--screen", setup->screen_size, "Screen size (default 512)");
   cmd->add_option("--truth-samples", setup->truth_samples, "Ray-traced truth: S for S x S light samples per pixel (default 16)");

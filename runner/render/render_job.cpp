@@ -1,10 +1,12 @@
 #include "render/render_job.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "figures/canvas.h"
 #include "figures/lit_image.h"
 #include "scene/model.h"
@@ -105,6 +107,8 @@ Canvas draw_sheet(const std::string& title, const Comparison& c) {
 void validate_render_setup(const RenderSetup& s) {
   if (s.model.empty()) find_scene_fixture(s.scene);
   find_shadow_map_source(s.source);
+  if (!std::isfinite(s.light_scale) || s.light_scale <= 0)
+    throw Error("light scale " + format_number("%g", s.light_scale) + ": expected a finite number > 0");
   if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
   if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
   if (s.truth_samples < 1 || s.truth_samples > 64) throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
@@ -113,7 +117,11 @@ void validate_render_setup(const RenderSetup& s) {
 }
 
 Scene load_render_scene(const RenderSetup& s) {
-  return s.model.empty() ? make_scene(find_scene_fixture(s.scene), s.map_size) : make_model_scene(s.model, s.map_size);
+  Scene scene =
+      s.model.empty() ? make_scene(find_scene_fixture(s.scene), s.map_size) : make_model_scene(s.model, s.map_size);
+  scene.light.width *= s.light_scale;
+  scene.light.validate();
+  return scene;
 }
 
 void create_output_directory(const std::filesystem::path& out) {
@@ -151,7 +159,8 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
     write(stem + "_lit", write_rgb, compose_lit_image(c.surface, r.visibility));
     write(stem + "_error", write_signed, difference(r.visibility, c.truth));
   }
-  const std::string title = "scene " + scene.name + ", shadow map " + std::to_string(setup.map_size) + "², screen " +
+  const std::string light = setup.light_scale == 1.0 ? "" : ", light width x" + format_number("%g", setup.light_scale);
+  const std::string title = "scene " + scene.name + light + ", shadow map " + std::to_string(setup.map_size) + "², screen " +
                             std::to_string(setup.screen_size) + "², truth " + std::to_string(setup.truth_samples) +
                             "×" + std::to_string(setup.truth_samples) +
                             " light samples; scores on light-facing pixels: SSIM / MAE";
@@ -162,7 +171,9 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
 }
 
 void print_render_table(std::ostream& out, const RenderSetup& setup, const RenderResult& result, bool stages) {
-  out << "scene " << result.scene_name << ", shadow map " << setup.map_size << "x" << setup.map_size << " (source "
+  out << "scene " << result.scene_name;
+  if (setup.light_scale != 1.0) out << ", light width x" << format_number("%g", setup.light_scale);
+  out << ", shadow map " << setup.map_size << "x" << setup.map_size << " (source "
       << setup.source << ", " << std::fixed << std::setprecision(2) << result.comparison.shadow_map_ms
       << " ms), screen " << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats
       << " runs, truth " << setup.truth_samples << "x" << setup.truth_samples << " light samples\n";

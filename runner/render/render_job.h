@@ -23,6 +23,7 @@ struct RenderSetup {
   std::string scene = "boxes";
   std::filesystem::path model;  // non-empty: a model scene from this mesh file (scene/model.h) instead
   std::string source = "full";  // the shadow-map source (technique/shadow_map_source.h)
+  double light_scale = 1.0;  // multiplies the scene's light width (the penumbrae grow with it)
   int map_size = 512;
   int screen_size = 512;
   int truth_samples = 16;  // per side of the truth's S×S light samples
@@ -37,14 +38,16 @@ struct RenderResult {
   std::vector<std::filesystem::path> written;
 };
 
-// Throws Error naming the first setting out of range (scene, source, sizes, samples, repeats, methods).
+// Throws Error naming the first setting out of range (scene, source, light scale, sizes, samples,
+// repeats, methods).
 void validate_render_setup(const RenderSetup& setup);
 
 // Creates `out` (and its parents); throws Error naming it when it cannot.
 void create_output_directory(const std::filesystem::path& out);
 
-// The setup's scene: the box scene `scene`, or the model in `model`. Throws Error for an unknown
-// scene or a model file that cannot be loaded (scene/model.h).
+// The setup's scene: the box scene `scene`, or the model in `model`, its light's width times
+// `light_scale`. Throws Error for an unknown scene, a model file that cannot be loaded
+// (scene/model.h) or a scaled light that does not validate.
 Scene load_render_scene(const RenderSetup& setup);
 
 // Renders and scores every technique, then creates `out` and writes the PNGs and the sheet.

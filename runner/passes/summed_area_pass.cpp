@@ -1,0 +1,138 @@
+#include "passes/summed_area_pass.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "core/query_grid.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
+#include "gl/texture.h"
+#include "passes/summed_area_query.h"
+
+namespace pn::glsl {
+#include "passes/summed_area_build.h"
+PN_STD140_SIZE(PnSummedAreaBuildParams, 16);
+PN_STD140_OFFSET(PnSummedAreaBuildParams, direction, 0);
+}  // namespace pn::glsl
+
+namespace pn {
+namespace {
+
+std::vector<Define> fraction_define(int fraction_bits) {
+  if (fraction_bits < 0 || fraction_bits > kSummedAreaMagnitudeBits)
+    throw Error("summed-area fraction bits " + std::to_string(fraction_bits) + ": expected 0 to " +
+                std::to_string(kSummedAreaMagnitudeBits));
+  if (fraction_bits == kSummedAreaFractionBits) return {};
+  return {{"PN_SUMMED_AREA_FRACTION_BITS", std::to_string(fraction_bits)}};
+}
+
+// An RGBA32UI texture, nearest filtering (read with texelFetch only).
+GlObject make_uint4_texture(const Context& context, int width, int height) {
+  GLint max_size = 0;
+  context.gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (width > max_size || height > max_size)
+    throw Error("summed-area table " + std::to_string(width) + "x" + std::to_string(height) +
+                ": expected at most GL_MAX_TEXTURE_SIZE (" + std::to_string(max_size) + ") on each side");
+  GlObject texture(context, GlKind::texture, GL_TEXTURE_2D);
+  const auto& gl = context.gl();
+  gl.TextureStorage2D(texture.id(), 1, GL_RGBA32UI, width, height);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  context.throw_if_gl_error("allocating a summed-area table");
+  return texture;
+}
+
+std::vector<std::uint32_t> read_uint4_texture(const Context& context, const GlObject& texture, int width, int height) {
+  std::vector<std::uint32_t> out(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  const auto& gl = context.gl();
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.GetTextureImage(texture.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                     static_cast<GLsizei>(out.size() * sizeof(std::uint32_t)), out.data());
+  context.throw_if_gl_error("reading a summed-area query result");
+  return out;
+}
+
+void texture_size(const Context& context, const GlObject& texture, int& width, int& height) {
+  GLint w = 0, h = 0;
+  context.gl().GetTextureLevelParameteriv(texture.id(), 0, GL_TEXTURE_WIDTH, &w);
+  context.gl().GetTextureLevelParameteriv(texture.id(), 0, GL_TEXTURE_HEIGHT, &h);
+  context.throw_if_gl_error("reading a depth map's size");
+  width = w, height = h;
+}
+
+}  // namespace
+
+SummedAreaPass::SummedAreaPass(const Context& context, const SourceTree& tree, int fraction_bits)
+    : context_(&context),
+      fraction_bits_(fraction_bits),
+      build_(compile_pass(context, tree, "passes/summed_area_build.comp", fraction_define(fraction_bits))),
+      query_(compile_pass(context, tree, "passes/summed_area_query.comp", fraction_define(fraction_bits))) {}
+
+SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
+  SummedAreaTable table;
+  texture_size(*context_, depth_map, table.width, table.height);
+  if (table.width < 1 || table.height < 1 || table.width > kSummedAreaMaxSide || table.height > kSummedAreaMaxSide)
+    throw Error("summed-area table of a " + std::to_string(table.width) + "x" + std::to_string(table.height) +
+                " map: expected 1 to " + std::to_string(kSummedAreaMaxSide) + " texels a side");
+  const int tw = table.width + 1, th = table.height + 1;
+  const GlObject row_prefix = make_uint4_texture(*context_, tw, th);
+  table.texture = make_uint4_texture(*context_, tw, th);
+  {
+    PassBindings bind(*context_);
+    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS});
+    bind.texture(PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map);
+    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix, GL_WRITE_ONLY, GL_RGBA32UI);
+    build_.dispatch(th, 1);  // one invocation per row of the table
+  }
+  {
+    PassBindings bind(*context_);
+    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS});
+    bind.texture(PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix);
+    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table.texture, GL_WRITE_ONLY, GL_RGBA32UI);
+    build_.dispatch(tw, 1);  // one invocation per column
+  }
+  return table;
+}
+
+std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& table,
+                                                         const std::vector<SummedAreaRect>& rects) const {
+  if (rects.empty()) return {};
+  std::vector<Query> q;
+  for (const SummedAreaRect& r : rects) {
+    for (int v : {r.x, r.y, r.width, r.height})
+      if (std::abs(v) > (1 << 24))
+        throw Error("summed-area query rectangle coordinate " + std::to_string(v) + ": expected within ±2^24");
+    q.push_back({float(r.x), float(r.y), float(r.width), float(r.height)});
+  }
+  const Image rect_image = query_image(q);
+  const int w = rect_image.width, h = rect_image.height;
+  const GlObject rect_texture = upload_float_texture(*context_, rect_image);
+  const GlObject fixed = make_uint4_texture(*context_, w, h);
+  const GlObject floats = make_float_texture(*context_, w, h, 4);
+  {
+    PassBindings bind(*context_);
+    bind.texture(PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture);
+    bind.texture(PN_SUMMED_AREA_QUERY_RECTS_BINDING, rect_texture);
+    bind.image(PN_SUMMED_AREA_QUERY_FIXED_IMAGE, fixed, GL_WRITE_ONLY, GL_RGBA32UI);
+    bind.image(PN_SUMMED_AREA_QUERY_FLOAT_IMAGE, floats, GL_WRITE_ONLY, GL_RGBA32F);
+    query_.dispatch(w, h);
+  }
+  const std::vector<std::uint32_t> u = read_uint4_texture(*context_, fixed, w, h);
+  const Image f = read_float_texture(*context_, floats, w, h, 4);
+  std::vector<SummedAreaQueryResult> out;
+  for (size_t k = 0; k < rects.size(); ++k) {
+    const int x = static_cast<int>(k) % w, y = static_cast<int>(k) / w;
+    const std::uint32_t* t = &u[k * 4];
+    SummedAreaQueryResult r;
+    r.fixed_sum = (static_cast<std::uint64_t>(t[1]) << 32) | t[0];
+    r.count = t[2];
+    r.texels = t[3];
+    r.sum = f.at(x, y, 0);
+    r.mean = f.at(x, y, 1);
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace pn
