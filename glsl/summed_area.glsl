@@ -26,6 +26,10 @@
 //   Non-finite depths (NaN, ±Inf: "no occluder", SPEC §3) are excluded: they
 //   add 0 to the sum and 0 to the finite count, so nothing is poisoned; the
 //   rectangle's texels covered minus its finite count is how many it holds.
+//   A blocker mean needs the sum over occluding texels only; a traversal node
+//   that occludes wholly (dP - bias above its max: every texel finite and
+//   occluding) has exactly that in its clipped rectangle's plain sum and
+//   count, and a node that does not is descended, never summed here.
 //   Rectangles are clipped to the map (origin may lie outside; sizes <= 0
 //   give an empty rectangle); every fetch is inside the table.
 //   Build, in two passes of one invocation per line: a row-prefix table R
@@ -53,8 +57,8 @@
 //   PN_SUMMED_AREA_MAX_SIDE. rowPrefix and table: RGBA32UI, (N+1)×(M+1) —
 //   written through a writeonly rgba32ui image, read through a usampler2D
 //   (no read-write image, so GLSL ES 3.10 runs it: one of its 4 image
-//   units per build pass). origin, size in texels of the map; origin + size must not
-//   overflow an int. Counts travel as floats: exact up to 2^24 texels.
+//   units per build pass). origin, size in texels of the map; origin + size
+//   must not overflow an int. Counts travel as floats: exact up to 2^24.
 //
 // options:
 //   PN_SUMMED_AREA_FRACTION_BITS   F, the fixed-point step 2^-F (20)

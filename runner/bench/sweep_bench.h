@@ -31,7 +31,7 @@ struct SweepBenchSetup {
   // Exact PCSS (the registry's kExactTechnique, with or without overrides) runs only at
   // factors <= this; +Inf: at every factor. Default 2: its blocker search reads every texel of a
   // search square whose side grows with the width, and at 512² on llvmpipe (2 cores) one run
-  // takes ~8 s at x1 and ~30 s at x2 on the tall blocker, so over a minute from x4 on.
+  // takes 4-8 s at x1 and 16-30 s at x2 on the tall blocker, so about a minute from x4 on.
   double exact_up_to = 2.0;
   std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: sweep_techniques()
 };

@@ -33,6 +33,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_poisson_pcss_check},
       {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
        &run_truth_check},
+      {"summed_area", "64-bit fixed-point summed-area table: rectangle sums vs direct box sums (exact), float sums in bound",
+       &run_summed_area_check},
   };
   return checks;
 }

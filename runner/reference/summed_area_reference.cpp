@@ -79,12 +79,12 @@ SummedAreaSums SummedAreaReference::sums(const SummedAreaRect& rect) const {
   const SummedAreaCover c = summed_area_cover(rect, width_, height_);
   SummedAreaSums s;
   s.texels = c.texels();
+  // Non-finite texels hold 0 in every array: added without a branch, they change nothing.
   for (long y = c.y0; y < c.y1; ++y) {
     const size_t row = static_cast<size_t>(y) * static_cast<size_t>(width_);
     for (long x = c.x0; x < c.x1; ++x) {
       const size_t i = row + static_cast<size_t>(x);
-      if (finite_[i] == 0) continue;
-      ++s.count;
+      s.count += finite_[i];
       s.sum += depth_[i];
       s.magnitude += std::fabs(depth_[i]);
       s.fixed_sum += static_cast<std::uint64_t>(fixed_[i]);  // unsigned: wraps modulo 2^64 by definition

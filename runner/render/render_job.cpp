@@ -159,7 +159,7 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
     write(stem + "_lit", write_rgb, compose_lit_image(c.surface, r.visibility));
     write(stem + "_error", write_signed, difference(r.visibility, c.truth));
   }
-  const std::string light = setup.light_scale == 1.0 ? "" : ", light width x" + format_number("%g", setup.light_scale);
+  const std::string light = setup.light_scale == 1.0 ? "" : ", light width ×" + format_number("%g", setup.light_scale);
   const std::string title = "scene " + scene.name + light + ", shadow map " + std::to_string(setup.map_size) + "², screen " +
                             std::to_string(setup.screen_size) + "², truth " + std::to_string(setup.truth_samples) +
                             "×" + std::to_string(setup.truth_samples) +

@@ -16,8 +16,6 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return pcss_config(hqepcss()); }},
       {"fast", "Fast PCSS (seed 000): the paper's settings, Step 3 over a square covering the region, depth-aware blur",
        []() -> Made { return pcss_config(fast_pcss()); }},
-      {"fast-paper", "Fast PCSS as close to the paper as the module goes: the plain Gaussian blur of §5.3",
-       []() -> Made { return pcss_ablation("fast-paper", "blur-depth-aware", "off"); }},
       {"fast-no-refine", "Fast PCSS without Step 3's refinement", []() -> Made { return pcss_ablation("fast-no-refine", "refine", "0"); }},
       {"fast-leaf-1", "Fast PCSS with leaf side 1 (no sampled leaves)", []() -> Made { return pcss_ablation("fast-leaf-1", "leaf", "1"); }},
       {"fast-no-reuse", "Fast PCSS without reuse", []() -> Made { return pcss_ablation("fast-no-reuse", "reuse", "off"); }},
