@@ -2,6 +2,7 @@
 
 #include <iomanip>
 
+#include "bench/bench_json.h"
 #include "core/error.h"
 #include "scene/scene.h"
 #include "technique/technique_registry.h"
@@ -60,21 +61,6 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
     print_score_tables(out, s.comparison);
   }
 }
-
-namespace {
-
-nlohmann::json scores_json(const Scores& s) {
-  const auto one = [](const ImageScore& i) { return nlohmann::json{{"ssim", i.ssim}, {"mae", i.mae}}; };
-  return {{"whole", one(s.whole)}, {"light_facing", one(s.light_facing)}, {"lit", one(s.lit)}};
-}
-
-nlohmann::json named_json(const NamedValues& values) {
-  nlohmann::json o = nlohmann::json::object();
-  for (const auto& [name, v] : values) o[name] = v;
-  return o;
-}
-
-}  // namespace
 
 nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::vector<PipelineBenchSize>& sizes) {
   nlohmann::json list = nlohmann::json::array();

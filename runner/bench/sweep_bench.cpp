@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 
+#include "bench/bench_json.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "technique/technique_registry.h"
@@ -160,17 +161,6 @@ void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
 }
 
 namespace {
-
-nlohmann::json scores_json(const Scores& s) {
-  const auto one = [](const ImageScore& i) { return nlohmann::json{{"ssim", i.ssim}, {"mae", i.mae}}; };
-  return {{"whole", one(s.whole)}, {"light_facing", one(s.light_facing)}, {"lit", one(s.lit)}};
-}
-
-nlohmann::json named_json(const NamedValues& values) {
-  nlohmann::json o = nlohmann::json::object();
-  for (const auto& [name, v] : values) o[name] = v;
-  return o;
-}
 
 nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
