@@ -19,10 +19,7 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
   ComparisonSetup cs;
   cs.repeats = setup.repeats;
   cs.truth_samples = setup.truth_samples;
-  if (setup.methods.empty())
-    for (const std::string& spec : bench_techniques()) own.push_back(parse_technique(spec));
-  for (const auto& m : own) cs.techniques.push_back(m.get());
-  for (const auto& m : setup.methods) cs.techniques.push_back(m.get());
+  cs.techniques = chosen_or_default_techniques(setup.methods, bench_techniques(), own);
 
   std::vector<PipelineBenchSize> out;
   for (int n : setup.sizes) {
@@ -45,7 +42,9 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
   for (const PipelineBenchSize& s : sizes) {
     out << "size " << s.size << " (shadow map = screen), shadow map " << std::fixed << std::setprecision(2)
         << s.comparison.shadow_map_ms << " ms:\n";
-    const int name = name_column_width(s.comparison);
+    std::vector<std::string> names;
+    for (const TechniqueResult& r : s.comparison.results) names.push_back(r.name);
+    const int name = name_column_width(names);
     out << std::left << std::setw(name) << "method" << std::right << std::setw(11) << "total ms" << std::setw(10)
         << "x exact" << std::setw(10) << "x Poisson" << "   stages (ms)\n";
     for (size_t i = 0; i < s.comparison.results.size(); ++i) {

@@ -11,16 +11,11 @@
 
 namespace pn {
 
-std::vector<std::string> sweep_techniques() { return {"exact", "poisson", "hqepcss", "fast"}; }
-
 bool is_exact_spec(const std::string& name) { return name.substr(0, name.find(':')) == kExactTechnique; }
 
 Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor) {
-  if (!std::isfinite(factor) || factor <= 0)
-    throw Error("light width factor " + format_number("%g", factor) + ": expected a finite number > 0");
   Scene scene = make_scene(fixture, size);
-  scene.light.width *= factor;
-  scene.light.validate();
+  scale_light_width(scene, factor, "light width factor");
   return scene;
 }
 
@@ -53,11 +48,7 @@ std::optional<TimeGrowth> time_growth(const std::vector<std::pair<double, double
 SweepBench bench_sweep(const Context& context, const SourceTree& tree, const SweepBenchSetup& setup) {
   validate_sweep_setup(setup);
   std::vector<std::unique_ptr<TechniqueConfig>> own;
-  std::vector<const TechniqueConfig*> all;
-  if (setup.methods.empty())
-    for (const std::string& spec : sweep_techniques()) own.push_back(parse_technique(spec));
-  for (const auto& m : own) all.push_back(m.get());
-  for (const auto& m : setup.methods) all.push_back(m.get());
+  const std::vector<const TechniqueConfig*> all = chosen_or_default_techniques(setup.methods, render_techniques(), own);
 
   SweepBench bench;
   bench.exact_up_to = setup.exact_up_to;
@@ -117,9 +108,7 @@ std::optional<TimeGrowth> sweep_time_growth(const SweepBench& bench, const std::
 }
 
 void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
-  size_t name_width = std::string("truth (ray traced)").size();
-  for (const std::string& m : bench.methods) name_width = std::max(name_width, m.size());
-  const int kName = static_cast<int>(name_width) + 2;
+  const int kName = name_column_width(bench.methods);
   for_each_group(bench, [&](const std::string& scene, int size, const std::vector<const SweepPoint*>& points) {
     out << "scene " << scene << ", " << size << "x" << size << " (shadow map = screen); light-facing pixels:\n"
         << std::right << std::setw(7) << "factor" << std::setw(8) << "width" << "  " << std::left << std::setw(kName)

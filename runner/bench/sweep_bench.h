@@ -33,11 +33,8 @@ struct SweepBenchSetup {
   // search square whose side grows with the width, and at 512² on llvmpipe (2 cores) one run
   // takes 4-8 s at x1 and 16-30 s at x2 on the tall blocker, so about a minute from x4 on.
   double exact_up_to = 2.0;
-  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: sweep_techniques()
+  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: render_techniques()
 };
-
-// exact, poisson, hqepcss, fast.
-std::vector<std::string> sweep_techniques();
 
 // Throws Error naming the first bad setting: an unknown scene, a factor that is not a finite
 // number > 0 (or that makes a light that does not validate), a size outside 16..4096, repeats

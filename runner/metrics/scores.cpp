@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/error.h"
 #include "figures/lit_image.h"
@@ -32,15 +33,23 @@ Image light_facing_mask(const Image& surface) {
   return mask;
 }
 
-Scores score_visibility(const Image& reference, const Image& observed, const Image& surface) {
-  const Image facing = light_facing_mask(surface);
-  const Image lit_reference = luma(compose_lit_image(surface, reference));
-  const Image lit_observed = luma(compose_lit_image(surface, observed));
+VisibilityScorer::VisibilityScorer(Image reference, Image surface)
+    : reference_(std::move(reference)),
+      surface_(std::move(surface)),
+      facing_(light_facing_mask(surface_)),
+      lit_reference_(luma(compose_lit_image(surface_, reference_))) {}
+
+Scores VisibilityScorer::score(const Image& observed) const {
+  const Image lit_observed = luma(compose_lit_image(surface_, observed));
   Scores s;
-  s.whole = {ssim(reference, observed), mean_absolute_error(reference, observed)};
-  s.light_facing = {ssim(reference, observed, facing), mean_absolute_error(reference, observed, &facing)};
-  s.lit = {ssim(lit_reference, lit_observed), mean_absolute_error(lit_reference, lit_observed)};
+  s.whole = {ssim(reference_, observed), mean_absolute_error(reference_, observed)};
+  s.light_facing = {ssim(reference_, observed, facing_), mean_absolute_error(reference_, observed, &facing_)};
+  s.lit = {ssim(lit_reference_, lit_observed), mean_absolute_error(lit_reference_, lit_observed)};
   return s;
+}
+
+Scores score_visibility(const Image& reference, const Image& observed, const Image& surface) {
+  return VisibilityScorer(reference, surface).score(observed);
 }
 
 }  // namespace pn

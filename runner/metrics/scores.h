@@ -25,6 +25,18 @@ double mean_absolute_error(const Image& a, const Image& b, const Image* mask = n
 // 1 where the surface faces the light: `surface` is SurfaceRenderer's image (channel 3: max(N·L, 0)).
 Image light_facing_mask(const Image& surface);
 
+// Scores against one reference on one surface: the light-facing mask and the
+// reference's lit luma are made once, for every image scored against it.
+class VisibilityScorer {
+ public:
+  // `reference`: single-channel visibility, the size of `surface`.
+  VisibilityScorer(Image reference, Image surface);
+  Scores score(const Image& observed) const;
+
+ private:
+  Image reference_, surface_, facing_, lit_reference_;
+};
+
 // `reference` and `observed`: single-channel visibility, same size as `surface`.
 Scores score_visibility(const Image& reference, const Image& observed, const Image& surface);
 

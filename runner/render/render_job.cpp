@@ -1,7 +1,6 @@
 #include "render/render_job.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <iomanip>
 
@@ -19,17 +18,6 @@ namespace pn {
 namespace {
 
 constexpr float kErrorLimit = 0.5f;  // the error pictures saturate at ±0.5 visibility
-
-std::vector<const TechniqueConfig*> configs(const RenderSetup& setup, std::vector<std::unique_ptr<TechniqueConfig>>& own) {
-  std::vector<const TechniqueConfig*> out;
-  if (setup.methods.empty()) {
-    for (const std::string& spec : render_techniques()) own.push_back(parse_technique(spec));
-    for (const auto& c : own) out.push_back(c.get());
-  } else {
-    for (const auto& c : setup.methods) out.push_back(c.get());
-  }
-  return out;
-}
 
 void write_grey(const Image& image, const std::filesystem::path& path) {
   Canvas canvas(image.width, image.height, {0, 0, 0});
@@ -86,7 +74,6 @@ Canvas draw_sheet(const std::string& title, const Comparison& c) {
   const int top = title_height + header;
   const char* rows[] = {"lit", "soft shadow", "error vs truth"};
   for (int r = 0; r < 3; ++r) sheet.text(font, 4, top + r * (size + gap) + size / 2 - text / 2, rows[r], text, ink);
-  const Image zero(size, size);
   for (int i = 0; i < columns; ++i) {
     const int x = label_width + i * (column + gap), y = title_height;
     const TechniqueResult* r = i == 0 ? nullptr : &c.results[static_cast<size_t>(i - 1)];
@@ -107,8 +94,7 @@ Canvas draw_sheet(const std::string& title, const Comparison& c) {
 void validate_render_setup(const RenderSetup& s) {
   if (s.model.empty()) find_scene_fixture(s.scene);
   find_shadow_map_source(s.source);
-  if (!std::isfinite(s.light_scale) || s.light_scale <= 0)
-    throw Error("light scale " + format_number("%g", s.light_scale) + ": expected a finite number > 0");
+  validate_light_width_factor(s.light_scale, "light scale");
   if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
   if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
   if (s.truth_samples < 1 || s.truth_samples > 64) throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
@@ -119,8 +105,7 @@ void validate_render_setup(const RenderSetup& s) {
 Scene load_render_scene(const RenderSetup& s) {
   Scene scene =
       s.model.empty() ? make_scene(find_scene_fixture(s.scene), s.map_size) : make_model_scene(s.model, s.map_size);
-  scene.light.width *= s.light_scale;
-  scene.light.validate();
+  scale_light_width(scene, s.light_scale, "light scale");
   return scene;
 }
 
@@ -138,7 +123,7 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
   cs.screen_size = setup.screen_size;
   cs.repeats = setup.repeats;
   cs.truth_samples = setup.truth_samples;
-  cs.techniques = configs(setup, own);
+  cs.techniques = chosen_or_default_techniques(setup.methods, render_techniques(), own);
   RenderResult result;
   result.scene_name = scene.name;
   result.comparison = compare_techniques(context, tree, scene, cs);

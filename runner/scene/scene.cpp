@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/seeded_random.h"
 
 namespace pn {
@@ -50,6 +51,17 @@ const fixtures::SceneFixture& find_scene_fixture(const std::string& name) {
     known += (known.empty() ? "" : ", ") + std::string(fixture.name);
   }
   throw Error("unknown scene '" + name + "': expected one of " + known);
+}
+
+void validate_light_width_factor(double factor, const char* what) {
+  if (!std::isfinite(factor) || factor <= 0)
+    throw Error(std::string(what) + " " + format_number("%g", factor) + ": expected a finite number > 0");
+}
+
+void scale_light_width(Scene& scene, double factor, const char* what) {
+  validate_light_width_factor(factor, what);
+  scene.light.width *= factor;
+  scene.light.validate();
 }
 
 Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size) {

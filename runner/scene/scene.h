@@ -48,6 +48,11 @@ const fixtures::SceneFixture& find_scene_fixture(const std::string& name);
 // Throws Error for N < 2 or a light that does not validate.
 Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
 
+// Multiplies the scene's light width by `factor` (wider penumbrae). Throws Error
+// "<what> <factor>: expected a finite number > 0", or for a light that then does not validate.
+void validate_light_width_factor(double factor, const char* what);
+void scale_light_width(Scene& scene, double factor, const char* what);
+
 // What a screen pixel sees, in the shadow map's terms (Step 2): the shadow-map
 // position of the surface point through the pixel's centre, in texels
 // (continuous: texel i spans [i, i + 1)), and its linear light depth.

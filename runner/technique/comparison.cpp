@@ -1,7 +1,7 @@
 #include "technique/comparison.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <iomanip>
 
 #include "core/error.h"
@@ -11,6 +11,10 @@
 #include "truth/ray_traced_truth.h"
 
 namespace pn {
+
+namespace {
+constexpr const char* kTruthRow = "truth (ray traced)";
+}  // namespace
 
 const TechniqueResult* Comparison::find(const std::string& name) const {
   for (const TechniqueResult& r : results)
@@ -36,26 +40,24 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
   c.truth_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   TechniqueResources resources(context, tree);
+  const VisibilityScorer against_truth(c.truth, c.surface);
   for (const TechniqueConfig* config : setup.techniques) {
     const std::unique_ptr<Technique> technique = config->create(resources);
     TechniqueResult r;
     r.name = config->name();
     r.measurement = measure_technique(*technique, frame.inputs(), setup.repeats);
     r.visibility = read_float_texture(context, r.measurement.frame.visibility, size, size, 1);
-    r.vs_truth = score_visibility(c.truth, r.visibility, c.surface);
+    r.vs_truth = against_truth.score(r.visibility);
     c.results.push_back(std::move(r));
   }
   if (const TechniqueResult* exact = c.find(kExactTechnique)) {
-    const Image reference = exact->visibility;
-    for (TechniqueResult& r : c.results) r.vs_exact = score_visibility(reference, r.visibility, c.surface);
-    c.truth_vs_exact = score_visibility(reference, c.truth, c.surface);
+    const VisibilityScorer against_exact(exact->visibility, c.surface);
+    for (TechniqueResult& r : c.results) r.vs_exact = against_exact.score(r.visibility);
+    c.truth_vs_exact = against_exact.score(c.truth);
   }
   return c;
 }
 
-}  // namespace pn
-
-namespace pn {
 namespace {
 
 void score_cells(std::ostream& out, const ImageScore& s) {
@@ -75,14 +77,16 @@ std::optional<ImageScore> part(const std::optional<Scores>& s, Member member) {
 
 }  // namespace
 
-int name_column_width(const Comparison& c) {
-  size_t width = std::string("truth (ray traced)").size();
-  for (const TechniqueResult& r : c.results) width = std::max(width, r.name.size());
+int name_column_width(const std::vector<std::string>& names) {
+  size_t width = std::string(kTruthRow).size();
+  for (const std::string& name : names) width = std::max(width, name.size());
   return static_cast<int>(width) + 2;
 }
 
 void print_score_tables(std::ostream& out, const Comparison& c) {
-  const int kName = name_column_width(c);
+  std::vector<std::string> names;
+  for (const TechniqueResult& r : c.results) names.push_back(r.name);
+  const int kName = name_column_width(names);
   out << "light-facing pixels (N.L > 0):\n"
       << std::left << std::setw(kName) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(11)
       << "SSIM truth" << std::setw(10) << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10)
@@ -97,7 +101,7 @@ void print_score_tables(std::ostream& out, const Comparison& c) {
       out << " " << name << " " << std::setprecision(value < 10 ? 3 : 1) << value;
     out << "\n";
   }
-  out << std::left << std::setw(kName) << "truth (ray traced)" << std::right << std::setw(10) << "-";
+  out << std::left << std::setw(kName) << kTruthRow << std::right << std::setw(10) << "-";
   score_cells(out, ImageScore{1.0, 0.0});
   score_cells(out, part(c.truth_vs_exact, &Scores::light_facing));
   out << "   CPU " << std::setprecision(0) << c.truth_ms << " ms\n";
@@ -118,7 +122,7 @@ void print_score_tables(std::ostream& out, const Comparison& c) {
   };
   for (const TechniqueResult& r : c.results) row(r.name, r.vs_truth, r.vs_exact);
   const Scores self{{1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}};
-  row("truth (ray traced)", self, c.truth_vs_exact);
+  row(kTruthRow, self, c.truth_vs_exact);
   out.unsetf(std::ios::floatfield);
 }
 

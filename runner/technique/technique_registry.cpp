@@ -55,6 +55,17 @@ std::unique_ptr<TechniqueConfig> parse_technique(const std::string& spec) {
   return config;
 }
 
+std::vector<const TechniqueConfig*> chosen_or_default_techniques(
+    const std::vector<std::shared_ptr<const TechniqueConfig>>& chosen, const std::vector<std::string>& defaults,
+    std::vector<std::unique_ptr<TechniqueConfig>>& parsed) {
+  std::vector<const TechniqueConfig*> out;
+  for (const auto& c : chosen) out.push_back(c.get());
+  if (!out.empty()) return out;
+  for (const std::string& spec : defaults) parsed.push_back(parse_technique(spec));
+  for (const auto& c : parsed) out.push_back(c.get());
+  return out;
+}
+
 std::vector<std::string> render_techniques() { return {"exact", "poisson", "hqepcss", "fast"}; }
 
 std::vector<std::string> bench_techniques() {

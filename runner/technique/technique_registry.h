@@ -26,6 +26,12 @@ const std::vector<TechniqueEntry>& technique_registry();
 // malformed item, an unknown key or a value out of range.
 std::unique_ptr<TechniqueConfig> parse_technique(const std::string& spec);
 
+// The techniques a command runs: `chosen` when the user gave any, else `defaults` parsed into
+// `parsed`, which owns them for as long as the returned pointers are used.
+std::vector<const TechniqueConfig*> chosen_or_default_techniques(
+    const std::vector<std::shared_ptr<const TechniqueConfig>>& chosen, const std::vector<std::string>& defaults,
+    std::vector<std::unique_ptr<TechniqueConfig>>& parsed);
+
 // What render draws by default, and what bench times by default.
 std::vector<std::string> render_techniques();
 std::vector<std::string> bench_techniques();
