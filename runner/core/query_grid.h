@@ -24,4 +24,10 @@ inline Image query_image(const std::vector<Query>& queries, int width = 1024) {
   return image;
 }
 
+// Result k of a query pass: the four channels of texel (k mod width, k / width) of its result image.
+inline Query query_result(const Image& results, size_t k) {
+  const int x = static_cast<int>(k % static_cast<size_t>(results.width)), y = static_cast<int>(k / static_cast<size_t>(results.width));
+  return {results.at(x, y, 0), results.at(x, y, 1), results.at(x, y, 2), results.at(x, y, 3)};
+}
+
 }  // namespace pn

@@ -42,8 +42,8 @@ std::vector<PcfQueryResult> PcfQueryPass::run(const GlObject& depth_map, const s
   const Image r = read_float_texture(*context_, results, image_a.width, image_a.height, 4);
   std::vector<PcfQueryResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
-    const int x = static_cast<int>(k) % image_a.width, y = static_cast<int>(k) / image_a.width;
-    out.push_back({r.at(x, y, 0), r.at(x, y, 1), r.at(x, y, 2)});
+    const Query q = query_result(r, k);
+    out.push_back({q[0], q[1], q[2]});
   }
   return out;
 }

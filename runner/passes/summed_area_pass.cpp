@@ -122,14 +122,14 @@ std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& 
   const Image f = read_float_texture(*context_, floats, w, h, 4);
   std::vector<SummedAreaQueryResult> out;
   for (size_t k = 0; k < rects.size(); ++k) {
-    const int x = static_cast<int>(k) % w, y = static_cast<int>(k) / w;
+    const Query q = query_result(f, k);
     const std::uint32_t* t = &u[k * 4];
     SummedAreaQueryResult r;
     r.fixed_sum = (static_cast<std::uint64_t>(t[1]) << 32) | t[0];
     r.count = t[2];
     r.texels = t[3];
-    r.sum = f.at(x, y, 0);
-    r.mean = f.at(x, y, 1);
+    r.sum = q[0];
+    r.mean = q[1];
     out.push_back(r);
   }
   return out;
