@@ -9,12 +9,19 @@
 
 namespace pn {
 
-std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const SourceTree& tree,
-                                              const PipelineBenchSetup& setup) {
-  const auto& fixture = find_scene_fixture(setup.scene);
+void validate_pipeline_bench_setup(const PipelineBenchSetup& setup) {
+  find_scene_fixture(setup.scene);
   for (int n : setup.sizes)
     if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
   if (setup.repeats < 1) throw Error("repeats " + std::to_string(setup.repeats) + ": expected >= 1");
+  if (setup.truth_samples < 1 || setup.truth_samples > 64)
+    throw Error("truth samples " + std::to_string(setup.truth_samples) + ": expected 1..64 per side");
+}
+
+std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const SourceTree& tree,
+                                              const PipelineBenchSetup& setup) {
+  validate_pipeline_bench_setup(setup);
+  const auto& fixture = find_scene_fixture(setup.scene);
   std::vector<std::unique_ptr<TechniqueConfig>> own;
   ComparisonSetup cs;
   cs.repeats = setup.repeats;

@@ -33,7 +33,11 @@ struct PipelineBenchSize {
   std::vector<double> speedup_vs_exact, speedup_vs_poisson;
 };
 
-// Throws Error for an unknown scene, sizes outside 16..4096 or repeats < 1.
+// Throws Error for an unknown scene, sizes outside 16..4096, repeats < 1 or truth samples outside
+// 1..64 (without GL: the command calls it before making a context).
+void validate_pipeline_bench_setup(const PipelineBenchSetup& setup);
+
+// Throws what validate_pipeline_bench_setup throws.
 std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const SourceTree& tree,
                                               const PipelineBenchSetup& setup);
 

@@ -52,6 +52,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
       if (truth_samples->count() > 0) opt->sweep.truth_samples = opt->pipeline.truth_samples;
       validate_sweep_setup(opt->sweep);
+    } else if (opt->what == "pipeline") {
+      if (repeats->count() > 0) opt->pipeline.repeats = opt->repeats;
+      if (sizes->count() > 0) opt->pipeline.sizes = opt->sizes;
+      validate_pipeline_bench_setup(opt->pipeline);
     }
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
@@ -67,8 +71,6 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       print_sweep_bench(std::cout, bench);
       results = sweep_bench_json(opt->sweep, bench);
     } else if (opt->what == "pipeline") {
-      if (repeats->count() > 0) opt->pipeline.repeats = opt->repeats;
-      if (sizes->count() > 0) opt->pipeline.sizes = opt->sizes;
       const auto rows = bench_pipeline(*context, tree, opt->pipeline);
       print_pipeline_bench(std::cout, rows);
       results = pipeline_bench_json(opt->pipeline, rows);
