@@ -11,16 +11,34 @@
 //   never spreads NaN. The depth-aware variant drops taps whose depth is not
 //   within a relative tolerance of the centre's (a cross-bilateral cut that
 //   keeps penumbrae from bleeding across depth edges) and renormalises.
+//   The adaptive radius (option) gives each output pixel p its own radius
+//     r(p) = clamp(floor(s(p) * k / 2), 0, radius),
+//   s(p) the side in shadow-map texels of p's filter region (Step 5; s < 0 or
+//   NaN: lit), k the screen pixels per shadow-map texel: the blur never widens
+//   a penumbra by more than half its width, and lit pixels and contact
+//   shadows (s < 2/k) get r = 0, their value unchanged. Each 1-D pass uses
+//   the radius of its output pixel (a gather); sigma stays the same and the
+//   truncated kernel is renormalised.
 //
 // use:
 //   float pnBlur1D(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma)
 //   float pnBlur1DDepthAware(sampler2D src, sampler2D depth, ivec2 p, ivec2 axis,
 //                            int radius, float sigma, float depthTolerance)
+//   float pnBlur1DAdaptive(sampler2D src, sampler2D filterMap, ivec2 p, ivec2 axis,
+//                          int radius, float sigma, float pixelsPerTexel)
+//   float pnBlur1DDepthAwareAdaptive(sampler2D src, sampler2D depth, sampler2D filterMap,
+//                          ivec2 p, ivec2 axis, int radius, float sigma,
+//                          float depthTolerance, float pixelsPerTexel)
+//   int   pnBlurAdaptiveRadius(float filterSide, float pixelsPerTexel, int radius)
 //   float pnBlurGaussian(int offset, float sigma)   unnormalised weight
 //   p, axis in texels (axis = ivec2(1,0) or ivec2(0,1)); radius is clamped to
 //   [0, PN_BLUR_MAX_RADIUS]; sigma <= 0 or NaN returns the centre texel.
 //   depthTolerance is relative: |d_tap - d_centre| <= depthTolerance * |d_centre|.
-//   Cost: 2r+1 fetches and exps per pass per texel (4r+2 for depth-aware).
+//   filterMap: the filter-region map, (d, x, y, s) per pixel (pcss_regions.glsl),
+//   of the size of src; only .w (s) is read. pixelsPerTexel <= 0 or NaN gives r = 0.
+//   Cost: 2r+1 fetches and one exp per pass per texel (4r+2 fetches for
+//   depth-aware; the weights by recurrence, pnBlurNextWeight); the adaptive
+//   variants add one fetch and cost 2r(p)+1 taps (1 when r(p) = 0).
 //
 // options:
 //   PN_BLUR_RADIUS            default radius for callers (3, seed 000 §5.3)
@@ -37,6 +55,27 @@
 float pnBlurGaussian(int offset, float sigma) {
   float t = float(offset) / sigma;
   return exp(-0.5 * t * t);
+}
+
+// The weights w_i = exp(-i^2 / (2 sigma^2)) of taps i = 1, 2, ... in turn, by
+// recurrence (one exp per pass and pixel instead of 2r): with a = w_1,
+//   w_i = w_{i-1} * q_{i-1},  q_i = q_{i-1} * a^2,  w_0 = 1, q_0 = a
+// (so q_i = a^(2i+1) and w_i = a^(i^2)); a few float roundings per tap.
+struct PnBlurWeights {
+  float weight;     // w_i of the last tap
+  float ratio;      // q_i = w_{i+1} / w_i
+  float ratioStep;  // a^2
+};
+
+PnBlurWeights pnBlurWeightsStart(float sigma) {
+  float a = pnBlurGaussian(1, sigma);
+  return PnBlurWeights(1.0, a, a * a);
+}
+
+float pnBlurNextWeight(inout PnBlurWeights g) {
+  g.weight *= g.ratio;
+  g.ratio *= g.ratioStep;
+  return g.weight;
 }
 
 bool pnBlurIsFinite(float v) {
@@ -59,14 +98,16 @@ float pnBlurValue(sampler2D src, ivec2 p) {
   return pnBlurIsFinite(v) ? v : float(PN_BLUR_NONFINITE_VALUE);
 }
 
+// The centre (weight 1), then the taps at -i and +i for i = 1..r.
 float pnBlur1D(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma) {
   int r = pnBlurRadius(radius, sigma);
-  float sum = 0.0;
-  float weightSum = 0.0;
-  for (int i = -r; i <= r; ++i) {
-    float w = (r == 0) ? 1.0 : pnBlurGaussian(i, sigma);
-    sum += w * pnBlurValue(src, p + i * axis);
-    weightSum += w;
+  float sum = pnBlurValue(src, p);
+  float weightSum = 1.0;
+  PnBlurWeights g = pnBlurWeightsStart(sigma);
+  for (int i = 1; i <= r; ++i) {
+    float w = pnBlurNextWeight(g);
+    sum += w * (pnBlurValue(src, p - i * axis) + pnBlurValue(src, p + i * axis));
+    weightSum += 2.0 * w;
   }
   return sum / weightSum;
 }
@@ -80,21 +121,58 @@ bool pnBlurSameSurface(float centreDepth, float tapDepth, float depthTolerance) 
   return abs(tapDepth - centreDepth) <= depthTolerance * abs(centreDepth);
 }
 
+// The centre always counts (so weightSum >= 1); a tap at -i or +i only on the centre's surface.
 float pnBlur1DDepthAware(sampler2D src, sampler2D depth, ivec2 p, ivec2 axis, int radius, float sigma,
                          float depthTolerance) {
   int r = pnBlurRadius(radius, sigma);
   float centreDepth = pnBlurFetch(depth, p);
-  float sum = 0.0;
-  float weightSum = 0.0;
-  for (int i = -r; i <= r; ++i) {
-    ivec2 q = p + i * axis;
-    // The centre tap always counts, so weightSum > 0.
-    if (i != 0 && !pnBlurSameSurface(centreDepth, pnBlurFetch(depth, q), depthTolerance)) continue;
-    float w = (r == 0) ? 1.0 : pnBlurGaussian(i, sigma);
-    sum += w * pnBlurValue(src, q);
-    weightSum += w;
+  float sum = pnBlurValue(src, p);
+  float weightSum = 1.0;
+  PnBlurWeights g = pnBlurWeightsStart(sigma);
+  for (int i = 1; i <= r; ++i) {
+    float w = pnBlurNextWeight(g);
+    for (int side = -1; side <= 1; side += 2) {
+      ivec2 q = p + side * i * axis;
+      if (!pnBlurSameSurface(centreDepth, pnBlurFetch(depth, q), depthTolerance)) continue;
+      sum += w * pnBlurValue(src, q);
+      weightSum += w;
+    }
   }
   return sum / weightSum;
+}
+
+// r(p) from p's filter side s (texels) and k = pixelsPerTexel (screen pixels
+// per texel): floor(s k / 2) in float arithmetic, clamped to [0, radius] and
+// to [0, PN_BLUR_MAX_RADIUS]. Lit (s < 0), NaN, contact (s k < 2) and k <= 0
+// or NaN give 0; s k = +Inf gives the bound.
+int pnBlurAdaptiveRadius(float filterSide, float pixelsPerTexel, int radius) {
+  float halfWidth = 0.5 * filterSide * pixelsPerTexel;  // half the penumbra, in screen pixels
+  int bound = clamp(radius, 0, PN_BLUR_MAX_RADIUS);
+  if (!(pixelsPerTexel > 0.0) || !(halfWidth >= 1.0)) return 0;
+  return int(min(floor(halfWidth), float(bound)));
+}
+
+// The filter side of pixel p (.w of its filter-region entry), clamp-to-edge.
+float pnBlurFilterSide(sampler2D filterMap, ivec2 p) {
+  ivec2 last = textureSize(filterMap, 0) - ivec2(1);
+  return texelFetch(filterMap, clamp(p, ivec2(0), last), 0).w;
+}
+
+// The per-pixel-radius passes: pnBlur1D / pnBlur1DDepthAware with the
+// output pixel's radius r(p); a pixel of radius 0 is a copy of its texel
+// (what the 1-tap pass returns, without the depth fetch and the weight).
+float pnBlur1DAdaptive(sampler2D src, sampler2D filterMap, ivec2 p, ivec2 axis, int radius, float sigma,
+                       float pixelsPerTexel) {
+  int r = pnBlurAdaptiveRadius(pnBlurFilterSide(filterMap, p), pixelsPerTexel, pnBlurRadius(radius, sigma));
+  if (r == 0) return pnBlurValue(src, p);
+  return pnBlur1D(src, p, axis, r, sigma);
+}
+
+float pnBlur1DDepthAwareAdaptive(sampler2D src, sampler2D depth, sampler2D filterMap, ivec2 p, ivec2 axis,
+                                 int radius, float sigma, float depthTolerance, float pixelsPerTexel) {
+  int r = pnBlurAdaptiveRadius(pnBlurFilterSide(filterMap, p), pixelsPerTexel, pnBlurRadius(radius, sigma));
+  if (r == 0) return pnBlurValue(src, p);
+  return pnBlur1DDepthAware(src, depth, p, axis, r, sigma, depthTolerance);
 }
 
 #endif  // PENUMBRA_BLUR_GLSL

@@ -30,6 +30,9 @@
 // use:
 //   vec4  pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias,
 //                       int iterations)                          receiver = G-buffer (u, v, d, valid)
+//   vec4  pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias,
+//                          int iterations)   the same from the aligned mip chain (minmax_mip.glsl):
+//                          zmin over the aligned nodes touching the square (<= 9 fetches), a superset
 //   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
 //   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
@@ -44,13 +47,14 @@
 // options:
 //   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement (pcss_regions.h, shared with the runner)
 //
-// cost: search entry: 4 fetches per refinement iteration; filter entry: ALU only.
+// cost: search entry: 4 fetches per refinement iteration (9 from the mip chain); filter entry: ALU only.
 
 #ifndef PENUMBRA_PCSS_REGIONS_GLSL
 #define PENUMBRA_PCSS_REGIONS_GLSL
 
 #include "depth_pyramid.glsl"
 #include "light_model.glsl"
+#include "minmax_mip.glsl"
 #include "pcss_regions.h"
 #include "region.glsl"
 
@@ -80,17 +84,50 @@ float pnSearchRegionMin(sampler2DArray pyramid, vec4 entry) {
   return pnPyramidSquareMinMax(pyramid, r.origin, max(r.size.x, r.size.y)).x;
 }
 
-vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations) {
+// The same from the aligned mip chain: the min over the aligned nodes that
+// touch that square (<= 9 fetches) — never above the square's min, so the lit
+// decision stays conservative and refinement lossless.
+float pnSearchRegionMinMip(sampler2D mip, int mapSize, vec4 entry) {
+  PnRect r = pnEntryRect(entry, mapSize);
+  if (r.size.x == 0 || r.size.y == 0) return pnMipFar();
+  return pnMipSquareMinMax(mip, mapSize, r.origin, max(r.size.x, r.size.y)).x;
+}
+
+// Step 3's start: PCSS's search width, or lit for a pixel without a surface.
+vec4 pnSearchStart(PnLight light, vec4 receiver) {
   float d = receiver.z;
   if (receiver.w == 0.0 || isnan(d)) return vec4(0.0, 0.0, 0.0, PN_REGION_LIT);
-  vec4 entry = vec4(d, receiver.xy, pnLightSearchWidthTexels(light, d));
+  return vec4(d, receiver.xy, pnLightSearchWidthTexels(light, d));
+}
+
+// One refinement step from the region's min depth: lit, shrunk, or `done`.
+vec4 pnSearchRefine(PnLight light, vec4 entry, float zmin, float bias, out bool done) {
+  done = true;
+  if (!(zmin < entry.x - bias)) return vec4(entry.xyz, PN_REGION_LIT);
+  float side = pnLightBlockerWindowTexels(light, entry.x, zmin);
+  if (!(side < entry.w)) return entry;
+  done = false;
+  return vec4(entry.xyz, side);
+}
+
+vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations) {
+  vec4 entry = pnSearchStart(light, receiver);
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
-    if (i >= iterations) break;
-    float zmin = pnSearchRegionMin(pyramid, entry);
-    if (!(zmin < d - bias)) return vec4(entry.xyz, PN_REGION_LIT);
-    float side = pnLightBlockerWindowTexels(light, d, zmin);
-    if (!(side < entry.w)) break;
-    entry.w = side;
+    if (i >= iterations || pnEntryLit(entry)) break;
+    bool done;
+    entry = pnSearchRefine(light, entry, pnSearchRegionMin(pyramid, entry), bias, done);
+    if (done) break;
+  }
+  return entry;
+}
+
+vec4 pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations) {
+  vec4 entry = pnSearchStart(light, receiver);
+  for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
+    if (i >= iterations || pnEntryLit(entry)) break;
+    bool done;
+    entry = pnSearchRefine(light, entry, pnSearchRegionMinMip(mip, mapSize, entry), bias, done);
+    if (done) break;
   }
   return entry;
 }

@@ -31,12 +31,30 @@
 //   region). Nothing is dropped, and at most 3 nodes per level remain after
 //   the budget runs out: the loop runs at most nodeBudget + 3·rootLevel + 1 times.
 //   A NaN receiver depth occludes nothing and visits no node.
+//   Over the aligned mip chain (pnTraverseRegionMip, minmax_mip.glsl): the
+//   roots are the 2×2 aligned nodes of level ceil(log2 side) at the region's
+//   aligned corner; every node that touches the region is read and its part
+//   inside the region [lo, hi) counted when its (min, max) decide it: none
+//   occludes -> skip; all occlude -> the part's texels, and its depth sum
+//   (depthSums: the summed-area table's exact sum over the part, or the node's
+//   midpoint times the part's texels, or none for Step 5's counts); an
+//   ambiguous node descends, or at a leaf is estimated over its part (samples
+//   spread over the part). So a straddling node costs one fetch (plus 4 for
+//   the table), not a descent to the border: exact regions at the cost of
+//   windows. Level-1 nodes resolve their four texels at once. Leaf side 1 with
+//   the table is exact: counts equal brute force, the depth sum is exact up to
+//   float rounding of the per-node sums.
 //
 // use:
 //   PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable,
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias,
 //       int leafSide, int leafMode, int nodeBudget, ivec2 pixel)
 //   PnTraversal pnTraverseWindow(... PnWindow window ...)       the region.glsl window
+//   PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sampleTable, int mapSize,
+//       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
+//       int nodeBudget, int depthSums, ivec2 pixel)
+//       over minmax_mip.glsl's chain; sumTable: summed_area.glsl's table of the map (read only
+//       for PN_DEPTH_SUMS_TABLE); depthSums: PN_DEPTH_SUMS_NONE / _TABLE / _MIDPOINT (traversal.h)
 //   float pnTraversalBlockerMean(PnTraversal r)        depthSum / occluders (0 if none; Step 4)
 //   float pnTraversalOccludedFraction(PnTraversal r)   occluders / texels (Step 5)
 //   PnTraversal { float occluders; float depthSum; float texels; int nodes; int fetches; }
@@ -47,14 +65,18 @@
 //                               shared with the runner like the leaf modes PN_LEAF_*)
 //
 // cost: one fetch per node inside the region, 4^k <= 16 per sampled leaf;
-//   nodes <= min(4/3 · side², nodeBudget + 3 · rootLevel + 1).
+//   nodes <= min(4/3 · side², nodeBudget + 3 · rootLevel + 1). Over the mip
+//   chain: one fetch per node touching the region (+4 per wholly occluding
+//   part with the table), nodes <= nodeBudget + 3 · (top + 1) + 8, top = ceil(log2 side).
 
 #ifndef PENUMBRA_TRAVERSAL_GLSL
 #define PENUMBRA_TRAVERSAL_GLSL
 
 #include "depth_pyramid.glsl"
+#include "minmax_mip.glsl"
 #include "region.glsl"
 #include "sample_table.glsl"
+#include "summed_area.glsl"
 #include "traversal.h"  // PN_TRAVERSAL_MAX_LEVEL, PN_LEAF_SAMPLED, PN_LEAF_MIN
 
 struct PnTraversal {
@@ -101,6 +123,43 @@ void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2
       occluding += 1.0;
       depthSum += d;
     }
+  }
+  float texels = float(size.x * size.y);
+  r.occluders += texels * occluding / float(m);
+  r.depthSum += texels * depthSum / float(m);
+}
+
+// Sample i < m of a sampled leaf over the mip chain's level 0.
+void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
+                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size, float t) {
+  if (i >= m) return;
+  ivec2 p = pnSampleTexel(pnSample(sampleTable, first + i, set), lo, size);
+  float d = pnMipFetch(mip, 0, p).x;
+  r.fetches += 1;
+  if (d < t) {
+    occluding += 1.0;
+    depthSum += d;
+  }
+}
+
+// The same over the mip chain's level 0.
+void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D sampleTable, ivec2 lo,
+                           ivec2 size, int side, float t, ivec2 pixel) {
+  int k = pnSampleGroupLog4(side);
+  int m = pnSampleCount(k);
+  int first = pnSampleFirstColumn(k);
+  int set = pnSampleSet(pixel);
+  float occluding = 0.0;
+  float depthSum = 0.0;
+  // Four samples a step (m is 1, 4 or 16): llvmpipe ends a loop once its
+  // iterations, summed over all its entries in one invocation, reach 65535
+  // (measured: a 256² fine checker at leaf 2 hits it one sample a step).
+  for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
+    if (g >= m) break;
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g, m, lo, size, t);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 1, m, lo, size, t);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 2, m, lo, size, t);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 3, m, lo, size, t);
   }
   float texels = float(size.x * size.y);
   r.occluders += texels * occluding / float(m);
@@ -218,6 +277,151 @@ PnTraversal pnTraverseWindow(sampler2DArray pyramid, sampler2D sampleTable, PnWi
                              float bias, int leafSide, int leafMode, int nodeBudget, ivec2 pixel) {
   return pnTraverseRegion(pyramid, sampleTable, window.origin, ivec2(window.side), receiverDepth, bias, leafSide,
                           leafMode, nodeBudget, pixel);
+}
+
+// ---- Over the aligned min/max mip chain (minmax_mip.glsl) -------------------
+
+// The clipped part [lo, hi) of a node whose every texel occludes: its texels,
+// and their depth sum as `depthSums` asks (PN_DEPTH_SUMS_*, traversal.h): the
+// node's depth times its texels when min == max (every texel the same depth:
+// level 0 always); else the summed-area table's exact sum over the part
+// (TABLE, 4 fetches) or the node's midpoint (min + max) / 2 times its texels
+// (MIDPOINT, no table); NONE adds no depth (Step 5 only counts).
+void pnTraversalAddOccludingPart(inout PnTraversal r, usampler2D sumTable, vec2 node, ivec2 lo, ivec2 hi,
+                                 int depthSums) {
+  ivec2 size = hi - lo;
+  float texels = float(size.x * size.y);
+  r.occluders += texels;
+  if (depthSums == PN_DEPTH_SUMS_NONE) return;
+  if (node.x == node.y) {
+    r.depthSum += node.x * texels;
+  } else if (depthSums == PN_DEPTH_SUMS_TABLE) {
+    r.depthSum += pnSummedAreaRectSum(sumTable, lo, size).sum;
+    r.fetches += 4;
+  } else {
+    r.depthSum += 0.5 * (node.x + node.y) * texels;  // PN_DEPTH_SUMS_MIDPOINT: within (max - min) / 2 a texel
+  }
+}
+
+// Reads an aligned node of the chain and counts its clipped part [lo, hi)
+// when its (min, max) decide it; returns true when it is ambiguous, with its
+// min depth in `nodeMin`.
+bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, usampler2D sumTable, int level, ivec2 origin,
+                             ivec2 lo, ivec2 hi, float t, int depthSums, out float nodeMin) {
+  vec2 node = pnMipFetch(mip, level, origin >> level);
+  r.nodes += 1;
+  r.fetches += 1;
+  nodeMin = node.x;
+  if (node.y < t) {
+    pnTraversalAddOccludingPart(r, sumTable, node, lo, hi, depthSums);
+    return false;
+  }
+  return node.x < t;
+}
+
+// A node that will not be descended: its clipped part classified, and
+// estimated by the leaf mode when ambiguous (samples spread over the part).
+void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, usampler2D sumTable, sampler2D sampleTable,
+                              int level, ivec2 origin, ivec2 lo, ivec2 hi, float t, int leafMode, int depthSums,
+                              ivec2 pixel) {
+  float nodeMin;
+  if (!pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, nodeMin)) return;
+  if (leafMode == PN_LEAF_MIN) {
+    ivec2 size = hi - lo;
+    float texels = float(size.x * size.y);
+    r.occluders += texels;
+    r.depthSum += nodeMin * texels;
+  } else {
+    pnTraversalSampleLeafMip(r, mip, sampleTable, lo, hi - lo, 1 << level, t, pixel);
+  }
+}
+
+// The four level-0 children (texels) of a level-1 node at `origin`, clipped to the region.
+void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, usampler2D sumTable, ivec2 origin,
+                            ivec2 regionStart, ivec2 regionEnd, float t, int depthSums) {
+  vec4 pair0 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y));
+  vec4 pair1 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y + 1));
+  vec4 depths = vec4(pair0.x, pair0.z, pair1.x, pair1.z);  // (0,0), (1,0), (0,1), (1,1): min = max = depth
+  r.fetches += 2;
+  r.nodes += 4;
+  // Per texel: inside the region and occluding (no loop, see above).
+  bvec2 lower = greaterThanEqual(origin, regionStart), upper = lessThan(origin + ivec2(1), regionEnd);
+  bvec2 first = lessThan(origin, regionEnd), second = greaterThanEqual(origin + ivec2(1), regionStart);
+  bvec2 x = bvec2(lower.x && first.x, second.x && upper.x);  // columns 0, 1 inside
+  bvec2 y = bvec2(lower.y && first.y, second.y && upper.y);  // rows 0, 1 inside
+  vec4 inside = vec4(x.x && y.x, x.y && y.x, x.x && y.y, x.y && y.y);
+  vec4 occluding = inside * vec4(lessThan(depths, vec4(t)));
+  r.occluders += dot(occluding, vec4(1.0));
+  if (depthSums != PN_DEPTH_SUMS_NONE) r.depthSum += dot(occluding, mix(vec4(0.0), depths, greaterThan(occluding, vec4(0.0))));
+}
+
+PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sampleTable, int mapSize,
+                                ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
+                                int nodeBudget, int depthSums, ivec2 pixel) {
+  PnTraversal r = PnTraversal(0.0, 0.0, 0.0, 0, 0);
+  // The region is clipped to the map (and to the largest root), so every read is inside.
+  int n = clamp(mapSize, 0, textureSize(mip, 0).y);
+  ivec2 regionStart = clamp(regionOrigin, ivec2(0), ivec2(n));
+  ivec2 regionEnd = clamp(regionOrigin + max(regionSize, ivec2(0)), regionStart,
+                          min(ivec2(n), regionStart + (1 << PN_TRAVERSAL_MAX_LEVEL)));
+  ivec2 size = regionEnd - regionStart;
+  r.texels = float(size.x * size.y);
+  float t = receiverDepth - bias;
+  if (isnan(t) || r.texels == 0.0) return r;
+
+  // The 2×2 aligned nodes of level `top` at the region's aligned corner cover
+  // it (side <= 2^top); they are the children of a virtual root one level up,
+  // which is never read: the loop starts at its first child.
+  int top = min(findMSB(max(size.x, size.y) - 1) + 1, pnMipMaxLevel(mip));
+  int rootLevel = top + 1;
+  ivec2 rootOrigin = (regionStart >> top) << top;
+  int budget = clamp(nodeBudget, 1, 1 << 26);
+  int level = top;
+  uint code = 0u;
+  // One node a step (four texels at level 1); once the budget is spent no node
+  // descends, and at most 3 siblings a level remain.
+  int iterations = budget + 3 * rootLevel + 4;
+  for (int it = 0; it < iterations; ++it) {
+    int side = 1 << level;
+    ivec2 origin = rootOrigin + side * ivec2(pnTraversalCompactBits(code), pnTraversalCompactBits(code >> 1));
+    ivec2 lo = max(origin, regionStart);
+    ivec2 hi = min(origin + side, regionEnd);
+    bool descend = false;
+    if (all(lessThan(lo, hi))) {
+      bool spent = r.nodes + 1 >= budget;
+      if (side <= leafSide || spent) {
+        pnTraversalVisitLeafPart(r, mip, sumTable, sampleTable, level, origin, lo, hi, t, leafMode, depthSums, pixel);
+      } else {
+        float nodeMin;
+        if (pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, nodeMin)) {
+          int h = side >> 1;
+          if (h == 1) {
+            // Texels: never ambiguous, so classified here, four at a time and
+            // without a sampling loop: with leaf children visited inline (as
+            // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
+            // iterations per invocation ended the exact (leaf 1) traversal of
+            // a 256² fine checker early; one sampling site a step does not.
+            pnTraversalVisitTexels(r, mip, sumTable, origin, regionStart, regionEnd, t, depthSums);
+          } else {
+            descend = true;
+          }
+        }
+      }
+    } else {
+      r.nodes += 1;  // outside the region: visited, nothing to read
+    }
+    if (descend) {
+      level -= 1;
+      code *= 4u;
+    } else {
+      code += 1u;
+      int climb = min(findLSB(code) >> 1, rootLevel - level);
+      code >>= uint(2 * climb);
+      level += climb;
+      if (level == rootLevel) break;  // the virtual root's four children are done
+    }
+  }
+  return r;
 }
 
 #endif  // PENUMBRA_TRAVERSAL_GLSL

@@ -17,4 +17,17 @@
 #define PN_LEAF_SAMPLED 0
 #define PN_LEAF_MIN 1
 
+// Which structure a traversal reads: the paper's decreased pyramid (every
+// window origin, depth_pyramid.glsl) or the aligned min/max mip chain with a
+// summed-area table of depth (minmax_mip.glsl, summed_area.glsl).
+#define PN_STRUCTURE_PYRAMID 0
+#define PN_STRUCTURE_MIP 1
+
+// The depth sums of the mip chain's wholly occluding nodes (pnTraverseRegionMip):
+// none (counts only: Step 5), the summed-area table's exact sums, or each
+// node's midpoint (min + max) / 2 times its texels (no table to build).
+#define PN_DEPTH_SUMS_NONE 0
+#define PN_DEPTH_SUMS_TABLE 1
+#define PN_DEPTH_SUMS_MIDPOINT 2
+
 #endif  // PENUMBRA_TRAVERSAL_H

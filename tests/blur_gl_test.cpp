@@ -6,6 +6,7 @@
 #include "check/module_check.h"
 #include "core/error.h"
 #include "gl/texture.h"
+#include "passes/blur_pass.h"
 #include "broken_copy.h"
 #include "driver_bundle.h"
 #include "gl_test_context.h"
@@ -24,10 +25,31 @@ std::vector<pn::CaseResult> blur_cases(const fs::path& root, const pn::CheckOpti
 
 }  // namespace
 
-TEST_CASE("blur pass equals the direct 2-D convolution on every fixture, size and parameter set") {
+TEST_CASE("blur pass equals its reference on every fixture, size and parameter set, adaptive radius included") {
   const auto results = blur_cases(PENUMBRA_GLSL_DIR);
-  REQUIRE(results.size() == 6 * std::size(pn::fixtures::kTextureFixtures) * std::size(pn::fixtures::kCheckSizes));
+  // 6 fixed-radius sets, 5 adaptive ones with a radius-0 case each.
+  REQUIRE(results.size() == (6 + 2 * 5) * std::size(pn::fixtures::kTextureFixtures) * std::size(pn::fixtures::kCheckSizes));
   pn::test::check_all_pass(results);
+}
+
+TEST_CASE("adaptive blur with user parameters (r 5, sigma 2, depth-aware, k 1.5) equals its reference") {
+  pn::CheckOptions options;
+  pn::BlurParams params{5, 2.0, true, 0.05};
+  params.adaptive = true;
+  params.pixels_per_texel = 1.5f;
+  options.blur = params;
+  pn::test::check_all_pass(blur_cases(PENUMBRA_GLSL_DIR, options));
+}
+
+TEST_CASE("negative: the adaptive radius without a filter map is refused with pn::Error") {
+  const auto& context = pn::test::gl_context();
+  const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
+  const pn::BlurPass pass(context, tree);
+  const pn::GlObject source = pn::upload_float_texture(context, pn::Image(4, 4));
+  pn::BlurParams params;
+  params.adaptive = true;
+  CHECK_THROWS_AS(pass.run(source, nullptr, 4, 4, params), pn::Error);
+  CHECK_THROWS_WITH(pass.run(source, nullptr, 4, 4, params), Catch::Contains("needs the filter-region map"));
 }
 
 TEST_CASE("blur with user parameters (r 5, sigma 2.5) equals the 2-D convolution") {
@@ -36,23 +58,36 @@ TEST_CASE("blur with user parameters (r 5, sigma 2.5) equals the 2-D convolution
   pn::test::check_all_pass(blur_cases(PENUMBRA_GLSL_DIR, options));
 }
 
-TEST_CASE("negative: a copy of blur.glsl with one wrong weight fails with where / expected / observed") {
-  // Break only the tap two texels to the right.
-  const pn::test::BrokenCopy copy(
-      "blur.glsl", "float w = (r == 0) ? 1.0 : pnBlurGaussian(i, sigma);",
-      "float w = (r == 0) ? 1.0 : pnBlurGaussian(i, sigma) * (i == 2 ? 1.5 : 1.0);");
+TEST_CASE("negative: a copy of blur.glsl with wrong weights from tap 2 on fails with where / expected / observed") {
+  // The recurrence's ratio 10 % too large: w_1 stays right, w_2 (both sides) and beyond are off.
+  const pn::test::BrokenCopy copy("blur.glsl", "g.ratio *= g.ratioStep;", "g.ratio *= 1.1 * g.ratioStep;");
   REQUIRE(copy.found());
   const auto results = blur_cases(copy.root());
   size_t named = 0;
   for (const auto& r : results) {
-    // Cases where the tap 2 texels away exists and matters must fail.
-    if (r.name == "noise 64x64 r=3 sigma=1" || r.name == "impulse 17x9 r=7 sigma=3") {
+    // Cases where the taps 2 texels away exist and matter must fail, adaptive and depth-aware ones too.
+    if (r.name == "noise 64x64 r=3 sigma=1" || r.name == "impulse 17x9 r=7 sigma=3" ||
+        r.name == "noise 64x64 r=3 sigma=1 adaptive(k 1)" ||
+        r.name == "noise 100x37 r=3 sigma=1 depth-aware(step_edge, tol 0.050000) adaptive(k 1)") {
       ++named;
       CHECK_FALSE(r.comparison.pass);
     }
   }
-  CHECK(named == 2);
+  CHECK(named == 4);
   CHECK(pn::test::failing_cases(results) > 0);
+}
+
+TEST_CASE("negative: a copy of blur.glsl whose adaptive radius is the whole penumbra fails the adaptive cases only") {
+  const pn::test::BrokenCopy copy("blur.glsl", "float halfWidth = 0.5 * filterSide * pixelsPerTexel;",
+                                  "float halfWidth = filterSide * pixelsPerTexel;");
+  REQUIRE(copy.found());
+  const auto results = blur_cases(copy.root());
+  CHECK(pn::test::failing_named(results, "noise 64x64 r=3 sigma=1 adaptive(k 1)") > 0);
+  CHECK(pn::test::failing_named(results, "radius 0 unchanged") > 0);  // contact pixels blurred
+  size_t fixed_failing = 0;
+  for (const auto& r : results)
+    if (!r.comparison.pass && !pn::test::named(r, "adaptive")) ++fixed_failing;
+  CHECK(fixed_failing == 0);
 }
 
 TEST_CASE("the bundle of blur.glsl, #line markers and all, compiles with the GL driver") {

@@ -26,9 +26,9 @@ const pn::ModuleCheck& regions() { return pn::find_module_check("pcss_regions");
 TEST_CASE("pcss_regions: search and filter entries and their regions equal the CPU definition in every mode, "
           "and no receiver a texel can shadow is marked lit in any mode") {
   const auto results = run_check(regions(), PENUMBRA_GLSL_DIR);
-  // 12 maps x (3 modes x 3 + the property) + 3 lights x 3 (filter) + 1 (given entries)
-  // + tall_blocker (3 modes x (3 + the property)) + the left-out bound.
-  CHECK(results.size() == 12 * 10 + 9 + 1 + 12 + 1);
+  // 12 maps x ((3 modes + the mip chain's search) x 3 + the property) + 3 lights x 3 (filter)
+  // + 1 (given entries) + tall_blocker ((3 modes + the mip chain) x (3 + the property)) + the left-out bound.
+  CHECK(results.size() == 12 * 13 + 9 + 1 + 16 + 1);
   check_all_pass(results);
 }
 
@@ -44,7 +44,7 @@ TEST_CASE("negative: a copy of pcss_regions.glsl with half the filter side fails
 }
 
 TEST_CASE("negative: a lit decision that lets a texel at exactly d - bias occlude fails the search decisions") {
-  const BrokenCopy copy("pcss_regions.glsl", "if (!(zmin < d - bias)) return", "if (!(zmin <= d - bias)) return");
+  const BrokenCopy copy("pcss_regions.glsl", "if (!(zmin < entry.x - bias)) return", "if (!(zmin <= entry.x - bias)) return");
   REQUIRE(copy.found());
   const auto results = run_check(regions(), copy.root());
   CHECK(failing_named(results, "lit decisions") > 0);  // receivers at the depth of the texel under them, bias 0

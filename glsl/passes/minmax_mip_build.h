@@ -9,7 +9,7 @@
 
 // Distinct across resource kinds, so the pass is valid Vulkan GLSL as well.
 #define PN_MINMAX_MIP_SHADOW_MAP_BINDING 0  // sampler2D, R32F
-#define PN_MINMAX_MIP_READ_BINDING 1        // sampler2D, RGBA32F, all levels: the chain
+#define PN_MINMAX_MIP_READ_BINDING 1        // sampler2D, RGBA32F (two nodes a texel), all levels: the chain (minmax_mip.glsl)
 #define PN_MINMAX_MIP_WRITE_BINDING 2       // image2D, rgba32f: the chain at the level being written
 #define PN_MINMAX_MIP_PARAMS_BINDING 3
 

@@ -28,5 +28,5 @@ void main() {
   vec4 entry = pnFilterEntry(pnPcssLight(), texelFetch(pnSearchMap, p, 0), mean, hasBlocker, pnPcss.filterScale);
   imageStore(pnFilterMap, p, entry);
   imageStore(pnBlockerMean, p, vec4(pnEntryLit(entry) ? 0.0 : mean));
-  imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, int(pnPcss.mapSize), pnPcss.regionMode));
+  if (pnPcss.writeKeys != 0) imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, int(pnPcss.mapSize), pnPcss.regionMode));
 }

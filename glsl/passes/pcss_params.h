@@ -8,6 +8,7 @@
 
 #include "uniform_block.h"
 #include "../poisson_pcss.h"
+#include "../traversal.h"
 
 // Texture units.
 #define PN_PCSS_PYRAMID_BINDING 0       // sampler2DArray: the decreased pyramid (depth_pyramid.glsl)
@@ -17,6 +18,8 @@
 #define PN_PCSS_PARENTS_BINDING 4       // sampler2D: reuse parent codes (reuse.glsl)
 #define PN_PCSS_RESULTS_BINDING 5       // sampler2D: the representatives' results; pcss_scan: the previous band
 #define PN_PCSS_DEPTH_MAP_BINDING 6     // sampler2D: the pyramid's layer 0, the sanitized map (pcf, poisson_pcss)
+#define PN_PCSS_MIP_BINDING 9           // sampler2D: the aligned min/max mip chain (minmax_mip.glsl)
+#define PN_PCSS_DEPTH_SUMS_BINDING 10   // usampler2D: the summed-area table of depth (summed_area.glsl)
 
 // Image units (GLSL ES 3.1 guarantees 4: 0..3).
 #define PN_PCSS_FILTER_MAP_IMAGE 0    // pcss_filter: the filter-region map
@@ -58,6 +61,10 @@ PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
   float sigma1;
   float sigma2;
   float sigma3;
+  int structure;        // PN_STRUCTURE_* (traversal.h): what Steps 3-5 read
+  int depthSums;        // pcss_traverse over the mip chain: PN_DEPTH_SUMS_* (traversal.h); NONE for Step 5
+  int writeKeys;        // pcss_search, pcss_filter: 0 when the reuse keys are not needed or are the entries
+                        // themselves (no reuse, or the exact region mode: pnEntryLinkKey returns the entry)
 PN_END_UNIFORM_BLOCK(pnPcss)
 
 // Points in the unit disk (Bridson's, runner/sampling/poisson_disk.h), count = sampleCount.

@@ -1,6 +1,7 @@
 // pcss_regions_query.comp — pcss_regions.glsl over a batch of queries.
 // Query k is texel k of query images A, B, C; its kind (B.x) picks the entry:
 //   search: pnSearchEntry over the pyramid (receiver A, bias C.x, iterations B.z, mode B.y)
+//   search over the mip chain: pnSearchEntryMip, the same inputs
 //   filter: pnFilterEntry (search entry A, blocker mean C.y, has blocker B.w, scale C.z)
 //   entry:  A as given
 // and result k is that entry, pnEntryRect of it, pnEntryWindow of it in mode B.y
@@ -12,6 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "pcss_regions_query.h"
 
 layout(binding = PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_PCSS_REGIONS_QUERY_MIP_BINDING) uniform sampler2D pnMip;
 layout(binding = PN_PCSS_REGIONS_QUERY_A_BINDING) uniform sampler2D pnQueryA;
 layout(binding = PN_PCSS_REGIONS_QUERY_B_BINDING) uniform sampler2D pnQueryB;
 layout(binding = PN_PCSS_REGIONS_QUERY_C_BINDING) uniform sampler2D pnQueryC;
@@ -29,10 +31,11 @@ void main() {
   vec4 b = texelFetch(pnQueryB, p, 0);
   vec4 c = texelFetch(pnQueryC, p, 0);
   int kind = int(b.x), mode = int(b.y);
-  int n = pnPyramidMapSize(pnPyramid);
+  int n = int(pnParams.mapSize);
   PnLight light = PnLight(pnParams.lightWidth, pnParams.lightNear, pnParams.lightNearPlaneWidth, pnParams.mapSize);
   vec4 entry = a;
   if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z));
+  else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP) entry = pnSearchEntryMip(pnMip, n, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_FILTER) entry = pnFilterEntry(light, a, c.y, b.w != 0.0, c.z);
   PnRect r = pnEntryRect(entry, n);
   PnWindow w = pnEntryWindow(entry, n, mode);

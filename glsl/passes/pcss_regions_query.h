@@ -18,11 +18,13 @@
 #define PN_PCSS_REGIONS_QUERY_B_BINDING 6        // sampler2D, RGBA32F: (kind, region mode, iterations, has blocker)
 #define PN_PCSS_REGIONS_QUERY_C_BINDING 7        // sampler2D, RGBA32F: (bias, blocker mean, filter scale, -)
 #define PN_PCSS_REGIONS_QUERY_PARAMS_BINDING 8
+#define PN_PCSS_REGIONS_QUERY_MIP_BINDING 9      // sampler2D: the aligned min/max mip chain (minmax_mip.glsl)
 
 // Query kinds (B.x): what produces the entry whose regions the pass then reports.
 #define PN_PCSS_REGIONS_QUERY_SEARCH 0  // pnSearchEntry(pyramid, light, A, C.x, int(B.z)); B.y: the mode of the regions it reports
 #define PN_PCSS_REGIONS_QUERY_FILTER 1  // pnFilterEntry(light, A, C.y, B.w != 0, C.z)
 #define PN_PCSS_REGIONS_QUERY_ENTRY 2   // A itself
+#define PN_PCSS_REGIONS_QUERY_SEARCH_MIP 3  // pnSearchEntryMip(mip, N, light, A, C.x, int(B.z))
 
 PN_UNIFORM_BLOCK(PnPcssRegionsQueryParams, PN_PCSS_REGIONS_QUERY_PARAMS_BINDING)
   float lightWidth;           // PnLight (light_model.glsl)

@@ -9,6 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "pcss_params.h"
 
 layout(binding = PN_PCSS_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_PCSS_MIP_BINDING) uniform sampler2D pnMip;
 layout(binding = PN_PCSS_GBUFFER_BINDING) uniform sampler2D pnGBuffer;
 layout(rgba32f, binding = PN_PCSS_SEARCH_MAP_IMAGE) writeonly uniform image2D pnSearchMap;
 layout(rgba32f, binding = PN_PCSS_SEARCH_KEYS_IMAGE) writeonly uniform image2D pnLinkKeys;
@@ -21,9 +22,12 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnSearchMap)))) return;
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
-  vec4 entry = pnSearchEntry(pnPyramid, pnPcssLight(), receiver, pnPcss.bias, pnPcss.refineIterations);
+  int n = int(pnPcss.mapSize);
+  vec4 entry = (pnPcss.structure == PN_STRUCTURE_MIP)
+      ? pnSearchEntryMip(pnMip, n, pnPcssLight(), receiver, pnPcss.bias, pnPcss.refineIterations)
+      : pnSearchEntry(pnPyramid, pnPcssLight(), receiver, pnPcss.bias, pnPcss.refineIterations);
   bool surface = receiver.w != 0.0 && !isnan(receiver.z) && !isinf(receiver.z);
   imageStore(pnReceiverDepth, p, vec4(surface ? receiver.z : pnPyramidFar(), 0.0, 0.0, 0.0));
   imageStore(pnSearchMap, p, entry);
-  imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, pnPyramidMapSize(pnPyramid), pnPcss.regionMode));
+  if (pnPcss.writeKeys != 0) imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, n, pnPcss.regionMode));
 }

@@ -8,6 +8,8 @@ layout(local_size_x = 64) in;  // pcss_work.glsl
 #include "pcss_params.h"
 
 layout(binding = PN_PCSS_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_PCSS_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_PCSS_DEPTH_SUMS_BINDING) uniform usampler2D pnDepthSums;
 layout(binding = PN_PCSS_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
 layout(binding = PN_PCSS_ENTRIES_BINDING) uniform sampler2D pnEntries;
 layout(rgba32f, binding = PN_PCSS_RESULT_IMAGE) writeonly uniform image2D pnResult;
@@ -25,15 +27,18 @@ void main() {
     imageStore(pnResult, p, vec4(0.0));
     return;
   }
-  int n = pnPyramidMapSize(pnPyramid);
-  PnTraversal r;
+  int n = int(pnPcss.mapSize);
+  PnRect rect;
   if (pnPcss.regionMode == PN_REGION_EXACT) {
-    PnRect rect = pnEntryRect(entry, n);
-    r = pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, pnPcss.leafSide,
-                         pnPcss.leafMode, pnPcss.nodeBudget, p);
+    rect = pnEntryRect(entry, n);
   } else {
-    r = pnTraverseWindow(pnPyramid, pnSampleTable, pnEntryWindow(entry, n, pnPcss.regionMode), entry.x, pnPcss.bias, pnPcss.leafSide,
-                         pnPcss.leafMode, pnPcss.nodeBudget, p);
+    PnWindow w = pnEntryWindow(entry, n, pnPcss.regionMode);
+    rect = PnRect(w.origin, ivec2(w.side));
   }
+  PnTraversal r = (pnPcss.structure == PN_STRUCTURE_MIP)
+      ? pnTraverseRegionMip(pnMip, pnDepthSums, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
+                            pnPcss.leafSide, pnPcss.leafMode, pnPcss.nodeBudget, pnPcss.depthSums, p)
+      : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, pnPcss.leafSide,
+                         pnPcss.leafMode, pnPcss.nodeBudget, p);
   imageStore(pnResult, p, vec4(r.occluders, r.depthSum, r.texels, float(r.nodes)));
 }

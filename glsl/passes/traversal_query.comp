@@ -1,4 +1,5 @@
-// traversal_query.comp — traversal.glsl over a batch of receivers.
+// traversal_query.comp — traversal.glsl over a batch of receivers, over the
+// decreased pyramid or the aligned mip chain (pnParams.structure).
 // Query k: texel k of query image A = (region origin x, y, region width, height),
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0).
 // Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches, 0, 0).
@@ -10,6 +11,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = PN_TRAVERSAL_QUERY_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
 layout(binding = PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
+layout(binding = PN_TRAVERSAL_QUERY_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING) uniform usampler2D pnDepthSums;
 layout(binding = PN_TRAVERSAL_QUERY_A_BINDING) uniform sampler2D pnQueryA;
 layout(binding = PN_TRAVERSAL_QUERY_B_BINDING) uniform sampler2D pnQueryB;
 layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_C_BINDING) writeonly uniform image2D pnResultC;
@@ -22,8 +25,12 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnResultC)))) return;
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
-  PnTraversal r = pnTraverseRegion(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), b.x, pnParams.bias,
-                                   pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
+  PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP)
+      ? pnTraverseRegionMip(pnMip, pnDepthSums, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), b.x,
+                            pnParams.bias, pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget,
+                            pnParams.depthSums, ivec2(b.yz))
+      : pnTraverseRegion(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), b.x, pnParams.bias,
+                         pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
   imageStore(pnResultC, p, vec4(r.occluders, r.depthSum, r.texels, 0.0));
   imageStore(pnResultD, p, vec4(float(r.nodes), float(r.fetches), 0.0, 0.0));
 }

@@ -16,12 +16,17 @@
 #define PN_TRAVERSAL_QUERY_RESULT_D_BINDING 4      // image2D, rgba32f: nodes, fetches, 0, 0
 #define PN_TRAVERSAL_QUERY_B_BINDING 5             // sampler2D, RGBA32F: receiver depth, pixel x, y, 0
 #define PN_TRAVERSAL_QUERY_PARAMS_BINDING 6
+#define PN_TRAVERSAL_QUERY_MIP_BINDING 7           // sampler2D, RGBA32F (minmax_mip.glsl)
+#define PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING 8    // usampler2D, RGBA32UI (summed_area.glsl)
 
 PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   float bias;
   int leafSide;
   int leafMode;  // PN_LEAF_SAMPLED or PN_LEAF_MIN (traversal.h)
   int nodeBudget;
+  int structure;     // PN_STRUCTURE_* (traversal.h)
+  int depthSums;     // the mip chain's traversal: PN_DEPTH_SUMS_* (traversal.h)
+  int mapSize;       // the mip chain's map side N
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_TRAVERSAL_QUERY_H

@@ -9,6 +9,7 @@
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
+#include "passes/summed_area_pass.h"
 #include "reference/depth_pyramid_reference.h"
 
 namespace pn {
@@ -20,6 +21,7 @@ std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceT
   pyramid_level_count(2, max_level);  // validates max_level
   const DepthPyramidBuilder pyramid_builder(context, tree);
   const MinMaxMipBuilder mip_builder(context, tree);
+  const SummedAreaPass sums_builder(context, tree);
   const GpuTimer timer(context);
   std::vector<PyramidBenchRow> rows;
   for (int n : sizes) {
@@ -27,33 +29,39 @@ std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceT
     const DepthPyramid pyramid = pyramid_builder.build(map, n, n, max_level);  // also the warm-up
     const MinMaxMipChain chain = mip_builder.allocate(n);
     mip_builder.build_into(map, chain);
-    std::vector<double> pyramid_gpu, pyramid_wall, mip_gpu, mip_wall;
+    sums_builder.build(map);
+    std::vector<double> pyramid_gpu, pyramid_wall, mip_gpu, mip_wall, sums_gpu;
     // Interleaved, so that both see the same machine state.
     for (int r = 0; r < repeats; ++r) {
       const StageTime p = timer.measure([&] { pyramid_builder.build_into(map, pyramid); });
       const StageTime m = timer.measure([&] { mip_builder.build_into(map, chain); });
-      pyramid_gpu.push_back(p.gpu_ms), pyramid_wall.push_back(p.wall_ms);
+      const StageTime s = timer.measure([&] { sums_builder.build(map); });
+      pyramid_gpu.push_back(p.gpu_ms), pyramid_wall.push_back(p.wall_ms), sums_gpu.push_back(s.gpu_ms);
       mip_gpu.push_back(m.gpu_ms), mip_wall.push_back(m.wall_ms);
     }
     rows.push_back({n, pyramid.levels, DepthPyramid::memory_bytes(n, pyramid.levels), median(pyramid_gpu),
-                    median(pyramid_wall), MinMaxMipChain::memory_bytes(n), median(mip_gpu), median(mip_wall), repeats});
+                    median(pyramid_wall), MinMaxMipChain::memory_bytes(n), median(mip_gpu), median(mip_wall),
+                    SummedAreaPass::memory_bytes(n, n), median(sums_gpu), repeats});
   }
   return rows;
 }
 
 void print_pyramid_bench(std::ostream& out, const std::vector<PyramidBenchRow>& rows) {
   char line[256];
-  std::snprintf(line, sizeof line, "%-6s %6s %12s %12s %12s %12s %12s %12s %8s\n", "size", "levels", "pyramid MiB",
-                "pyramid ms", "(wall ms)", "mip MiB", "mip ms", "(wall ms)", "ratio");
+  std::snprintf(line, sizeof line, "%-6s %6s %12s %12s %12s %12s %12s %12s %8s %10s %10s %10s\n", "size", "levels",
+                "pyramid MiB", "pyramid ms", "(wall ms)", "mip MiB", "mip ms", "(wall ms)", "ratio", "sums MiB", "sums ms",
+                "mip+sums");
   out << line;
   for (const auto& r : rows) {
-    std::snprintf(line, sizeof line, "%-6d %6d %12.1f %12.3f %12.3f %12.1f %12.3f %12.3f %8.2f\n", r.size, r.levels,
-                  r.pyramid_bytes / 1048576.0, r.pyramid_ms, r.pyramid_wall_ms, r.mip_bytes / 1048576.0, r.mip_ms,
-                  r.mip_wall_ms, r.pyramid_ms / r.mip_ms);
+    std::snprintf(line, sizeof line, "%-6d %6d %12.1f %12.3f %12.3f %12.1f %12.3f %12.3f %8.2f %10.1f %10.3f %10.2f\n",
+                  r.size, r.levels, r.pyramid_bytes / 1048576.0, r.pyramid_ms, r.pyramid_wall_ms, r.mip_bytes / 1048576.0,
+                  r.mip_ms, r.mip_wall_ms, r.pyramid_ms / r.mip_ms, r.sums_bytes / 1048576.0, r.sums_ms,
+                  (r.mip_ms + r.sums_ms) / r.mip_ms);
     out << line;
   }
   out << "ms: median GPU time (GL_TIMESTAMP pairs) of a whole build over " << (rows.empty() ? 0 : rows.front().repeats)
-      << " runs; ratio = pyramid / mip chain, same run.\n";
+      << " runs; ratio = pyramid / mip chain, same run; sums: the summed-area table of depth Fast PCSS's\n"
+         "mip-chain traversal reads besides the chain; mip+sums = (mip + sums) / mip: what that structure costs.\n";
 }
 
 nlohmann::json pyramid_bench_json(const std::vector<PyramidBenchRow>& rows) {
@@ -64,7 +72,9 @@ nlohmann::json pyramid_bench_json(const std::vector<PyramidBenchRow>& rows) {
                    {"repeats", r.repeats},
                    {"pyramid", {{"bytes", r.pyramid_bytes}, {"gpu_ms_median", r.pyramid_ms}, {"wall_ms_median", r.pyramid_wall_ms}}},
                    {"minmax_mip_chain", {{"bytes", r.mip_bytes}, {"gpu_ms_median", r.mip_ms}, {"wall_ms_median", r.mip_wall_ms}}},
-                   {"ratio_pyramid_to_mip_chain", r.pyramid_ms / r.mip_ms}});
+                   {"summed_area_table", {{"bytes", r.sums_bytes}, {"gpu_ms_median", r.sums_ms}}},
+                   {"ratio_pyramid_to_mip_chain", r.pyramid_ms / r.mip_ms},
+                   {"ratio_mip_chain_and_sums_to_mip_chain", (r.mip_ms + r.sums_ms) / r.mip_ms}});
   return out;
 }
 

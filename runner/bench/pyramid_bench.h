@@ -1,5 +1,7 @@
 // `penumbra bench pyramid`: GPU build time of the decreased pyramid against
-// the aligned min/max mip chain, measured in the same run (SPEC §9).
+// the aligned min/max mip chain, and of the structure Fast PCSS traverses by
+// default (the mip chain and the summed-area table of depth), measured in the
+// same run (SPEC §9).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -20,6 +22,8 @@ struct PyramidBenchRow {
   std::size_t mip_bytes = 0;
   double mip_ms = 0.0;
   double mip_wall_ms = 0.0;
+  std::size_t sums_bytes = 0;  // the summed-area table of depth (summed_area.glsl)
+  double sums_ms = 0.0;        // median GPU time of its build
   int repeats = 0;
 };
 

@@ -1,24 +1,40 @@
 // Cases of the blur check: every fixture at every check size, for the paper's
-// default (r 3), the identity (r 0), a narrow and a wide kernel, and the
-// depth-aware variant over a step-edge and a NaN/Inf-sprinkled depth.
+// default (r 3), the identity (r 0), a narrow and a wide kernel, the
+// depth-aware variant over a step-edge and a NaN/Inf-sprinkled depth, and the
+// adaptive radius over seeded filter sides (lit, contact, every radius, large),
+// plain and depth-aware; and the adaptive radius's radius-0 pixels, bit-exact.
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
 #include <string>
 
 #include "check/blur_tolerance.h"
 #include "check/module_check.h"
+#include "core/integer_hash.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
 #include "passes/blur_pass.h"
+#include "pcss_regions.h"  // PN_REGION_LIT
 
 namespace pn {
 namespace {
+
+constexpr std::uint32_t kFilterSideSeed = 0x5eed00b1u;
 
 struct BlurCase {
   BlurParams params;
   const char* depth_fixture;  // depth-aware cases only
 };
+
+BlurParams adaptive(int radius, double sigma, bool depth_aware, float pixels_per_texel) {
+  BlurParams p{radius, sigma, depth_aware, 0.05};
+  p.adaptive = true;
+  p.pixels_per_texel = pixels_per_texel;
+  return p;
+}
 
 std::vector<BlurCase> default_cases() {
   return {
@@ -28,6 +44,11 @@ std::vector<BlurCase> default_cases() {
       {{7, 3.0, false, 0.0}, nullptr},   // wide, larger than the small fixtures
       {{3, 1.0, true, 0.05}, "step_edge"},
       {{3, 1.0, true, 0.05}, "nonfinite"},
+      {adaptive(3, 1.0, false, 1.0f), nullptr},  // Fast PCSS's Step 6, screen = map
+      {adaptive(3, 1.0, false, 0.5f), nullptr},  // a map finer than the screen
+      {adaptive(7, 3.0, false, 2.5f), nullptr},  // wide, k not a power of two
+      {adaptive(3, 1.0, true, 1.0f), "step_edge"},
+      {adaptive(3, 1.0, true, 1.0f), "nonfinite"},
   };
 }
 
@@ -37,7 +58,57 @@ std::string case_name(const char* fixture, int w, int h, const BlurCase& c) {
   std::string name = text;
   if (c.params.depth_aware)
     name += " depth-aware(" + std::string(c.depth_fixture) + ", tol " + std::to_string(c.params.depth_tolerance) + ")";
+  if (c.params.adaptive) {
+    std::snprintf(text, sizeof text, " adaptive(k %g)", c.params.pixels_per_texel);
+    name += text;
+  }
   return name;
+}
+
+// A filter-region map (d, x, y, s) whose sides s are seeded per pixel: lit
+// (PN_REGION_LIT, NaN, -Inf), contact (s k < 2), exactly on a radius's
+// boundary (s = 2j / k), anywhere in the range of radii 0..R+1, large, +Inf.
+Image filter_sides(int width, int height, float k, int radius) {
+  Image map(width, height, 4);
+  const float range = static_cast<float>(2 * radius + 4) / k;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::uint32_t h = integer_hash(kFilterSideSeed ^ integer_hash(static_cast<std::uint32_t>(x) ^
+                                                                          integer_hash(static_cast<std::uint32_t>(y))));
+      const float u = static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+      float s = 0.0f;
+      switch (h % 8) {
+        case 0: s = static_cast<float>(PN_REGION_LIT); break;
+        case 1: s = (h & 256) ? std::numeric_limits<float>::quiet_NaN() : -std::numeric_limits<float>::infinity(); break;
+        case 2: s = u * 2.0f / k; break;                                        // contact
+        case 3: s = static_cast<float>(2 * static_cast<int>(h % 37 % (radius + 2))) / k; break;  // a boundary
+        case 4: case 5: s = u * range; break;                                   // every radius
+        case 6: s = range + u * 1e4f; break;                                    // large
+        default: s = (h & 256) ? std::numeric_limits<float>::infinity() : 1e30f; break;
+      }
+      map.at(x, y, 0) = 1.0f;
+      map.at(x, y, 3) = s;
+    }
+  return map;
+}
+
+// Pixels of radius 0 keep their value exactly (contact shadows, lit pixels):
+// both images are the source's value there (non-finite read as
+// PN_BLUR_NONFINITE_VALUE) and 0 elsewhere.
+CaseResult radius_zero_case(const std::string& name, const Image& source, const Image& observed,
+                            const Image& map, const BlurParams& params) {
+  Image expected(source.width, source.height), kept(source.width, source.height);
+  int pixels = 0;
+  for (int y = 0; y < source.height; ++y)
+    for (int x = 0; x < source.width; ++x)
+      if (blur_adaptive_radius(map.at(x, y, 3), params.pixels_per_texel, params.radius) == 0) {
+        const float v = source.at(x, y);
+        expected.at(x, y) = std::isfinite(v) ? v : kBlurNonfiniteValue;
+        kept.at(x, y) = observed.at(x, y);
+        ++pixels;
+      }
+  return {name + ": its " + std::to_string(pixels) + " pixels of radius 0 unchanged", Tolerance::exact(),
+          compare(expected, kept, Tolerance::exact())};
 }
 
 }  // namespace
@@ -55,20 +126,27 @@ std::vector<CaseResult> run_blur_check(const CheckEnvironment& env) {
       for (const auto& size : fixtures::kCheckSizes) {
         const Image source = generate_fixture(fixture, size.width, size.height);
         const GlObject source_texture = upload_float_texture(env.context, source);
-        Image depth;
-        GlObject depth_texture;
+        Image depth, map;
+        GlObject depth_texture, map_texture;
         if (c.params.depth_aware) {
           depth = generate_fixture(find_fixture(c.depth_fixture), size.width, size.height);
           depth_texture = upload_float_texture(env.context, depth);
         }
-        const GlObject result =
-            pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr, size.width, size.height, c.params);
+        if (c.params.adaptive) {
+          map = filter_sides(size.width, size.height, c.params.pixels_per_texel, c.params.radius);
+          map_texture = upload_float_texture(env.context, map);
+        }
+        const GlObject result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr, size.width,
+                                         size.height, c.params, c.params.adaptive ? &map_texture : nullptr);
         const Image observed = read_float_texture(env.context, result, size.width, size.height, 1);
-        const Image expected = c.params.depth_aware ? blur_depth_aware_reference(source, depth, c.params)
-                                                    : blur_reference(source, c.params);
+        const Image expected =
+            c.params.adaptive      ? blur_adaptive_reference(source, map, c.params.depth_aware ? &depth : nullptr, c.params)
+            : c.params.depth_aware ? blur_depth_aware_reference(source, depth, c.params)
+                                   : blur_reference(source, c.params);
         const Tolerance tolerance = blur_tolerance(c.params, source);
-        results.push_back({case_name(fixture.name, size.width, size.height, c), tolerance,
-                           compare(expected, observed, tolerance)});
+        const std::string name = case_name(fixture.name, size.width, size.height, c);
+        results.push_back({name, tolerance, compare(expected, observed, tolerance)});
+        if (c.params.adaptive) results.push_back(radius_zero_case(name, source, observed, map, c.params));
       }
     }
   }

@@ -35,6 +35,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_truth_check},
       {"summed_area", "64-bit fixed-point summed-area table: rectangle sums vs direct box sums (exact), float sums in bound",
        &run_summed_area_check},
+      {"minmax_mip", "aligned min/max mip chain levels (padded to a power of two) vs node scans (exact)",
+       &run_minmax_mip_check},
   };
   return checks;
 }

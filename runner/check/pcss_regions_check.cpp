@@ -265,11 +265,12 @@ void push_group(std::vector<CaseResult>& results, const std::string& name, const
 }
 
 std::vector<PcssRegionsQuery> search_queries(const std::vector<RegionReceiver>& receivers, RegionMode mode, int iterations,
-                                             float bias) {
+                                             float bias, Structure structure = Structure::pyramid) {
   std::vector<PcssRegionsQuery> out;
   for (const RegionReceiver& r : receivers) {
     PcssRegionsQuery q;
-    q.kind = PcssRegionsQuery::Kind::search, q.mode = mode, q.input = {r.u, r.v, r.depth, r.valid};
+    q.kind = structure == Structure::mip ? PcssRegionsQuery::Kind::search_mip : PcssRegionsQuery::Kind::search;
+    q.mode = mode, q.input = {r.u, r.v, r.depth, r.valid};
     q.bias = bias, q.iterations = iterations;
     out.push_back(q);
   }
@@ -325,6 +326,7 @@ struct SceneData {
   LightModel light;
   Image map, gbuffer;
   DepthPyramid pyramid;
+  MinMaxMipChain mip;
   std::vector<RegionReceiver> receivers;
 };
 
@@ -339,6 +341,7 @@ SceneData tall_blocker(const CheckEnvironment& env) {
   s.map = read_float_texture(env.context, frame.shadow_map, kSceneMap, kSceneMap, 1);
   s.gbuffer = read_float_texture(env.context, frame.gbuffer, kSceneScreen, kSceneScreen, 4);
   s.pyramid = DepthPyramidBuilder(env.context, env.tree).build(frame.shadow_map, kSceneMap, kSceneMap, 31);
+  s.mip = MinMaxMipBuilder(env.context, env.tree).build(frame.shadow_map, kSceneMap);
   for (int y = 0; y < kSceneScreen; ++y)
     for (int x = 0; x < kSceneScreen; ++x)
       s.receivers.push_back({s.gbuffer.at(x, y, 0), s.gbuffer.at(x, y, 1), s.gbuffer.at(x, y, 2), s.gbuffer.at(x, y, 3)});
@@ -412,6 +415,7 @@ LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mo
 std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
   const PcssRegionsQueryPass pass(env.context, env.tree);
   const DepthPyramidBuilder builder(env.context, env.tree);
+  const MinMaxMipBuilder mip_builder(env.context, env.tree);
   std::vector<CaseResult> results;
   long searched = 0, left_out = 0;
 
@@ -426,9 +430,10 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
     const int n = f.map.width;
     const GlObject texture = upload_float_texture(env.context, f.map);
     const DepthPyramid pyramid = builder.build(texture, n, n, f.max_level);
+    const MinMaxMipChain mip = mip_builder.build(texture, n);
     const DepthScan scan(f.map);
     const std::vector<RegionReceiver> receivers = fixture_receivers(f.map, seed++);
-    EntryGroup groups[3];
+    EntryGroup groups[4];  // the three region modes over the pyramid, then the mip chain's search
     LitCoverage coverage;
     std::vector<float> violations;
     for (const NamedLight& l : fixture_lights(n)) {
@@ -439,13 +444,20 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
             const std::vector<PcssRegionsQuery> q = search_queries(receivers, mode, iterations, bias);
             queries.insert(queries.end(), q.begin(), q.end());
           }
-      const std::vector<PcssRegionsResult> observed = pass.run(pyramid, l.light, queries);
+      for (int iterations : iteration_counts())
+        for (float bias : kBiases) {
+          const std::vector<PcssRegionsQuery> q = search_queries(receivers, RegionMode::exact, iterations, bias, Structure::mip);
+          queries.insert(queries.end(), q.begin(), q.end());
+        }
+      const std::vector<PcssRegionsResult> observed = pass.run(pyramid, l.light, queries, &mip);
       for (size_t k = 0; k < queries.size(); ++k) {
         const PcssRegionsQuery& q = queries[k];
         const RegionReceiver& r = receivers[k % receivers.size()];
+        const bool from_mip = q.kind == PcssRegionsQuery::Kind::search_mip;
         Rounding rounding{kAmbiguity};
-        const RegionEntry expected = search_entry(scan, l.light, r, q.bias, q.iterations, &rounding);
-        EntryGroup& g = groups[static_cast<int>(q.mode)];
+        const RegionEntry expected = search_entry(scan, l.light, r, q.bias, q.iterations, &rounding,
+                                                  from_mip ? Structure::mip : Structure::pyramid);
+        EntryGroup& g = groups[from_mip ? 3 : static_cast<int>(q.mode)];
         add_entry(g, expected, rounding.ambiguous, observed[k]);
         add_regions(g, observed[k], n, q.mode);
         if (q.iterations > 0)  // the property: every mode, refining count and bias
@@ -458,7 +470,11 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
       push_group(results, f.name + ", " + mode_name(mode), g,
                  ("search entries (3 lights, " + counts + " iterations, bias 0/0.01)").c_str());
     }
-    results.push_back(property_case(f.name + ", every region mode, " + refining + " iterations", violations, coverage, ""));
+    searched += groups[3].queries, left_out += groups[3].left_out;
+    push_group(results, f.name + ", from the mip chain (pnSearchEntryMip), exact region", groups[3],
+               ("search entries (3 lights, " + counts + " iterations, bias 0/0.01)").c_str());
+    results.push_back(property_case(f.name + ", every region mode and the mip chain, " + refining + " iterations",
+                                    violations, coverage, ""));
     if (first) synthetic_cases(results, pass, pyramid, n);
     first = false;
   }
@@ -467,25 +483,35 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
   const SceneData scene = tall_blocker(env);
   const DepthScan scan(scene.map);
   const PcssSettings defaults;
-  for (RegionMode mode : kModes) {
+  struct SceneSearch {
+    RegionMode mode;
+    Structure structure;
+  };
+  for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid},
+                                    SceneSearch{RegionMode::exact, Structure::pyramid},
+                                    SceneSearch{RegionMode::centred, Structure::pyramid},
+                                    SceneSearch{RegionMode::exact, Structure::mip}}) {
+    const RegionMode mode = search.mode;
+    const std::string what = search.structure == Structure::mip ? "the mip chain's search" : mode_name(mode);
     EntryGroup g;
     for (int iterations : {0, defaults.refine_iterations}) {
       const std::vector<PcssRegionsResult> observed =
-          pass.run(scene.pyramid, scene.light, search_queries(scene.receivers, mode, iterations, defaults.bias));
+          pass.run(scene.pyramid, scene.light,
+                   search_queries(scene.receivers, mode, iterations, defaults.bias, search.structure), &scene.mip);
       for (size_t k = 0; k < scene.receivers.size(); ++k) {
         Rounding rounding{kAmbiguity};
-        const RegionEntry expected =
-            search_entry(scan, scene.light, scene.receivers[k], defaults.bias, iterations, &rounding);
+        const RegionEntry expected = search_entry(scan, scene.light, scene.receivers[k], defaults.bias, iterations,
+                                                  &rounding, search.structure);
         add_entry(g, expected, rounding.ambiguous, observed[k]);
         add_regions(g, observed[k], kSceneMap, mode);
       }
       if (iterations > 0)
-        results.push_back(count_lit_coverage(scene.name + ", " + mode_name(mode) + ", " + std::to_string(iterations) + " iterations",
+        results.push_back(count_lit_coverage(scene.name + ", " + what + ", " + std::to_string(iterations) + " iterations",
                                              scan, scene.light, scene.receivers, observed, defaults.bias)
                               .result);
     }
     searched += g.queries, left_out += g.left_out;
-    push_group(results, scene.name + ", " + mode_name(mode), g,
+    push_group(results, scene.name + ", " + what, g,
                ("search entries (0 and " + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
   }
 

@@ -105,8 +105,8 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
     int tile;
     bool shades;  // Step 5: its representatives' results are the visibility
   };
-  for (const Step& step : {Step{"Step 4", frame.search_keys, frame.search_parents, s.search_tile, false},
-                           Step{"Step 5", frame.filter_keys, frame.filter_parents, s.filter_tile, true}}) {
+  for (const Step& step : {Step{"Step 4", frame.search_reuse_keys(), frame.search_parents, s.search_tile, false},
+                           Step{"Step 5", frame.filter_reuse_keys(), frame.filter_parents, s.filter_tile, true}}) {
     ReuseParams params;
     params.sigma1 = s.sigma1, params.sigma2 = s.sigma2, params.sigma3 = s.sigma3, params.tile = step.tile;
     const std::vector<int> parents = reuse_parents(read4(context, step.keys, n), params);

@@ -32,6 +32,8 @@ struct Scene {
   Image map;    // as generated
   Image depth;  // sanitized
   DepthPyramid pyramid;
+  MinMaxMipChain mip;
+  SummedAreaTable depth_sums;
   float largest = FLT_MIN;  // max finite |depth|
 };
 
@@ -53,7 +55,8 @@ std::vector<float> receivers_for(const Image& depth, const Rect& r) {
 // (terms + 2 levels + 4) ulps of the largest depth, terms = nodes + fetches of the reference.
 void add_comparison(std::vector<CaseResult>& results, const std::string& name, const Scene& scene,
                     const std::vector<TraversalResult>& expected, const std::vector<TraversalResult>& observed,
-                    const std::vector<TraversalResult>& decisions, bool compare_counters) {
+                    const std::vector<TraversalResult>& decisions, bool compare_counters,
+                    bool compare_means = true) {
   const int n = static_cast<int>(expected.size());
   Image e_counts(n, 1, 3), o_counts(n, 1, 3), e_mean(n, 1), o_mean(n, 1);
   double terms = 0;
@@ -74,13 +77,15 @@ void add_comparison(std::vector<CaseResult>& results, const std::string& name, c
   results.push_back({name + what + " (query k at (k, 0))", exact, compare(e_counts, o_counts, exact)});
   const Tolerance mean_tol =
       Tolerance::absolute((terms + 2.0 * scene.pyramid.levels + 4.0) * FLT_EPSILON * scene.largest);
-  results.push_back({name + " blocker mean", mean_tol, compare(e_mean, o_mean, mean_tol)});
+  if (compare_means) results.push_back({name + " blocker mean", mean_tol, compare(e_mean, o_mean, mean_tol)});
 }
 
 }  // namespace
 
 std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
   const DepthPyramidBuilder builder(env.context, env.tree);
+  const MinMaxMipBuilder mip_builder(env.context, env.tree);
+  const SummedAreaPass depth_sums_pass(env.context, env.tree);
   const TraversalPass pass(env.context, env.tree);
   const SampleTable table = generate_sample_table(kSampleTableSeed);
   const GlObject table_texture = upload_sample_table(env.context, table);
@@ -91,6 +96,11 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     pass.dispatch(scene.pyramid, table_texture, batch, s);
     return batch.read();
   };
+  const auto run_mip_batch = [&](const Scene& scene, const std::vector<TraversalQuery>& queries, const TraversalSettings& s) {
+    const TraversalBatch batch(env.context, queries);
+    pass.dispatch(TraversalStructure{nullptr, &scene.mip, &scene.depth_sums}, table_texture, batch, s);
+    return batch.read();
+  };
   const auto recursion = [&](const Scene& scene, const std::vector<TraversalQuery>& queries, const TraversalSettings& s) {
     std::vector<TraversalResult> out;
     for (const TraversalQuery& q : queries)
@@ -98,15 +108,32 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
                                         {q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y}));
     return out;
   };
+  const auto aligned_recursion = [&](const Scene& scene, const std::vector<TraversalQuery>& queries,
+                                     const TraversalSettings& s) {
+    std::vector<TraversalResult> out;
+    for (const TraversalQuery& q : queries)
+      out.push_back(aligned_traversal_reference(
+          scene.depth, table, q.region,
+          {q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y}, s.depth_sums));
+    return out;
+  };
+  // Both structures: the decreased pyramid (pnTraverseRegion) and the aligned mip chain (pnTraverseRegionMip).
+  struct Structure {
+    const char* label;
+    bool mip;
+  };
+  const Structure structures[] = {{"", false}, {" mip chain", true}};
 
   SeededRandom random(0x5eed0006u);
   for (const auto& fixture : fixtures::kTextureFixtures) {
     Scene scene;
     scene.map = generate_fixture(fixture, kMapSize, kMapSize);
     scene.depth = sanitized_depths(scene.map);
-    scene.pyramid = builder.build(upload_float_texture(env.context, scene.map), kMapSize, kMapSize, 31);
+    const GlObject map_texture = upload_float_texture(env.context, scene.map);
+    scene.pyramid = builder.build(map_texture, kMapSize, kMapSize, 31);
+    scene.mip = mip_builder.build(map_texture, kMapSize);
+    scene.depth_sums = depth_sums_pass.build(map_texture);
     scene.largest = largest_finite_magnitude(scene.depth, FLT_MIN);
-
     // Exact: leaf side 1, power-of-two windows and exact regions, against brute force.
     std::vector<Rect> regions;
     for (int side = 1; side <= 256; side *= 2) {
@@ -123,11 +150,13 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     TraversalSettings exact_settings;
     std::vector<TraversalResult> brute;
     for (const TraversalQuery& q : queries) brute.push_back(brute_force_occluders(scene.depth, q.region, q.receiver_depth, 0.0f));
-    const auto observed = run_batch(scene, queries, exact_settings);
-    const auto decisions = recursion(scene, queries, exact_settings);
     const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
-    add_comparison(results, label + " leaf 1 vs brute force:", scene, brute, observed, decisions, false);
-    add_comparison(results, label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
+    for (const Structure& st : structures) {
+      const auto observed = st.mip ? run_mip_batch(scene, queries, exact_settings) : run_batch(scene, queries, exact_settings);
+      const auto decisions = st.mip ? aligned_recursion(scene, queries, exact_settings) : recursion(scene, queries, exact_settings);
+      add_comparison(results, label + st.label + " leaf 1 vs brute force:", scene, brute, observed, decisions, false);
+      add_comparison(results, label + st.label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
+    }
 
     // Sampled and min leaves against the recursion with the same table and decisions.
     std::vector<TraversalQuery> leaf_queries;
@@ -137,42 +166,49 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       const std::vector<float> rs = receivers_for(scene.depth, r);
       leaf_queries.push_back({r, random.uniform_float(rs[0], rs[4]), random.uniform_int(0, 1023), random.uniform_int(0, 1023)});
     }
-    for (LeafMode mode : {LeafMode::sampled, LeafMode::min})
-      for (int leaf : {2, 4, 8, 16}) {
-        TraversalSettings s;
-        s.leaf_side = leaf, s.leaf_mode = mode, s.bias = 0.001f;
-        const auto expected = recursion(scene, leaf_queries, s);
-        add_comparison(results,
-                       label + (mode == LeafMode::sampled ? " sampled" : " min (HQEPCSS)") + " leaves, side " +
-                           std::to_string(leaf) + ":",
-                       scene, expected, run_batch(scene, leaf_queries, s), expected, true);
-      }
+    for (const Structure& st : structures)
+      for (LeafMode mode : {LeafMode::sampled, LeafMode::min})
+        for (int leaf : {2, 4, 8, 16}) {
+          TraversalSettings s;
+          s.leaf_side = leaf, s.leaf_mode = mode, s.bias = 0.001f;
+          // The mip chain's other depth sums: none (Step 5) and midpoint (no table).
+          s.depth_sums = leaf == 4 ? DepthSums::none : leaf == 16 ? DepthSums::midpoint : DepthSums::table;
+          const auto expected = st.mip ? aligned_recursion(scene, leaf_queries, s) : recursion(scene, leaf_queries, s);
+          const auto observed = st.mip ? run_mip_batch(scene, leaf_queries, s) : run_batch(scene, leaf_queries, s);
+          add_comparison(results,
+                         label + st.label + (mode == LeafMode::sampled ? " sampled" : " min (HQEPCSS)") +
+                             " leaves, side " + std::to_string(leaf) + ":",
+                         scene, expected, observed, expected, true, s.depth_sums != DepthSums::none);
+        }
 
     if (std::string(fixture.name) == "fine_checker") {
       // The pathological case: every node ambiguous at receiver 0.5.
-      for (int budget : {64, 1000}) {
-        TraversalSettings s;
-        s.node_budget = budget;
-        const std::vector<TraversalQuery> q{{{0, 0, 256, 256}, 0.5f, 0, 0}, {{10, 20, 200, 150}, 0.5f, 5, 1}};
-        const auto expected = recursion(scene, q, s);
-        const auto observed = run_batch(scene, q, s);
-        double worst = 0.0;
-        long most_nodes = 0;
-        for (size_t k = 0; k < q.size(); ++k) {
-          const auto b = brute_force_occluders(scene.depth, q[k].region, 0.5f, 0.0f);
-          worst = std::max(worst, std::fabs(observed[k].occluded_fraction() - b.occluded_fraction()));
-          most_nodes = std::max(most_nodes, observed[k].nodes);
+      for (const Structure& st : structures)
+        for (int budget : {64, 1000}) {
+          TraversalSettings s;
+          s.node_budget = budget;
+          const std::vector<TraversalQuery> q{{{0, 0, 256, 256}, 0.5f, 0, 0}, {{10, 20, 200, 150}, 0.5f, 5, 1}};
+          const auto expected = st.mip ? aligned_recursion(scene, q, s) : recursion(scene, q, s);
+          const auto observed = st.mip ? run_mip_batch(scene, q, s) : run_batch(scene, q, s);
+          double worst = 0.0;
+          long most_nodes = 0;
+          for (size_t k = 0; k < q.size(); ++k) {
+            const auto b = brute_force_occluders(scene.depth, q[k].region, 0.5f, 0.0f);
+            worst = std::max(worst, std::fabs(observed[k].occluded_fraction() - b.occluded_fraction()));
+            most_nodes = std::max(most_nodes, observed[k].nodes);
+          }
+          // Levels: 8 for the pyramid's 256² root; the mip chain's virtual root is one above, and a
+          // step may add four texels.
+          const long bound = budget + 3 * (st.mip ? 9 : 8) + (st.mip ? 4 + 4 : 1);
+          const std::string name = label + st.label + " budget " + std::to_string(budget);
+          add_comparison(results,
+                         name + " (nodes " + std::to_string(most_nodes) + " <= " + std::to_string(bound) +
+                             "; fraction error vs brute force " + format_number("%.3f", worst) + "):",
+                         scene, expected, observed, expected, true);
+          Image within(1, 1, 1, 1.0f), observed_within(1, 1, 1, most_nodes <= bound ? 1.0f : 0.0f);
+          results.push_back({name + ": nodes within the budget's bound", Tolerance::exact(),
+                             compare(within, observed_within, Tolerance::exact())});
         }
-        const long bound = budget + 3 * 8 + 1;
-        add_comparison(results,
-                       label + " budget " + std::to_string(budget) + " (nodes " + std::to_string(most_nodes) +
-                           " <= " + std::to_string(bound) + "; fraction error vs brute force " +
-                           format_number("%.3f", worst) + "):",
-                       scene, expected, observed, expected, true);
-        Image within(1, 1, 1, 1.0f), observed_within(1, 1, 1, most_nodes <= bound ? 1.0f : 0.0f);
-        results.push_back({label + " budget " + std::to_string(budget) + ": nodes within budget + 3 levels + 1",
-                           Tolerance::exact(), compare(within, observed_within, Tolerance::exact())});
-      }
     }
   }
   return results;

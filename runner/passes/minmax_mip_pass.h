@@ -1,5 +1,7 @@
-// Runner side of glsl/passes/minmax_mip_build.comp: the aligned min/max/mean
-// mip chain, built only as the baseline of `penumbra bench pyramid`.
+// Runner side of glsl/passes/minmax_mip_build.comp: glsl/minmax_mip.glsl's
+// aligned min/max mip chain, padded to a power of two — the structure Fast
+// PCSS traverses (with a summed-area table of depth), and the baseline of
+// `penumbra bench pyramid`.
 #pragma once
 
 #include <cstddef>
@@ -10,18 +12,23 @@
 namespace pn {
 
 struct MinMaxMipChain {
-  GlObject texture;  // RGBA32F, floor(log2 N) + 1 mip levels
+  GlObject texture;  // RGBA32F, (P/2)×P, log2 P + 1 mip levels, two nodes a texel; P = the least power of two >= max(map_size, 2)
   int map_size = 0;
+  int padded_size = 0;  // P
   int levels = 0;
 
-  static std::size_t memory_bytes(int map_size);  // 16 bytes × texels of every level
+  static int padded_size_for(int map_size);
+  static std::size_t memory_bytes(int map_size);  // 16 bytes × texels of every level (8 a node)
 };
 
 class MinMaxMipBuilder {
  public:
   MinMaxMipBuilder(const Context& context, const SourceTree& tree);
+  // Throws Error unless 1 <= map_size <= GL_MAX_TEXTURE_SIZE's power of two.
   MinMaxMipChain allocate(int map_size) const;
   void build_into(const GlObject& shadow_map, const MinMaxMipChain& chain) const;
+  // allocate + build_into, for a map_size × map_size R32F shadow map.
+  MinMaxMipChain build(const GlObject& shadow_map, int map_size) const;
 
  private:
   const Context* context_;

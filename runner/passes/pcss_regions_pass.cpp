@@ -19,15 +19,27 @@ namespace pn {
 
 static_assert(static_cast<int>(PcssRegionsQuery::Kind::search) == PN_PCSS_REGIONS_QUERY_SEARCH &&
                   static_cast<int>(PcssRegionsQuery::Kind::filter) == PN_PCSS_REGIONS_QUERY_FILTER &&
-                  static_cast<int>(PcssRegionsQuery::Kind::entry) == PN_PCSS_REGIONS_QUERY_ENTRY,
+                  static_cast<int>(PcssRegionsQuery::Kind::entry) == PN_PCSS_REGIONS_QUERY_ENTRY &&
+                  static_cast<int>(PcssRegionsQuery::Kind::search_mip) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP,
               "query kinds as pcss_regions_query.h numbers them");
 
 PcssRegionsQueryPass::PcssRegionsQueryPass(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/pcss_regions_query.comp")) {}
+    : context_(&context),
+      program_(compile_pass(context, tree, "passes/pcss_regions_query.comp")),
+      no_mip_(context, GlKind::texture, GL_TEXTURE_2D) {
+  context.gl().TextureStorage2D(no_mip_.id(), 1, GL_RGBA32F, 1, 1);
+}
 
 std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyramid, const LightModel& light,
-                                                         const std::vector<PcssRegionsQuery>& queries) const {
+                                                         const std::vector<PcssRegionsQuery>& queries,
+                                                         const MinMaxMipChain* mip) const {
   if (queries.empty()) return {};
+  if (mip && mip->map_size != light.map_size)
+    throw Error("pcss_regions query: light map size " + std::to_string(light.map_size) + ": expected the mip chain's " +
+                std::to_string(mip->map_size));
+  for (const PcssRegionsQuery& q : queries)
+    if (q.kind == PcssRegionsQuery::Kind::search_mip && !mip)
+      throw Error("pcss_regions query: a search over the mip chain needs the chain");
   if (light.map_size != pyramid.map_size)
     throw Error("pcss_regions query: light map size " + std::to_string(light.map_size) + ": expected the pyramid's " +
                 std::to_string(pyramid.map_size));
@@ -52,6 +64,7 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
     PassBindings bind(*context_);
     bind.uniform(block);
     bind.texture(PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING, pyramid.texture);
+    bind.texture(PN_PCSS_REGIONS_QUERY_MIP_BINDING, mip ? mip->texture : no_mip_);
     bind.texture(PN_PCSS_REGIONS_QUERY_A_BINDING, texture_a);
     bind.texture(PN_PCSS_REGIONS_QUERY_B_BINDING, texture_b);
     bind.texture(PN_PCSS_REGIONS_QUERY_C_BINDING, texture_c);

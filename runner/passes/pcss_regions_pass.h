@@ -8,6 +8,7 @@
 
 #include "gl/compute_program.h"
 #include "passes/depth_pyramid_pass.h"
+#include "passes/minmax_mip_pass.h"
 #include "pipeline/pcss_settings.h"  // RegionMode
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
@@ -15,7 +16,7 @@
 namespace pn {
 
 struct PcssRegionsQuery {
-  enum class Kind { search = 0, filter = 1, entry = 2 };  // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h)
+  enum class Kind { search = 0, filter = 1, entry = 2, search_mip = 3 };  // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h)
   Kind kind = Kind::search;
   RegionMode mode = RegionMode::window;
   std::array<float, 4> input{};  // search: receiver (u, v, d, valid); filter: search entry; entry: the entry
@@ -37,13 +38,16 @@ class PcssRegionsQueryPass {
  public:
   PcssRegionsQueryPass(const Context& context, const SourceTree& tree);
 
-  // One result per query; the light's map size must be the pyramid's N (Throws Error otherwise).
+  // One result per query; the light's map size must be the pyramid's N, and the mip
+  // chain's when given (search_mip queries need it). Throws Error otherwise.
   std::vector<PcssRegionsResult> run(const DepthPyramid& pyramid, const LightModel& light,
-                                     const std::vector<PcssRegionsQuery>& queries) const;
+                                     const std::vector<PcssRegionsQuery>& queries,
+                                     const MinMaxMipChain* mip = nullptr) const;
 
  private:
   const Context* context_;
   ComputeProgram program_;
+  GlObject no_mip_;
 };
 
 }  // namespace pn

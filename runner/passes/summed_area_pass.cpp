@@ -63,6 +63,10 @@ void texture_size(const Context& context, const GlObject& texture, int& width, i
 
 }  // namespace
 
+std::size_t SummedAreaPass::memory_bytes(int width, int height) {
+  return 16 * static_cast<std::size_t>(width + 1) * static_cast<std::size_t>(height + 1);
+}
+
 SummedAreaPass::SummedAreaPass(const Context& context, const SourceTree& tree, int fraction_bits)
     : context_(&context),
       fraction_bits_(fraction_bits),

@@ -43,6 +43,10 @@ class SummedAreaPass {
 
   int fraction_bits() const { return fraction_bits_; }
 
+  // GPU memory of a width × height map's table (RGBA32UI, (width + 1) × (height + 1)); the
+  // build's row-prefix table, as large, lives only while building.
+  static std::size_t memory_bytes(int width, int height);
+
  private:
   const Context* context_;
   int fraction_bits_;

@@ -1,5 +1,6 @@
 #include "passes/traversal_pass.h"
 
+#include "core/error.h"
 #include "core/query_grid.h"
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
@@ -8,7 +9,8 @@
 namespace pn::glsl {
 #include "passes/traversal_query.h"
 #include "passes/window_scan.h"
-PN_STD140_SIZE(PnTraversalQueryParams, 16);
+PN_STD140_SIZE(PnTraversalQueryParams, 32);
+PN_STD140_OFFSET(PnTraversalQueryParams, mapSize, 24);
 PN_STD140_OFFSET(PnTraversalQueryParams, leafSide, 4);
 PN_STD140_OFFSET(PnTraversalQueryParams, leafMode, 8);
 PN_STD140_OFFSET(PnTraversalQueryParams, nodeBudget, 12);
@@ -48,16 +50,42 @@ std::vector<TraversalResult> TraversalBatch::read() const {
   return out;
 }
 
-TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/traversal_query.comp")) {}
+namespace {
 
-void TraversalPass::dispatch(const DepthPyramid& pyramid, const GlObject& sample_table, const TraversalBatch& batch,
-                             const TraversalSettings& settings) const {
-  const glsl::PnTraversalQueryParams block{settings.bias, settings.leaf_side, static_cast<int>(settings.leaf_mode),
-                                           settings.node_budget};
+GlObject empty_texture(const Context& context, GLenum target, GLenum format) {
+  GlObject t(context, GlKind::texture, target);
+  if (target == GL_TEXTURE_2D_ARRAY) context.gl().TextureStorage3D(t.id(), 1, format, 1, 1, 1);
+  else context.gl().TextureStorage2D(t.id(), 1, format, 1, 1);
+  return t;
+}
+
+}  // namespace
+
+TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
+    : context_(&context),
+      program_(compile_pass(context, tree, "passes/traversal_query.comp")),
+      empty_array_(empty_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
+      empty_2d_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
+      empty_uint_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
+
+void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject& sample_table,
+                             const TraversalBatch& batch, const TraversalSettings& settings) const {
+  const bool mip = structure.mip != nullptr;
+  if (mip == (structure.pyramid != nullptr) || (mip && settings.depth_sums == DepthSums::table && !structure.depth_sums))
+    throw Error("traversal: expected a pyramid or a mip chain (with its summed-area table for table depth sums)");
+  const glsl::PnTraversalQueryParams block{settings.bias,
+                                           settings.leaf_side,
+                                           static_cast<int>(settings.leaf_mode),
+                                           settings.node_budget,
+                                           mip ? PN_STRUCTURE_MIP : PN_STRUCTURE_PYRAMID,
+                                           static_cast<int>(settings.depth_sums),
+                                           mip ? structure.mip->map_size : 0};
   PassBindings bind(*context_);
   bind.uniform(block);
-  bind.texture(PN_TRAVERSAL_QUERY_PYRAMID_BINDING, pyramid.texture);
+  bind.texture(PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? empty_array_ : structure.pyramid->texture);
+  bind.texture(PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? structure.mip->texture : empty_2d_);
+  bind.texture(PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING,
+               mip && structure.depth_sums ? structure.depth_sums->texture : empty_uint_);
   bind.texture(PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, sample_table);
   bind.texture(PN_TRAVERSAL_QUERY_A_BINDING, batch.query_a_);
   bind.texture(PN_TRAVERSAL_QUERY_B_BINDING, batch.query_b_);

@@ -6,6 +6,8 @@
 
 #include "gl/compute_program.h"
 #include "passes/depth_pyramid_pass.h"
+#include "passes/minmax_mip_pass.h"
+#include "passes/summed_area_pass.h"
 #include "reference/traversal_reference.h"
 #include "sampling/sample_table.h"
 #include "shader/source_tree.h"
@@ -24,6 +26,15 @@ struct TraversalSettings {
   int leaf_side = 1;
   LeafMode leaf_mode = LeafMode::sampled;
   int node_budget = 1 << 26;
+  DepthSums depth_sums = DepthSums::table;  // the mip chain's traversal
+};
+
+// What a traversal reads: the decreased pyramid, or the aligned mip chain
+// with its summed-area table of depth (the table only for DepthSums::table).
+struct TraversalStructure {
+  const DepthPyramid* pyramid = nullptr;
+  const MinMaxMipChain* mip = nullptr;
+  const SummedAreaTable* depth_sums = nullptr;
 };
 
 GlObject upload_sample_table(const Context& context, const SampleTable& table);
@@ -45,12 +56,18 @@ class TraversalBatch {
 class TraversalPass {
  public:
   TraversalPass(const Context& context, const SourceTree& tree);
-  void dispatch(const DepthPyramid& pyramid, const GlObject& sample_table, const TraversalBatch& batch,
+  // Throws Error unless the structure holds a pyramid or a mip chain (with depth sums when wanted).
+  void dispatch(const TraversalStructure& structure, const GlObject& sample_table, const TraversalBatch& batch,
                 const TraversalSettings& settings) const;
+  void dispatch(const DepthPyramid& pyramid, const GlObject& sample_table, const TraversalBatch& batch,
+                const TraversalSettings& settings) const {
+    dispatch(TraversalStructure{&pyramid}, sample_table, batch, settings);
+  }
 
  private:
   const Context* context_;
   ComputeProgram program_;
+  GlObject empty_array_, empty_2d_, empty_uint_;
 };
 
 // Brute force over each query's region (every texel fetched), into the same result layout.

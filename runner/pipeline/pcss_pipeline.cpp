@@ -13,7 +13,8 @@
 
 namespace pn::glsl {
 #include "passes/pcss_params.h"
-PN_STD140_SIZE(PnPcssParams, 80);
+PN_STD140_SIZE(PnPcssParams, 96);
+PN_STD140_OFFSET(PnPcssParams, depthSums, 80);
 PN_STD140_OFFSET(PnPcssParams, refineIterations, 24);
 PN_STD140_OFFSET(PnPcssParams, sigma3, 72);
 PN_STD140_SIZE(PnPoissonDisk, 16 * PN_POISSON_MAX_SAMPLES);
@@ -46,6 +47,7 @@ PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   b.sigma1 = s.sigma1;
   b.sigma2 = s.sigma2;
   b.sigma3 = s.sigma3;
+  b.structure = static_cast<std::int32_t>(s.structure);
   return b;
 }
 
@@ -66,8 +68,25 @@ GlObject cleared_texture(const Context& context, int size, int channels) {
   return t;
 }
 
-bool uses_pyramid_levels(const PcssSettings& s) {
+bool uses_structure_levels(const PcssSettings& s) {
   return s.refine_iterations > 0 || s.blockers == Estimator::traversal || s.occlusion == Estimator::traversal;
+}
+
+// The scan and Poisson estimators read the sanitized map (the pyramid's level 0).
+bool uses_sanitized_map(const PcssSettings& s) {
+  return s.structure == Structure::pyramid || s.blockers != Estimator::traversal || s.occlusion != Estimator::traversal;
+}
+
+// `t`, or `empty` where the frame did not make it: every declared sampler has a texture.
+const GlObject& made_or(const GlObject& t, const GlObject& empty) {
+  return t.id() != 0 ? t : empty;
+}
+
+GlObject empty_texture(const Context& context, GLenum target, GLenum format) {
+  GlObject t(context, GlKind::texture, target);
+  if (target == GL_TEXTURE_2D_ARRAY) context.gl().TextureStorage3D(t.id(), 1, format, 1, 1, 1);
+  else context.gl().TextureStorage2D(t.id(), 1, format, 1, 1);
+  return t;
 }
 
 }  // namespace
@@ -84,6 +103,8 @@ double PcssStats::work_per_receiver() const {
 PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
     : context_(&context),
       pyramid_(context, tree),
+      mip_(context, tree),
+      depth_sums_(context, tree),
       reuse_(context, tree),
       blur_(context, tree),
       search_(compile_pass(context, tree, "passes/pcss_search.comp")),
@@ -96,7 +117,21 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       sample_table_(upload_sample_table(context, generate_sample_table(kSampleTableSeed))),
       blocker_disk_(upload_disk(context, PcssSettings{}.blocker_samples, kBlockerDiskSeed)),
       filter_disk_(upload_disk(context, PcssSettings{}.filter_samples, kFilterDiskSeed)),
-      no_parents_(cleared_texture(context, 1, 1)) {}
+      no_parents_(cleared_texture(context, 1, 1)),
+      no_pyramid_(empty_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
+      no_mip_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
+      no_depth_sums_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
+
+void PcssPipeline::build_structure(PcssFrame& frame, const GlObject& shadow_map, int n) const {
+  const PcssSettings& s = frame.settings;
+  const bool levels = uses_structure_levels(s);
+  if (uses_sanitized_map(s)) frame.pyramid = pyramid_.build(shadow_map, n, n, s.structure == Structure::pyramid && levels ? 31 : 0);
+  if (s.structure == Structure::mip && levels) {
+    frame.mip = mip_.build(shadow_map, n);
+    if (s.blockers == Estimator::traversal && s.depth_sums == DepthSums::table)
+      frame.depth_sums = depth_sums_.build(shadow_map);
+  }
+}
 
 GlObject PcssPipeline::link(const GlObject& entries, int size, int tile, const PcssSettings& s) const {
   ReuseParams params;
@@ -108,18 +143,22 @@ GlObject PcssPipeline::link(const GlObject& entries, int size, int tile, const P
 }
 
 void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObject& entries, const GlObject* parents,
-                            int tile, Estimator estimator, int samples, const GlObject& result) const {
+                            int tile, Estimator estimator, int samples, bool wants_depth_sums,
+                            const GlObject& result) const {
   const auto& gl = context_->gl();
   const int size = frame.size;
   block.reuseTile = parents ? tile : 0;
   block.sampleCount = samples;
+  block.depthSums = static_cast<std::int32_t>(wants_depth_sums ? frame.settings.depth_sums : DepthSums::none);
   // What every estimator reads; each dispatch below binds it in its own scope.
   const auto bind_inputs = [&](PassBindings& bind) {
-    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid.texture);
+    bind.texture(PN_PCSS_PYRAMID_BINDING, made_or(frame.pyramid.texture, no_pyramid_));
+    bind.texture(PN_PCSS_MIP_BINDING, made_or(frame.mip.texture, no_mip_));
+    bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
     bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
     bind.texture(PN_PCSS_ENTRIES_BINDING, entries);
     bind.texture(PN_PCSS_PARENTS_BINDING, parents ? *parents : no_parents_);
-    bind.texture(PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid.level0);  // sampler2D of the sanitized map
+    bind.texture(PN_PCSS_DEPTH_MAP_BINDING, made_or(frame.pyramid.level0, no_mip_));  // sampler2D of the sanitized map
   };
 
   if (estimator == Estimator::scan) {
@@ -177,11 +216,12 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
 
 void PcssPipeline::reuse_and_estimate(PcssFrame& frame, const PcssBlock& block, StageClock& clock,
                                       StageNames stages, const GlObject& keys, const GlObject& entries, int tile,
-                                      Estimator estimator, int samples, GlObject& parents, GlObject& results) const {
+                                      Estimator estimator, int samples, bool wants_depth_sums, GlObject& parents,
+                                      GlObject& results) const {
   if (tile > 0) parents = link(keys, frame.size, tile, frame.settings);
   clock.stage(stages.link);
   results = cleared_texture(*context_, frame.size, 4);
-  estimate(frame, block, entries, tile > 0 ? &parents : nullptr, tile, estimator, samples, results);
+  estimate(frame, block, entries, tile > 0 ? &parents : nullptr, tile, estimator, samples, wants_depth_sums, results);
   clock.stage(stages.estimate);
 }
 
@@ -206,19 +246,26 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   StageClock clock(*context_);
   clock.start();
 
-  // Step 1's pyramid: all levels when something reads them, else level 0 (the sanitized map) only.
-  frame.pyramid = pyramid_.build(*inputs.shadow_map, n, n, uses_pyramid_levels(settings) ? 31 : 0);
-  clock.stage("pyramid");
+  // Step 1's structure: what Steps 3-5 read.
+  build_structure(frame, *inputs.shadow_map, n);
+  clock.stage(settings.structure == Structure::mip ? "mip chain + sums" : "pyramid");
 
   // Step 3.
   const PcssBlock block = make_block(inputs.light, settings);
   frame.search_map = make_float_texture(*context_, size, size, 4);
-  frame.search_keys = make_float_texture(*context_, size, size, 4);
+  // Reuse keys of their own only when reuse is on and they differ from the entries (pnEntryLinkKey).
+  frame.own_keys = settings.region != RegionMode::exact;
+  const bool own_search_keys = frame.own_keys && settings.search_tile > 0;
+  const bool own_filter_keys = frame.own_keys && settings.filter_tile > 0;
+  frame.search_keys = own_search_keys ? make_float_texture(*context_, size, size, 4) : cleared_texture(*context_, 1, 4);
   frame.receiver_depth = make_float_texture(*context_, size, size, 1);
   {
     PassBindings bind(*context_);
-    bind.uniform(block);
-    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid.texture);
+    PcssBlock search_block = block;
+    search_block.writeKeys = own_search_keys ? 1 : 0;
+    bind.uniform(search_block);
+    bind.texture(PN_PCSS_PYRAMID_BINDING, made_or(frame.pyramid.texture, no_pyramid_));
+    bind.texture(PN_PCSS_MIP_BINDING, made_or(frame.mip.texture, no_mip_));
     bind.texture(PN_PCSS_GBUFFER_BINDING, *inputs.gbuffer);
     bind.image(PN_PCSS_SEARCH_MAP_IMAGE, frame.search_map, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_SEARCH_KEYS_IMAGE, frame.search_keys, GL_WRITE_ONLY, GL_RGBA32F);
@@ -228,14 +275,18 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   clock.stage("3 search region");
 
   // Step 4: blockers of the representatives, then every pixel's filter region.
-  reuse_and_estimate(frame, block, clock, {"4 reuse link", "4 blockers"}, frame.search_keys, frame.search_map, settings.search_tile,
-                     settings.blockers, settings.blocker_samples, frame.search_parents, frame.blocker_results);
+  reuse_and_estimate(frame, block, clock, {"4 reuse link", "4 blockers"},
+                     frame.search_reuse_keys(), frame.search_map, settings.search_tile,
+                     settings.blockers, settings.blocker_samples, true, frame.search_parents, frame.blocker_results);
   frame.filter_map = make_float_texture(*context_, size, size, 4);
   frame.blocker_mean = make_float_texture(*context_, size, size, 1);
-  frame.filter_keys = make_float_texture(*context_, size, size, 4);
+  frame.filter_keys = own_filter_keys ? make_float_texture(*context_, size, size, 4) : cleared_texture(*context_, 1, 4);
   {
     PassBindings bind(*context_);
-    bind_representatives(bind, block, frame.search_map, settings.search_tile, frame.search_parents, frame.blocker_results);
+    PcssBlock filter_block = block;
+    filter_block.writeKeys = own_filter_keys ? 1 : 0;
+    bind_representatives(bind, filter_block, frame.search_map, settings.search_tile, frame.search_parents,
+                         frame.blocker_results);
     bind.image(PN_PCSS_FILTER_MAP_IMAGE, frame.filter_map, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_BLOCKER_MEAN_IMAGE, frame.blocker_mean, GL_WRITE_ONLY, GL_R32F);
     bind.image(PN_PCSS_FILTER_KEYS_IMAGE, frame.filter_keys, GL_WRITE_ONLY, GL_RGBA32F);
@@ -244,8 +295,9 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   clock.stage("4 filter region");
 
   // Step 5: occluded fraction of the representatives, then every pixel's visibility.
-  reuse_and_estimate(frame, block, clock, {"5 reuse link", "5 occlusion"}, frame.filter_keys, frame.filter_map, settings.filter_tile,
-                     settings.occlusion, settings.filter_samples, frame.filter_parents, frame.occlusion_results);
+  reuse_and_estimate(frame, block, clock, {"5 reuse link", "5 occlusion"},
+                     frame.filter_reuse_keys(), frame.filter_map, settings.filter_tile,
+                     settings.occlusion, settings.filter_samples, false, frame.filter_parents, frame.occlusion_results);
   frame.visibility = make_float_texture(*context_, size, size, 1);
   {
     PassBindings bind(*context_);
@@ -256,7 +308,11 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   clock.stage("5 shade");
 
   // Step 6.
-  if (settings.blur) frame.blurred = blur_.run(frame.visibility, &frame.receiver_depth, size, size, settings.blur_params);
+  if (settings.blur) {
+    frame.settings.blur_params.pixels_per_texel = static_cast<float>(size / static_cast<double>(n));  // adaptive radius's k
+    frame.blurred = blur_.run(frame.visibility, &frame.receiver_depth, size, size, frame.settings.blur_params,
+                              &frame.filter_map);
+  }
   clock.stage("6 blur");
   frame.stages = clock.read();
   context_->throw_if_gl_error("PCSS frame '" + settings.name + "'");

@@ -14,6 +14,8 @@
 #include "gl/compute_program.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
+#include "passes/minmax_mip_pass.h"
+#include "passes/summed_area_pass.h"
 #include "passes/reuse_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "technique/technique.h"
@@ -28,22 +30,28 @@ class PassBindings;
 struct PcssFrame {
   PcssSettings settings;
   int size = 0;  // screen side
-  DepthPyramid pyramid;
+  DepthPyramid pyramid;        // Structure::pyramid; level 0 only (the sanitized map) when nothing reads its levels
+  MinMaxMipChain mip;          // Structure::mip: the aligned min/max chain
+  SummedAreaTable depth_sums;  // Structure::mip: summed-area table of depth (Step 4's clipped sums)
   GlObject receiver_depth;     // R32F light depth of each pixel's receiver, +Inf where it sees no surface
   GlObject search_map;         // (d, x, y, s), s < 0: lit
-  GlObject search_keys;        // what reuse compares (pnEntryLinkKey)
+  GlObject search_keys;        // what reuse compares (pnEntryLinkKey) when it is not search_map itself (search_reuse_keys)
   GlObject search_parents;     // reuse codes (k = search_tile), when reuse is on
   GlObject blocker_results;    // (occluders, depth sum, texels, work) per computed pixel
   GlObject filter_map;         // (d, x, y, s)
   GlObject blocker_mean;       // R32F, 0 where lit
-  GlObject filter_keys;
+  GlObject filter_keys;        // likewise
   GlObject filter_parents;
   GlObject occlusion_results;
   GlObject visibility;         // Step 5: 1 - occluded fraction
   GlObject blurred;            // Step 6, when on: depth-aware over receiver_depth (blur_params.depth_aware)
   std::vector<std::pair<std::string, double>> stages;  // GPU ms, in order
 
+  bool own_keys = true;        // false: the entries are their own reuse keys (exact regions), or reuse is off
+
   const GlObject& soft_shadow() const { return settings.blur ? blurred : visibility; }
+  const GlObject& search_reuse_keys() const { return own_keys ? search_keys : search_map; }
+  const GlObject& filter_reuse_keys() const { return own_keys ? filter_keys : filter_map; }
 };
 
 // What a frame did, counted on the CPU from its maps.
@@ -71,7 +79,7 @@ class PcssPipeline {
 
  private:
   void estimate(const PcssFrame& frame, glsl::PnPcssParams block, const GlObject& entries, const GlObject* parents, int tile,
-                Estimator estimator, int samples, const GlObject& result) const;
+                Estimator estimator, int samples, bool wants_depth_sums, const GlObject& result) const;
   GlObject link(const GlObject& entries, int size, int tile, const PcssSettings& settings) const;
   // Steps 4 and 5's first half: links of `keys` (tile > 0) into `parents`, then the estimate of
   // every computing pixel's region of `entries` into `results`; two stages of `clock`, named `stages`.
@@ -81,7 +89,9 @@ class PcssPipeline {
   };
   void reuse_and_estimate(PcssFrame& frame, const glsl::PnPcssParams& block, StageClock& clock, StageNames stages,
                           const GlObject& keys, const GlObject& entries, int tile, Estimator estimator, int samples,
-                          GlObject& parents, GlObject& results) const;
+                          bool wants_depth_sums, GlObject& parents, GlObject& results) const;
+  // Step 1's structure: the pyramid's levels, or the mip chain and the depth sums, as `settings` reads them.
+  void build_structure(PcssFrame& frame, const GlObject& shadow_map, int map_size) const;
   // Their second half's inputs into `bind`: `entries`, parents (tile > 0), results, and the
   // uniform block with the tile.
   void bind_representatives(PassBindings& bind, glsl::PnPcssParams block, const GlObject& entries, int tile,
@@ -89,10 +99,13 @@ class PcssPipeline {
 
   const Context* context_;
   DepthPyramidBuilder pyramid_;
+  MinMaxMipBuilder mip_;
+  SummedAreaPass depth_sums_;
   ReusePass reuse_;
   BlurPass blur_;
   ComputeProgram search_, traverse_, scan_, poisson_, compact_, filter_, shade_;
   GlObject sample_table_, blocker_disk_, filter_disk_, no_parents_;
+  GlObject no_pyramid_, no_mip_, no_depth_sums_;  // bound where a frame has no such structure
 };
 
 }  // namespace pn

@@ -78,9 +78,9 @@ PcssSettings fast_pcss_all_off() {
 }
 
 const std::vector<std::string>& pcss_setting_keys() {
-  static const std::vector<std::string> keys{"refine", "region", "leaf", "leaf-mode", "budget", "reuse",
+  static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf", "leaf-mode", "budget", "reuse",
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
-                                             "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "bias", "c", "sigma1", "sigma2", "sigma3",
+                                             "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "blur-adaptive", "bias", "c", "sigma1", "sigma2", "sigma3",
                                              "blockers", "occlusion", "blocker-samples", "filter-samples"};
   return keys;
 }
@@ -124,6 +124,14 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
     else if (value == "exact") s.region = RegionMode::exact;
     else if (value == "centred") s.region = RegionMode::centred;
     else throw bad("window, exact or centred");
+  } else if (key == "structure") {
+    if (value == "pyramid") s.structure = Structure::pyramid;
+    else if (value == "mip") s.structure = Structure::mip;
+    else throw bad("pyramid or mip");
+  } else if (key == "depth-sums") {
+    if (value == "table") s.depth_sums = DepthSums::table;
+    else if (value == "midpoint") s.depth_sums = DepthSums::midpoint;
+    else throw bad("table or midpoint");
   } else if (key == "leaf") s.leaf_side = integer();
   else if (key == "leaf-mode") {
     if (value == "sampled") s.leaf_mode = LeafMode::sampled;
@@ -145,6 +153,7 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   else if (key == "blur-sigma") s.blur_params.sigma = real();
   else if (key == "blur-depth-aware") s.blur_params.depth_aware = on_off();
   else if (key == "blur-depth-tolerance") s.blur_params.depth_tolerance = real();
+  else if (key == "blur-adaptive") s.blur_params.adaptive = on_off();
   else if (key == "bias") s.bias = real();
   else if (key == "c") s.filter_scale = real();
   else if (key == "sigma1") s.sigma1 = real();

@@ -8,6 +8,7 @@
 
 #include "poisson_pcss.h"  // PN_POISSON_*: glsl/poisson_pcss.h, shared with the shaders
 #include "pcss_regions.h"
+#include "traversal.h"  // PN_STRUCTURE_*
 #include "reference/blur_reference.h"
 #include "reference/reuse_reference.h"
 #include "reference/traversal_reference.h"
@@ -26,6 +27,15 @@ enum class RegionMode {
   window = PN_REGION_WINDOW,    // the paper's power-of-two window, Steps 1-7 literally (region.glsl)
   exact = PN_REGION_EXACT,      // the n×n texels nearest the centre, n = round(s) (no approximation)
   centred = PN_REGION_CENTRED,  // the window's side, centred on (x, y) (pnRegionApproximateCentred)
+};
+
+// What Steps 3-5 read from the shadow map (traversal.h): the paper's
+// decreased pyramid (depth_pyramid.glsl, N² texels a level), or the aligned
+// min/max mip chain (minmax_mip.glsl, 4/3 N²) with a summed-area table of
+// depth (summed_area.glsl) for the blocker mean's clipped sums.
+enum class Structure {
+  pyramid = PN_STRUCTURE_PYRAMID,
+  mip = PN_STRUCTURE_MIP,
 };
 
 // How the GPU skips the pixels that need not compute in Steps 4 and 5 — lit
@@ -47,6 +57,8 @@ struct PcssSettings {
   float filter_scale = 1.0f;   // c: filter side = c · penumbra (Step 4)
   int refine_iterations = 8;   // Step 3 refinement with the pyramid; 0 = off (PCSS's width)
   RegionMode region = RegionMode::window;
+  Structure structure = Structure::pyramid;
+  DepthSums depth_sums = DepthSums::table;  // Step 4 over the mip chain: its wholly occluding nodes' depth sums
   Estimator blockers = Estimator::traversal;  // Step 4
   Estimator occlusion = Estimator::traversal; // Step 5
   int leaf_side = 8;           // traversal leaves; 1 = exact (sampled leaves off)
@@ -59,7 +71,10 @@ struct PcssSettings {
   int blocker_samples = PN_POISSON_BLOCKER_SAMPLES;  // Poisson PCSS: 36, 1..PN_POISSON_MAX_SAMPLES (64)
   int filter_samples = PN_POISSON_PCF_SAMPLES;       // 64
   bool blur = true;            // Step 6
-  BlurParams blur_params{PN_BLUR_RADIUS, PN_BLUR_SIGMA, true, kBlurDepthTolerance};  // radius 3 (§5.3), depth-aware
+  // Radius 3 (§5.3), depth-aware; the adaptive radius (blur.glsl: at most half
+  // the pixel's penumbra, 0 on lit pixels and contact shadows) off for now.
+  // pixels_per_texel is the frame's (screen size / map size), set by Step 6.
+  BlurParams blur_params{PN_BLUR_RADIUS, PN_BLUR_SIGMA, true, kBlurDepthTolerance, false};
 
   // Throws Error naming the setting and its accepted range.
   void validate() const;

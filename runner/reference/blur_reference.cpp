@@ -24,6 +24,9 @@ void BlurParams::validate() const {
     throw Error("blur sigma " + format_number("%g", sigma) + ": expected a finite number > 0 (texels)");
   if (!std::isfinite(depth_tolerance) || depth_tolerance < 0.0)
     throw Error("blur depth tolerance " + format_number("%g", depth_tolerance) + ": expected a finite number >= 0");
+  if (!std::isfinite(pixels_per_texel) || pixels_per_texel <= 0.0f)
+    throw Error("blur pixels per texel " + format_number("%g", pixels_per_texel) +
+                ": expected a finite number > 0 (screen pixels per shadow-map texel)");
 }
 
 double gaussian_weight(int offset, double sigma) {
@@ -81,6 +84,47 @@ Image blur_depth_aware_reference(const Image& source, const Image& depth, const 
         for (int i = -r; i <= r; ++i) {
           const int qx = clamp_index(x + i * dx, in.width), qy = clamp_index(y + i * dy, in.height);
           if (i != 0 && !same_surface(centre_depth, depth.at(qx, qy))) continue;
+          const double weight = gaussian_weight(i, params.sigma);
+          sum += weight * finite_or(in.at(qx, qy), kBlurNonfiniteValue);
+          weight_sum += weight;
+        }
+        out.at(x, y) = static_cast<float>(sum / weight_sum);
+      }
+    }
+    return out;
+  };
+  return pass(pass(source, 1, 0), 0, 1);
+}
+
+int blur_adaptive_radius(float filter_side, float pixels_per_texel, int radius) {
+  if (!(pixels_per_texel > 0.0f)) return 0;
+  const float half_width = 0.5f * filter_side * pixels_per_texel;  // float, as the module
+  if (!(half_width >= 1.0f)) return 0;                               // lit, NaN, contact
+  return half_width >= static_cast<float>(radius) ? radius : static_cast<int>(std::floor(half_width));
+}
+
+Image blur_adaptive_reference(const Image& source, const Image& filter_map, const Image* depth,
+                              const BlurParams& params) {
+  if (filter_map.width != source.width || filter_map.height != source.height || filter_map.channels != 4)
+    throw Error("adaptive blur reference: expected a 4-channel filter map of the source's size");
+  if (params.depth_aware && (depth == nullptr || depth->width != source.width || depth->height != source.height))
+    throw Error("adaptive blur reference: the depth-aware variant expects a depth image of the source's size");
+  const float tol = static_cast<float>(params.depth_tolerance);  // the cut in float, as the module
+  auto kept = [&](int x, int y, int qx, int qy) {
+    if (!params.depth_aware) return true;
+    const float centre = depth->at(x, y), tap = depth->at(qx, qy);
+    if (!std::isfinite(centre) || !std::isfinite(tap)) return std::isfinite(centre) == std::isfinite(tap);
+    return std::fabs(tap - centre) <= tol * std::fabs(centre);
+  };
+  auto pass = [&](const Image& in, int dx, int dy) {
+    Image out(in.width, in.height);
+    for (int y = 0; y < in.height; ++y) {
+      for (int x = 0; x < in.width; ++x) {
+        const int r = blur_adaptive_radius(filter_map.at(x, y, 3), params.pixels_per_texel, params.radius);
+        double sum = 0.0, weight_sum = 0.0;
+        for (int i = -r; i <= r; ++i) {
+          const int qx = clamp_index(x + i * dx, in.width), qy = clamp_index(y + i * dy, in.height);
+          if (i != 0 && !kept(x, y, qx, qy)) continue;
           const double weight = gaussian_weight(i, params.sigma);
           sum += weight * finite_or(in.at(qx, qy), kBlurNonfiniteValue);
           weight_sum += weight;

@@ -79,6 +79,18 @@ Rect search_min_square(const RegionEntry& entry, int n) {
   return {std::clamp(r.x, 0, n - side), std::clamp(r.y, 0, n - side), side, side};
 }
 
+Rect mip_search_cover(const RegionEntry& entry, int n) {
+  const Rect r = pcss_square(entry.x, entry.y, entry.side, n, nullptr);
+  if (r.width == 0 || r.height == 0) return Rect{};
+  const int side = std::max(r.width, r.height);
+  const int x1 = std::min(r.x + side, n), y1 = std::min(r.y + side, n);
+  int level = 0;
+  while ((2 << level) < std::max(x1 - r.x, y1 - r.y)) ++level;  // 2^(level+1) >= m
+  const int x0 = r.x >> level << level, y0 = r.y >> level << level;
+  const int x2 = std::min((((x1 - 1) >> level) + 1) << level, n), y2 = std::min((((y1 - 1) >> level) + 1) << level, n);
+  return {x0, y0, x2 - x0, y2 - y0};
+}
+
 DepthScan::DepthScan(const Image& map) : depths_(sanitized_depths(map)) {}
 
 double DepthScan::min(const Rect& r) const {
@@ -95,7 +107,7 @@ double DepthScan::min(const Rect& r) const {
 }
 
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, Rounding* rounding) {
+                         int iterations, Rounding* rounding, Structure structure) {
   const double d = receiver.depth;
   if (receiver.valid == 0.0f || std::isnan(d)) return {0.0, 0.0, 0.0, kRegionLit};
   const int n = scan.size();
@@ -103,7 +115,8 @@ RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const R
   RegionEntry e{d, receiver.u, receiver.v, light.search_width_texels(d)};
   for (int i = 0; i < std::min(iterations, kRefineMaxIterations); ++i) {
     if (rounding) note_region(e, n, RegionMode::exact, *rounding);
-    const double zmin = scan.min(search_min_square(e, n));
+    const double zmin =
+        scan.min(structure == Structure::mip ? mip_search_cover(e, n) : search_min_square(e, n));
     if (rounding && bias != 0.0 && std::isfinite(zmin) && std::isfinite(threshold) &&
         std::fabs(zmin - threshold) <= rounding->relative * std::fabs(threshold))
       rounding->ambiguous = true;  // float rounds d - bias

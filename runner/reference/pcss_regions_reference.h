@@ -61,6 +61,13 @@ Rect entry_region(const RegionEntry& entry, int n, RegionMode mode);
 // covers the region (SPEC §4.7); empty when the region is.
 Rect search_min_square(const RegionEntry& entry, int n);
 
+// The rectangle whose min depth Step 3 reads from the aligned mip chain
+// (pnSearchRegionMinMip): the aligned nodes of side 2^l, l = max(0, ceil(log2 m) - 1),
+// that touch the square of side m = max(w, h) at the exact region's origin (clipped
+// to the map), themselves clipped to the map — a superset of search_min_square's
+// texels when both lie in the map; empty when the region is.
+Rect mip_search_cover(const RegionEntry& entry, int n);
+
 // Min sanitized depth over rectangles of one map, by scanning every texel of each
 // (remembered per rectangle: refinement and the check's cases read the same ones often).
 class DepthScan {
@@ -90,8 +97,9 @@ struct Rounding {
 
 // Step 3. Invalid receivers and NaN depths: lit (0, 0, 0, lit). `iterations` is
 // bounded by kRefineMaxIterations; 0 gives PCSS's search width as is.
+// `structure`: which square's min refinement reads (search_min_square, or mip_search_cover).
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, Rounding* rounding = nullptr);
+                         int iterations, Rounding* rounding = nullptr, Structure structure = Structure::pyramid);
 
 // Step 4, from the search entry and the blocker mean of its pixel.
 RegionEntry filter_entry(const LightModel& light, const RegionEntry& search, double blocker_mean, bool has_blocker,

@@ -20,6 +20,25 @@ TraversalResult brute_force_occluders(const Image& depth, const Rect& region, fl
 
 namespace {
 
+// Eq. 5 and 6 over the w×h rectangle at (x, y) with the §3.2 samples of a node of side `side`.
+void sample_rect(const Image& depth, const SampleTable& table, float t, const TraversalParams& p, int x, int y, int w,
+                 int h, int side, TraversalResult& r) {
+  const SampleSelection s = select_samples(side, p.pixel_x, p.pixel_y);
+  int occluding = 0;
+  float depth_sum = 0.0f;
+  for (int column = s.first_column; column <= s.last_column; ++column) {
+    const Sample& q = table.at(column, s.set);
+    const int tx = x + std::clamp(static_cast<int>(std::floor(q.x * static_cast<float>(w))), 0, w - 1);
+    const int ty = y + std::clamp(static_cast<int>(std::floor(q.y * static_cast<float>(h))), 0, h - 1);
+    ++r.fetches;
+    const float d = depth.at(tx, ty);
+    if (d < t) ++occluding, depth_sum += d;
+  }
+  const double texels = static_cast<double>(w) * h;
+  r.occluders += texels * occluding / s.count;
+  r.depth_sum += texels * depth_sum / s.count;
+}
+
 class Recursion {
  public:
   Recursion(const Image& depth, int max_level, const SampleTable& table, const Rect& region, const TraversalParams& p)
@@ -73,23 +92,7 @@ class Recursion {
     visit(level - 1, ox + h, oy + h);
   }
 
-  // Eq. 5 and 6 over the w×h rectangle at (x, y) with the §3.2 samples of a node of side `side`.
-  void sample(int x, int y, int w, int h, int side) {
-    const SampleSelection s = select_samples(side, p_.pixel_x, p_.pixel_y);
-    int occluding = 0;
-    float depth_sum = 0.0f;
-    for (int column = s.first_column; column <= s.last_column; ++column) {
-      const Sample& q = table_.at(column, s.set);
-      const int tx = x + std::clamp(static_cast<int>(std::floor(q.x * static_cast<float>(w))), 0, w - 1);
-      const int ty = y + std::clamp(static_cast<int>(std::floor(q.y * static_cast<float>(h))), 0, h - 1);
-      ++r_.fetches;
-      const float d = depth_.at(tx, ty);
-      if (d < t_) ++occluding, depth_sum += d;
-    }
-    const double texels = static_cast<double>(w) * h;
-    r_.occluders += texels * occluding / s.count;
-    r_.depth_sum += texels * depth_sum / s.count;
-  }
+  void sample(int x, int y, int w, int h, int side) { sample_rect(depth_, table_, t_, p_, x, y, w, h, side, r_); }
 
   const Image& depth_;
   int max_level_;
@@ -100,7 +103,100 @@ class Recursion {
   TraversalResult r_;
 };
 
+// Over aligned nodes clipped to the region (minmax_mip.glsl's chain).
+class AlignedRecursion {
+ public:
+  AlignedRecursion(const Image& depth, const SampleTable& table, const Rect& region, const TraversalParams& p,
+                   DepthSums sums)
+      : depth_(depth), table_(table), region_(region), p_(p), t_(p.receiver_depth - p.bias), sums_(sums) {}
+
+  TraversalResult run() {
+    r_.texels = static_cast<double>(region_.width) * region_.height;
+    if (std::isnan(t_) || r_.texels == 0) return r_;
+    int padded = 2, top = 0;
+    while (padded < std::max(depth_.width, depth_.height)) padded *= 2;
+    while ((1 << top) < std::max(region_.width, region_.height)) ++top;
+    while ((1 << top) > padded) --top;
+    const int ox = region_.x >> top << top, oy = region_.y >> top << top, s = 1 << top;
+    visit(top, ox, oy);
+    visit(top, ox + s, oy);
+    visit(top, ox, oy + s);
+    visit(top, ox + s, oy + s);
+    return r_;
+  }
+
+ private:
+  struct Part {
+    int lx, ly, hx, hy;
+    double texels() const { return static_cast<double>(hx - lx) * (hy - ly); }
+  };
+
+  void visit(int level, int ox, int oy) {
+    const int side = 1 << level;
+    const Part part{std::max(ox, region_.x), std::max(oy, region_.y), std::min(ox + side, region_.x + region_.width),
+                    std::min(oy + side, region_.y + region_.height)};
+    if (part.lx >= part.hx || part.ly >= part.hy) {
+      ++r_.nodes;  // outside the region
+      return;
+    }
+    const bool spent = r_.nodes + 1 >= std::clamp(p_.node_budget, 1, 1 << 26);
+    ++r_.nodes;
+    ++r_.fetches;
+    // The node's min / max over its texels in the map.
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (int y = oy; y < std::min(oy + side, depth_.height); ++y)
+      for (int x = ox; x < std::min(ox + side, depth_.width); ++x)
+        lo = std::min(lo, depth_.at(x, y)), hi = std::max(hi, depth_.at(x, y));
+    if (hi < t_) {  // every texel occludes: the part's count and depth sum
+      r_.occluders += part.texels();
+      if (sums_ == DepthSums::none) return;
+      if (sums_ == DepthSums::midpoint && lo != hi) {
+        r_.depth_sum += 0.5 * (static_cast<double>(lo) + hi) * part.texels();
+        return;
+      }
+      for (int y = part.ly; y < part.hy; ++y)
+        for (int x = part.lx; x < part.hx; ++x) r_.depth_sum += depth_.at(x, y);
+      if (lo != hi) r_.fetches += 4;  // the table's four corners
+      return;
+    }
+    if (!(lo < t_)) return;  // none does
+    if (side <= p_.leaf_side || spent) {
+      if (p_.leaf_mode == LeafMode::min) r_.occluders += part.texels(), r_.depth_sum += lo * part.texels();
+      else sample(part, side);
+    } else if (level == 1) {  // four texels, classified at once
+      r_.nodes += 4;
+      r_.fetches += 2;
+      for (int y = part.ly; y < part.hy; ++y)
+        for (int x = part.lx; x < part.hx; ++x)
+          if (depth_.at(x, y) < t_) r_.occluders += 1.0, r_.depth_sum += sums_ == DepthSums::none ? 0.0 : depth_.at(x, y);
+    } else {
+      const int h = side / 2;
+      visit(level - 1, ox, oy);
+      visit(level - 1, ox + h, oy);
+      visit(level - 1, ox, oy + h);
+      visit(level - 1, ox + h, oy + h);
+    }
+  }
+
+  void sample(const Part& part, int side) {
+    sample_rect(depth_, table_, t_, p_, part.lx, part.ly, part.hx - part.lx, part.hy - part.ly, side, r_);
+  }
+
+  const Image& depth_;
+  const SampleTable& table_;
+  Rect region_;
+  TraversalParams p_;
+  float t_;
+  DepthSums sums_;
+  TraversalResult r_;
+};
+
 }  // namespace
+
+TraversalResult aligned_traversal_reference(const Image& depth, const SampleTable& table, const Rect& region,
+                                            const TraversalParams& params, DepthSums sums) {
+  return AlignedRecursion(depth, table, region, params, sums).run();
+}
 
 TraversalResult traversal_reference(const Image& depth, int max_level, const SampleTable& table, const Rect& region,
                                     const TraversalParams& params) {

@@ -1,7 +1,8 @@
 // CPU references for glsl/traversal.glsl.
 // - brute_force_occluders: the definition — scan every texel of the region,
 //   count those with d < t and sum their depths (double).
-// - traversal_reference: the same quadtree decisions made independently —
+// - traversal_reference (decreased pyramid) and aligned_traversal_reference
+//   (aligned mip chain): the same quadtree decisions made independently —
 //   recursion instead of a stackless loop, node min/max/mean by scanning the
 //   node's texels instead of the pyramid — with Eq. 5 / 6 at sampled leaves
 //   computed directly from the same sample table. With leaf side 1 and an
@@ -15,6 +16,9 @@
 namespace pn {
 
 enum class LeafMode { sampled = PN_LEAF_SAMPLED, min = PN_LEAF_MIN };
+
+// The depth sums of the mip chain's wholly occluding nodes (glsl/traversal.h).
+enum class DepthSums { none = PN_DEPTH_SUMS_NONE, table = PN_DEPTH_SUMS_TABLE, midpoint = PN_DEPTH_SUMS_MIDPOINT };
 
 struct Rect {
   int x = 0, y = 0, width = 0, height = 0;
@@ -46,5 +50,15 @@ TraversalResult brute_force_occluders(const Image& depth, const Rect& region, fl
 // `max_level` is the pyramid's last level (nodes above it are not classified).
 TraversalResult traversal_reference(const Image& depth, int max_level, const SampleTable& table, const Rect& region,
                                     const TraversalParams& params);
+
+// The aligned mip chain's traversal (pnTraverseRegionMip), decided independently:
+// recursion over the 2×2 aligned nodes of level ceil(log2 side) at the region's
+// aligned corner, each node's min/max and its clipped part's depth sum by
+// scanning texels, the same sampled leaves. `sums`: a wholly occluding part's
+// depth sum scanned (table: the summed-area table's 4 fetches counted when min
+// != max), its node's midpoint (min + max) / 2 times its texels (midpoint), or
+// nothing (none). With leaf side 1 and table it must equal brute force.
+TraversalResult aligned_traversal_reference(const Image& depth, const SampleTable& table, const Rect& region,
+                                            const TraversalParams& params, DepthSums sums);
 
 }  // namespace pn

@@ -1,0 +1,133 @@
+// minmax_mip.glsl — aligned min / max mip chain of a shadow map: the
+// structure Fast PCSS traverses by default (traversal.glsl,
+// pnTraverseRegionMip), at 4/3 of the map's texels.
+//
+// description:
+//   Issue 11 item 2 (b), SPEC §4.1 "beyond the paper". For an N×N map, P is
+//   the least power of two >= N; level i (0 <= i <= log2 P) holds, for every
+//   aligned node [c·2^i, (c+1)·2^i) on each axis (0 <= c < P / 2^i), the
+//     (min, max) of depth over the node's texels that lie in the map
+//   (+Inf, -Inf) for a node wholly outside it. Level 0 texel p is
+//   (d, d), d the sanitized depth (non-finite -> +Inf, "no occluder", SPEC §3),
+//   or (+Inf, -Inf) for p outside the map (the padding up to P); level i
+//   texel c combines level i-1's texels 2c + {0,1}²: min of mins and max of
+//   maxes, exact, and the padding's identities make every node's pair the
+//   min / max of exactly its texels in the map, for any N.
+//   Unlike the decreased pyramid (depth_pyramid.glsl: every window origin,
+//   N² texels a level) only aligned nodes are kept, so a region of any
+//   origin is covered by the 2×2 aligned nodes of level ceil(log2 side)
+//   around it, and the traversal clips nodes to the region. No mean is kept:
+//   the blocker mean's depth sums come from a summed-area table
+//   (summed_area.glsl), exact over any clipped rectangle.
+//
+// storage:
+//   sampler2D, RGBA32F, (P/2)×P with log2 P + 1 mip levels; level i holds its
+//   (P / 2^i)² nodes two to a texel: texel (c, r) = (min, max) of node
+//   (2c, r) in .xy and of node (2c + 1, r) in .zw (the top level's one node
+//   in .xy, (+Inf, -Inf) in .zw). No channel is unused and one fetch reads a
+//   node, as a two-channel RG32F chain would — but rgba32f is an image format
+//   GLSL ES 3.10 can store, rg32f is not. 8 · 4/3 · P² bytes: 10.7 MiB at
+//   1024², 42.7 MiB at 2048².
+//
+// use:
+//   vec2 pnMipFetch(sampler2D mip, int level, ivec2 node)   (min, max) of aligned node `node`
+//        of `level`; (+Inf, -Inf) for a node outside the chain (no read is out of bounds)
+//   int  pnMipMaxLevel(sampler2D mip)                        log2 P
+//   vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side)
+//        (min, max) over a superset of the side×side square at origin, clipped
+//        to the map: the union of the aligned nodes of level ceil(log2 side) - 1
+//        it touches (at most 3×3 fetches; exact for side 1). The min never
+//        exceeds the square's: a lit decision made from it is conservative.
+//   build: vec4 pnMipLevel0Texel(sampler2D shadowMap, ivec2 texel)          level 0's texel
+//          vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel)   level's texel from level - 1
+//
+// cost: build: per texel of level 0 two fetches of the map, per texel above
+//   four fetches of the level below (log2 P + 1 dispatches); a node read:
+//   1 fetch; a square: <= 9 fetches.
+
+#ifndef PENUMBRA_MINMAX_MIP_GLSL
+#define PENUMBRA_MINMAX_MIP_GLSL
+
+// +Inf: the depth of "no occluder"; (+Inf, -Inf) the pair of no texel.
+float pnMipFar() {
+  return uintBitsToFloat(0x7f800000u);
+}
+
+vec2 pnMipEmpty() {
+  return vec2(pnMipFar(), -pnMipFar());
+}
+
+int pnMipMaxLevel(sampler2D mip) {
+  return findMSB(max(textureSize(mip, 0).y, 1));
+}
+
+// Texel `texel` of `level`: two nodes' (min, max); both empty outside the level.
+vec4 pnMipTexel(sampler2D mip, int level, ivec2 texel) {
+  int l = clamp(level, 0, pnMipMaxLevel(mip));
+  // The level's size from level 0's: textureSize with a level that differs
+  // between invocations is not computed per invocation by every driver (llvmpipe).
+  int rows = textureSize(mip, 0).y >> l;
+  ivec2 size = ivec2(max(rows >> 1, 1), rows);
+  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return vec4(pnMipEmpty(), pnMipEmpty());
+  return texelFetch(mip, texel, l);
+}
+
+vec2 pnMipFetch(sampler2D mip, int level, ivec2 node) {
+  int nodes = max(textureSize(mip, 0).y >> clamp(level, 0, pnMipMaxLevel(mip)), 1);
+  if (node.x >= nodes) return pnMipEmpty();
+  vec4 t = pnMipTexel(mip, level, ivec2(node.x >> 1, node.y));
+  return (node.x & 1) != 0 ? t.zw : t.xy;
+}
+
+// Level 0 node p of the map: (d, d), d sanitized; empty outside the map (the padding).
+vec2 pnMipLevel0Node(sampler2D shadowMap, ivec2 p) {
+  ivec2 size = textureSize(shadowMap, 0);
+  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) return pnMipEmpty();
+  float d = texelFetch(shadowMap, p, 0).r;
+  d = (isnan(d) || isinf(d)) ? pnMipFar() : d;
+  return vec2(d, d);
+}
+
+vec4 pnMipLevel0Texel(sampler2D shadowMap, ivec2 texel) {
+  return vec4(pnMipLevel0Node(shadowMap, ivec2(2 * texel.x, texel.y)),
+              pnMipLevel0Node(shadowMap, ivec2(2 * texel.x + 1, texel.y)));
+}
+
+// One node from the two texels below it that hold its four children (each texel's two nodes).
+vec2 pnMipCombineNode(vec4 upper, vec4 lower) {
+  return vec2(min(min(upper.x, upper.z), min(lower.x, lower.z)), max(max(upper.y, upper.w), max(lower.y, lower.w)));
+}
+
+vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel) {
+  int below = max(level, 1) - 1;
+  // Nodes 2c and 2c + 1 of this level: children 4c .. 4c + 3 below, texels 2c and 2c + 1 of rows 2r, 2r + 1.
+  vec2 a = pnMipCombineNode(pnMipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y)),
+                            pnMipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y + 1)));
+  vec2 b = pnMipCombineNode(pnMipTexel(mip, below, ivec2(2 * texel.x + 1, 2 * texel.y)),
+                            pnMipTexel(mip, below, ivec2(2 * texel.x + 1, 2 * texel.y + 1)));
+  return vec4(a, b);
+}
+
+vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
+  int n = max(mapSize, 1);
+  ivec2 lo = clamp(origin, ivec2(0), ivec2(n));
+  ivec2 hi = clamp(origin + max(side, 0), lo, ivec2(n));
+  if (any(greaterThanEqual(lo, hi))) return pnMipEmpty();
+  int s = max(hi.x - lo.x, hi.y - lo.y);
+  // Nodes of side 2^level >= s / 2: at most 3 touch the square on each axis.
+  int level = min(max(findMSB(s - 1), 0), pnMipMaxLevel(mip));
+  ivec2 first = lo >> level;
+  ivec2 last = (hi - ivec2(1)) >> level;
+  vec2 result = pnMipEmpty();
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      ivec2 node = first + ivec2(i, j);
+      if (any(greaterThan(node, last))) continue;
+      vec2 t = pnMipFetch(mip, level, node);
+      result = vec2(min(result.x, t.x), max(result.y, t.y));
+    }
+  }
+  return result;
+}
+
+#endif  // PENUMBRA_MINMAX_MIP_GLSL
