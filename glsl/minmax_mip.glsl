@@ -108,6 +108,16 @@ vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel) {
   return vec4(a, b);
 }
 
+vec2 pnMipUnion(vec2 a, vec2 b) {
+  return vec2(min(a.x, b.x), max(a.y, b.y));
+}
+
+// Node first + offset of a square's cover, or the empty pair beyond `last`.
+vec2 pnMipSquareNode(sampler2D mip, int level, ivec2 first, ivec2 last, ivec2 offset) {
+  ivec2 node = first + offset;
+  return any(greaterThan(node, last)) ? pnMipEmpty() : pnMipFetch(mip, level, node);
+}
+
 vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
   int n = max(mapSize, 1);
   ivec2 lo = clamp(origin, ivec2(0), ivec2(n));
@@ -118,15 +128,18 @@ vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
   int level = min(max(findMSB(s - 1), 0), pnMipMaxLevel(mip));
   ivec2 first = lo >> level;
   ivec2 last = (hi - ivec2(1)) >> level;
-  vec2 result = pnMipEmpty();
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 3; ++i) {
-      ivec2 node = first + ivec2(i, j);
-      if (any(greaterThan(node, last))) continue;
-      vec2 t = pnMipFetch(mip, level, node);
-      result = vec2(min(result.x, t.x), max(result.y, t.y));
-    }
-  }
+  // The 3×3 nodes from `first`, those beyond `last` left out: written out, not
+  // looped (llvmpipe runs a loop's control per invocation group; the fetches
+  // themselves are cheap).
+  vec2 result = pnMipSquareNode(mip, level, first, last, ivec2(0, 0));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(1, 0)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(2, 0)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(0, 1)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(1, 1)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(2, 1)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(0, 2)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(1, 2)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(2, 2)));
   return result;
 }
 

@@ -21,12 +21,17 @@ layout(rgba32f, binding = PN_PCSS_FILTER_KEYS_IMAGE) writeonly uniform image2D p
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnFilterMap)))) return;
-  ivec2 r = pnPcss.reuseTile > 0 ? pnReuseRepresentative(pnParents, p, pnPcss.reuseTile) : p;
-  vec4 result = texelFetch(pnBlockers, r, 0);
-  bool hasBlocker = result.x > 0.0 && !pnEntryLit(texelFetch(pnSearchMap, r, 0));
-  float mean = hasBlocker ? result.y / result.x : 0.0;
-  vec4 entry = pnFilterEntry(pnPcssLight(), texelFetch(pnSearchMap, p, 0), mean, hasBlocker, pnPcss.filterScale);
+  vec4 own = texelFetch(pnSearchMap, p, 0);
+  bool hasBlocker = false;
+  float mean = 0.0;
+  if (!pnEntryLit(own)) {  // a lit pixel stays lit whatever its representative found: no chase
+    ivec2 r = pnPcss.reuseTile > 0 ? pnReuseRepresentative(pnParents, p, pnPcss.reuseTile) : p;
+    vec4 result = texelFetch(pnBlockers, r, 0);
+    hasBlocker = result.x > 0.0 && !pnEntryLit(texelFetch(pnSearchMap, r, 0));
+    mean = hasBlocker ? result.y / result.x : 0.0;
+  }
+  vec4 entry = pnFilterEntry(pnPcssLight(), own, mean, hasBlocker, pnPcss.filterScale);
   imageStore(pnFilterMap, p, entry);
   imageStore(pnBlockerMean, p, vec4(pnEntryLit(entry) ? 0.0 : mean));
-  if (pnPcss.writeKeys != 0) imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, int(pnPcss.mapSize), pnPcss.regionMode));
+  if (PN_PCSS_WRITE_KEYS) imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, int(pnPcss.mapSize), PN_PCSS_REGION_MODE));
 }

@@ -23,11 +23,11 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnSearchMap)))) return;
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   int n = int(pnPcss.mapSize);
-  vec4 entry = (pnPcss.structure == PN_STRUCTURE_MIP)
+  vec4 entry = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
       ? pnSearchEntryMip(pnMip, n, pnPcssLight(), receiver, pnPcss.bias, pnPcss.refineIterations)
       : pnSearchEntry(pnPyramid, pnPcssLight(), receiver, pnPcss.bias, pnPcss.refineIterations);
   bool surface = receiver.w != 0.0 && !isnan(receiver.z) && !isinf(receiver.z);
   imageStore(pnReceiverDepth, p, vec4(surface ? receiver.z : pnPyramidFar(), 0.0, 0.0, 0.0));
   imageStore(pnSearchMap, p, entry);
-  if (pnPcss.writeKeys != 0) imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, n, pnPcss.regionMode));
+  if (PN_PCSS_WRITE_KEYS) imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, n, PN_PCSS_REGION_MODE));
 }

@@ -19,9 +19,12 @@ layout(r32f, binding = PN_PCSS_VISIBILITY_IMAGE) writeonly uniform image2D pnVis
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
-  ivec2 r = pnPcss.reuseTile > 0 ? pnReuseRepresentative(pnParents, p, pnPcss.reuseTile) : p;
-  vec4 result = texelFetch(pnOcclusion, r, 0);
-  bool lit = pnEntryLit(texelFetch(pnFilterMap, r, 0)) || pnEntryLit(texelFetch(pnFilterMap, p, 0));
-  float fraction = (!lit && result.z > 0.0) ? result.x / result.z : 0.0;
+  float fraction = 0.0;
+  if (!pnEntryLit(texelFetch(pnFilterMap, p, 0))) {  // a lit pixel is lit whatever its representative found
+    ivec2 r = pnPcss.reuseTile > 0 ? pnReuseRepresentative(pnParents, p, pnPcss.reuseTile) : p;
+    vec4 result = texelFetch(pnOcclusion, r, 0);
+    bool lit = pnEntryLit(texelFetch(pnFilterMap, r, 0));
+    fraction = (!lit && result.z > 0.0) ? result.x / result.z : 0.0;
+  }
   imageStore(pnVisibility, p, vec4(1.0 - fraction));
 }

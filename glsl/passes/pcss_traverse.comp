@@ -29,16 +29,16 @@ void main() {
   }
   int n = int(pnPcss.mapSize);
   PnRect rect;
-  if (pnPcss.regionMode == PN_REGION_EXACT) {
+  if (PN_PCSS_REGION_MODE == PN_REGION_EXACT) {
     rect = pnEntryRect(entry, n);
   } else {
-    PnWindow w = pnEntryWindow(entry, n, pnPcss.regionMode);
+    PnWindow w = pnEntryWindow(entry, n, PN_PCSS_REGION_MODE);
     rect = PnRect(w.origin, ivec2(w.side));
   }
-  PnTraversal r = (pnPcss.structure == PN_STRUCTURE_MIP)
+  PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
       ? pnTraverseRegionMip(pnMip, pnDepthSums, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
-                            pnPcss.leafSide, pnPcss.leafMode, pnPcss.nodeBudget, pnPcss.depthSums, p)
+                            pnPcss.leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
       : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, pnPcss.leafSide,
-                         pnPcss.leafMode, pnPcss.nodeBudget, p);
+                         PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, p);
   imageStore(pnResult, p, vec4(r.occluders, r.depthSum, r.texels, float(r.nodes)));
 }

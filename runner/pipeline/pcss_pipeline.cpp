@@ -77,6 +77,21 @@ bool uses_sanitized_map(const PcssSettings& s) {
   return s.structure == Structure::pyramid || s.blockers != Estimator::traversal || s.occlusion != Estimator::traversal;
 }
 
+Define switch_define(const char* name, int value) { return {name, std::to_string(value)}; }
+
+// pcss_params.glsl's compile-time switches from the block a dispatch runs with.
+std::vector<Define> search_defines(const PcssBlock& b) {
+  return {switch_define("PN_PCSS_STRUCTURE", b.structure), switch_define("PN_PCSS_REGION_MODE", b.regionMode),
+          {"PN_PCSS_WRITE_KEYS", b.writeKeys != 0 ? "true" : "false"}};
+}
+std::vector<Define> filter_defines(const PcssBlock& b) {
+  return {switch_define("PN_PCSS_REGION_MODE", b.regionMode), {"PN_PCSS_WRITE_KEYS", b.writeKeys != 0 ? "true" : "false"}};
+}
+std::vector<Define> traverse_defines(const PcssBlock& b) {
+  return {switch_define("PN_PCSS_STRUCTURE", b.structure), switch_define("PN_PCSS_REGION_MODE", b.regionMode),
+          switch_define("PN_PCSS_LEAF_MODE", b.leafMode), switch_define("PN_PCSS_DEPTH_SUMS", b.depthSums)};
+}
+
 // `t`, or `empty` where the frame did not make it: every declared sampler has a texture.
 const GlObject& made_or(const GlObject& t, const GlObject& empty) {
   return t.id() != 0 ? t : empty;
@@ -107,12 +122,12 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       depth_sums_(context, tree),
       reuse_(context, tree),
       blur_(context, tree),
-      search_(compile_pass(context, tree, "passes/pcss_search.comp")),
-      traverse_(compile_pass(context, tree, "passes/pcss_traverse.comp")),
+      search_(context, tree, "passes/pcss_search.comp"),
+      traverse_(context, tree, "passes/pcss_traverse.comp"),
+      filter_(context, tree, "passes/pcss_filter.comp"),
       scan_(compile_pass(context, tree, "passes/pcss_scan.comp")),
       poisson_(compile_pass(context, tree, "passes/pcss_poisson.comp")),
       compact_(compile_pass(context, tree, "passes/pcss_compact.comp")),
-      filter_(compile_pass(context, tree, "passes/pcss_filter.comp")),
       shade_(compile_pass(context, tree, "passes/pcss_shade.comp")),
       sample_table_(upload_sample_table(context, generate_sample_table(kSampleTableSeed))),
       blocker_disk_(upload_disk(context, PcssSettings{}.blocker_samples, kBlockerDiskSeed)),
@@ -180,7 +195,7 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
     return;
   }
 
-  const ComputeProgram& program = estimator == Estimator::poisson ? poisson_ : traverse_;
+  const ComputeProgram& program = estimator == Estimator::poisson ? poisson_ : traverse_.get(traverse_defines(block));
   // The list holds the pixels that must compute — not lit, and representatives
   // when reuse is on — so lit pixels are skipped with or without reuse.
   const bool list = frame.settings.skip == WorkSkip::list;
@@ -270,7 +285,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     bind.image(PN_PCSS_SEARCH_MAP_IMAGE, frame.search_map, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_SEARCH_KEYS_IMAGE, frame.search_keys, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_RECEIVER_DEPTH_IMAGE, frame.receiver_depth, GL_WRITE_ONLY, GL_R32F);
-    search_.dispatch(size, size);
+    search_.get(search_defines(search_block)).dispatch(size, size);
   }
   clock.stage("3 search region");
 
@@ -290,7 +305,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     bind.image(PN_PCSS_FILTER_MAP_IMAGE, frame.filter_map, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_BLOCKER_MEAN_IMAGE, frame.blocker_mean, GL_WRITE_ONLY, GL_R32F);
     bind.image(PN_PCSS_FILTER_KEYS_IMAGE, frame.filter_keys, GL_WRITE_ONLY, GL_RGBA32F);
-    filter_.dispatch(size, size);
+    filter_.get(filter_defines(filter_block)).dispatch(size, size);
   }
   clock.stage("4 filter region");
 

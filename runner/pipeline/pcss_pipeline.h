@@ -12,6 +12,7 @@
 #include "core/image.h"
 #include "gl/gpu_timer.h"
 #include "gl/compute_program.h"
+#include "gl/pass_variants.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
@@ -103,7 +104,8 @@ class PcssPipeline {
   SummedAreaPass depth_sums_;
   ReusePass reuse_;
   BlurPass blur_;
-  ComputeProgram search_, traverse_, scan_, poisson_, compact_, filter_, shade_;
+  PassVariants search_, traverse_, filter_;  // compiled per switch setting (pcss_params.glsl's PN_PCSS_*)
+  ComputeProgram scan_, poisson_, compact_, shade_;
   GlObject sample_table_, blocker_disk_, filter_disk_, no_parents_;
   GlObject no_pyramid_, no_mip_, no_depth_sums_;  // bound where a frame has no such structure
 };

@@ -41,11 +41,17 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
 
   TechniqueResources resources(context, tree);
   const VisibilityScorer against_truth(c.truth, c.surface);
+  std::vector<std::unique_ptr<Technique>> techniques;
+  std::vector<const Technique*> timed;
   for (const TechniqueConfig* config : setup.techniques) {
-    const std::unique_ptr<Technique> technique = config->create(resources);
+    techniques.push_back(config->create(resources));
+    timed.push_back(techniques.back().get());
+  }
+  std::vector<TechniqueMeasurement> measurements = measure_techniques(timed, frame.inputs(), setup.repeats);
+  for (size_t k = 0; k < setup.techniques.size(); ++k) {
     TechniqueResult r;
-    r.name = config->name();
-    r.measurement = measure_technique(*technique, frame.inputs(), setup.repeats);
+    r.name = setup.techniques[k]->name();
+    r.measurement = std::move(measurements[k]);
     r.visibility = read_float_texture(context, r.measurement.frame.visibility, size, size, 1);
     r.vs_truth = against_truth.score(r.visibility);
     c.results.push_back(std::move(r));

@@ -24,21 +24,28 @@ SceneFrame render_scene_frame(const Context& context, ShadowMapSource& source, c
   return frame;
 }
 
-TechniqueMeasurement measure_technique(const Technique& technique, const TechniqueInputs& inputs, int repeats) {
+std::vector<TechniqueMeasurement> measure_techniques(const std::vector<const Technique*>& techniques,
+                                                     const TechniqueInputs& inputs, int repeats) {
   if (repeats < 1) throw Error("repeats " + std::to_string(repeats) + ": expected >= 1");
-  technique.run(inputs, false);  // untimed warm-up
-  std::vector<double> totals;
-  std::vector<std::vector<double>> stages;
-  TechniqueMeasurement m;
-  for (int r = 0; r < repeats; ++r) {
-    m.frame = technique.run(inputs, r + 1 == repeats);
-    totals.push_back(m.frame.total_ms());
-    stages.resize(m.frame.stages.size());
-    for (size_t i = 0; i < m.frame.stages.size(); ++i) stages[i].push_back(m.frame.stages[i].second);
+  for (const Technique* t : techniques) t->run(inputs, false);  // untimed warm-ups
+  const size_t n = techniques.size();
+  std::vector<std::vector<double>> totals(n);
+  std::vector<std::vector<std::vector<double>>> stages(n);
+  std::vector<TechniqueMeasurement> out(n);
+  for (int r = 0; r < repeats; ++r)
+    for (size_t k = 0; k < n; ++k) {
+      TechniqueMeasurement& m = out[k];
+      m.frame = techniques[k]->run(inputs, r + 1 == repeats);
+      totals[k].push_back(m.frame.total_ms());
+      stages[k].resize(m.frame.stages.size());
+      for (size_t i = 0; i < m.frame.stages.size(); ++i) stages[k][i].push_back(m.frame.stages[i].second);
+    }
+  for (size_t k = 0; k < n; ++k) {
+    out[k].total_ms = median(totals[k]);
+    for (size_t i = 0; i < stages[k].size(); ++i)
+      out[k].stage_ms.emplace_back(out[k].frame.stages[i].first, median(stages[k][i]));
   }
-  m.total_ms = median(totals);
-  for (size_t i = 0; i < stages.size(); ++i) m.stage_ms.emplace_back(m.frame.stages[i].first, median(stages[i]));
-  return m;
+  return out;
 }
 
 }  // namespace pn

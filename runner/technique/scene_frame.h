@@ -31,8 +31,11 @@ struct TechniqueMeasurement {
   NamedValues stage_ms;
 };
 
-// One untimed warm-up run (drivers compile shader variants on first use; llvmpipe ~1 s),
-// then `repeats` >= 1 timed runs. Throws Error for repeats < 1.
-TechniqueMeasurement measure_technique(const Technique& technique, const TechniqueInputs& inputs, int repeats);
+// One untimed warm-up run of each (drivers compile shader variants on first use; llvmpipe ~1 s),
+// then `repeats` >= 1 timed rounds, each running every technique once in turn — so a
+// machine whose speed drifts during the run (a shared CPU) slows all of them alike,
+// and the ratios between them hold. Throws Error for repeats < 1.
+std::vector<TechniqueMeasurement> measure_techniques(const std::vector<const Technique*>& techniques,
+                                                     const TechniqueInputs& inputs, int repeats);
 
 }  // namespace pn
