@@ -17,7 +17,9 @@
 //                  c of m samples occlude with depth sum D ->
 //                  occluders += T c / m, depth sum += T D / m (T texels):
 //                  Eq. 5 (blocker mean D / c) and Eq. 6 (fraction c / m) scaled to the leaf;
-//                PN_LEAF_MIN      HQEPCSS: all T texels occlude at the node's min.
+//                PN_LEAF_MIN      HQEPCSS: all T texels occlude at the node's min;
+//                PN_LEAF_RAMP     the T texels spread evenly over [min, max]: T (t - min) / (max - min)
+//                  occlude at mean depth (min + t) / 2 (a +Inf max: half of them) — no fetch.
 //   Leaf side 1 is exact: a single texel is never ambiguous.
 //   Regions: pnTraverseRegion takes any rectangle, clipped to the map (the exact,
 //   non-power-of-two region, SPEC §4.4 "beyond the paper"); its root is the
@@ -166,15 +168,28 @@ void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D samp
   r.depthSum += texels * depthSum / float(m);
 }
 
+// PN_LEAF_MIN and PN_LEAF_RAMP over `texels` of an ambiguous leaf of depths
+// (lo, hi), lo < t <= hi (traversal.h).
+void pnTraversalEstimateLeaf(inout PnTraversal r, int leafMode, float lo, float hi, float texels, float t) {
+  if (leafMode == PN_LEAF_MIN) {
+    r.occluders += texels;
+    r.depthSum += lo * texels;
+    return;
+  }
+  float fraction = isinf(hi) ? 0.5 : clamp((t - lo) / (hi - lo), 0.0, 1.0);  // +Inf max: no ramp, half of them
+  r.occluders += fraction * texels;
+  r.depthSum += fraction * texels * 0.5 * (lo + min(t, hi));
+}
+
 // Reads a node inside the region (with a pyramid level) and counts it: a node
 // whose texels all occlude is added whole; returns true when it is ambiguous,
-// with its min depth in `nodeMin`.
+// with its (min, max) depth in `nodeRange`.
 bool pnTraversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level, ivec2 origin, float t,
-                         out float nodeMin) {
+                         out vec2 nodeRange) {
   vec4 node = pnPyramidFetch(pyramid, level, origin);
   r.nodes += 1;
   r.fetches += 1;
-  nodeMin = node.x;
+  nodeRange = node.xy;
   if (node.y < t) {
     float texels = float(1 << (2 * level));
     r.occluders += texels;
@@ -188,13 +203,11 @@ bool pnTraversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level,
 // classified, and estimated by the leaf mode when ambiguous.
 void pnTraversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, int level, ivec2 origin,
                           float t, int leafMode, ivec2 pixel) {
-  float nodeMin;
-  if (!pnTraversalClassify(r, pyramid, level, origin, t, nodeMin)) return;
+  vec2 range;
+  if (!pnTraversalClassify(r, pyramid, level, origin, t, range)) return;
   int side = 1 << level;
-  if (leafMode == PN_LEAF_MIN) {
-    float texels = float(side * side);
-    r.occluders += texels;
-    r.depthSum += nodeMin * texels;
+  if (leafMode != PN_LEAF_SAMPLED) {
+    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(side * side), t);
   } else {
     pnTraversalSampleLeaf(r, pyramid, sampleTable, origin, ivec2(side), side, t, pixel);
   }
@@ -236,8 +249,8 @@ PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec
       if (inside && level <= maxLevel && (side <= leafSide || spent)) {
         pnTraversalVisitLeaf(r, pyramid, sampleTable, level, origin, t, leafMode, pixel);
       } else if (inside && level <= maxLevel) {
-        float nodeMin;
-        if (pnTraversalClassify(r, pyramid, level, origin, t, nodeMin)) {  // ambiguous: descend
+        vec2 range;
+        if (pnTraversalClassify(r, pyramid, level, origin, t, range)) {  // ambiguous: descend
           if ((side >> 1) <= leafSide) {
             int h = side >> 1;
             pnTraversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin, t, leafMode, pixel);
@@ -305,13 +318,13 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, usampler2D sumTable, vec2 
 
 // Reads an aligned node of the chain and counts its clipped part [lo, hi)
 // when its (min, max) decide it; returns true when it is ambiguous, with its
-// min depth in `nodeMin`.
+// (min, max) in `nodeRange`.
 bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, usampler2D sumTable, int level, ivec2 origin,
-                             ivec2 lo, ivec2 hi, float t, int depthSums, out float nodeMin) {
+                             ivec2 lo, ivec2 hi, float t, int depthSums, out vec2 nodeRange) {
   vec2 node = pnMipFetch(mip, level, origin >> level);
   r.nodes += 1;
   r.fetches += 1;
-  nodeMin = node.x;
+  nodeRange = node;
   if (node.y < t) {
     pnTraversalAddOccludingPart(r, sumTable, node, lo, hi, depthSums);
     return false;
@@ -324,13 +337,11 @@ bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, usampler2D sumT
 void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, usampler2D sumTable, sampler2D sampleTable,
                               int level, ivec2 origin, ivec2 lo, ivec2 hi, float t, int leafMode, int depthSums,
                               ivec2 pixel) {
-  float nodeMin;
-  if (!pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, nodeMin)) return;
-  if (leafMode == PN_LEAF_MIN) {
+  vec2 range;
+  if (!pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, range)) return;
+  if (leafMode != PN_LEAF_SAMPLED) {
     ivec2 size = hi - lo;
-    float texels = float(size.x * size.y);
-    r.occluders += texels;
-    r.depthSum += nodeMin * texels;
+    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), t);
   } else {
     pnTraversalSampleLeafMip(r, mip, sampleTable, lo, hi - lo, 1 << level, t, pixel);
   }
@@ -392,8 +403,8 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sa
       if (side <= leafSide || spent) {
         pnTraversalVisitLeafPart(r, mip, sumTable, sampleTable, level, origin, lo, hi, t, leafMode, depthSums, pixel);
       } else {
-        float nodeMin;
-        if (pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, nodeMin)) {
+        vec2 range;
+        if (pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, range)) {
           int h = side >> 1;
           if (h == 1) {
             // Texels: never ambiguous, so classified here, four at a time and

@@ -16,6 +16,10 @@
 // HQEPCSS's "every texel occludes at the node's min".
 #define PN_LEAF_SAMPLED 0
 #define PN_LEAF_MIN 1
+// Or the ramp: the leaf's texels taken as spread evenly over [min, max] (a
+// planar blocker's depths are): (t - min) / (max - min) of them occlude, at
+// mean depth (min + t) / 2 — no fetch beyond the node's own.
+#define PN_LEAF_RAMP 2
 
 // Which structure a traversal reads: the paper's decreased pyramid (every
 // window origin, depth_pyramid.glsl) or the aligned min/max mip chain with a

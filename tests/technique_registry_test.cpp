@@ -33,7 +33,7 @@ TEST_CASE("technique registry: a spec with overrides keeps its full name and its
 }
 
 TEST_CASE("technique registry: bad specs are refused naming the spec (negative)") {
-  CHECK_THROWS_WITH(pn::parse_technique("slow"), Catch::StartsWith("unknown method 'slow': expected one of exact, poisson, hqepcss, fast, fast-no-refine"));
+  CHECK_THROWS_WITH(pn::parse_technique("slow"), Catch::StartsWith("unknown method 'slow': expected one of exact, poisson, hqepcss, fast, fast-paper, fast-no-refine"));
   CHECK_THROWS_WITH(pn::parse_technique("fast:leaf"), "method 'fast:leaf': 'leaf': expected key=value");
   CHECK_THROWS_WITH(pn::parse_technique("fast:colour=red"), Catch::StartsWith("method 'fast:colour=red': unknown setting 'colour'"));
   CHECK_THROWS_WITH(pn::parse_technique("fast:bias=-1"), "method 'fast:bias=-1': bias -1: expected a finite number >= 0");

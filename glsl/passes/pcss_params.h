@@ -63,6 +63,7 @@ PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
   float sigma3;
   int structure;        // PN_STRUCTURE_* (traversal.h): what Steps 3-5 read
   int depthSums;        // pcss_traverse over the mip chain: PN_DEPTH_SUMS_* (traversal.h); NONE for Step 5
+  int leafDivisor;      // pcss_traverse: > 0: the leaf side is at least the region's side / leafDivisor
   int writeKeys;        // pcss_search, pcss_filter: 0 when the reuse keys are not needed or are the entries
                         // themselves (no reuse, or the exact region mode: pnEntryLinkKey returns the entry)
 PN_END_UNIFORM_BLOCK(pnPcss)

@@ -35,10 +35,14 @@ void main() {
     PnWindow w = pnEntryWindow(entry, n, PN_PCSS_REGION_MODE);
     rect = PnRect(w.origin, ivec2(w.side));
   }
+  // A leaf side that grows with the region keeps the leaves along a shadow edge
+  // (and so the work) about constant as the penumbra widens.
+  int leafSide = pnPcss.leafSide;
+  if (pnPcss.leafDivisor > 0) leafSide = max(leafSide, max(rect.size.x, rect.size.y) / pnPcss.leafDivisor);
   PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
       ? pnTraverseRegionMip(pnMip, pnDepthSums, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
-                            pnPcss.leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
-      : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, pnPcss.leafSide,
+                            leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
+      : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, leafSide,
                          PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, p);
   imageStore(pnResult, p, vec4(r.occluders, r.depthSum, r.texels, float(r.nodes)));
 }

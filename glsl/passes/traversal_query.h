@@ -22,7 +22,7 @@
 PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   float bias;
   int leafSide;
-  int leafMode;  // PN_LEAF_SAMPLED or PN_LEAF_MIN (traversal.h)
+  int leafMode;  // PN_LEAF_SAMPLED, PN_LEAF_MIN or PN_LEAF_RAMP (traversal.h)
   int nodeBudget;
   int structure;     // PN_STRUCTURE_* (traversal.h)
   int depthSums;     // the mip chain's traversal: PN_DEPTH_SUMS_* (traversal.h)

@@ -193,8 +193,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
                            " pixels whose blocker mean rounded apart left out)",
                        Tolerance::exact(), compare(exact_visibility, aligned, Tolerance::exact())});
 
-    // The two ways of skipping non-representatives compute the same thing.
-    const PcssFrame fast_frame = pipeline.run(inputs, fast_pcss());
+    // The reuse scheme and the fixed-radius blur of the paper's settings (fast-paper), and the
+    // adaptive blur of fast-blur: each on the scene's own maps.
+    const PcssFrame fast_frame = pipeline.run(inputs, fast_paper_pcss());
     reuse_cases(context, name, fast_frame, results);
 
     // Step 6 cuts at the G-buffer's depth edges and at pixels without a surface: Fast PCSS's blurred map
@@ -204,14 +205,25 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
       const Image unblurred = read1(context, fast_frame.visibility, kScreen);
       const Image expected = blur_depth_aware_reference(unblurred, receiver_depths(gbuffer), blur);
       const Tolerance tolerance = blur_tolerance(blur, unblurred);
-      results.push_back({name + ": Fast PCSS's Step 6 vs the depth-aware blur over the G-buffer's receiver depths",
+      results.push_back({name + ": fast-paper's Step 6 vs the depth-aware blur over the G-buffer's receiver depths",
                          tolerance, compare(expected, read1(context, fast_frame.blurred, kScreen), tolerance)});
+      PcssSettings adaptive = fast_pcss();
+      adaptive.blur = true;  // fast-blur
+      const PcssFrame adaptive_frame = pipeline.run(inputs, adaptive);
+      const Image adaptive_unblurred = read1(context, adaptive_frame.visibility, kScreen);
+      const Image depths = receiver_depths(gbuffer);
+      const Image adaptive_expected = blur_adaptive_reference(adaptive_unblurred, read4(context, adaptive_frame.filter_map, kScreen),
+                                                              &depths, adaptive_frame.settings.blur_params);
+      const Tolerance adaptive_tolerance = blur_tolerance(adaptive_frame.settings.blur_params, adaptive_unblurred);
+      results.push_back({name + ": fast-blur's Step 6 vs the adaptive depth-aware blur (radius from each filter side)",
+                         adaptive_tolerance,
+                         compare(adaptive_expected, read1(context, adaptive_frame.blurred, kScreen), adaptive_tolerance)});
     }
     const Image listed = read1(context, fast_frame.soft_shadow(), kScreen);
-    PcssSettings branch = fast_pcss();
+    PcssSettings branch = fast_paper_pcss();
     branch.skip = WorkSkip::branch;
     const Image branched = read1(context, pipeline.run(inputs, branch).soft_shadow(), kScreen);
-    results.push_back({name + ": Fast PCSS, representatives compacted into a list vs branching in place",
+    results.push_back({name + ": fast-paper, representatives compacted into a list vs branching in place",
                        Tolerance::exact(), compare(listed, branched, Tolerance::exact())});
 
     // Bad inputs on this scene: NaN and +Inf texels; receivers pushed outside the frustum.
@@ -240,15 +252,11 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const SceneFrame point_frame = render_scene_frame(context, source, gbuffers, point, kScreen);
     const TechniqueInputs point_inputs = point_frame.inputs();
     const Image hard = hard_shadow(read1(context, point_frame.shadow_map, kMap), read4(context, point_frame.gbuffer, kScreen), exact.bias);
-    PcssSettings fast_exact_region = fast_pcss();
-    fast_exact_region.name = "fast:region=exact:blur=off";
-    fast_exact_region.region = RegionMode::exact;
-    fast_exact_region.blur = false;
-    for (const PcssSettings& s : {exact, fast_exact_region})
+    for (const PcssSettings& s : {exact, fast_pcss()})  // fast: exact regions, no blur
       results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
                          compare(hard, read1(context, pipeline.run(point_inputs, s).soft_shadow(), kScreen), Tolerance::exact())});
-    results.push_back(in_unit_range(name + ", zero-size light: Fast PCSS (2x2-texel windows): finite, in [0, 1]",
-                                    read1(context, pipeline.run(point_inputs, fast_pcss()).soft_shadow(), kScreen)));
+    results.push_back(in_unit_range(name + ", zero-size light: fast-paper (2x2-texel windows): finite, in [0, 1]",
+                                    read1(context, pipeline.run(point_inputs, fast_paper_pcss()).soft_shadow(), kScreen)));
   }
 
   // The paper's quality claim (§5.4: SSIM of the rendered pictures) on the default
@@ -259,7 +267,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const TechniqueInputs inputs = scene_frame.inputs();
   const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512), 512, 512, 4);
   const Image exact = read1(context, pipeline.run(inputs, exact_pcss()).soft_shadow(), 512);
-  for (const PcssSettings& s : {fast_pcss(), hqepcss()}) {
+  for (const PcssSettings& s : {fast_pcss(), fast_paper_pcss(), hqepcss()}) {
     const Image shadow = read1(context, pipeline.run(inputs, s).soft_shadow(), 512);
     char map_ssim[32];
     std::snprintf(map_ssim, sizeof map_ssim, "%.4f", ssim(exact, shadow));

@@ -42,6 +42,7 @@ PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   b.refineIterations = s.refine_iterations;
   b.regionMode = static_cast<std::int32_t>(s.region);
   b.leafSide = s.leaf_side;
+  b.leafDivisor = s.leaf_divisor;
   b.leafMode = static_cast<std::int32_t>(s.leaf_mode);
   b.nodeBudget = s.node_budget;
   b.sigma1 = s.sigma1;
@@ -263,7 +264,9 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
 
   // Step 1's structure: what Steps 3-5 read.
   build_structure(frame, *inputs.shadow_map, n);
-  clock.stage(settings.structure == Structure::mip ? "mip chain + sums" : "pyramid");
+  clock.stage(settings.structure == Structure::pyramid ? "pyramid"
+              : frame.depth_sums.texture.id() != 0 ? "mip chain + sums"
+                                                   : "mip chain");
 
   // Step 3.
   const PcssBlock block = make_block(inputs.light, settings);

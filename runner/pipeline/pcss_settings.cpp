@@ -19,6 +19,7 @@ void PcssSettings::validate() const {
     throw bad("refine iterations", refine_iterations, iterations.c_str());
   if (leaf_side < 1 || leaf_side > 8192) throw bad("leaf side", leaf_side, "1..8192");
   if (node_budget < 1) throw bad("node budget", node_budget, ">= 1");
+  if (leaf_divisor < 0 || leaf_divisor > 8192) throw bad("leaf divisor", leaf_divisor, "0 (off) or 1..8192");
   const std::string tiles = "0 (off) or 1.." + std::to_string(kReuseMaxTile);  // reuse.glsl
   if (search_tile < 0 || search_tile > kReuseMaxTile) throw bad("search reuse tile", search_tile, tiles.c_str());
   if (filter_tile < 0 || filter_tile > kReuseMaxTile) throw bad("filter reuse tile", filter_tile, tiles.c_str());
@@ -60,9 +61,25 @@ PcssSettings hqepcss() {
   return s;
 }
 
-PcssSettings fast_pcss() {
+PcssSettings fast_paper_pcss() {
   PcssSettings s;
+  s.name = "fast-paper";
+  return s;
+}
+
+PcssSettings fast_pcss() {
+  // Chosen with `penumbra bench pipeline` (docs/benchmarks.md, "Choosing Fast PCSS's defaults"):
+  // closest to the ray-traced truth and fastest on llvmpipe of the settings measured.
+  PcssSettings s = fast_paper_pcss();
   s.name = "fast";
+  s.structure = Structure::mip;
+  s.region = RegionMode::exact;
+  s.depth_sums = DepthSums::midpoint;
+  s.refine_iterations = 3;
+  s.leaf_side = 16;
+  s.search_tile = s.filter_tile = 0;
+  s.blur = false;
+  s.blur_params.adaptive = true;  // when switched on (fast-blur): the radius follows the filter size
   return s;
 }
 
@@ -71,6 +88,7 @@ PcssSettings fast_pcss_all_off() {
   s.name = "fast-all-off";
   s.refine_iterations = 0;
   s.leaf_side = 1;
+  s.depth_sums = DepthSums::table;  // exact blocker sums: the mip chain's traversal at leaf 1 is brute force
   s.search_tile = s.filter_tile = 0;
   s.region = RegionMode::exact;
   s.blur = false;
@@ -78,7 +96,7 @@ PcssSettings fast_pcss_all_off() {
 }
 
 const std::vector<std::string>& pcss_setting_keys() {
-  static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf", "leaf-mode", "budget", "reuse",
+  static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf-divisor", "leaf", "leaf-mode", "budget", "reuse",
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
                                              "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "blur-adaptive", "bias", "c", "sigma1", "sigma2", "sigma3",
                                              "blockers", "occlusion", "blocker-samples", "filter-samples"};
@@ -133,10 +151,12 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
     else if (value == "midpoint") s.depth_sums = DepthSums::midpoint;
     else throw bad("table or midpoint");
   } else if (key == "leaf") s.leaf_side = integer();
+  else if (key == "leaf-divisor") s.leaf_divisor = integer();
   else if (key == "leaf-mode") {
     if (value == "sampled") s.leaf_mode = LeafMode::sampled;
     else if (value == "min") s.leaf_mode = LeafMode::min;
-    else throw bad("sampled or min");
+    else if (value == "ramp") s.leaf_mode = LeafMode::ramp;
+    else throw bad("sampled, min or ramp");
   } else if (key == "budget") s.node_budget = integer();
   else if (key == "reuse") {
     const bool on = on_off();

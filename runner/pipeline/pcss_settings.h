@@ -51,6 +51,8 @@ enum class WorkSkip {
 // edges, and between a surface and a pixel that sees none (+Inf).
 inline constexpr double kBlurDepthTolerance = 0.05;
 
+// The defaults of PcssSettings are the paper's (fast_paper_pcss); fast_pcss()
+// is Fast PCSS as this project ships it, chosen by measurement.
 struct PcssSettings {
   std::string name;
   float bias = 0.02f;          // world units of light depth: d occludes when d < dP - bias
@@ -62,6 +64,7 @@ struct PcssSettings {
   Estimator blockers = Estimator::traversal;  // Step 4
   Estimator occlusion = Estimator::traversal; // Step 5
   int leaf_side = 8;           // traversal leaves; 1 = exact (sampled leaves off)
+  int leaf_divisor = 0;        // > 0: leaves at least the region's side / leaf_divisor (pcss_traverse.comp); 0 = off
   LeafMode leaf_mode = LeafMode::sampled;
   int node_budget = 1 << 26;   // per pixel (traversal.glsl): unbounded by default
   int search_tile = 4;         // reuse k for Step 4; 0 = no reuse
@@ -83,7 +86,8 @@ struct PcssSettings {
 PcssSettings exact_pcss();    // brute force over the whole search and filter regions
 PcssSettings poisson_pcss();  // 36 blocker / 64 PCF Poisson-disk samples
 PcssSettings hqepcss();       // refined search, min-estimated leaves for blockers, brute-force PCF
-PcssSettings fast_pcss();     // seed 000 with the paper's defaults
+PcssSettings fast_paper_pcss();  // seed 000 with the paper's settings (§5: windows, leaf 8, reuse 4/2, blur radius 3)
+PcssSettings fast_pcss();        // Fast PCSS's defaults, chosen with the bench (docs/benchmarks.md)
 
 // Fast PCSS with every improvement off, which must equal exact PCSS (the wiring check).
 PcssSettings fast_pcss_all_off();

@@ -39,7 +39,7 @@ std::unique_ptr<TechniqueConfig> pcss_config(PcssSettings settings) {
 }
 
 std::unique_ptr<TechniqueConfig> pcss_ablation(const char* name, const char* key, const char* value) {
-  PcssSettings s = fast_pcss();
+  PcssSettings s = fast_pcss();  // one switch away from the shipped defaults
   s.name = name;
   set_pcss_setting(s, key, value);
   return pcss_config(s);

@@ -20,6 +20,19 @@ TraversalResult brute_force_occluders(const Image& depth, const Rect& region, fl
 
 namespace {
 
+// An ambiguous leaf of `texels` texels with depths in [lo, hi], lo < t <= hi, estimated without
+// samples (traversal.h): min — every texel occludes at lo; ramp — the depths spread evenly over
+// [lo, hi], so (t - lo) / (hi - lo) of them occlude, at mean (lo + t) / 2 (half of them, hi = +Inf).
+void estimate_leaf(LeafMode mode, double lo, double hi, double texels, double t, TraversalResult& r) {
+  if (mode == LeafMode::min) {
+    r.occluders += texels, r.depth_sum += lo * texels;
+    return;
+  }
+  const double fraction = std::isinf(hi) ? 0.5 : std::clamp((t - lo) / (hi - lo), 0.0, 1.0);
+  r.occluders += fraction * texels;
+  r.depth_sum += fraction * texels * 0.5 * (lo + std::min(t, hi));
+}
+
 // Eq. 5 and 6 over the w×h rectangle at (x, y) with the §3.2 samples of a node of side `side`.
 void sample_rect(const Image& depth, const SampleTable& table, float t, const TraversalParams& p, int x, int y, int w,
                  int h, int side, TraversalResult& r) {
@@ -74,7 +87,7 @@ class Recursion {
         r_.depth_sum += sum;
       } else if (lo < t_) {  // some do
         if (side > p_.leaf_side && !spent) children(level, ox, oy);
-        else if (p_.leaf_mode == LeafMode::min) r_.occluders += texels, r_.depth_sum += lo * texels;
+        else if (p_.leaf_mode != LeafMode::sampled) estimate_leaf(p_.leaf_mode, lo, hi, texels, t_, r_);
         else sample(ox, oy, side, side, side);
       }
     } else if (!spent) {
@@ -161,7 +174,7 @@ class AlignedRecursion {
     }
     if (!(lo < t_)) return;  // none does
     if (side <= p_.leaf_side || spent) {
-      if (p_.leaf_mode == LeafMode::min) r_.occluders += part.texels(), r_.depth_sum += lo * part.texels();
+      if (p_.leaf_mode != LeafMode::sampled) estimate_leaf(p_.leaf_mode, lo, hi, part.texels(), t_, r_);
       else sample(part, side);
     } else if (level == 1) {  // four texels, classified at once
       r_.nodes += 4;

@@ -15,7 +15,7 @@
 
 namespace pn {
 
-enum class LeafMode { sampled = PN_LEAF_SAMPLED, min = PN_LEAF_MIN };
+enum class LeafMode { sampled = PN_LEAF_SAMPLED, min = PN_LEAF_MIN, ramp = PN_LEAF_RAMP };
 
 // The depth sums of the mip chain's wholly occluding nodes (glsl/traversal.h).
 enum class DepthSums { none = PN_DEPTH_SUMS_NONE, table = PN_DEPTH_SUMS_TABLE, midpoint = PN_DEPTH_SUMS_MIDPOINT };

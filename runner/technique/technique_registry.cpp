@@ -14,18 +14,28 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return pcss_config(poisson_pcss()); }},
       {"hqepcss", "HQEPCSS: refined search, min-estimated traversal leaves for blockers, brute-force PCF",
        []() -> Made { return pcss_config(hqepcss()); }},
-      {"fast", "Fast PCSS (seed 000): the paper's settings, Step 3 over a square covering the region, depth-aware blur",
+      {"fast", "Fast PCSS as shipped: exact regions over the aligned mip chain, refined search, leaf 16, chosen by the bench",
        []() -> Made { return pcss_config(fast_pcss()); }},
+      {"fast-paper", "Fast PCSS (seed 000) with the paper's settings: decreased pyramid, power-of-two windows, leaf 8, reuse, blur",
+       []() -> Made { return pcss_config(fast_paper_pcss()); }},
       {"fast-no-refine", "Fast PCSS without Step 3's refinement", []() -> Made { return pcss_ablation("fast-no-refine", "refine", "0"); }},
-      {"fast-leaf-1", "Fast PCSS with leaf side 1 (no sampled leaves)", []() -> Made { return pcss_ablation("fast-leaf-1", "leaf", "1"); }},
-      {"fast-no-reuse", "Fast PCSS without reuse", []() -> Made { return pcss_ablation("fast-no-reuse", "reuse", "off"); }},
-      {"fast-reuse-branch", "Fast PCSS, non-representatives branch out instead of a compacted list",
-       []() -> Made { return pcss_ablation("fast-reuse-branch", "skip", "branch"); }},
-      {"fast-exact-region", "Fast PCSS over exact regions instead of power-of-two windows",
-       []() -> Made { return pcss_ablation("fast-exact-region", "region", "exact"); }},
+      {"fast-leaf-1", "Fast PCSS with leaf side 1 (no sampled leaves; counts exact)",
+       []() -> Made { return pcss_ablation("fast-leaf-1", "leaf", "1"); }},
+      {"fast-leaf-8", "Fast PCSS with the paper's leaf side 8", []() -> Made { return pcss_ablation("fast-leaf-8", "leaf", "8"); }},
+      {"fast-table-sums", "Fast PCSS with exact blocker sums from the summed-area table (summed_area.glsl)",
+       []() -> Made { return pcss_ablation("fast-table-sums", "depth-sums", "table"); }},
+      {"fast-pyramid", "Fast PCSS over the paper's decreased pyramid instead of the aligned mip chain",
+       []() -> Made { return pcss_ablation("fast-pyramid", "structure", "pyramid"); }},
+      {"fast-window-region", "Fast PCSS over the paper's power-of-two windows instead of exact regions",
+       []() -> Made { return pcss_ablation("fast-window-region", "region", "window"); }},
       {"fast-centred-region", "Fast PCSS with centred power-of-two windows",
        []() -> Made { return pcss_ablation("fast-centred-region", "region", "centred"); }},
-      {"fast-no-blur", "Fast PCSS without Step 6's blur", []() -> Made { return pcss_ablation("fast-no-blur", "blur", "off"); }},
+      {"fast-reuse", "Fast PCSS with the paper's reuse (k = 4 for Step 4, 2 for Step 5)",
+       []() -> Made { return pcss_ablation("fast-reuse", "reuse", "on"); }},
+      {"fast-branch", "Fast PCSS, lit pixels branch out instead of a compacted list",
+       []() -> Made { return pcss_ablation("fast-branch", "skip", "branch"); }},
+      {"fast-blur", "Fast PCSS with Step 6's depth-aware blur, its radius following the filter size",
+       []() -> Made { return pcss_ablation("fast-blur", "blur", "on"); }},
       {"fast-all-off", "Fast PCSS with every improvement off: must equal exact PCSS (the wiring check)",
        []() -> Made { return pcss_config(fast_pcss_all_off()); }, false},
   };
@@ -66,7 +76,7 @@ std::vector<const TechniqueConfig*> chosen_or_default_techniques(
   return out;
 }
 
-std::vector<std::string> render_techniques() { return {"exact", "poisson", "hqepcss", "fast"}; }
+std::vector<std::string> render_techniques() { return {"exact", "poisson", "hqepcss", "fast-paper", "fast"}; }
 
 std::vector<std::string> bench_techniques() {
   std::vector<std::string> out;
