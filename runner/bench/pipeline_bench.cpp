@@ -4,13 +4,26 @@
 
 #include "bench/bench_json.h"
 #include "core/error.h"
+#include "scene/model.h"
 #include "scene/scene.h"
 #include "technique/technique_registry.h"
 
 namespace pn {
 
+namespace {
+
+Scene bench_scene(const PipelineBenchSetup& setup, int n) {
+  return setup.model.empty() ? make_scene(find_scene_fixture(setup.scene), n) : make_model_scene(setup.model, n);
+}
+
+std::string scene_name(const PipelineBenchSetup& setup) {
+  return setup.model.empty() ? setup.scene : setup.model.stem().string();
+}
+
+}  // namespace
+
 void validate_pipeline_bench_setup(const PipelineBenchSetup& setup) {
-  find_scene_fixture(setup.scene);
+  bench_scene(setup, 16);  // an unknown scene or a model file that does not load, before any GL work
   for (int n : setup.sizes)
     if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
   if (setup.repeats < 1) throw Error("repeats " + std::to_string(setup.repeats) + ": expected >= 1");
@@ -21,7 +34,6 @@ void validate_pipeline_bench_setup(const PipelineBenchSetup& setup) {
 std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const SourceTree& tree,
                                               const PipelineBenchSetup& setup) {
   validate_pipeline_bench_setup(setup);
-  const auto& fixture = find_scene_fixture(setup.scene);
   std::vector<std::unique_ptr<TechniqueConfig>> own;
   ComparisonSetup cs;
   cs.repeats = setup.repeats;
@@ -33,7 +45,7 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
     cs.screen_size = n;
     PipelineBenchSize s;
     s.size = n;
-    s.comparison = compare_techniques(context, tree, make_scene(fixture, n), cs);
+    s.comparison = compare_techniques(context, tree, bench_scene(setup, n), cs);
     const TechniqueResult* exact = s.comparison.find(kExactTechnique);
     const TechniqueResult* poisson = s.comparison.find(kPoissonTechnique);
     for (const TechniqueResult& r : s.comparison.results) {
@@ -88,7 +100,7 @@ nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::v
     truth.push_back({{"size", s.size},
                      {"cpu_ms", s.comparison.truth_ms},
                      {"vs_exact", s.comparison.truth_vs_exact ? scores_json(*s.comparison.truth_vs_exact) : nlohmann::json(nullptr)}});
-  return {{"scene", setup.scene}, {"repeats", setup.repeats}, {"truth_samples", setup.truth_samples},
+  return {{"scene", scene_name(setup)}, {"repeats", setup.repeats}, {"truth_samples", setup.truth_samples},
           {"rows", list}, {"truth", truth}};
 }
 

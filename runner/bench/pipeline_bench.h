@@ -5,6 +5,8 @@
 // metrics/scores.h against the ray-traced truth and exact PCSS (SPEC §9).
 #pragma once
 
+#include <filesystem>
+
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -20,6 +22,7 @@ namespace pn {
 
 struct PipelineBenchSetup {
   std::string scene = "boxes";
+  std::filesystem::path model;  // non-empty: this mesh file on the ground (scene/model.h) instead of `scene`
   std::vector<int> sizes{512, 1024};
   int repeats = 5;
   int truth_samples = 16;

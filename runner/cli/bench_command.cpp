@@ -30,6 +30,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
   auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline, 3 for sweep)");
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
+  cmd->add_option("--model", opt->pipeline.model, "pipeline: a mesh file (any format Assimp reads) on the ground instead of --scene");
   cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes)")->delimiter(',');
   cmd->add_option("--widths", opt->sweep.factors, "sweep: light width factors (default 1,2,4,8)")->delimiter(',');
   cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep: run exact PCSS only at light width factors up to this (default 2; inf: at every factor)");
