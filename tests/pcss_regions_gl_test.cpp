@@ -27,8 +27,9 @@ TEST_CASE("pcss_regions: search and filter entries and their regions equal the C
           "and no receiver a texel can shadow is marked lit in any mode") {
   const auto results = run_check(regions(), PENUMBRA_GLSL_DIR);
   // 12 maps x ((3 modes + the mip chain's search) x 3 + the property) + 3 lights x 3 (filter)
-  // + 1 (given entries) + tall_blocker ((3 modes + the mip chain) x (3 + the property)) + the left-out bound.
-  CHECK(results.size() == 12 * 13 + 9 + 1 + 16 + 1);
+  // + 1 (given entries) + tall_blocker ((3 modes + the mip chain) x (3 + the property)) + boxes (the
+  // property, 3 modes + the mip chain) + the left-out bound.
+  CHECK(results.size() == 12 * 13 + 9 + 1 + 16 + 4 + 1);
   check_all_pass(results);
 }
 

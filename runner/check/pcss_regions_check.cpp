@@ -330,13 +330,13 @@ struct SceneData {
   std::vector<RegionReceiver> receivers;
 };
 
-SceneData tall_blocker(const CheckEnvironment& env) {
-  const Scene scene = make_scene(find_scene_fixture("tall_blocker"), kSceneMap);
+SceneData scene_data(const CheckEnvironment& env, const char* scene_name) {
+  const Scene scene = make_scene(find_scene_fixture(scene_name), kSceneMap);
   FullRenderSource source(env.context, env.tree);
   const GBufferRenderer gbuffers(env.context, env.tree);
   const SceneFrame frame = render_scene_frame(env.context, source, gbuffers, scene, kSceneScreen);
   SceneData s;
-  s.name = std::string("tall_blocker ") + std::to_string(kSceneMap) + "² map, " + std::to_string(kSceneScreen) + "² screen";
+  s.name = std::string(scene_name) + " " + std::to_string(kSceneMap) + "² map, " + std::to_string(kSceneScreen) + "² screen";
   s.light = scene.light;
   s.map = read_float_texture(env.context, frame.shadow_map, kSceneMap, kSceneMap, 1);
   s.gbuffer = read_float_texture(env.context, frame.gbuffer, kSceneScreen, kSceneScreen, 4);
@@ -401,9 +401,9 @@ void synthetic_cases(std::vector<CaseResult>& results, const PcssRegionsQueryPas
 
 }  // namespace
 
-LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode) {
+LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode, const char* scene_name) {
   const PcssRegionsQueryPass pass(env.context, env.tree);
-  const SceneData scene = tall_blocker(env);
+  const SceneData scene = scene_data(env, scene_name);
   const PcssSettings defaults;
   const std::vector<PcssRegionsResult> observed =
       pass.run(scene.pyramid, scene.light, search_queries(scene.receivers, mode, defaults.refine_iterations, defaults.bias));
@@ -480,7 +480,7 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
   }
 
   // The tall-blocker scene's own shadow map and G-buffer, the pipeline's bias.
-  const SceneData scene = tall_blocker(env);
+  const SceneData scene = scene_data(env, "tall_blocker");
   const DepthScan scan(scene.map);
   const PcssSettings defaults;
   struct SceneSearch {
@@ -513,6 +513,26 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
     searched += g.queries, left_out += g.left_out;
     push_group(results, scene.name + ", " + what, g,
                ("search entries (0 and " + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
+  }
+
+  // The property on the boxes scene too, in every region mode and over the mip chain.
+  {
+    const SceneData boxes = scene_data(env, "boxes");
+    const DepthScan boxes_scan(boxes.map);
+    for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid},
+                                      SceneSearch{RegionMode::exact, Structure::pyramid},
+                                      SceneSearch{RegionMode::centred, Structure::pyramid},
+                                      SceneSearch{RegionMode::exact, Structure::mip}}) {
+      const std::string what = search.structure == Structure::mip ? "the mip chain's search" : mode_name(search.mode);
+      const std::vector<PcssRegionsResult> observed = pass.run(
+          boxes.pyramid, boxes.light,
+          search_queries(boxes.receivers, search.mode, defaults.refine_iterations, defaults.bias, search.structure),
+          &boxes.mip);
+      results.push_back(count_lit_coverage(boxes.name + ", " + what + ", " + std::to_string(defaults.refine_iterations) +
+                                               " iterations",
+                                           boxes_scan, boxes.light, boxes.receivers, observed, defaults.bias)
+                            .result);
+    }
   }
 
   const bool few = left_out * 100 <= searched;

@@ -23,6 +23,7 @@ struct LitCoverage {
 
 // Renders the tall-blocker scene (256² map, 128² screen) and runs Step 3 with the
 // pipeline's bias and refinement (PcssSettings' defaults) in `mode`.
-LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode);
+LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode,
+                                      const char* scene = "tall_blocker");
 
 }  // namespace pn
