@@ -107,6 +107,27 @@ int pnTraversalCompactBits(uint v) {
   return int(v);
 }
 
+// The node of Morton code `code` and side `side` below a root at `rootOrigin`.
+ivec2 pnTraversalNodeOrigin(ivec2 rootOrigin, int side, uint code) {
+  return rootOrigin + side * ivec2(pnTraversalCompactBits(code), pnTraversalCompactBits(code >> 1));
+}
+
+// The stackless step: into the first child (descend), or to the next node in
+// Z order — the next sibling, climbing over every level whose last child this
+// was. True when the climb reaches rootLevel: the traversal is done.
+bool pnTraversalNext(inout int level, inout uint code, bool descend, int rootLevel) {
+  if (descend) {
+    level -= 1;
+    code *= 4u;
+    return false;
+  }
+  code += 1u;
+  int climb = min(findLSB(code) >> 1, rootLevel - level);
+  code >>= uint(2 * climb);
+  level += climb;
+  return level == rootLevel;
+}
+
 // Eq. 5 / 6 over the rectangle [lo, lo + size) with the samples of a node of side `side`.
 void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, ivec2 lo,
                            ivec2 size, int side, float t, ivec2 pixel) {
@@ -239,7 +260,7 @@ PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec
   int iterations = budget + 3 * rootLevel + 1;
   for (int it = 0; it < iterations; ++it) {
     int side = 1 << level;
-    ivec2 origin = regionStart + side * ivec2(pnTraversalCompactBits(code), pnTraversalCompactBits(code >> 1));
+    ivec2 origin = pnTraversalNodeOrigin(regionStart, side, code);
     ivec2 lo = max(origin, regionStart);
     ivec2 hi = min(origin + side, regionEnd);
     bool descend = false;
@@ -271,17 +292,7 @@ PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec
     } else {
       r.nodes += 1;  // outside the region: visited, nothing to read
     }
-    if (descend) {
-      level -= 1;
-      code *= 4u;
-    } else {
-      // Next node in Z order: the next sibling, climbing over every level whose last child this was.
-      code += 1u;
-      int climb = min(findLSB(code) >> 1, rootLevel - level);
-      code >>= uint(2 * climb);
-      level += climb;
-      if (level == rootLevel) break;  // the root is done
-    }
+    if (pnTraversalNext(level, code, descend, rootLevel)) break;  // the root is done
   }
   return r;
 }
@@ -394,7 +405,7 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sa
   int iterations = budget + 3 * rootLevel + 4;
   for (int it = 0; it < iterations; ++it) {
     int side = 1 << level;
-    ivec2 origin = rootOrigin + side * ivec2(pnTraversalCompactBits(code), pnTraversalCompactBits(code >> 1));
+    ivec2 origin = pnTraversalNodeOrigin(rootOrigin, side, code);
     ivec2 lo = max(origin, regionStart);
     ivec2 hi = min(origin + side, regionEnd);
     bool descend = false;
@@ -421,16 +432,7 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sa
     } else {
       r.nodes += 1;  // outside the region: visited, nothing to read
     }
-    if (descend) {
-      level -= 1;
-      code *= 4u;
-    } else {
-      code += 1u;
-      int climb = min(findLSB(code) >> 1, rootLevel - level);
-      code >>= uint(2 * climb);
-      level += climb;
-      if (level == rootLevel) break;  // the virtual root's four children are done
-    }
+    if (pnTraversalNext(level, code, descend, rootLevel)) break;  // the virtual root's four children are done
   }
   return r;
 }

@@ -75,6 +75,13 @@ GlObject upload_float_texture(const Context& context, const Image& image) {
   return texture;
 }
 
+GlObject make_placeholder_texture(const Context& context, GLenum target, GLenum format) {
+  GlObject t(context, GlKind::texture, target);
+  if (target == GL_TEXTURE_2D_ARRAY) context.gl().TextureStorage3D(t.id(), 1, format, 1, 1, 1);
+  else context.gl().TextureStorage2D(t.id(), 1, format, 1, 1);
+  return t;
+}
+
 Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels) {
   return read_float_texture_layer(context, texture, 0, width, height, channels);
 }

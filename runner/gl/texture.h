@@ -9,6 +9,10 @@ namespace pn {
 
 // Immutable-storage 2-D texture of 1–4 float channels (R32F … RGBA32F), nearest filtering.
 GlObject make_float_texture(const Context& context, int width, int height, int channels);
+
+// A 1×1 (×1 layer) texture of `format` for GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY: bound where a
+// pass declares a sampler that this dispatch does not read.
+GlObject make_placeholder_texture(const Context& context, GLenum target, GLenum format);
 GlObject upload_float_texture(const Context& context, const Image& image);
 Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels);
 

@@ -26,9 +26,7 @@ static_assert(static_cast<int>(PcssRegionsQuery::Kind::search) == PN_PCSS_REGION
 PcssRegionsQueryPass::PcssRegionsQueryPass(const Context& context, const SourceTree& tree)
     : context_(&context),
       program_(compile_pass(context, tree, "passes/pcss_regions_query.comp")),
-      no_mip_(context, GlKind::texture, GL_TEXTURE_2D) {
-  context.gl().TextureStorage2D(no_mip_.id(), 1, GL_RGBA32F, 1, 1);
-}
+      no_mip_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)) {}
 
 std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyramid, const LightModel& light,
                                                          const std::vector<PcssRegionsQuery>& queries,

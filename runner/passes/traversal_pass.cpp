@@ -50,23 +50,12 @@ std::vector<TraversalResult> TraversalBatch::read() const {
   return out;
 }
 
-namespace {
-
-GlObject empty_texture(const Context& context, GLenum target, GLenum format) {
-  GlObject t(context, GlKind::texture, target);
-  if (target == GL_TEXTURE_2D_ARRAY) context.gl().TextureStorage3D(t.id(), 1, format, 1, 1, 1);
-  else context.gl().TextureStorage2D(t.id(), 1, format, 1, 1);
-  return t;
-}
-
-}  // namespace
-
 TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
     : context_(&context),
       program_(compile_pass(context, tree, "passes/traversal_query.comp")),
-      empty_array_(empty_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
-      empty_2d_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
-      empty_uint_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
+      empty_array_(make_placeholder_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
+      empty_2d_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
+      empty_uint_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
 
 void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject& sample_table,
                              const TraversalBatch& batch, const TraversalSettings& settings) const {

@@ -98,12 +98,6 @@ const GlObject& made_or(const GlObject& t, const GlObject& empty) {
   return t.id() != 0 ? t : empty;
 }
 
-GlObject empty_texture(const Context& context, GLenum target, GLenum format) {
-  GlObject t(context, GlKind::texture, target);
-  if (target == GL_TEXTURE_2D_ARRAY) context.gl().TextureStorage3D(t.id(), 1, format, 1, 1, 1);
-  else context.gl().TextureStorage2D(t.id(), 1, format, 1, 1);
-  return t;
-}
 
 }  // namespace
 
@@ -134,9 +128,9 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       blocker_disk_(upload_disk(context, PcssSettings{}.blocker_samples, kBlockerDiskSeed)),
       filter_disk_(upload_disk(context, PcssSettings{}.filter_samples, kFilterDiskSeed)),
       no_parents_(cleared_texture(context, 1, 1)),
-      no_pyramid_(empty_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
-      no_mip_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
-      no_depth_sums_(empty_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
+      no_pyramid_(make_placeholder_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
+      no_mip_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
+      no_depth_sums_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
 
 void PcssPipeline::build_structure(PcssFrame& frame, const GlObject& shadow_map, int n) const {
   const PcssSettings& s = frame.settings;
