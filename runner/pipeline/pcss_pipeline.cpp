@@ -160,6 +160,8 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   block.reuseTile = parents ? tile : 0;
   block.sampleCount = samples;
   block.depthSums = static_cast<std::int32_t>(wants_depth_sums ? frame.settings.depth_sums : DepthSums::none);
+  if (wants_depth_sums && frame.settings.blocker_leaf_mode)  // Step 4: the blocker mean's own leaves
+    block.leafMode = static_cast<std::int32_t>(*frame.settings.blocker_leaf_mode);
   // What every estimator reads; each dispatch below binds it in its own scope.
   const auto bind_inputs = [&](PassBindings& bind) {
     bind.texture(PN_PCSS_PYRAMID_BINDING, made_or(frame.pyramid.texture, no_pyramid_));

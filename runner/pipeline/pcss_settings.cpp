@@ -96,7 +96,7 @@ PcssSettings fast_pcss_all_off() {
 }
 
 const std::vector<std::string>& pcss_setting_keys() {
-  static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf-divisor", "leaf", "leaf-mode", "budget", "reuse",
+  static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf-divisor", "blocker-leaf-mode", "leaf", "leaf-mode", "budget", "reuse",
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
                                              "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "blur-adaptive", "bias", "c", "sigma1", "sigma2", "sigma3",
                                              "blockers", "occlusion", "blocker-samples", "filter-samples"};
@@ -130,6 +130,12 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
     if (value == "off") return false;
     throw bad("on or off");
   };
+  const auto leaf_mode = [&] {
+    if (value == "sampled") return LeafMode::sampled;
+    if (value == "min") return LeafMode::min;
+    if (value == "ramp") return LeafMode::ramp;
+    throw bad("sampled, min or ramp");
+  };
   const auto estimator = [&] {
     if (value == "scan") return Estimator::scan;
     if (value == "traversal") return Estimator::traversal;
@@ -152,12 +158,9 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
     else throw bad("table or midpoint");
   } else if (key == "leaf") s.leaf_side = integer();
   else if (key == "leaf-divisor") s.leaf_divisor = integer();
-  else if (key == "leaf-mode") {
-    if (value == "sampled") s.leaf_mode = LeafMode::sampled;
-    else if (value == "min") s.leaf_mode = LeafMode::min;
-    else if (value == "ramp") s.leaf_mode = LeafMode::ramp;
-    else throw bad("sampled, min or ramp");
-  } else if (key == "budget") s.node_budget = integer();
+  else if (key == "blocker-leaf-mode") s.blocker_leaf_mode = leaf_mode();
+  else if (key == "leaf-mode") s.leaf_mode = leaf_mode();
+  else if (key == "budget") s.node_budget = integer();
   else if (key == "reuse") {
     const bool on = on_off();
     s.search_tile = on ? 4 : 0;

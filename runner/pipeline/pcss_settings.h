@@ -3,6 +3,7 @@
 // Poisson PCSS, HQEPCSS and Fast PCSS differ only in these switches.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,7 @@ struct PcssSettings {
   int leaf_side = 8;           // traversal leaves; 1 = exact (sampled leaves off)
   int leaf_divisor = 0;        // > 0: leaves at least the region's side / leaf_divisor (pcss_traverse.comp); 0 = off
   LeafMode leaf_mode = LeafMode::sampled;
+  std::optional<LeafMode> blocker_leaf_mode;  // Step 4's leaves when set (the blocker mean), else leaf_mode
   int node_budget = 1 << 26;   // per pixel (traversal.glsl): unbounded by default
   int search_tile = 4;         // reuse k for Step 4; 0 = no reuse
   int filter_tile = 2;         // reuse k for Step 5; 0 = no reuse
