@@ -107,6 +107,15 @@ int pnTraversalCompactBits(uint v) {
   return int(v);
 }
 
+// An empty result for the region clipped to an n×n map (and to the largest
+// root), so every read is inside: [start, end), its texels counted.
+PnTraversal pnTraversalBegin(ivec2 regionOrigin, ivec2 regionSize, int n, out ivec2 start, out ivec2 end) {
+  start = clamp(regionOrigin, ivec2(0), ivec2(n));
+  end = clamp(regionOrigin + max(regionSize, ivec2(0)), start, min(ivec2(n), start + (1 << PN_TRAVERSAL_MAX_LEVEL)));
+  ivec2 size = end - start;
+  return PnTraversal(0.0, 0.0, float(size.x * size.y), 0, 0);
+}
+
 // The node of Morton code `code` and side `side` below a root at `rootOrigin`.
 ivec2 pnTraversalNodeOrigin(ivec2 rootOrigin, int side, uint code) {
   return rootOrigin + side * ivec2(pnTraversalCompactBits(code), pnTraversalCompactBits(code >> 1));
@@ -237,14 +246,9 @@ void pnTraversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D
 PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin, ivec2 regionSize,
                              float receiverDepth, float bias, int leafSide, int leafMode, int nodeBudget,
                              ivec2 pixel) {
-  PnTraversal r = PnTraversal(0.0, 0.0, 0.0, 0, 0);
-  // The region is clipped to the map (and to the largest root), so every read is inside.
-  int n = pnPyramidMapSize(pyramid);
-  ivec2 regionStart = clamp(regionOrigin, ivec2(0), ivec2(n));
-  ivec2 regionEnd = clamp(regionOrigin + max(regionSize, ivec2(0)), regionStart,
-                          min(ivec2(n), regionStart + (1 << PN_TRAVERSAL_MAX_LEVEL)));
+  ivec2 regionStart, regionEnd;
+  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, pnPyramidMapSize(pyramid), regionStart, regionEnd);
   ivec2 size = regionEnd - regionStart;
-  r.texels = float(size.x * size.y);
   float t = receiverDepth - bias;
   if (isnan(t) || r.texels == 0.0) return r;
 
@@ -255,8 +259,8 @@ PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec
   uint code = 0u;
   // One iteration per node, except that a node whose children are all leaves
   // handles them in the same iteration (they are never descended): the
-  // iteration count stays a quarter of the node count, and no loop runs into
-  // llvmpipe's cut-off of 65535 iterations per invocation, shared by all loops.
+  // iteration count stays a quarter of the node count, below llvmpipe's loop
+  // cut-off (65535 iterations of a loop per invocation; traversal.md).
   int iterations = budget + 3 * rootLevel + 1;
   for (int it = 0; it < iterations; ++it) {
     int side = 1 << level;
@@ -380,14 +384,10 @@ void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, usampler2D sumTa
 PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sampleTable, int mapSize,
                                 ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
                                 int nodeBudget, int depthSums, ivec2 pixel) {
-  PnTraversal r = PnTraversal(0.0, 0.0, 0.0, 0, 0);
-  // The region is clipped to the map (and to the largest root), so every read is inside.
-  int n = clamp(mapSize, 0, textureSize(mip, 0).y);
-  ivec2 regionStart = clamp(regionOrigin, ivec2(0), ivec2(n));
-  ivec2 regionEnd = clamp(regionOrigin + max(regionSize, ivec2(0)), regionStart,
-                          min(ivec2(n), regionStart + (1 << PN_TRAVERSAL_MAX_LEVEL)));
+  ivec2 regionStart, regionEnd;
+  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, textureSize(mip, 0).y), regionStart,
+                                   regionEnd);
   ivec2 size = regionEnd - regionStart;
-  r.texels = float(size.x * size.y);
   float t = receiverDepth - bias;
   if (isnan(t) || r.texels == 0.0) return r;
 
