@@ -21,8 +21,9 @@ struct LitCoverage {
   CaseResult result;    // violations per pixel (1) against 0, exact
 };
 
-// Renders the tall-blocker scene (256² map, 128² screen) and runs Step 3 with the
-// pipeline's bias and refinement (PcssSettings' defaults) in `mode`.
+// Renders `scene` — the tall blocker at a 256² map and 128² screen, the boxes at 512² and 512² (their
+// far walls need it) — and runs Step 3 with the pipeline's bias and refinement (PcssSettings'
+// defaults) in `mode`.
 LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode,
                                       const char* scene = "tall_blocker");
 
