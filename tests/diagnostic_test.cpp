@@ -34,3 +34,16 @@ TEST_CASE("physical lines of a wrapped source map back through its #line markers
   CHECK(source.origin_of_line(8) == Origin{"a.glsl", 3});
   CHECK(source.driver_text() == "#version 450\n\nalpha\n\nbeta\ngamma\n\ndelta\n");
 }
+
+TEST_CASE("line numbers beyond int in a log or a #line marker saturate instead of throwing (negative)") {
+  const pn::LocationMap map = [](int number, int line) {
+    return std::pair<std::string, int>{"file" + std::to_string(number), line};
+  };
+  const auto d = pn::parse_info_log("ERROR: 0:99999999999: 'x' : undeclared identifier\n", map, "entry.glsl");
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].line == 2147483647);
+  pn::ShaderSource source;
+  source.text = "#version 450\n#line 99999999999 0\nalpha\n";
+  source.files = {"a.glsl"};
+  CHECK(source.origin_of_line(3) == std::pair<std::string, int>{"a.glsl", 2147483647});
+}

@@ -1,6 +1,8 @@
 #include "shader/diagnostic.h"
 
 #include <regex>
+
+#include "core/decimal.h"
 #include <sstream>
 
 namespace pn {
@@ -24,7 +26,7 @@ std::vector<Diagnostic> parse_info_log(const std::string& log, const LocationMap
   static const std::regex terminated_re(R"(.*'' : compilation terminated.*)");
 
   auto at = [&](const std::string& number, const std::string& line, std::string severity, std::string message) {
-    auto [file, mapped_line] = map(std::stoi(number), std::stoi(line));
+    auto [file, mapped_line] = map(saturating_decimal(number), saturating_decimal(line));
     return Diagnostic{file, mapped_line, std::move(severity), std::move(message)};
   };
   auto lower = [](std::string s) {

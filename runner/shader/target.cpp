@@ -1,3 +1,4 @@
+#include "core/decimal.h"
 #include "shader/target.h"
 
 #include <regex>
@@ -50,8 +51,8 @@ std::pair<std::string, int> ShaderSource::origin_of_line(int line) const {
   std::smatch m;
   for (int physical = 1; physical <= line && std::getline(lines, current); ++physical) {
     if (std::regex_match(current, m, line_marker())) {
-      const size_t number = std::stoul(m[2]);
-      next = {number < files.size() ? files[number] : "<wrapper>", std::stoi(m[1])};
+      const size_t number = static_cast<size_t>(saturating_decimal(m[2]));
+      next = {number < files.size() ? files[number] : "<wrapper>", saturating_decimal(m[1])};
       origin = {"<wrapper>", 0};
     } else {
       origin = next;
