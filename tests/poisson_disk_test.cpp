@@ -50,3 +50,10 @@ TEST_CASE("negative: 0 or more than 4096 samples are refused") {
   CHECK_THROWS_WITH(pn::poisson_disk(0, 1), "Poisson disk of 0 samples: expected 1 to 4096");
   CHECK_THROWS_AS(pn::poisson_disk(5000, 1), pn::Error);
 }
+
+TEST_CASE("the GLSL constant's name must be an unreserved GLSL identifier (negative)") {
+  const pn::PoissonDisk disk = pn::poisson_disk(4, 1u);
+  CHECK(pn::poisson_disk_glsl(disk, "kDisk_4", 1u).find("const vec2 kDisk_4[4]") != std::string::npos);
+  for (const char* bad : {"", "bad name;}", "4disk", "gl_Disk", "my__disk", "disk[2]"})
+    CHECK_THROWS_WITH(pn::poisson_disk_glsl(disk, bad, 1u), Catch::Contains("expected a GLSL identifier"));
+}

@@ -1,5 +1,7 @@
 #include "sampling/poisson_disk.h"
 
+#include <cctype>
+
 #include <cmath>
 #include <cstdio>
 
@@ -82,6 +84,14 @@ PoissonDisk poisson_disk(int count, std::uint32_t seed) {
 }
 
 std::string poisson_disk_glsl(const PoissonDisk& disk, const std::string& name, std::uint32_t seed) {
+  // A GLSL identifier (GLSL ES 3.10 §3.7): a letter or _, then letters, digits and _; names
+  // beginning with gl_ or holding __ are reserved; at most 1024 characters.
+  bool identifier = !name.empty() && name.size() <= 1024 && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                    name.rfind("gl_", 0) != 0 && name.find("__") == std::string::npos;
+  for (char c : name) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+  if (!identifier)
+    throw Error("Poisson disk name '" + name + "': expected a GLSL identifier (letters, digits and _, not starting with "
+                "a digit or gl_, no __)");
   char line[96];
   std::snprintf(line, sizeof line, "// %zu Poisson-disk samples in the unit disk, minimum distance %.6f,\n",
                 disk.points.size(), disk.min_distance);
