@@ -14,11 +14,18 @@
 
 namespace pn {
 
+void validate_pyramid_bench(const std::vector<int>& sizes, int repeats, int max_level) {
+  for (int n : sizes) {
+    validate_shadow_map_size(n, n);
+    if (n > 4096) throw Error("size " + std::to_string(n) + ": expected 2..4096");
+  }
+  if (repeats < 1 || repeats > 1000) throw Error("repeats " + std::to_string(repeats) + ": expected 1..1000");
+  pyramid_level_count(2, max_level);  // validates max_level
+}
+
 std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceTree& tree, const std::vector<int>& sizes,
                                            int repeats, int max_level) {
-  if (repeats < 1) throw Error("repeats " + std::to_string(repeats) + ": expected at least 1");
-  for (int n : sizes) validate_shadow_map_size(n, n);
-  pyramid_level_count(2, max_level);  // validates max_level
+  validate_pyramid_bench(sizes, repeats, max_level);
   const DepthPyramidBuilder pyramid_builder(context, tree);
   const MinMaxMipBuilder mip_builder(context, tree);
   const SummedAreaPass sums_builder(context, tree);

@@ -27,7 +27,11 @@ struct PyramidBenchRow {
   int repeats = 0;
 };
 
-// Throws Error for sizes < 2, repeats < 1 or max_level < 0.
+// Throws Error naming the first bad value: a size outside 2..4096 (the pyramid: 16 N² bytes a
+// level, 3.5 GiB at 4096²), repeats outside 1..1000, max_level < 0.
+void validate_pyramid_bench(const std::vector<int>& sizes, int repeats, int max_level);
+
+// Validates its arguments first (validate_pyramid_bench).
 std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceTree& tree, const std::vector<int>& sizes,
                                            int repeats, int max_level);
 

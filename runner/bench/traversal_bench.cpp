@@ -36,13 +36,20 @@ std::vector<TraversalQuery> ground_receivers(const Image& map, int count) {
 
 }  // namespace
 
+void validate_traversal_bench_setup(const TraversalBenchSetup& setup) {
+  if (setup.map_size < 16 || setup.map_size > 2048)
+    throw Error("map size " + std::to_string(setup.map_size) + ": expected 16..2048");
+  if (setup.receivers < 1 || setup.receivers > 1000000)
+    throw Error("receivers " + std::to_string(setup.receivers) + ": expected 1..1000000");
+  if (setup.repeats < 1 || setup.repeats > 1000)
+    throw Error("repeats " + std::to_string(setup.repeats) + ": expected 1..1000");
+  for (int leaf : setup.leaf_sides)
+    if (leaf < 1 || leaf > 8192) throw Error("leaf size " + std::to_string(leaf) + ": expected 1..8192");
+}
+
 std::vector<TraversalBenchRow> bench_traversal(const Context& context, const SourceTree& tree,
                                                const TraversalBenchSetup& setup) {
-  if (setup.map_size < 16) throw Error("map size " + std::to_string(setup.map_size) + ": expected at least 16");
-  if (setup.receivers < 1) throw Error("receivers " + std::to_string(setup.receivers) + ": expected at least 1");
-  if (setup.repeats < 1) throw Error("repeats " + std::to_string(setup.repeats) + ": expected at least 1");
-  for (int leaf : setup.leaf_sides)
-    if (leaf < 1) throw Error("leaf size " + std::to_string(leaf) + ": expected at least 1");
+  validate_traversal_bench_setup(setup);
 
   const int n = setup.map_size;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);

@@ -35,6 +35,11 @@ struct TraversalBenchSetup {
 };
 
 // Throws Error for a map below 16, no receivers or repeats below 1.
+// Throws Error naming the first bad value: map size outside 16..2048 (its pyramid: 16 N² bytes a
+// level), receivers outside 1..1,000,000, repeats outside 1..1000, a leaf size outside 1..8192.
+void validate_traversal_bench_setup(const TraversalBenchSetup& setup);
+
+// Validates `setup` first (validate_traversal_bench_setup).
 std::vector<TraversalBenchRow> bench_traversal(const Context& context, const SourceTree& tree,
                                                const TraversalBenchSetup& setup);
 

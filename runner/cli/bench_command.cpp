@@ -57,6 +57,11 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (repeats->count() > 0) opt->pipeline.repeats = opt->repeats;
       if (sizes->count() > 0) opt->pipeline.sizes = opt->sizes;
       validate_pipeline_bench_setup(opt->pipeline);
+    } else if (opt->what == "pyramid") {
+      validate_pyramid_bench(opt->sizes, opt->repeats, opt->max_level);
+    } else {
+      if (repeats->count() > 0) opt->traversal.repeats = opt->repeats;
+      validate_traversal_bench_setup(opt->traversal);
     }
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
@@ -76,7 +81,6 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       print_pipeline_bench(std::cout, rows);
       results = pipeline_bench_json(opt->pipeline, rows);
     } else {
-      if (repeats->count() > 0) opt->traversal.repeats = opt->repeats;
       const auto rows = bench_traversal(*context, tree, opt->traversal);
       print_traversal_bench(std::cout, opt->traversal, rows);
       results = traversal_bench_json(opt->traversal, rows);
