@@ -63,6 +63,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (repeats->count() > 0) opt->traversal.repeats = opt->repeats;
       validate_traversal_bench_setup(opt->traversal);
     }
+    if (!opt->json.empty()) validate_output_path(opt->json);  // before the bench's minutes of work
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "

@@ -6,8 +6,15 @@
 
 namespace pn {
 
+// Throws Error unless `path` can name an output file: not empty, not a directory, in an
+// existing directory. For commands to call before long work whose result goes there.
+void validate_output_path(const std::filesystem::path& path);
+
 // Writes `text` to `path` through a temporary file that is renamed over it,
-// so a failure leaves no partial file. Throws Error naming the path.
+// so a failure leaves no partial file. A symbolic link stays a link (the file
+// it points to is replaced); an existing file that is not a regular one (a
+// device such as /dev/null, a FIFO) is written in place, never replaced.
+// Throws Error naming the path (validate_output_path's errors, a failed write).
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace pn

@@ -1,0 +1,31 @@
+#!/bin/sh
+# output_targets.sh PENUMBRA GLSL_DIR WORK_DIR
+# Output files that are not plain files survive: a device is written in place
+# (/dev/null accepts it, /dev/full fails with one line and exit 2), a symbolic
+# link stays a link and its target gets the output; --json into a missing
+# directory is refused before the bench runs (exit 2, seconds not minutes).
+set -u
+penumbra=$1 glsl=$2 work=$3
+fail() { printf 'output_targets: %s\n' "$1"; exit 1; }
+rm -rf "$work" && mkdir -p "$work" || fail "cannot make $work"
+
+"$penumbra" bundle "$glsl/blur.glsl" -o /dev/null || fail "bundle -o /dev/null: exit $?"
+[ -c /dev/null ] || fail "/dev/null is no longer a character device"
+
+out=$("$penumbra" bundle "$glsl/blur.glsl" -o /dev/full 2>&1)
+status=$?
+[ "$status" -eq 2 ] || fail "bundle -o /dev/full: expected exit 2, got $status: $out"
+printf '%s\n' "$out" | grep -q "output '/dev/full': write failed" || fail "bundle -o /dev/full said: $out"
+[ -c /dev/full ] || fail "/dev/full is no longer a character device"
+
+printf 'old\n' > "$work/target" && ln -s "$work/target" "$work/link" || fail "cannot make the link"
+"$penumbra" bundle "$glsl/blur.glsl" -o "$work/link" || fail "bundle -o link: exit $?"
+[ -L "$work/link" ] || fail "the link was replaced by a file"
+grep -q "penumbra bundle of blur.glsl" "$work/target" || fail "the link's target does not hold the bundle"
+
+out=$("$penumbra" bench pyramid --sizes 64 --repeats 1 --json "$work/no/such/dir/x.json" 2>&1)
+status=$?
+[ "$status" -eq 2 ] || fail "bench --json into a missing directory: expected exit 2, got $status: $out"
+printf '%s\n' "$out" | grep -q "does not exist" || fail "bench --json said: $out"
+printf '%s\n' "$out" | grep -q "backend" && fail "bench --json into a missing directory ran the bench first: $out"
+echo "output_targets: ok"
