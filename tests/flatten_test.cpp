@@ -92,3 +92,28 @@ TEST_CASE("negative: a missing entry file and a missing root are bad input") {
     CHECK(e.code() == pn::ExitCode::bad_input);
   }
 }
+
+TEST_CASE("flatten scans 50,000-character lines and include paths without recursing per character (negative)") {
+  const std::string spaces(50000, ' ');
+  const std::string long_name(100000, 'x');
+  TempTree dir(TempTree::Files{{"a.glsl", spaces + "float x;\n" + spaces + "#  include \"b.glsl\"" + spaces + "\n" +
+                                              "void  main (){}\n"},
+                               {"b.glsl", "float b;\n"},
+                               {"c.glsl", "#include \"" + long_name + ".glsl\"\n"}});
+  const pn::SourceTree tree(dir.root());
+  const pn::FlatSource flat = pn::flatten(tree, dir.root() / "a.glsl");
+  CHECK(flat.files == std::vector<std::string>{"a.glsl", "b.glsl"});
+  CHECK(flat.has_main);
+  CHECK(flat.text.find("float b;") != std::string::npos);
+  CHECK(error_of(tree, (dir.root() / "c.glsl").string()).find("c.glsl:1: error: ") != std::string::npos);
+}
+
+TEST_CASE("what is not an include, an include extension or main stays code") {
+  TempTree dir(TempTree::Files{{"a.glsl", "# includes \"b.glsl\"\n#extension GL_GOOGLE_include_directive_x : enable\n"
+                                          "void mainly() {}\nvoidmain() {}\n"}});
+  const pn::SourceTree tree(dir.root());
+  const pn::FlatSource flat = pn::flatten(tree, dir.root() / "a.glsl");
+  CHECK(flat.files == std::vector<std::string>{"a.glsl"});
+  CHECK_FALSE(flat.has_main);
+  CHECK(flat.text.find("#extension GL_GOOGLE_include_directive_x") != std::string::npos);
+}

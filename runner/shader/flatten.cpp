@@ -1,8 +1,9 @@
 #include "shader/flatten.h"
 
-#include <regex>
+#include <cctype>
 #include <set>
 #include <sstream>
+#include <string>
 
 #include "core/error.h"
 
@@ -27,6 +28,67 @@ std::string strip_comments(const std::string& line, bool& in_block) {
   return code;
 }
 
+// The directives are scanned by hand, not with std::regex: libstdc++'s regex
+// recurses per character and overflowed the stack on a 50,000-character line.
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r'; }
+bool is_word(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+size_t skip_spaces(const std::string& s, size_t i) {
+  while (i < s.size() && is_space(s[i])) ++i;
+  return i;
+}
+
+// After optional spaces, `#`, optional spaces: the position of the directive's name, or npos.
+size_t directive_name(const std::string& code) {
+  size_t i = skip_spaces(code, 0);
+  if (i >= code.size() || code[i] != '#') return std::string::npos;
+  return skip_spaces(code, i + 1);
+}
+
+bool word_at(const std::string& s, size_t i, const char* word) {
+  const size_t n = std::char_traits<char>::length(word);
+  return s.compare(i, n, word) == 0 && (i + n >= s.size() || !is_word(s[i + n]));
+}
+
+// `#include "name"` (or <name>, or mismatched quotes, reported by the caller): the quotes and the name.
+struct IncludeLine {
+  char open = 0, close = 0;
+  std::string name;
+};
+
+bool parse_include(const std::string& code, IncludeLine& out) {
+  size_t i = directive_name(code);
+  if (i == std::string::npos || code.compare(i, 7, "include") != 0) return false;
+  i = skip_spaces(code, i + 7);
+  if (i >= code.size() || (code[i] != '"' && code[i] != '<')) return false;
+  out.open = code[i];
+  const size_t end = code.find_first_of("\">", i + 1);
+  if (end == std::string::npos) return false;
+  out.name = code.substr(i + 1, end - i - 1);
+  out.close = code[end];
+  return skip_spaces(code, end + 1) == code.size();
+}
+
+// `#extension GL_GOOGLE_include_directive ...`
+bool is_include_extension(const std::string& code) {
+  size_t i = directive_name(code);
+  if (i == std::string::npos || !word_at(code, i, "extension")) return false;
+  const size_t name = skip_spaces(code, i + 9);
+  return name > i + 9 && word_at(code, name, "GL_GOOGLE_include_directive");
+}
+
+// `void main (` with `void` and `main` whole words.
+bool declares_main(const std::string& code) {
+  for (size_t i = code.find("void"); i != std::string::npos; i = code.find("void", i + 1)) {
+    if ((i > 0 && is_word(code[i - 1])) || !word_at(code, i, "void")) continue;
+    size_t j = skip_spaces(code, i + 4);
+    if (j == i + 4 || !word_at(code, j, "main")) continue;
+    j = skip_spaces(code, j + 4);
+    if (j < code.size() && code[j] == '(') return true;
+  }
+  return false;
+}
+
 class Flattener {
  public:
   explicit Flattener(const SourceTree& tree) : tree_(tree) {}
@@ -44,10 +106,6 @@ class Flattener {
     open_.push_back(file);
     const std::string source = tree_.read(file);
 
-    static const std::regex include_re(R"(^\s*#\s*include\s*(["<])([^">]*)([">])\s*$)");
-    static const std::regex extension_re(R"(^\s*#\s*extension\s+GL_GOOGLE_include_directive\b.*$)");
-    static const std::regex main_re(R"(\bvoid\s+main\s*\()");
-
     marker(1, number);
     std::istringstream lines(source);
     std::string line;
@@ -56,17 +114,17 @@ class Flattener {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       const bool starts_in_block = in_block;
       const std::string code = strip_comments(line, in_block);
-      std::smatch m;
-      if (!starts_in_block && std::regex_match(code, m, include_re)) {
+      IncludeLine m;
+      if (!starts_in_block && parse_include(code, m)) {
         include(file, line_no, m);
         marker(line_no + 1, number);
         continue;
       }
-      if (!starts_in_block && std::regex_match(code, extension_re)) {
+      if (!starts_in_block && is_include_extension(code)) {
         out_.text += "\n";  // drivers reject this extension; keep the line count
         continue;
       }
-      if (std::regex_search(code, main_re)) out_.has_main = true;
+      if (declares_main(code)) out_.has_main = true;
       out_.text += line;
       out_.text += '\n';
     }
@@ -74,13 +132,13 @@ class Flattener {
     done_.insert(file);
   }
 
-  void include(const fs::path& file, int line_no, const std::smatch& m) {
+  void include(const fs::path& file, int line_no, const IncludeLine& m) {
     const std::string where = tree_.diagnostic_path(file) + ":" + std::to_string(line_no) + ": error: ";
-    if ((m[1] == "\"") != (m[3] == "\""))
+    if ((m.open == '"') != (m.close == '"'))
       throw Error(where + "#include: expected \"file\" with matching quotes");
     fs::path child;
     try {
-      child = tree_.resolve_include(file, m[2]);
+      child = tree_.resolve_include(file, m.name);
     } catch (const Error& e) {
       throw Error(where + e.what());
     }
