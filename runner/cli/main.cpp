@@ -26,5 +26,10 @@ int main(int argc, char** argv) {
     std::cerr << "penumbra: error: " << e.what() << "\n";
     return static_cast<int>(e.code());
   }
+  // Output the user pointed at a full disk or a closed pipe is a failure, not a success.
+  if (!std::cout.flush()) {
+    std::cerr << "penumbra: error: standard output: write failed\n";
+    return static_cast<int>(pn::ExitCode::bad_input);
+  }
   return exit_code;
 }

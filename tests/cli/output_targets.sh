@@ -3,7 +3,8 @@
 # Output files that are not plain files survive: a device is written in place
 # (/dev/null accepts it, /dev/full fails with one line and exit 2), a symbolic
 # link stays a link and its target gets the output; --json into a missing
-# directory is refused before the bench runs (exit 2, seconds not minutes).
+# directory is refused before the bench runs (exit 2, seconds not minutes);
+# a command whose standard output is full fails (exit 2, one line).
 set -u
 penumbra=$1 glsl=$2 work=$3
 fail() { printf 'output_targets: %s\n' "$1"; exit 1; }
@@ -28,4 +29,10 @@ status=$?
 [ "$status" -eq 2 ] || fail "bench --json into a missing directory: expected exit 2, got $status: $out"
 printf '%s\n' "$out" | grep -q "does not exist" || fail "bench --json said: $out"
 printf '%s\n' "$out" | grep -q "backend" && fail "bench --json into a missing directory ran the bench first: $out"
+for command in "poisson --count 4" "bundle $glsl/blur.glsl" "lint $glsl/blur.glsl"; do
+  out=$("$penumbra" $command 2>&1 >/dev/full)
+  status=$?
+  [ "$status" -eq 2 ] || fail "$command > /dev/full: expected exit 2, got $status: $out"
+  printf '%s\n' "$out" | grep -q "standard output: write failed" || fail "$command > /dev/full said: $out"
+done
 echo "output_targets: ok"
