@@ -64,27 +64,32 @@ Image blur_reference(const Image& source, const BlurParams& params) {
   return out;
 }
 
-Image blur_depth_aware_reference(const Image& source, const Image& depth, const BlurParams& params) {
-  const int r = params.radius;
-  // The module defines the cut in float arithmetic on float depths; deciding
-  // it in double would move the threshold by a rounding step.
-  const float tol = static_cast<float>(params.depth_tolerance);
-  auto same_surface = [tol](float centre, float tap) {
-    if (!std::isfinite(centre) || !std::isfinite(tap)) return std::isfinite(centre) == std::isfinite(tap);
-    return std::fabs(tap - centre) <= tol * std::fabs(centre);
-  };
-  // One pass along (dx, dy): each output is the normalised sum over the taps
-  // that lie on the centre's surface (the centre always does).
+namespace {
+
+// The depth-aware cut, in float arithmetic on float depths as the module
+// defines it (deciding it in double would move the threshold by a rounding
+// step): a tap lies on the centre's surface when both are finite and within
+// tol relative, or both are not finite.
+bool same_surface(float centre, float tap, float tol) {
+  if (!std::isfinite(centre) || !std::isfinite(tap)) return std::isfinite(centre) == std::isfinite(tap);
+  return std::fabs(tap - centre) <= tol * std::fabs(centre);
+}
+
+// Two 1-D passes (x, then y): each output pixel p is the normalised Gaussian
+// sum over the taps within radius_at(p) that kept(p, tap) accepts (the centre
+// always counts).
+template <class Radius, class Kept>
+Image two_pass_blur(const Image& source, double sigma, Radius radius_at, Kept kept) {
   auto pass = [&](const Image& in, int dx, int dy) {
     Image out(in.width, in.height);
     for (int y = 0; y < in.height; ++y) {
       for (int x = 0; x < in.width; ++x) {
-        const float centre_depth = depth.at(x, y);
+        const int r = radius_at(x, y);
         double sum = 0.0, weight_sum = 0.0;
         for (int i = -r; i <= r; ++i) {
           const int qx = clamp_index(x + i * dx, in.width), qy = clamp_index(y + i * dy, in.height);
-          if (i != 0 && !same_surface(centre_depth, depth.at(qx, qy))) continue;
-          const double weight = gaussian_weight(i, params.sigma);
+          if (i != 0 && !kept(x, y, qx, qy)) continue;
+          const double weight = gaussian_weight(i, sigma);
           sum += weight * finite_or(in.at(qx, qy), kBlurNonfiniteValue);
           weight_sum += weight;
         }
@@ -94,6 +99,15 @@ Image blur_depth_aware_reference(const Image& source, const Image& depth, const 
     return out;
   };
   return pass(pass(source, 1, 0), 0, 1);
+}
+
+}  // namespace
+
+Image blur_depth_aware_reference(const Image& source, const Image& depth, const BlurParams& params) {
+  const float tol = static_cast<float>(params.depth_tolerance);
+  return two_pass_blur(
+      source, params.sigma, [&](int, int) { return params.radius; },
+      [&](int x, int y, int qx, int qy) { return same_surface(depth.at(x, y), depth.at(qx, qy), tol); });
 }
 
 int blur_adaptive_radius(float filter_side, float pixels_per_texel, int radius) {
@@ -109,32 +123,13 @@ Image blur_adaptive_reference(const Image& source, const Image& filter_map, cons
     throw Error("adaptive blur reference: expected a 4-channel filter map of the source's size");
   if (params.depth_aware && (depth == nullptr || depth->width != source.width || depth->height != source.height))
     throw Error("adaptive blur reference: the depth-aware variant expects a depth image of the source's size");
-  const float tol = static_cast<float>(params.depth_tolerance);  // the cut in float, as the module
-  auto kept = [&](int x, int y, int qx, int qy) {
-    if (!params.depth_aware) return true;
-    const float centre = depth->at(x, y), tap = depth->at(qx, qy);
-    if (!std::isfinite(centre) || !std::isfinite(tap)) return std::isfinite(centre) == std::isfinite(tap);
-    return std::fabs(tap - centre) <= tol * std::fabs(centre);
-  };
-  auto pass = [&](const Image& in, int dx, int dy) {
-    Image out(in.width, in.height);
-    for (int y = 0; y < in.height; ++y) {
-      for (int x = 0; x < in.width; ++x) {
-        const int r = blur_adaptive_radius(filter_map.at(x, y, 3), params.pixels_per_texel, params.radius);
-        double sum = 0.0, weight_sum = 0.0;
-        for (int i = -r; i <= r; ++i) {
-          const int qx = clamp_index(x + i * dx, in.width), qy = clamp_index(y + i * dy, in.height);
-          if (i != 0 && !kept(x, y, qx, qy)) continue;
-          const double weight = gaussian_weight(i, params.sigma);
-          sum += weight * finite_or(in.at(qx, qy), kBlurNonfiniteValue);
-          weight_sum += weight;
-        }
-        out.at(x, y) = static_cast<float>(sum / weight_sum);
-      }
-    }
-    return out;
-  };
-  return pass(pass(source, 1, 0), 0, 1);
+  const float tol = static_cast<float>(params.depth_tolerance);
+  return two_pass_blur(
+      source, params.sigma,
+      [&](int x, int y) { return blur_adaptive_radius(filter_map.at(x, y, 3), params.pixels_per_texel, params.radius); },
+      [&](int x, int y, int qx, int qy) {
+        return !params.depth_aware || same_surface(depth->at(x, y), depth->at(qx, qy), tol);
+      });
 }
 
 }  // namespace pn
