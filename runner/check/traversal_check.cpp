@@ -96,38 +96,30 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
   const GlObject table_texture = upload_sample_table(env.context, table);
   std::vector<CaseResult> results;
 
-  const auto run_batch = [&](const Scene& scene, const std::vector<TraversalQuery>& queries, const TraversalSettings& s) {
-    const TraversalBatch batch(env.context, queries);
-    pass.dispatch(scene.pyramid, table_texture, batch, s);
-    return batch.read();
-  };
-  const auto run_mip_batch = [&](const Scene& scene, const std::vector<TraversalQuery>& queries, const TraversalSettings& s) {
-    const TraversalBatch batch(env.context, queries);
-    pass.dispatch(TraversalStructure{nullptr, &scene.mip, &scene.depth_sums}, table_texture, batch, s);
-    return batch.read();
-  };
-  const auto recursion = [&](const Scene& scene, const std::vector<TraversalQuery>& queries, const TraversalSettings& s) {
-    std::vector<TraversalResult> out;
-    for (const TraversalQuery& q : queries)
-      out.push_back(traversal_reference(scene.depth, scene.pyramid.levels - 1, table, q.region,
-                                        {q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y}));
-    return out;
-  };
-  const auto aligned_recursion = [&](const Scene& scene, const std::vector<TraversalQuery>& queries,
-                                     const TraversalSettings& s) {
-    std::vector<TraversalResult> out;
-    for (const TraversalQuery& q : queries)
-      out.push_back(aligned_traversal_reference(
-          scene.depth, table, q.region,
-          {q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y}, s.depth_sums));
-    return out;
-  };
   // Both structures: the decreased pyramid (pnTraverseRegion) and the aligned mip chain (pnTraverseRegionMip).
   struct Structure {
     const char* label;
     bool mip;
   };
   const Structure structures[] = {{"", false}, {" mip chain", true}};
+  // The GPU's results over a structure, and the CPU recursion's decisions over the same one.
+  const auto observe = [&](const Structure& st, const Scene& scene, const std::vector<TraversalQuery>& queries,
+                           const TraversalSettings& s) {
+    const TraversalBatch batch(env.context, queries);
+    pass.dispatch(st.mip ? TraversalStructure{nullptr, &scene.mip, &scene.depth_sums} : TraversalStructure{&scene.pyramid},
+                  table_texture, batch, s);
+    return batch.read();
+  };
+  const auto recursion = [&](const Structure& st, const Scene& scene, const std::vector<TraversalQuery>& queries,
+                             const TraversalSettings& s) {
+    std::vector<TraversalResult> out;
+    for (const TraversalQuery& q : queries) {
+      const TraversalParams p{q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y};
+      out.push_back(st.mip ? aligned_traversal_reference(scene.depth, table, q.region, p, s.depth_sums)
+                           : traversal_reference(scene.depth, scene.pyramid.levels - 1, table, q.region, p));
+    }
+    return out;
+  };
 
   SeededRandom random(0x5eed0006u);
   for (const auto& fixture : fixtures::kTextureFixtures) {
@@ -157,8 +149,8 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     for (const TraversalQuery& q : queries) brute.push_back(brute_force_occluders(scene.depth, q.region, q.receiver_depth, 0.0f));
     const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
     for (const Structure& st : structures) {
-      const auto observed = st.mip ? run_mip_batch(scene, queries, exact_settings) : run_batch(scene, queries, exact_settings);
-      const auto decisions = st.mip ? aligned_recursion(scene, queries, exact_settings) : recursion(scene, queries, exact_settings);
+      const auto observed = observe(st, scene, queries, exact_settings);
+      const auto decisions = recursion(st, scene, queries, exact_settings);
       add_comparison(results, label + st.label + " leaf 1 vs brute force:", scene, brute, observed, decisions, false);
       add_comparison(results, label + st.label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
     }
@@ -178,8 +170,8 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
           s.leaf_side = leaf, s.leaf_mode = mode, s.bias = 0.001f;
           // The mip chain's other depth sums: none (Step 5) and midpoint (no table).
           s.depth_sums = leaf == 4 ? DepthSums::none : leaf == 16 ? DepthSums::midpoint : DepthSums::table;
-          const auto expected = st.mip ? aligned_recursion(scene, leaf_queries, s) : recursion(scene, leaf_queries, s);
-          const auto observed = st.mip ? run_mip_batch(scene, leaf_queries, s) : run_batch(scene, leaf_queries, s);
+          const auto expected = recursion(st, scene, leaf_queries, s);
+          const auto observed = observe(st, scene, leaf_queries, s);
           add_comparison(results,
                          label + st.label + (mode == LeafMode::sampled ? " sampled" : mode == LeafMode::min ? " min (HQEPCSS)" : " ramp") +
                              " leaves, side " + std::to_string(leaf) + ":",
@@ -194,8 +186,8 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
           TraversalSettings s;
           s.node_budget = budget;
           const std::vector<TraversalQuery> q{{{0, 0, 256, 256}, 0.5f, 0, 0}, {{10, 20, 200, 150}, 0.5f, 5, 1}};
-          const auto expected = st.mip ? aligned_recursion(scene, q, s) : recursion(scene, q, s);
-          const auto observed = st.mip ? run_mip_batch(scene, q, s) : run_batch(scene, q, s);
+          const auto expected = recursion(st, scene, q, s);
+          const auto observed = observe(st, scene, q, s);
           double worst = 0.0;
           long most_nodes = 0;
           for (size_t k = 0; k < q.size(); ++k) {
