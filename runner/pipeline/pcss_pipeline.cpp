@@ -98,7 +98,6 @@ const GlObject& made_or(const GlObject& t, const GlObject& empty) {
   return t.id() != 0 ? t : empty;
 }
 
-
 }  // namespace
 
 double PcssStats::representative_fraction() const {
