@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/error.h"
 #include "core/format.h"
 
 namespace pn {
@@ -19,7 +20,7 @@ double closeness(const CaseResult& c) {
 }  // namespace
 
 bool ModuleReport::pass() const {
-  return !cases.empty() && std::all_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.comparison.pass; });
+  return error.empty() && !cases.empty() && std::all_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.comparison.pass; });
 }
 
 const CaseResult* ModuleReport::worst() const {
@@ -39,7 +40,16 @@ std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, co
     for (const ModuleCheck& check : module_checks()) selected.push_back(&check);
   for (const std::string& name : modules) selected.push_back(&find_module_check(name));
   std::vector<ModuleReport> reports;
-  for (const ModuleCheck* check : selected) reports.push_back({check->module, check->run(env)});
+  for (const ModuleCheck* check : selected) {
+    ModuleReport report{check->module, {}, {}};
+    try {
+      report.cases = check->run(env);
+    } catch (const Error& e) {
+      if (e.code() == ExitCode::no_context) throw;
+      report.error = e.what();
+    }
+    reports.push_back(std::move(report));
+  }
   return reports;
 }
 
@@ -49,8 +59,8 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
   out << line;
   for (const ModuleReport& r : reports) {
     const CaseResult* w = r.worst();
-    std::string worst = "-";
-    if (w != nullptr) {
+    std::string worst = r.error.empty() ? "-" : "error: did not run";
+    if (w != nullptr && r.error.empty()) {
       worst = format_number("%.2e", w->comparison.worst_error) + " (" + w->tolerance.describe() + ")";
     }
     std::snprintf(line, sizeof line, "%-18s %6zu  %-34s %s\n", r.module.c_str(), r.cases.size(), worst.c_str(),
@@ -63,6 +73,14 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
         out << r.module << ": " << (c.comparison.pass ? "pass " : "FAIL ") << c.name << ": "
             << c.comparison.where(c.tolerance) << "\n";
   for (const ModuleReport& r : reports) {
+    if (!r.error.empty()) {
+      // A driver log may hold several lines: each is printed under the module's name.
+      size_t start = 0;
+      for (size_t end; (end = r.error.find('\n', start)) != std::string::npos; start = end + 1)
+        out << r.module << ": FAIL " << r.error.substr(start, end - start) << "\n";
+      if (start < r.error.size()) out << r.module << ": FAIL " << r.error.substr(start) << "\n";
+      continue;
+    }
     if (r.pass() || every_case) continue;
     size_t failing = 0;
     for (const CaseResult& c : r.cases) {

@@ -12,6 +12,7 @@ namespace pn {
 struct ModuleReport {
   std::string module;
   std::vector<CaseResult> cases;
+  std::string error;  // why the check stopped (a compile or link error, a GL error, a timeout); "" when it ran
 
   bool pass() const;
   // The failing case with the largest error, else the case closest to its bound.
@@ -19,6 +20,8 @@ struct ModuleReport {
 };
 
 // `modules` empty means every registered check. Unknown names throw Error before anything runs.
+// A check that stops on an error (its copy does not compile, the driver reports an error, a
+// dispatch times out) is reported as failing with that error, and the next check still runs.
 std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, const CheckEnvironment& env);
 
 // Table: module, cases, worst error, verdict; then, for each failing module,

@@ -1,5 +1,7 @@
 // penumbra — lint, bundle and check the GLSL soft-shadow modules.
+#include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "cli/commands.h"
 #include "core/error.h"
@@ -25,6 +27,21 @@ int main(int argc, char** argv) {
   } catch (const pn::Error& e) {
     std::cerr << "penumbra: error: " << e.what() << "\n";
     return static_cast<int>(e.code());
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the user named that the system refused: bad input, not a crash.
+    std::cerr << "penumbra: error: " << e.what() << "\n";
+    return static_cast<int>(pn::ExitCode::bad_input);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "penumbra: error: out of memory\n";
+    return static_cast<int>(pn::ExitCode::failed);
+  } catch (const std::exception& e) {
+    // Every command reports its own errors as pn::Error; reaching here is a runner bug,
+    // still reported as one line and an exit code rather than an abort.
+    std::cerr << "penumbra: error: internal error: " << e.what() << "\n";
+    return static_cast<int>(pn::ExitCode::failed);
+  } catch (...) {
+    std::cerr << "penumbra: error: internal error: unknown exception\n";
+    return static_cast<int>(pn::ExitCode::failed);
   }
   // Output the user pointed at a full disk or a closed pipe is a failure, not a success.
   if (!std::cout.flush()) {

@@ -30,7 +30,7 @@ constexpr Rgb kGreen{30, 160, 60};
 constexpr Rgb kGrid{225, 225, 225};
 
 // Source, blur (r 3, sigma 1), depth-aware blur over a step-edge depth — a checker with NaN/Inf sprinkled in.
-void blur_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+Canvas blur_figure(const Context& context, const SourceTree& tree) {
   const int n = 48, scale = 5, gap = 12;
   Image source = generate_fixture(find_fixture("checker"), n, n);
   const Image holes = generate_fixture(find_fixture("nonfinite"), n, n);
@@ -47,11 +47,11 @@ void blur_figure(const Context& context, const SourceTree& tree, const fs::path&
     canvas.grey(*image, 0, x, gap, scale, 0.0f, 1.0f, kMagenta);
     x += n * scale + gap;
   }
-  canvas.write_png(path);
+  return canvas;
 }
 
 // Levels 0, 2, 4, 6 of a boxes shadow map: min (top row) and max (bottom row), each at its true size.
-void pyramid_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+Canvas pyramid_figure(const Context& context, const SourceTree& tree) {
   const int n = 128, scale = 2, gap = 10;
   const int levels[] = {0, 2, 4, 6};
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
@@ -67,12 +67,12 @@ void pyramid_figure(const Context& context, const SourceTree& tree, const fs::pa
     canvas.grey(level, 0, x, gap, scale, 0.2f, 1.0f, kMagenta);
     canvas.grey(level, 1, x, 2 * gap + n * scale, scale, 0.2f, 1.0f, kMagenta);
   }
-  canvas.write_png(path);
+  return canvas;
 }
 
 // A 32×32 map: requested regions (red outline), the literal window (blue fill)
 // and the centred option's window (green outline).
-void region_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+Canvas region_figure(const Context& context, const SourceTree& tree) {
   const int n = 32, scale = 16, margin = 3 * scale;
   const std::vector<Query> regions{{6.5f, 7.0f, 5.0f, 0}, {21.0f, 8.0f, 9.0f, 0}, {29.0f, 27.0f, 7.0f, 0},
                                    {5.0f, 25.0f, 11.0f, 0}, {16.0f, 18.0f, 3.0f, 0}};
@@ -99,12 +99,12 @@ void region_figure(const Context& context, const SourceTree& tree, const fs::pat
     const int rs = static_cast<int>(std::lround(regions[k][2] * scale));
     canvas.outline(rx, ry, rs, rs, kRed, 2);
   }
-  canvas.write_png(path);
+  return canvas;
 }
 
 // The table: one row per group (1, 4, 16 samples), one column per set; the
 // n×n cells of each group are drawn, and every cell holds one sample.
-void sample_table_figure(const fs::path& path) {
+Canvas sample_table_figure() {
   const SampleTable table = generate_sample_table(kSampleTableSeed);
   const int box = 96, gap = 12;
   Canvas canvas(SampleTable::kSets * box + (SampleTable::kSets + 1) * gap, 3 * box + 4 * gap, kPaper);
@@ -128,13 +128,13 @@ void sample_table_figure(const fs::path& path) {
     }
     ++row;
   }
-  canvas.write_png(path);
+  return canvas;
 }
 
 // Nodes visited per receiver (one receiver per texel of a 256² boxes map, on
 // the ground, search region 32, bias 0.03 so that the sloped ground does not
 // shadow itself): leaf 1 (exact) and leaf 8 (sampled), beside the map.
-void traversal_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+Canvas traversal_figure(const Context& context, const SourceTree& tree) {
   const int n = 256, gap = 10;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
   const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(upload_float_texture(context, map), n, n, 31);
@@ -169,12 +169,12 @@ void traversal_figure(const Context& context, const SourceTree& tree, const fs::
     }
     ++column;
   }
-  canvas.write_png(path);
+  return canvas;
 }
 
 // Reuse groups on a 64×64 search-region-like map, k = 4 (Step 4) and k = 2
 // (Step 5): every group in one colour, representatives marked, tile grid in white.
-void reuse_figure(const Context& context, const SourceTree& tree, const fs::path& path) {
+Canvas reuse_figure(const Context& context, const SourceTree& tree) {
   const int n = 64, scale = 6, gap = 12;
   Image entries(n, n, 4);
   for (int y = 0; y < n; ++y)
@@ -211,25 +211,25 @@ void reuse_figure(const Context& context, const SourceTree& tree, const fs::path
     }
     ++column;
   }
-  canvas.write_png(path);
+  return canvas;
 }
 
 }  // namespace
 
 std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");
   const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png",
                                     out / "sample_table.png", out / "traversal_nodes.png", out / "reuse_groups.png",
                                     out / "pipeline_stages.png"};
-  blur_figure(context, tree, paths[0]);
-  pyramid_figure(context, tree, paths[1]);
-  region_figure(context, tree, paths[2]);
-  sample_table_figure(paths[3]);
-  traversal_figure(context, tree, paths[4]);
-  reuse_figure(context, tree, paths[5]);
-  pipeline_stages_figure(context, tree, paths[6]);
+  // Every picture is drawn before the first is written: a module that fails leaves the
+  // directory as it was (not made, if it was missing), not five new pictures beside two old ones.
+  const std::vector<Canvas> canvases{blur_figure(context, tree),      pyramid_figure(context, tree),
+                                     region_figure(context, tree),    sample_table_figure(),
+                                     traversal_figure(context, tree), reuse_figure(context, tree),
+                                     pipeline_stages_figure(context, tree)};
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");
+  for (size_t i = 0; i < paths.size(); ++i) canvases[i].write_png(paths[i]);
   return paths;
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "figures/canvas.h"
 #include "gl/context.h"
 #include "shader/source_tree.h"
 
@@ -12,11 +13,11 @@ namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
 // traversal_nodes.png, reuse_groups.png and pipeline_stages.png into `out`
-// (created if missing); returns the paths written.
+// (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
 
 // Fast PCSS's stages on the boxes scene, 256² (pipeline_figure.cpp).
-void pipeline_stages_figure(const Context& context, const SourceTree& tree, const std::filesystem::path& path);
+Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree);
 
 }  // namespace pn

@@ -12,7 +12,7 @@
 
 namespace pn {
 
-void pipeline_stages_figure(const Context& context, const SourceTree& tree, const std::filesystem::path& path) {
+Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree) {
   const int n = 256, gap = 6;
   const Scene scene = make_scene(fixtures::kScenes[0], n);
   const PcssPipeline pipeline(context, tree);
@@ -40,7 +40,7 @@ void pipeline_stages_figure(const Context& context, const SourceTree& tree, cons
   canvas.grey(sides(filter), 0, 3 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 4: filter side
   canvas.grey(read(frame.visibility, n, 1), 0, 4 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 5
   canvas.grey(read(frame.soft_shadow(), n, 1), 0, 5 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 6
-  canvas.write_png(path);
+  return canvas;
 }
 
 }  // namespace pn

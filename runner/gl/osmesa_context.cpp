@@ -8,13 +8,27 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 
 namespace pn {
 namespace {
 
+// OSMesa renders through a Gallium software driver picked by GALLIUM_DRIVER; Mesa 22
+// dereferences a null screen when the name is anything but llvmpipe or softpipe (an unknown
+// name, or a hardware driver such as zink), so any other value is refused before Mesa sees it.
+void require_software_gallium_driver() {
+  const char* driver = std::getenv("GALLIUM_DRIVER");
+  if (driver == nullptr || *driver == '\0') return;
+  const std::string name = driver;
+  if (name != "llvmpipe" && name != "softpipe")
+    throw Error("GALLIUM_DRIVER '" + name + "': OSMesa renders only with llvmpipe or softpipe");
+}
+
 class OsmesaContext final : public Context {
  public:
   OsmesaContext() : Context(Backend::osmesa) {
+    require_software_gallium_driver();
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
                               OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};

@@ -23,11 +23,19 @@ std::vector<fs::path> collect_glsl_files(const fs::path& path) {
   if (fs::is_regular_file(path, ec)) return {path};
   if (!fs::is_directory(path, ec)) throw Error("'" + path.string() + "': no such file or directory");
   std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(path, ec)) {
-    const std::string ext = entry.path().extension().string();
-    if (entry.is_regular_file() && (ext == ".glsl" || ext == ".comp" || ext == ".vert" || ext == ".frag"))
-      files.push_back(entry.path());
+  // The range-for form throws filesystem_error from operator++ on a directory it cannot
+  // read; stepping with an error code names the directory instead: the entry last seen
+  // is the one the failed step tried to descend into.
+  fs::path last = path;
+  fs::recursive_directory_iterator it(path, ec);
+  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    last = it->path();
+    const std::string ext = last.extension().string();
+    std::error_code type_ec;
+    if (it->is_regular_file(type_ec) && (ext == ".glsl" || ext == ".comp" || ext == ".vert" || ext == ".frag"))
+      files.push_back(last);
   }
+  if (ec) throw Error("directory '" + last.string() + "': cannot be read (" + ec.message() + ")");
   std::sort(files.begin(), files.end());
   return files;
 }

@@ -1,0 +1,35 @@
+#!/bin/sh
+# broken_copy_commands.sh PENUMBRA GLSL_DIR WORK_DIR
+# A copy of the modules whose blur.glsl does not compile:
+# - `check blur region` reports blur as failing with the driver's diagnostic,
+#   each line under the module's name, and still runs region (exit 1);
+# - `figures` on a copy whose reuse.glsl (the sixth of seven pictures) does not
+#   compile writes nothing: exit 1 and the output directory is not made.
+# Exit 77 (skipped) without a GL context.
+set -u
+penumbra=$1 glsl=$2 work=$3
+fail() { printf 'broken_copy_commands: %s\n' "$1"; exit 1; }
+rm -rf "$work" && mkdir -p "$work" && cp -r "$glsl" "$work/copy" || fail "cannot copy $glsl"
+perl -0pi -e 's/return exp\(-0\.5 \* t \* t\);/return exp(-0.5 * t * t) +;/' "$work/copy/blur.glsl"
+grep -q 'return exp(-0.5 \* t \* t) +;' "$work/copy/blur.glsl" || fail "could not break blur.glsl"
+
+out=$("$penumbra" check blur region --glsl-root "$work/copy" 2>&1)
+status=$?
+[ "$status" -eq 3 ] && { echo "SKIPPED: no GL context"; exit 77; }
+printf '%s\n' "$out"
+[ "$status" -eq 1 ] || fail "check: expected exit 1, got $status"
+printf '%s\n' "$out" | grep -Eq '^blur +0 +error: did not run +FAIL$' || fail "check: no failing blur row"
+printf '%s\n' "$out" | grep -Eq '^region +[0-9]+ .* pass$' || fail "check: region did not run after blur failed"
+printf '%s\n' "$out" | grep -Eq '^blur: FAIL blur\.glsl:[0-9]+: error: .*syntax error' || fail "check: no diagnostic line for blur"
+printf '%s\n' "$out" | grep -Ev '^(backend |module |blur |region |blur: FAIL )' | grep -q . &&
+  fail "check: a line of the report is not under a module's name"
+
+cp "$glsl/blur.glsl" "$work/copy/blur.glsl" && printf 'float pnBroken( {\n' >> "$work/copy/reuse.glsl" ||
+  fail "could not break reuse.glsl"
+out=$("$penumbra" figures --glsl-root "$work/copy" --out "$work/figures" 2>&1)
+status=$?
+printf '%s\n' "$out"
+[ "$status" -eq 1 ] || fail "figures: expected exit 1, got $status"
+printf '%s\n' "$out" | grep -q "reuse.glsl" || fail "figures: the error does not name reuse.glsl"
+[ -e "$work/figures" ] && fail "figures: wrote $(ls "$work/figures" | wc -l) files before failing"
+echo "broken_copy_commands: ok"
