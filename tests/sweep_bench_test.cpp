@@ -91,6 +91,7 @@ TEST_CASE("sweep setup: the defaults validate; bad settings are refused naming t
   refused([](auto& b) { b.truth_samples = 65; }, "truth samples 65: expected 1..64 per side");
   refused([](auto& b) { b.exact_up_to = 0; }, "exact up to 0: expected a light width factor > 0");
   refused([](auto& b) { b.exact_up_to = kNaN; }, "exact up to nan: expected a light width factor > 0");
-  refused([](auto& b) { b.factors.clear(); }, "sweep: no light width factors");
-  refused([](auto& b) { b.scenes.clear(); }, "sweep: no scenes");
+  refused([](auto& b) { b.factors.clear(); }, "sweep light width factors: 0 entries: expected 1..32");
+  refused([](auto& b) { b.scenes.clear(); }, "sweep scenes: 0 entries: expected 1..32");
+  refused([](auto& b) { b.sizes.assign(33, 512); }, "sweep sizes: 33 entries: expected 1..32");
 }

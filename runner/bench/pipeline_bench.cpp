@@ -3,7 +3,9 @@
 #include <iomanip>
 
 #include "bench/bench_json.h"
+#include "core/bounds.h"
 #include "core/error.h"
+#include "core/progress.h"
 #include "scene/model.h"
 #include "scene/scene.h"
 #include "technique/technique_registry.h"
@@ -24,9 +26,11 @@ std::string scene_name(const PipelineBenchSetup& setup) {
 
 void validate_pipeline_bench_setup(const PipelineBenchSetup& setup) {
   bench_scene(setup, 16);  // an unknown scene or a model file that does not load, before any GL work
+  require_list_length("pipeline sizes", setup.sizes.size());
   for (int n : setup.sizes)
     if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
-  if (setup.repeats < 1) throw Error("repeats " + std::to_string(setup.repeats) + ": expected >= 1");
+  if (setup.repeats < 1 || setup.repeats > 100)
+    throw Error("repeats " + std::to_string(setup.repeats) + ": expected 1..100");
   if (setup.truth_samples < 1 || setup.truth_samples > 64)
     throw Error("truth samples " + std::to_string(setup.truth_samples) + ": expected 1..64 per side");
 }
@@ -41,7 +45,10 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
   cs.techniques = chosen_or_default_techniques(setup.methods, bench_techniques(), own);
 
   std::vector<PipelineBenchSize> out;
+  Progress progress("bench pipeline", setup.sizes.size());
   for (int n : setup.sizes) {
+    progress.step(scene_name(setup) + " " + std::to_string(n) + ": " + std::to_string(cs.techniques.size()) +
+                  " methods, the truth");
     cs.screen_size = n;
     PipelineBenchSize s;
     s.size = n;

@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <string>
 
+#include "core/bounds.h"
 #include "core/error.h"
+#include "core/progress.h"
 #include "fixture/texture_fixture.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
@@ -15,6 +17,7 @@
 namespace pn {
 
 void validate_pyramid_bench(const std::vector<int>& sizes, int repeats, int max_level) {
+  require_list_length("pyramid sizes", sizes.size());
   for (int n : sizes) {
     validate_shadow_map_size(n, n);
     if (n > 4096) throw Error("size " + std::to_string(n) + ": expected 2..4096");
@@ -31,7 +34,9 @@ std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceT
   const SummedAreaPass sums_builder(context, tree);
   const GpuTimer timer(context);
   std::vector<PyramidBenchRow> rows;
+  Progress progress("bench pyramid", sizes.size());
   for (int n : sizes) {
+    progress.step(std::to_string(n) + "x" + std::to_string(n));
     const GlObject map = upload_float_texture(context, generate_fixture(find_fixture("noise"), n, n));
     const DepthPyramid pyramid = pyramid_builder.build(map, n, n, max_level);  // also the warm-up
     const MinMaxMipChain chain = mip_builder.allocate(n);

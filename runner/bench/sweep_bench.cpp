@@ -5,8 +5,10 @@
 #include <iomanip>
 
 #include "bench/bench_json.h"
+#include "core/bounds.h"
 #include "core/error.h"
 #include "core/format.h"
+#include "core/progress.h"
 #include "technique/technique_registry.h"
 
 namespace pn {
@@ -20,9 +22,9 @@ Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor
 }
 
 void validate_sweep_setup(const SweepBenchSetup& s) {
-  if (s.scenes.empty()) throw Error("sweep: no scenes");
-  if (s.factors.empty()) throw Error("sweep: no light width factors");
-  if (s.sizes.empty()) throw Error("sweep: no sizes");
+  require_list_length("sweep scenes", s.scenes.size());
+  require_list_length("sweep light width factors", s.factors.size());
+  require_list_length("sweep sizes", s.sizes.size());
   for (int n : s.sizes)
     if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
   if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
@@ -53,10 +55,12 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
   SweepBench bench;
   bench.exact_up_to = setup.exact_up_to;
   for (const TechniqueConfig* c : all) bench.methods.push_back(c->name());
+  Progress progress("bench sweep", setup.scenes.size() * setup.sizes.size() * setup.factors.size());
   for (const std::string& name : setup.scenes) {
     const auto& fixture = find_scene_fixture(name);
     for (int n : setup.sizes)
       for (double factor : setup.factors) {
+        progress.step(name + " " + std::to_string(n) + " x" + format_number("%g", factor));
         ComparisonSetup cs;
         cs.screen_size = n;
         cs.repeats = setup.repeats;

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/bounds.h"
 #include "core/error.h"
+#include "core/progress.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
 #include "gl/gpu_timer.h"
@@ -37,6 +39,7 @@ std::vector<TraversalQuery> ground_receivers(const Image& map, int count) {
 }  // namespace
 
 void validate_traversal_bench_setup(const TraversalBenchSetup& setup) {
+  require_list_length("traversal leaf sizes", setup.leaf_sides.size());
   if (setup.map_size < 16 || setup.map_size > 2048)
     throw Error("map size " + std::to_string(setup.map_size) + ": expected 16..2048");
   if (setup.receivers < 1 || setup.receivers > 1000000)
@@ -70,6 +73,9 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
   };
 
   std::vector<TraversalBenchRow> rows;
+  const auto leaf_1 = static_cast<size_t>(std::count(setup.leaf_sides.begin(), setup.leaf_sides.end(), 1));
+  Progress progress("bench traversal", 1 + 2 * setup.leaf_sides.size() - leaf_1);
+  progress.step("brute force, " + std::to_string(queries.size()) + " receivers");
   TraversalBenchRow brute{"brute force", 0};
   brute.gpu_ms = time_median([&] { scan.dispatch(pyramid, batch, 0.0f); });
   const std::vector<TraversalResult> exact = batch.read();
@@ -79,6 +85,7 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
   for (LeafMode mode : {LeafMode::sampled, LeafMode::min}) {
     for (int leaf : setup.leaf_sides) {
       if (mode == LeafMode::min && leaf == 1) continue;  // identical to sampled at leaf 1
+      progress.step(std::string(mode == LeafMode::sampled ? "sampled" : "min") + " leaf " + std::to_string(leaf));
       TraversalSettings settings;
       settings.leaf_side = leaf, settings.leaf_mode = mode;
       TraversalBenchRow row{std::string(mode == LeafMode::sampled ? "sampled" : "min (HQEPCSS)") + " leaf " +

@@ -6,6 +6,7 @@
 #include "bench/sweep_bench.h"
 #include "bench/traversal_bench.h"
 #include "cli/commands.h"
+#include "core/bounds.h"
 #include "core/error.h"
 #include "core/write_file.h"
 #include "technique/technique_registry.h"
@@ -46,6 +47,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->callback([opt, repeats, sizes, truth_samples, &global, &exit_code] {
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep")
       throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep");
+    if (!opt->methods.empty()) require_list_length("methods", opt->methods.size());
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
       opt->sweep.methods = opt->pipeline.methods;

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "core/write_file.h"
 #include "figures/figures.h"
 
 namespace pn::cli {
@@ -12,6 +13,7 @@ void add_figures_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--glsl-root", global.glsl_root, "Draw from the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([out, &global, &exit_code] {
+    validate_output_directory(*out);  // before the context: a bad --out is exit 2 with or without one
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     for (const auto& path : write_figures(*context, tree, *out)) std::cout << "wrote " << path.string() << "\n";

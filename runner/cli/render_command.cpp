@@ -2,6 +2,7 @@
 #include <sstream>
 
 #include "cli/commands.h"
+#include "core/bounds.h"
 #include "core/error.h"
 #include "render/render_job.h"
 #include "technique/technique_registry.h"
@@ -28,6 +29,7 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--glsl-root", global.glsl_root, "Render with the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([setup, methods, stages, &global, &exit_code] {
+    if (!methods->empty()) require_list_length("methods", methods->size());
     for (const std::string& spec : *methods) setup->methods.push_back(parse_technique(spec));
     validate_render_setup(*setup);  // bad input is reported before looking for a GL context
     const Scene scene = load_render_scene(*setup);  // and a bad model file before anything is written

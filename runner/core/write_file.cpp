@@ -29,6 +29,24 @@ void validate_output_path(const fs::path& path) {
     throw Error("output '" + path.string() + "': its directory '" + parent.string() + "' does not exist");
 }
 
+void validate_output_directory(const fs::path& directory) {
+  std::error_code ec;
+  if (directory.empty()) throw Error("output directory '': expected a directory name");
+  const fs::file_status status = fs::status(directory, ec);
+  if (fs::exists(status)) {
+    if (!fs::is_directory(status))
+      throw Error("output directory '" + directory.string() + "': is not a directory");
+    return;
+  }
+  // It will be made: its nearest existing ancestor has to be a directory.
+  fs::path ancestor = fs::absolute(directory, ec).parent_path();
+  while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
+    ancestor = ancestor.parent_path();
+  if (!fs::is_directory(ancestor, ec))
+    throw Error("output directory '" + directory.string() + "': cannot be created ('" + ancestor.string() +
+                "' is not a directory)");
+}
+
 void write_file_atomically(const fs::path& requested, const std::string& text) {
   validate_output_path(requested);
   std::error_code ec;

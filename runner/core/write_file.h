@@ -10,6 +10,11 @@ namespace pn {
 // existing directory. For commands to call before long work whose result goes there.
 void validate_output_path(const std::filesystem::path& path);
 
+// Throws Error unless `directory` is an existing directory or could be made: every missing
+// part of it lies under an existing directory. For commands that make it only once their
+// work has succeeded.
+void validate_output_directory(const std::filesystem::path& directory);
+
 // Writes `text` to `path` through a temporary file that is renamed over it,
 // so a failure leaves no partial file. A symbolic link stays a link (the file
 // it points to is replaced); an existing file that is not a regular one (a

@@ -5,8 +5,9 @@
 #include <cstdint>
 #include <utility>
 
-#include "core/query_grid.h"
 #include "core/error.h"
+#include "core/query_grid.h"
+#include "core/write_file.h"
 #include "figures/canvas.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
@@ -217,6 +218,7 @@ Canvas reuse_figure(const Context& context, const SourceTree& tree) {
 }  // namespace
 
 std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
+  validate_output_directory(out);
   const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png",
                                     out / "sample_table.png", out / "traversal_nodes.png", out / "reuse_groups.png",
                                     out / "pipeline_stages.png"};
