@@ -10,6 +10,7 @@ packages="
   libglm-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
   python3 python3-glad python3-skimage python3-matplotlib
   libembree-dev libassimp-dev assimp-testmodels fonts-dejavu-core
+  clang libfuzzer-14-dev
 "
 
 missing=""

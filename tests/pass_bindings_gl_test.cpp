@@ -30,8 +30,10 @@ TEST_CASE("pass bindings: a texture, an image and a uniform block are bound whil
 TEST_CASE("negative: a pass cannot start while an earlier one left a texture bound") {
   const pn::Context& context = gl_context();
   const pn::GlObject texture = pn::make_float_texture(context, 4, 4, 1);
-  context.gl().BindTextureUnit(5, texture.id());  // a pass that bound by hand and left it
+  context.gl().ActiveTexture(GL_TEXTURE5);  // a pass that bound by hand and left it
+  context.gl().BindTexture(GL_TEXTURE_2D, texture.id());
   CHECK_THROWS_WITH(pn::PassBindings(context), Catch::StartsWith("a pass starts with texture unit 5 (2D) still bound"));
-  context.gl().BindTextureUnit(5, 0);
+  context.gl().BindTexture(GL_TEXTURE_2D, 0);
+  context.gl().ActiveTexture(GL_TEXTURE0);
   CHECK(pn::bound_resources(context).empty());
 }

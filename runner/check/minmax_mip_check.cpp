@@ -40,14 +40,7 @@ Image expected_level(const Image& depth, int padded, int level) {
 
 Image read_level(const Context& context, const MinMaxMipChain& chain, int level) {
   const int rows = chain.padded_size >> level, width = std::max(rows / 2, 1);
-  Image image(width, rows, 4);
-  const auto& gl = context.gl();
-  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  gl.GetTextureImage(chain.texture.id(), level, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(image.texels.size() * sizeof(float)),
-                     image.texels.data());
-  context.throw_if_gl_error("reading back a mip chain level");
-  return image;
+  return read_float_texture_layer(context, chain.texture, 0, width, rows, 4, level);
 }
 
 }  // namespace

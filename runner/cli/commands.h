@@ -13,6 +13,7 @@ namespace pn::cli {
 struct GlobalOptions {
   std::string glsl_root;  // empty: the library's own glsl/
   std::string backend;    // empty: first that works
+  std::string api;        // empty: gl450
 };
 
 void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code);
@@ -28,5 +29,8 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 std::string default_glsl_root();
 std::string glsl_root_or_default(const GlobalOptions& global);
 std::optional<Backend> chosen_backend(const GlobalOptions& global);  // throws Error for an unknown name
+Api chosen_api(const GlobalOptions& global);                        // likewise; default gl450
+// Adds `--api gl450|es310` to a command that makes a context.
+void add_api_option(CLI::App& command, GlobalOptions& global);
 
 }  // namespace pn::cli

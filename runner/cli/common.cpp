@@ -13,4 +13,12 @@ std::optional<Backend> chosen_backend(const GlobalOptions& global) {
   return parse_backend(global.backend);
 }
 
+Api chosen_api(const GlobalOptions& global) { return global.api.empty() ? Api::gl450 : parse_api(global.api); }
+
+void add_api_option(CLI::App& command, GlobalOptions& global) {
+  command.add_option("--api", global.api,
+                     "gl450 (OpenGL 4.5 core, the default) | es310 (OpenGL ES 3.1 on EGL: passes compiled as "
+                     "`bundle --target es310` writes them)");
+}
+
 }  // namespace pn::cli

@@ -28,15 +28,18 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--out", setup->out, "Directory for the PNG files (default render)");
   cmd->add_option("--glsl-root", global.glsl_root, "Render with the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
+  add_api_option(*cmd, global);
   cmd->callback([setup, methods, stages, &global, &exit_code] {
     if (!methods->empty()) require_list_length("methods", methods->size());
     for (const std::string& spec : *methods) setup->methods.push_back(parse_technique(spec));
     validate_render_setup(*setup);  // bad input is reported before looking for a GL context
+    const Api api = chosen_api(global);  // an unknown API likewise
     const Scene scene = load_render_scene(*setup);  // and a bad model file before anything is written
     create_output_directory(setup->out);
     const SourceTree tree(glsl_root_or_default(global));
-    const auto context = create_context(chosen_backend(global));
-    std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << "\n";
+    const auto context = create_context(chosen_backend(global), api);
+    std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer()
+              << (api == Api::gl450 ? "" : std::string(", ") + context->version()) << "\n";
     const RenderResult result = run_render(*context, tree, *setup, scene);
     print_render_table(std::cout, *setup, result, *stages);
     for (const auto& path : result.written) std::cout << "wrote " << path.string() << "\n";

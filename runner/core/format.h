@@ -13,4 +13,8 @@ inline std::string format_number(const char* spec, double value) {
   return text;
 }
 
+// Milliseconds with two decimals, or "n/a" for NaN: a GPU time the context could not measure
+// (no timer queries, gl/gpu_timer.h).
+inline std::string format_ms(double ms) { return ms != ms ? "n/a" : format_number("%.2f", ms); }
+
 }  // namespace pn

@@ -1,10 +1,14 @@
 #include "gl/compute_program.h"
 
+#include <algorithm>
+#include <cstring>
 #include <vector>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "shader/diagnostic.h"
 #include "shader/flatten.h"
+#include "shader/loop_guard.h"
 
 namespace pn {
 namespace {
@@ -70,16 +74,88 @@ GlObject link_program(const Context& context, const std::string& name, const std
   return program;
 }
 
+namespace {
+
+// The source as compiled: under DispatchBounds, with every loop guarded.
+ShaderSource bounded_source(const Context& context, const ShaderSource& source, std::vector<GuardedLoop>& loops,
+                            GLuint& binding) {
+  if (!context.dispatch_bounds().enabled || source.stage != Stage::compute) return source;
+  GLint bindings = 0;
+  context.gl().GetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
+  binding = static_cast<GLuint>(std::max(bindings, 1) - 1);  // the last: passes number theirs from 0
+  ShaderSource guarded = source;
+  loops = guard_loops(guarded, {binding, context.dispatch_bounds().loop_iterations});
+  return guarded;
+}
+
+}  // namespace
+
 ComputeProgram::ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source)
-    : context_(&context), name_(name), program_(link_program(context, name, {&source})) {
+    : context_(&context), name_(name) {
+  const ShaderSource compiled = bounded_source(context, source, loops_, guard_binding_);
+  program_ = link_program(context, name, {&compiled});
   context.gl().GetProgramiv(program_.id(), GL_COMPUTE_WORK_GROUP_SIZE, local_size_);
+  if (context.dispatch_bounds().enabled) {
+    const auto& gl = context.gl();
+    guard_state_ = GlObject(context, GlKind::buffer);
+    const LoopGuardState zero;
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, guard_state_.id());
+    gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof zero, &zero, GL_DYNAMIC_READ);
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    context.throw_if_gl_error(name + ": the loop guard's buffer");
+  }
+}
+
+void ComputeProgram::run(const std::string& what, const std::function<void()>& issue) const {
+  const auto& gl = context_->gl();
+  const DispatchBounds& bounds = context_->dispatch_bounds();
+  if (!bounds.enabled || guard_state_.id() == 0) {
+    issue();
+    context_->throw_if_gl_error(name_ + ": " + what);
+    return;
+  }
+  const LoopGuardState zero;
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, guard_state_.id());
+  gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof zero, &zero);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, guard_binding_, guard_state_.id());
+  issue();
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, guard_binding_, 0);
+  context_->throw_if_gl_error(name_ + ": " + what);
+
+  // A driver that queues the work returns at once: the deadline is the fence's. (llvmpipe runs
+  // a dispatch inside the call; there the loop guard is what ends an endless loop.)
+  GLsync fence = gl.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  const auto timeout_ns = static_cast<GLuint64>(bounds.timeout_s * 1e9);
+  const GLenum waited = gl.ClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, timeout_ns);
+  gl.DeleteSync(fence);
+  if (waited == GL_TIMEOUT_EXPIRED)
+    throw Error(name_ + ": " + what + " did not finish within " + format_number("%g", bounds.timeout_s) + " s",
+                ExitCode::failed);
+  if (waited == GL_WAIT_FAILED) throw Error(name_ + ": " + what + ": waiting for it failed", ExitCode::failed);
+
+  LoopGuardState state;
+  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, guard_state_.id());
+  if (const void* mapped = gl.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, sizeof state, GL_MAP_READ_BIT)) {
+    std::memcpy(&state, mapped, sizeof state);
+    gl.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  }
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  context_->throw_if_gl_error(name_ + ": reading the loop guard");
+  if (state.tripped == 0) return;
+  const size_t loop = state.tripped - 1;
+  const std::string where = loop < loops_.size() ? loops_[loop].file + ":" + std::to_string(loops_[loop].line) : "?";
+  throw Error(name_ + ": " + what + ": the loop at " + where + " ran past " + std::to_string(bounds.loop_iterations) +
+                  " iterations in one invocation: an endless loop, or more work than a check allows (--loop-limit)",
+              ExitCode::failed);
 }
 
 void ComputeProgram::dispatch(int width, int height) const {
   const auto& gl = context_->gl();
   gl.UseProgram(program_.id());
   const auto groups = [](int n, GLint local) { return static_cast<GLuint>((n + local - 1) / local); };
-  gl.DispatchCompute(groups(width, local_size_[0]), groups(height, local_size_[1]), 1);
+  run("dispatch", [&] { gl.DispatchCompute(groups(width, local_size_[0]), groups(height, local_size_[1]), 1); });
   gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   context_->throw_if_gl_error(name_ + ": dispatch");
@@ -90,21 +166,24 @@ void ComputeProgram::dispatch_indirect(const GlObject& buffer) const {
   gl.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   gl.UseProgram(program_.id());
   gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffer.id());
-  gl.DispatchComputeIndirect(0);
+  run("indirect dispatch", [&] { gl.DispatchComputeIndirect(0); });
   gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   context_->throw_if_gl_error(name_ + ": indirect dispatch");
 }
 
+Target driver_target(const Context& context) { return context.is_es() ? Target::es310 : Target::gl450; }
+
 ComputeProgram compile_pass(const Context& context, const SourceTree& tree, const std::string& pass,
                             const std::vector<Define>& defines) {
-  return ComputeProgram(context, pass, standalone_source(flatten(tree, pass), Target::gl450, defines));
+  return ComputeProgram(context, pass, standalone_source(flatten(tree, pass), driver_target(context), defines));
 }
 
 GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& stem) {
-  const ShaderSource vertex = standalone_source(flatten(tree, stem + ".vert"), Target::gl450);
-  const ShaderSource fragment = standalone_source(flatten(tree, stem + ".frag"), Target::gl450);
+  const Target target = driver_target(context);
+  const ShaderSource vertex = standalone_source(flatten(tree, stem + ".vert"), target);
+  const ShaderSource fragment = standalone_source(flatten(tree, stem + ".frag"), target);
   return link_program(context, stem, {&vertex, &fragment});
 }
 

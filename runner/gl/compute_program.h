@@ -1,11 +1,13 @@
-// Programs built from flattened passes (GL 4.50 wrapper); driver diagnostics
+// Programs built from flattened passes (GL 4.50 or ES 3.10 wrapper); driver diagnostics
 // are mapped back to module files and lines.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "gl/objects.h"
+#include "shader/loop_guard.h"
 #include "shader/source_tree.h"
 #include "shader/target.h"
 
@@ -31,14 +33,27 @@ class ComputeProgram {
   GLuint id() const { return program_.id(); }
 
  private:
+  // Issues the dispatch; under the context's DispatchBounds, with the loop guard's state bound
+  // and cleared, then waits for it with the deadline and throws Error(ExitCode::failed)
+  // naming the pass on a timeout or a loop that passed the guard's limit.
+  void run(const std::string& what, const std::function<void()>& issue) const;
+
   const Context* context_;
   std::string name_;
   GlObject program_;
   GLint local_size_[3] = {1, 1, 1};
+  // Under DispatchBounds: the loops of the source (shader/loop_guard.h) and the guard's buffer.
+  std::vector<GuardedLoop> loops_;
+  GLuint guard_binding_ = 0;
+  GlObject guard_state_;
 };
 
+// The GLSL target a context's driver compiles: es310 on an OpenGL ES context, else gl450 —
+// the wrapper `penumbra bundle --target` writes.
+Target driver_target(const Context& context);
+
 // Flattens `pass` (a path under the glsl root, e.g. "passes/blur.comp") from
-// `tree`, wraps it for GL 4.50 with `defines`, and compiles it.
+// `tree`, wraps it for the context's target (driver_target) with `defines`, and compiles it.
 ComputeProgram compile_pass(const Context& context, const SourceTree& tree, const std::string& pass,
                             const std::vector<Define>& defines = {});
 

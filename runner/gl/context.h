@@ -1,7 +1,7 @@
-// A headless OpenGL 4.5 core context (SPEC §6) behind one interface, with one
-// implementation per way of getting it: EGL device platform, EGL surfaceless
-// (Mesa), OSMesa. The context owns its GL function table (glad, mx mode) and
-// turns GL debug output into errors.
+// A headless OpenGL 4.5 core context (SPEC §6) — or, asked for, an OpenGL ES 3.1
+// one — behind one interface, with one implementation per way of getting it: EGL
+// device platform, EGL surfaceless (Mesa), OSMesa (desktop GL only). The context
+// owns its GL function table (glad, mx mode) and turns GL debug output into errors.
 #pragma once
 
 #include <glad/gl.h>
@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "shader/loop_guard.h"
+
 namespace pn {
 
 enum class Backend { egl_device, egl_surfaceless, osmesa };
@@ -18,6 +20,24 @@ enum class Backend { egl_device, egl_surfaceless, osmesa };
 const char* backend_name(Backend backend);
 Backend parse_backend(const std::string& name);  // throws Error naming the accepted values
 std::vector<Backend> compiled_backends();       // in the order they are tried
+
+// The API a context speaks. The runner uses only what both have (bind-to-edit objects, compute,
+// images, SSBOs) plus one named fallback per desktop-only feature (gl/texture.h, gl/gpu_timer.h);
+// passes are compiled for the API's GLSL target (gl450 or es310, shader/target.h).
+enum class Api { gl450, es310 };
+
+const char* api_name(Api api);   // "gl450", "es310"
+const char* api_title(Api api);  // "OpenGL 4.5 core", "OpenGL ES 3.1"
+Api parse_api(const std::string& name);  // throws Error naming the accepted values
+
+// Bounds on GPU work, set by `penumbra check` (docs/reliability.md): every compute loop
+// guarded (shader/loop_guard.h) and every dispatch waited for with a deadline, so that a
+// module copy that never terminates fails its check instead of hanging the machine.
+struct DispatchBounds {
+  bool enabled = false;
+  unsigned loop_iterations = LoopGuardSettings{}.iterations;  // per loop and invocation
+  double timeout_s = 60.0;              // per dispatch
+};
 
 class Context {
  public:
@@ -27,6 +47,15 @@ class Context {
 
   const GladGLContext& gl() const { return gl_; }
   Backend backend() const { return backend_; }
+  Api api() const { return api_; }
+  bool is_es() const { return api_ == Api::es310; }
+  // Features beyond the shared subset, found by load(): GL 4.5 core has them all; an ES context
+  // has them with an extension (GL_EXT_disjoint_timer_query, GL_OES/EXT_texture_view, ES 3.2 or
+  // GL_KHR_debug).
+  bool has_timer_queries() const { return timer_queries_; }
+  bool has_texture_views() const { return texture_views_; }
+  bool has_debug_output() const { return debug_output_; }
+  bool has_extension(const std::string& name) const;
   std::string vendor() const;
   std::string renderer() const;
   std::string version() const;
@@ -35,31 +64,40 @@ class Context {
   // output reported an error since the last call; clears both.
   void throw_if_gl_error(const std::string& what) const;
 
+  // Programs compiled and dispatches issued after this call follow `bounds`.
+  void set_dispatch_bounds(const DispatchBounds& bounds) { bounds_ = bounds; }
+  const DispatchBounds& dispatch_bounds() const { return bounds_; }
+
   // Forgets pending errors that the caller reports itself (a shader compile
   // log, which the debug output would otherwise repeat).
   void discard_gl_errors() const;
 
  protected:
-  explicit Context(Backend backend) : backend_(backend) {}
-  // Loads the function table through `get_proc`, checks the version and
-  // compute support, and installs the debug callback. Throws Error on failure.
+  explicit Context(Backend backend, Api api = Api::gl450) : backend_(backend), api_(api) {}
+  // Loads the function table through `get_proc`, checks the version (4.5 core, or ES 3.1 with
+  // float render targets) and compute support, and installs the debug callback where there is
+  // debug output (else glGetError alone reports errors). Throws Error on failure.
   void load(GLADloadfunc get_proc);
 
  private:
   static void GLAD_API_PTR on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity,
                                             GLsizei length, const GLchar* message, const void* self);
+  void load_es(GLADloadfunc get_proc, int major, int minor);
   Backend backend_;
+  Api api_;
+  bool timer_queries_ = false, texture_views_ = false, debug_output_ = false;
   GladGLContext gl_{};
   mutable std::vector<std::string> debug_errors_;
+  DispatchBounds bounds_;
 };
 
-// Makes a context with the given backend, or the first that works in
+// Makes a context of `api` with the given backend, or the first that works in
 // compiled_backends() order. Throws Error(ExitCode::no_context) whose message
-// lists every backend tried and why it failed.
-std::unique_ptr<Context> create_context(std::optional<Backend> forced = std::nullopt);
+// names the API and lists every backend tried and why it failed.
+std::unique_ptr<Context> create_context(std::optional<Backend> forced = std::nullopt, Api api = Api::gl450);
 
 // Backend implementations; each throws Error with the reason it failed.
-std::unique_ptr<Context> create_egl_context(Backend backend);
-std::unique_ptr<Context> create_osmesa_context();
+std::unique_ptr<Context> create_egl_context(Backend backend, Api api = Api::gl450);
+std::unique_ptr<Context> create_osmesa_context(Api api = Api::gl450);
 
 }  // namespace pn

@@ -1,5 +1,6 @@
 // OSMesa backend: Mesa's off-screen renderer, for machines whose EGL cannot
 // give a core context. Optional at build time (Mesa 25.1 removed OSMesa).
+// Desktop GL only: OSMesa makes no OpenGL ES contexts.
 #include "core/error.h"
 #include "gl/context.h"
 
@@ -55,14 +56,17 @@ class OsmesaContext final : public Context {
 
 }  // namespace
 
-std::unique_ptr<Context> create_osmesa_context() { return std::make_unique<OsmesaContext>(); }
+std::unique_ptr<Context> create_osmesa_context(Api api) {
+  if (api != Api::gl450) throw Error("no OpenGL ES contexts");
+  return std::make_unique<OsmesaContext>();
+}
 
 }  // namespace pn
 
 #else
 
 namespace pn {
-std::unique_ptr<Context> create_osmesa_context() {
+std::unique_ptr<Context> create_osmesa_context(Api) {
   throw Error("this build has no OSMesa backend (libosmesa6-dev was not found at configure time)");
 }
 }  // namespace pn

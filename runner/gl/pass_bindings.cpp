@@ -1,5 +1,6 @@
 #include "gl/pass_bindings.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/error.h"
@@ -18,15 +19,24 @@ PassBindings::PassBindings(const Context& context) : context_(&context) {
 
 PassBindings::~PassBindings() {
   const auto& gl = context_->gl();
-  for (GLuint unit : textures_) gl.BindTextureUnit(unit, 0);
+  for (const auto& [unit, target] : textures_) {
+    gl.ActiveTexture(GL_TEXTURE0 + unit);
+    gl.BindTexture(target, 0);
+  }
+  if (!textures_.empty()) gl.ActiveTexture(GL_TEXTURE0);
   for (GLuint unit : images_) gl.BindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
   for (GLuint b : uniforms_) gl.BindBufferBase(GL_UNIFORM_BUFFER, b, 0);
   for (GLuint b : storages_) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
 }
 
+// glActiveTexture + glBindTexture (GL 4.5's glBindTextureUnit is not in ES); the active unit is
+// left at 0, where bind-to-edit (gl/texture.cpp) restores what it finds.
 void PassBindings::texture(GLuint unit, const GlObject& texture) {
-  context_->gl().BindTextureUnit(unit, texture.id());
-  textures_.push_back(unit);
+  const auto& gl = context_->gl();
+  gl.ActiveTexture(GL_TEXTURE0 + unit);
+  gl.BindTexture(texture.target(), texture.id());
+  gl.ActiveTexture(GL_TEXTURE0);
+  textures_.emplace_back(unit, texture.target());
 }
 
 void PassBindings::image(GLuint unit, const GlObject& texture, GLenum access, GLenum format, GLint level, bool layered) {
@@ -45,8 +55,7 @@ void PassBindings::storage_buffer(GLuint binding, const GlObject& buffer) {
 }
 
 void PassBindings::uniform_data(GLuint binding, const void* data, std::size_t size) {
-  GlObject buffer(*context_, GlKind::buffer);
-  context_->gl().NamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(size), data, 0);
+  GlObject buffer = make_buffer(*context_, size, data);
   uniform_buffer(binding, buffer);
   owned_.push_back(std::move(buffer));
 }
@@ -54,10 +63,17 @@ void PassBindings::uniform_data(GLuint binding, const void* data, std::size_t si
 std::vector<std::string> bound_resources(const Context& context) {
   const auto& gl = context.gl();
   constexpr GLuint kUnits = 16;
+  // Units and bindings past the context's limit do not exist (ES 3.1 asks for as few as 4 image
+  // units and 4 storage-buffer bindings); querying them would be an error.
+  const auto limit = [&](GLenum what) {
+    GLint n = 0;
+    gl.GetIntegerv(what, &n);
+    return std::min(kUnits, static_cast<GLuint>(std::max(n, 0)));
+  };
   std::vector<std::string> out;
   GLint active = 0;
   gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
-  for (GLuint unit = 0; unit < kUnits; ++unit) {
+  for (GLuint unit = 0, units = limit(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS); unit < units; ++unit) {
     gl.ActiveTexture(GL_TEXTURE0 + unit);
     for (const auto& [target, what] : {std::pair{GL_TEXTURE_BINDING_2D, " (2D)"}, {GL_TEXTURE_BINDING_2D_ARRAY, " (2D array)"}}) {
       GLint name = 0;
@@ -66,16 +82,16 @@ std::vector<std::string> bound_resources(const Context& context) {
     }
   }
   gl.ActiveTexture(static_cast<GLenum>(active));
-  const auto indexed = [&](GLenum query, const char* what) {
-    for (GLuint i = 0; i < kUnits; ++i) {
+  const auto indexed = [&](GLenum query, GLenum count, const char* what) {
+    for (GLuint i = 0, n = limit(count); i < n; ++i) {
       GLint name = 0;
       gl.GetIntegeri_v(query, i, &name);
       if (name != 0) out.push_back(std::string(what) + " " + std::to_string(i));
     }
   };
-  indexed(GL_IMAGE_BINDING_NAME, "image unit");
-  indexed(GL_UNIFORM_BUFFER_BINDING, "uniform buffer");
-  indexed(GL_SHADER_STORAGE_BUFFER_BINDING, "storage buffer");
+  indexed(GL_IMAGE_BINDING_NAME, GL_MAX_IMAGE_UNITS, "image unit");
+  indexed(GL_UNIFORM_BUFFER_BINDING, GL_MAX_UNIFORM_BUFFER_BINDINGS, "uniform buffer");
+  indexed(GL_SHADER_STORAGE_BUFFER_BINDING, GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, "storage buffer");
   return out;
 }
 

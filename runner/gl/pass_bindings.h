@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl/objects.h"
@@ -34,7 +35,8 @@ class PassBindings {
 
  private:
   const Context* context_;
-  std::vector<GLuint> textures_, images_, uniforms_, storages_;
+  std::vector<std::pair<GLuint, GLenum>> textures_;  // (unit, target)
+  std::vector<GLuint> images_, uniforms_, storages_;
   std::vector<GlObject> owned_;
 };
 

@@ -38,8 +38,9 @@ DepthPyramid DepthPyramidBuilder::build(const GlObject& shadow_map, int width, i
   pyramid.map_size = width;
   pyramid.levels = pyramid_level_count(width, max_level);
   pyramid.texture = make_float_texture_array(*context_, width, width, pyramid.levels, 4);
-  pyramid.level0 = make_texture_view_layer(*context_, pyramid.texture, 0, 4);  // immutable storage: a view
   build_into(shadow_map, pyramid);
+  // A view of the immutable storage (or, on an ES context without views, a copy of the built layer).
+  pyramid.level0 = texture_of_layer(*context_, pyramid.texture, 0, width, width, 4);
   return pyramid;
 }
 

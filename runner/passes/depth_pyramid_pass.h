@@ -15,7 +15,8 @@ struct DepthPyramid {
   int map_size = 0;
   int levels = 0;  // L + 1
   GlObject level0;  // GL_TEXTURE_2D view of layer 0 (the sanitized map, .r): a sampler2D for pcf.glsl,
-                    // poisson_pcss.glsl and the passes that call them
+                    // poisson_pcss.glsl and the passes that call them (a copy of the layer as
+                    // build() left it on an ES context without texture views)
 
   // Bytes of GPU memory: 16 · N² · levels.
   static std::size_t memory_bytes(int map_size, int levels);

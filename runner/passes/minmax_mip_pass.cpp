@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
+#include "gl/texture.h"
 #include "reference/depth_pyramid_reference.h"
 
 namespace pn::glsl {
@@ -43,10 +44,7 @@ MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
   chain.map_size = map_size;
   chain.padded_size = padded;
   chain.levels = floor_log2(padded) + 1;
-  chain.texture = GlObject(*context_, GlKind::texture, GL_TEXTURE_2D);
-  gl.TextureStorage2D(chain.texture.id(), chain.levels, GL_RGBA32F, padded / 2, padded);
-  gl.TextureParameteri(chain.texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-  gl.TextureParameteri(chain.texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  chain.texture = make_texture(*context_, GL_TEXTURE_2D, GL_RGBA32F, padded / 2, padded, 1, chain.levels);
   context_->throw_if_gl_error("allocating the min/max mip chain");
   return chain;
 }

@@ -16,27 +16,32 @@ GlObject draw_scene(const Context& context, const GlObject& program, const Scene
   const auto& gl = context.gl();
   GlObject target = make_float_texture(context, size, size, channels);
   GlObject depth(context, GlKind::renderbuffer);
-  gl.NamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, size, size);
+  gl.BindRenderbuffer(GL_RENDERBUFFER, depth.id());
+  gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, size, size);
+  gl.BindRenderbuffer(GL_RENDERBUFFER, 0);
   GlObject framebuffer(context, GlKind::framebuffer);
-  gl.NamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-  gl.NamedFramebufferRenderbuffer(framebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
-  if (gl.CheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
+  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+  if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     throw Error("framebuffer " + std::to_string(size) + "x" + std::to_string(size) + " is incomplete", ExitCode::failed);
+  }
 
+  // Bind-to-edit vertex state (GL 4.5 core and ES 3.1 alike): one tightly packed vec3 attribute.
   const std::vector<glm::vec3> vertices = scene.triangles();
-  GlObject buffer(context, GlKind::buffer);
-  gl.NamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec3)), vertices.data(), 0);
+  const GlObject buffer = make_buffer(context, vertices.size() * sizeof(glm::vec3), vertices.data());
   GlObject vertex_array(context, GlKind::vertex_array);
-  constexpr GLuint kBufferSlot = 0;  // the vertex array's one buffer binding (not a shader binding)
-  gl.VertexArrayVertexBuffer(vertex_array.id(), kBufferSlot, buffer.id(), 0, sizeof(glm::vec3));
-  gl.EnableVertexArrayAttrib(vertex_array.id(), PN_SCENE_POSITION_LOCATION);
-  gl.VertexArrayAttribFormat(vertex_array.id(), PN_SCENE_POSITION_LOCATION, 3, GL_FLOAT, GL_FALSE, 0);
-  gl.VertexArrayAttribBinding(vertex_array.id(), PN_SCENE_POSITION_LOCATION, kBufferSlot);
+  gl.BindVertexArray(vertex_array.id());
+  gl.BindBuffer(GL_ARRAY_BUFFER, buffer.id());
+  gl.EnableVertexAttribArray(PN_SCENE_POSITION_LOCATION);
+  gl.VertexAttribPointer(PN_SCENE_POSITION_LOCATION, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+  gl.BindVertexArray(0);
 
   const float one = 1.0f;
-  gl.ClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
-  gl.ClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &one);
-  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  gl.ClearBufferfv(GL_COLOR, 0, clear);
+  gl.ClearBufferfv(GL_DEPTH, 0, &one);
   gl.Viewport(0, 0, size, size);
   gl.Enable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LESS);

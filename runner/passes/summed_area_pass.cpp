@@ -34,29 +34,19 @@ GlObject make_uint4_texture(const Context& context, int width, int height) {
   if (width > max_size || height > max_size)
     throw Error("summed-area table " + std::to_string(width) + "x" + std::to_string(height) +
                 ": expected at most GL_MAX_TEXTURE_SIZE (" + std::to_string(max_size) + ") on each side");
-  GlObject texture(context, GlKind::texture, GL_TEXTURE_2D);
-  const auto& gl = context.gl();
-  gl.TextureStorage2D(texture.id(), 1, GL_RGBA32UI, width, height);
-  gl.TextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl.TextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  GlObject texture = make_texture(context, GL_TEXTURE_2D, GL_RGBA32UI, width, height);
   context.throw_if_gl_error("allocating a summed-area table");
   return texture;
 }
 
-std::vector<std::uint32_t> read_uint4_texture(const Context& context, const GlObject& texture, int width, int height) {
-  std::vector<std::uint32_t> out(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-  const auto& gl = context.gl();
-  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl.GetTextureImage(texture.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
-                     static_cast<GLsizei>(out.size() * sizeof(std::uint32_t)), out.data());
-  context.throw_if_gl_error("reading a summed-area query result");
-  return out;
-}
-
 void texture_size(const Context& context, const GlObject& texture, int& width, int& height) {
-  GLint w = 0, h = 0;
-  context.gl().GetTextureLevelParameteriv(texture.id(), 0, GL_TEXTURE_WIDTH, &w);
-  context.gl().GetTextureLevelParameteriv(texture.id(), 0, GL_TEXTURE_HEIGHT, &h);
+  GLint w = 0, h = 0, previous = 0;
+  const auto& gl = context.gl();
+  gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &previous);  // bind-to-query, then put back what was there
+  gl.BindTexture(GL_TEXTURE_2D, texture.id());
+  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+  gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
   context.throw_if_gl_error("reading a depth map's size");
   width = w, height = h;
 }

@@ -57,15 +57,13 @@ GlObject upload_disk(const Context& context, int count, std::uint32_t seed) {
   const PoissonDisk disk = poisson_disk(count, seed);
   for (size_t i = 0; i < disk.points.size() && i < PN_POISSON_MAX_SAMPLES; ++i)
     block.points[i] = {static_cast<float>(disk.points[i].x), static_cast<float>(disk.points[i].y)};
-  GlObject buffer(context, GlKind::buffer);
-  context.gl().NamedBufferStorage(buffer.id(), sizeof block, &block, 0);
-  return buffer;
+  return make_buffer(context, sizeof block, &block);
 }
 
 GlObject cleared_texture(const Context& context, int size, int channels) {
   GlObject t = make_float_texture(context, size, size, channels);
   const float zero[4] = {0, 0, 0, 0};
-  context.gl().ClearTexImage(t.id(), 0, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT, zero);
+  clear_float_texture(context, t, zero);
   return t;
 }
 
@@ -154,7 +152,6 @@ GlObject PcssPipeline::link(const GlObject& entries, int size, int tile, const P
 void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObject& entries, const GlObject* parents,
                             int tile, Estimator estimator, int samples, bool wants_depth_sums,
                             const GlObject& result) const {
-  const auto& gl = context_->gl();
   const int size = frame.size;
   block.reuseTile = parents ? tile : 0;
   block.sampleCount = samples;
@@ -209,12 +206,11 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
     }
   }
   // The work list: its header (groups x, y, z; count), and room for every pixel only when listing.
-  GlObject work(*context_, GlKind::buffer);
-  const GLsizeiptr header = 4 * sizeof(std::uint32_t);
-  const GLsizeiptr room = list ? static_cast<GLsizeiptr>(size) * size * 2 * sizeof(std::uint32_t) : 0;
-  gl.NamedBufferData(work.id(), header + room, nullptr, GL_DYNAMIC_COPY);
+  const std::size_t header = 4 * sizeof(std::uint32_t);
+  const std::size_t room = list ? static_cast<std::size_t>(size) * size * 2 * sizeof(std::uint32_t) : 0;
+  const GlObject work = make_buffer(*context_, header + room, nullptr, GL_DYNAMIC_COPY);
   const std::uint32_t start[4] = {0, 1, 1, 0};
-  gl.NamedBufferSubData(work.id(), 0, header, start);
+  write_buffer(*context_, work, 0, header, start);
   bind.storage_buffer(PN_PCSS_WORK_LIST_BINDING, work);
   bind.image(PN_PCSS_RESULT_IMAGE, result, GL_WRITE_ONLY, GL_RGBA32F);
   if (list) {

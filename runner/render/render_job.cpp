@@ -159,7 +159,7 @@ void print_render_table(std::ostream& out, const RenderSetup& setup, const Rende
   out << "scene " << result.scene_name;
   if (setup.light_scale != 1.0) out << ", light width x" << format_number("%g", setup.light_scale);
   out << ", shadow map " << setup.map_size << "x" << setup.map_size << " (source "
-      << setup.source << ", " << std::fixed << std::setprecision(2) << result.comparison.shadow_map_ms
+      << setup.source << ", " << format_ms(result.comparison.shadow_map_ms)
       << " ms), screen " << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats
       << " runs, truth " << setup.truth_samples << "x" << setup.truth_samples << " light samples\n";
   out.unsetf(std::ios::floatfield);
@@ -167,7 +167,7 @@ void print_render_table(std::ostream& out, const RenderSetup& setup, const Rende
   if (stages)
     for (const TechniqueResult& r : result.comparison.results) {
       out << r.name << ":";
-      for (const auto& [name, ms] : r.measurement.stage_ms) out << "  " << name << " " << std::fixed << std::setprecision(2) << ms;
+      for (const auto& [name, ms] : r.measurement.stage_ms) out << "  " << name << " " << format_ms(ms);
       out << "\n";
     }
   out.unsetf(std::ios::floatfield);

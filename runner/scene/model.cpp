@@ -6,10 +6,14 @@
 #include <assimp/scene.h>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "core/error.h"
 
@@ -99,19 +103,92 @@ std::vector<glm::vec3> read_triangles(const fs::path& file, const ModelLimits& l
   return out;
 }
 
+// read_triangles with every exception as an Error's message: "" when it succeeded.
+std::string read_triangles_or_message(const fs::path& file, const ModelLimits& limits, std::vector<glm::vec3>& out) {
+  try {
+    out = read_triangles(file, limits);
+    return "";
+  } catch (const Error& e) {
+    return e.what();
+  } catch (const std::exception& e) {  // Assimp's own, std::bad_alloc: never past this function
+    return model_name(file) + ": cannot be read: " + one_line(e.what());
+  } catch (...) {
+    return model_name(file) + ": cannot be read: unknown failure in Assimp";
+  }
+}
+
+bool write_all(int fd, const char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = write(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    data += n, size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// Assimp 5.2.5 (Debian 12) reads out of bounds on some malformed files: fuzz_model found a
+// 24-byte OFF file that makes it crash (docs/reliability.md, "Fuzzing"), and OSS-Fuzz lists many
+// more in its importers. So the import runs in a child process, which sends back 'T' and the
+// triangles' floats, or 'E' and the error's message: a crash inside Assimp costs the child,
+// and the parent reports the file as bad input (a hang still hangs both).
+std::vector<glm::vec3> read_triangles_in_child(const fs::path& file, const ModelLimits& limits) {
+  const std::string name = model_name(file);
+  int pipe_fds[2];
+  if (pipe(pipe_fds) != 0) throw Error(name + ": cannot be read: pipe: " + std::strerror(errno));
+  std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t parent = getpid();
+  const pid_t child = fork();
+  if (child < 0) {
+    const int error = errno;
+    close(pipe_fds[0]), close(pipe_fds[1]);
+    throw Error(name + ": cannot be read: fork: " + std::strerror(error));
+  }
+  if (child == 0) {
+    close(pipe_fds[0]);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // not left running (a hang in Assimp) when the parent dies
+    if (getppid() != parent) _exit(1);
+    std::vector<glm::vec3> triangles;
+    const std::string message = read_triangles_or_message(file, limits, triangles);
+    const bool sent = message.empty()
+                          ? write_all(pipe_fds[1], "T", 1) &&
+                                write_all(pipe_fds[1], reinterpret_cast<const char*>(triangles.data()),
+                                          triangles.size() * sizeof(glm::vec3))
+                          : write_all(pipe_fds[1], "E", 1) && write_all(pipe_fds[1], message.data(), message.size());
+    _exit(sent ? 0 : 1);  // no atexit handlers, no destructors: they belong to the parent
+  }
+  close(pipe_fds[1]);
+  std::string reply;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = read(pipe_fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    reply.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(pipe_fds[0]);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  const bool exited = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  const bool whole = !reply.empty() && (reply[0] == 'E' || (reply[0] == 'T' && (reply.size() - 1) % sizeof(glm::vec3) == 0));
+  if (!exited || !whole) {
+    const std::string how = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"
+                            : WIFEXITED(status) ? "failed (exit " + std::to_string(WEXITSTATUS(status)) + ")"
+                                                : "failed";
+    throw Error(name + ": not a mesh file Assimp can read: its importer " + how + " on it");
+  }
+  if (reply[0] == 'E') throw Error(reply.substr(1));
+  std::vector<glm::vec3> triangles((reply.size() - 1) / sizeof(glm::vec3));
+  if (!triangles.empty()) std::memcpy(triangles.data(), reply.data() + 1, reply.size() - 1);
+  return triangles;
+}
+
 }  // namespace
 
 std::vector<glm::vec3> load_model_triangles(const fs::path& file, const ModelLimits& limits) {
   check_model_file(file, limits);
-  try {
-    return read_triangles(file, limits);
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {  // Assimp's own, std::bad_alloc: never past this function
-    throw Error(model_name(file) + ": cannot be read: " + one_line(e.what()));
-  } catch (...) {
-    throw Error(model_name(file) + ": cannot be read: unknown failure in Assimp");
-  }
+  return read_triangles_in_child(file, limits);
 }
 
 std::vector<glm::vec3> place_model_on_ground(const std::vector<glm::vec3>& triangles, const fs::path& file) {

@@ -38,7 +38,8 @@ struct ModelLimits {
 
 // Every triangle of the file in its own coordinates with every node's
 // transform applied, 3 vertices each, in the file's winding; polygons are
-// triangulated, points and lines dropped. Throws Error for bad input.
+// triangulated, points and lines dropped. Throws Error for bad input. Assimp
+// runs in a child process, so a file that crashes it is bad input too.
 std::vector<glm::vec3> load_model_triangles(const std::filesystem::path& file, const ModelLimits& limits = {});
 
 // The placement rule above applied to `triangles` (any coordinates). Throws

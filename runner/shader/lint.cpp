@@ -21,6 +21,8 @@ std::string LintDiagnostic::str() const {
 std::vector<fs::path> collect_glsl_files(const fs::path& path) {
   std::error_code ec;
   if (fs::is_regular_file(path, ec)) return {path};
+  if (fs::exists(path, ec) && !fs::is_directory(path, ec))
+    throw Error("'" + path.string() + "': expected a GLSL file or a directory, found a special file");
   if (!fs::is_directory(path, ec)) throw Error("'" + path.string() + "': no such file or directory");
   std::vector<fs::path> files;
   // The range-for form throws filesystem_error from operator++ on a directory it cannot

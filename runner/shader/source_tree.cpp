@@ -51,6 +51,9 @@ fs::path SourceTree::resolve_include(const fs::path& includer, const std::string
     fs::path canonical = fs::canonical(candidate, ec);
     if (ec || !inside_root(canonical))
       throw Error("#include \"" + requested + "\": resolves outside the glsl root '" + root_.string() + "'");
+    // A directory opens and reads as an empty file: it would be included as one (fuzz_flatten).
+    if (!fs::is_regular_file(canonical, ec))
+      throw Error("#include \"" + requested + "\": expected a GLSL file, found a directory or special file");
     return canonical;
   }
   throw Error("#include \"" + requested + "\": no such file next to '" + diagnostic_path(includer) +
@@ -70,6 +73,15 @@ std::string SourceTree::diagnostic_path(const fs::path& canonical) const {
 }
 
 std::string SourceTree::read(const fs::path& canonical) const {
+  // A FIFO or a device would block or never end; a module is text of a bounded size.
+  std::error_code ec;
+  const fs::file_status status = fs::status(canonical, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw Error("'" + diagnostic_path(canonical) + "': not a regular file");
+  const auto size = fs::file_size(canonical, ec);
+  if (!ec && size > kMaxSourceBytes)
+    throw Error("'" + diagnostic_path(canonical) + "': " + std::to_string(size) + " bytes: expected a GLSL file of at most " +
+                std::to_string(kMaxSourceBytes) + " bytes");
   std::ifstream in(canonical, std::ios::binary);
   if (!in) throw Error("'" + diagnostic_path(canonical) + "': cannot be read");
   std::ostringstream text;

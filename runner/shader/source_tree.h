@@ -4,6 +4,7 @@
 // whose canonical form leaves the root.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -33,7 +34,10 @@ class SourceTree {
   // the file lies below it, absolute otherwise (so editors can jump to it).
   std::string diagnostic_path(const std::filesystem::path& canonical) const;
 
-  // Whole file contents. Throws Error when unreadable.
+  // The largest module file read (16 MiB): the library's largest is a few tens of KiB.
+  static constexpr std::uintmax_t kMaxSourceBytes = 16u << 20;
+
+  // Whole file contents. Throws Error when unreadable, not a regular file, or larger than kMaxSourceBytes.
   std::string read(const std::filesystem::path& canonical) const;
 
  private:

@@ -1,7 +1,7 @@
 #include "core/decimal.h"
 #include "shader/target.h"
 
-#include <regex>
+#include <climits>
 #include <sstream>
 
 #include "core/error.h"
@@ -30,9 +30,24 @@ Target parse_target(const std::string& name) {
 
 namespace {
 
-const std::regex& line_marker() {
-  static const std::regex re(R"(^#line (\d+) (\d+)$)");
-  return re;
+// "#line LINE FILE", both decimal: the flattener's markers. Scanned by hand, not
+// with std::regex, whose recursion per character overflowed the stack on a
+// 30,000-digit marker (docs/reliability.md, "Fuzzing").
+bool line_marker(const std::string& line, std::string* line_number = nullptr, std::string* file_number = nullptr) {
+  const auto digits = [&](size_t& i) {
+    const size_t begin = i;
+    while (i < line.size() && line[i] >= '0' && line[i] <= '9') ++i;
+    return i > begin;
+  };
+  size_t i = 6;
+  if (line.compare(0, 6, "#line ") != 0 || !digits(i)) return false;
+  const size_t first_end = i;
+  if (i >= line.size() || line[i] != ' ') return false;
+  const size_t second = ++i;
+  if (!digits(i) || i != line.size()) return false;
+  if (line_number) *line_number = line.substr(6, first_end - 6);
+  if (file_number) *file_number = line.substr(second);
+  return true;
 }
 
 }  // namespace
@@ -40,23 +55,22 @@ const std::regex& line_marker() {
 std::string ShaderSource::driver_text() const {
   std::istringstream lines(text);
   std::string out, line;
-  while (std::getline(lines, line)) out += (std::regex_match(line, line_marker()) ? "" : line) + "\n";
+  while (std::getline(lines, line)) out += (line_marker(line) ? "" : line) + "\n";
   return out;
 }
 
 std::pair<std::string, int> ShaderSource::origin_of_line(int line) const {
   std::istringstream lines(text);
-  std::string current;
+  std::string current, line_number, file_number;
   std::pair<std::string, int> next{"<wrapper>", 1}, origin{"<wrapper>", 0};
-  std::smatch m;
   for (int physical = 1; physical <= line && std::getline(lines, current); ++physical) {
-    if (std::regex_match(current, m, line_marker())) {
-      const size_t number = static_cast<size_t>(saturating_decimal(m[2]));
-      next = {number < files.size() ? files[number] : "<wrapper>", saturating_decimal(m[1])};
+    if (line_marker(current, &line_number, &file_number)) {
+      const size_t number = static_cast<size_t>(saturating_decimal(file_number));
+      next = {number < files.size() ? files[number] : "<wrapper>", saturating_decimal(line_number)};
       origin = {"<wrapper>", 0};
     } else {
       origin = next;
-      ++next.second;
+      if (next.second < INT_MAX) ++next.second;  // after `#line 2147483647`: saturate like the marker's number
     }
   }
   return origin;

@@ -5,6 +5,7 @@
 #include <iomanip>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "gl/texture.h"
 #include "passes/surface_pass.h"
 #include "technique/technique_registry.h"
@@ -99,7 +100,7 @@ void print_score_tables(std::ostream& out, const Comparison& c) {
       << "MAE exact" << "   stats\n";
   for (const TechniqueResult& r : c.results) {
     out << std::left << std::setw(kName) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(10)
-        << r.measurement.total_ms;
+        << format_ms(r.measurement.total_ms);
     score_cells(out, r.vs_truth.light_facing);
     score_cells(out, part(r.vs_exact, &Scores::light_facing));
     out << "  ";

@@ -5,6 +5,10 @@
 #   each line under the module's name, and still runs region (exit 1);
 # - `figures` on a copy whose reuse.glsl (the sixth of seven pictures) does not
 #   compile writes nothing: exit 1 and the output directory is not made.
+# - `check blur` on a copy whose blur weights run a doubly nested endless loop fails
+#   within its --gpu-timeout (here 20 s; the loop guard ends it long before),
+#   naming the pass, the file and the line of the loop (llvmpipe used to delete
+#   or cap the loop, and the check passed).
 # Exit 77 (skipped) without a GL context.
 set -u
 penumbra=$1 glsl=$2 work=$3
@@ -32,4 +36,17 @@ printf '%s\n' "$out"
 [ "$status" -eq 1 ] || fail "figures: expected exit 1, got $status"
 printf '%s\n' "$out" | grep -q "reuse.glsl" || fail "figures: the error does not name reuse.glsl"
 [ -e "$work/figures" ] && fail "figures: wrote $(ls "$work/figures" | wc -l) files before failing"
+cp "$glsl/reuse.glsl" "$work/copy/reuse.glsl" || fail "could not restore reuse.glsl"
+perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1  int i = 0;\n  while (i < 10) {\n    int j = 0;\n    while (j < 10) {\n      sigma = sigma * 1.0000001 + 1e-30;\n    }\n    i++;\n  }\n/' "$work/copy/blur.glsl"
+line=$(grep -n '    while (j < 10) {' "$work/copy/blur.glsl" | cut -d: -f1)
+[ -n "$line" ] || fail "could not put the endless loop into blur.glsl"
+start=$(date +%s)
+out=$(timeout 120 "$penumbra" check blur --glsl-root "$work/copy" --gpu-timeout 20 2>&1)
+status=$?
+seconds=$(( $(date +%s) - start ))
+printf '%s\n' "$out"
+[ "$status" -eq 1 ] || fail "endless loop: expected exit 1, got $status after $seconds s"
+[ "$seconds" -le 30 ] || fail "endless loop: took $seconds s"
+printf '%s\n' "$out" | grep -q "^blur: FAIL passes/blur.comp: dispatch: the loop at blur.glsl:$line ran past 65000 iterations" ||
+  fail "endless loop: no message naming the pass and blur.glsl:$line"
 echo "broken_copy_commands: ok"

@@ -4,7 +4,8 @@
 # (/dev/null accepts it, /dev/full fails with one line and exit 2), a symbolic
 # link stays a link and its target gets the output; --json into a missing
 # directory is refused before the bench runs (exit 2, seconds not minutes);
-# a command whose standard output is full fails (exit 2, one line).
+# a command whose standard output is full fails (exit 2, one line); a FIFO
+# given as a module is refused, not read until it closes.
 set -u
 penumbra=$1 glsl=$2 work=$3
 fail() { printf 'output_targets: %s\n' "$1"; exit 1; }
@@ -34,5 +35,13 @@ for command in "poisson --count 4" "bundle $glsl/blur.glsl" "lint $glsl/blur.gls
   status=$?
   [ "$status" -eq 2 ] || fail "$command > /dev/full: expected exit 2, got $status: $out"
   printf '%s\n' "$out" | grep -q "standard output: write failed" || fail "$command > /dev/full said: $out"
+done
+# A FIFO as input never blocks: lint and bundle refuse it (exit 2, one line).
+mkfifo "$work/fifo.glsl" || fail "cannot make a FIFO"
+for command in lint bundle; do
+  out=$(timeout 20 "$penumbra" $command "$work/fifo.glsl" 2>&1)
+  status=$?
+  [ "$status" -eq 2 ] || fail "$command of a FIFO: expected exit 2, got $status: $out"
+  printf '%s\n' "$out" | grep -q "special file" || fail "$command of a FIFO said: $out"
 done
 echo "output_targets: ok"

@@ -1,0 +1,295 @@
+#include "shader/loop_guard.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace pn {
+namespace {
+
+bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+// The index just past the comment starting at `i`, or `i` when none starts there.
+size_t skip_comment(const std::string& s, size_t i) {
+  if (s.compare(i, 2, "//") == 0) {
+    const size_t end = s.find('\n', i);
+    return end == std::string::npos ? s.size() : end;
+  }
+  if (s.compare(i, 2, "/*") == 0) {
+    const size_t end = s.find("*/", i + 2);
+    return end == std::string::npos ? s.size() : end + 2;
+  }
+  return i;
+}
+
+size_t skip_space(const std::string& s, size_t i) {
+  while (i < s.size()) {
+    if (std::isspace(static_cast<unsigned char>(s[i])) != 0) ++i;
+    else if (const size_t after = skip_comment(s, i); after != i) i = after;
+    else break;
+  }
+  return i;
+}
+
+// For the '(' at `open`: the index of its ')' and of the ';' at its own depth inside it.
+struct Parens {
+  size_t close = std::string::npos;
+  std::vector<size_t> semicolons;
+};
+
+Parens match_parens(const std::string& s, size_t open) {
+  Parens p;
+  int depth = 0;
+  for (size_t i = open; i < s.size();) {
+    if (const size_t after = skip_comment(s, i); after != i) {
+      i = after;
+      continue;
+    }
+    if (s[i] == '(') ++depth;
+    else if (s[i] == ')' && --depth == 0) {
+      p.close = i;
+      return p;
+    } else if (s[i] == ';' && depth == 1) p.semicolons.push_back(i);
+    ++i;
+  }
+  return p;
+}
+
+std::string trimmed(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\n\r"), b = s.find_last_not_of(" \t\n\r");
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+bool is_identifier(const std::string& s) {
+  return !s.empty() && std::isdigit(static_cast<unsigned char>(s[0])) == 0 &&
+         std::all_of(s.begin(), s.end(), identifier_char);
+}
+
+// A compile-time constant as modules write bounds: integer literals, ALL_CAPS macro names,
+// `NAME.length()`, + - * / and parentheses.
+bool is_constant_bound(const std::string& e) {
+  if (trimmed(e).empty()) return false;
+  for (size_t i = 0; i < e.size();) {
+    const char c = e[i];
+    if (std::isupper(static_cast<unsigned char>(c)) != 0 || c == '_') {
+      while (i < e.size() && (std::isupper(static_cast<unsigned char>(e[i])) != 0 ||
+                              std::isdigit(static_cast<unsigned char>(e[i])) != 0 || e[i] == '_'))
+        ++i;
+      if (e.compare(i, 9, ".length()") == 0) i += 9;
+    } else if (std::isdigit(static_cast<unsigned char>(c)) != 0 || std::string(" \t+-*/()u").find(c) != std::string::npos) {
+      ++i;
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The identifier that ends just before `end` (spaces skipped), or "".
+std::string identifier_before(const std::string& s, size_t end) {
+  size_t b = end;
+  while (b > 0 && std::isspace(static_cast<unsigned char>(s[b - 1])) != 0) --b;
+  size_t a = b;
+  while (a > 0 && identifier_char(s[a - 1])) --a;
+  return s.substr(a, b - a);
+}
+
+// The call whose argument list holds position `at`: its name and which argument `at` is in
+// (commas at the call's own depth before it); name "" outside any call.
+struct CallArgument {
+  std::string name;
+  int index = 0;
+};
+
+CallArgument enclosing_call(const std::string& s, size_t at) {
+  int depth = 0, commas = 0;
+  for (size_t i = at; i-- > 0;) {
+    if (s[i] == ')') ++depth;
+    else if (s[i] == ',' && depth == 0) ++commas;
+    else if (s[i] == '(' && depth-- == 0) return {identifier_before(s, i), commas};
+  }
+  return {};
+}
+
+// Arguments a call may write: each out or inout parameter of the source's functions, by
+// position, and every argument of the built-ins that have one (index -1).
+std::vector<CallArgument> written_arguments(const std::string& s) {
+  std::vector<CallArgument> written;
+  for (const char* builtin : {"modf", "frexp", "uaddCarry", "usubBorrow", "umulExtended", "imulExtended"})
+    written.push_back({builtin, -1});
+  for (const char* keyword : {"out", "inout"}) {
+    const std::string k = keyword;
+    for (size_t at = s.find(k); at != std::string::npos; at = s.find(k, at + 1)) {
+      if ((at > 0 && identifier_char(s[at - 1])) || (at + k.size() < s.size() && identifier_char(s[at + k.size()])))
+        continue;
+      const size_t before = s.find_last_not_of(" \t\n\r", at == 0 ? 0 : at - 1);
+      if (at == 0 || before == std::string::npos || (s[before] != '(' && s[before] != ',')) continue;
+      const CallArgument parameter = enclosing_call(s, at);
+      if (!parameter.name.empty()) written.push_back(parameter);
+    }
+  }
+  return written;
+}
+
+// Whether `body` may change `name`: an assignment, ++ or -- of it, or an argument that a
+// call may write (`written`).
+bool may_change(const std::string& body, const std::string& name, const std::vector<CallArgument>& written) {
+  for (size_t at = body.find(name); at != std::string::npos; at = body.find(name, at + 1)) {
+    if (at > 0 && identifier_char(body[at - 1])) continue;
+    const size_t end = at + name.size();
+    if (end < body.size() && identifier_char(body[end])) continue;
+    const size_t last = body.find_last_not_of(" \t\n\r", at == 0 ? 0 : at - 1);
+    if (at > 0 && last != std::string::npos && last >= 1 &&
+        (body.compare(last - 1, 2, "++") == 0 || body.compare(last - 1, 2, "--") == 0))
+      return true;
+    const size_t next = body.find_first_not_of(" \t\n\r", end);
+    if (next == std::string::npos) continue;
+    const std::string op = body.substr(next, 2);
+    if (op == "++" || op == "--" || (op[0] == '=' && op != "==")) return true;
+    if (op.size() == 2 && op[1] == '=' && std::string("+-*/%&|^").find(op[0]) != std::string::npos) return true;
+    if ((op == "<<" || op == ">>") && body.compare(next + 2, 1, "=") == 0) return true;
+    if (op[0] == ',' || op[0] == ')') {  // a bare argument: written if that parameter is out or inout
+      const CallArgument call = enclosing_call(body, at);
+      for (const CallArgument& w : written)
+        if (w.name == call.name && (w.index < 0 || w.index == call.index)) return true;
+    }
+  }
+  return false;
+}
+
+// `for (T i = A; i < B; ++i) body` with B a compile-time constant, a step of ++i, i++ or
+// i += a positive literal, and a body that does not touch i: at most B - A iterations by
+// construction. Such loops stay as they are, so that the compiler still unrolls them (a
+// guarded loop is not unrolled, and llvmpipe caps each loop's iterations at 65535).
+bool bounded_by_construction(const std::string& s, size_t open, const Parens& p,
+                             const std::vector<CallArgument>& written) {
+  const std::string init = s.substr(open + 1, p.semicolons[0] - open - 1);
+  const std::string condition = trimmed(s.substr(p.semicolons[0] + 1, p.semicolons[1] - p.semicolons[0] - 1));
+  const std::string step = trimmed(s.substr(p.semicolons[1] + 1, p.close - p.semicolons[1] - 1));
+  const size_t eq = init.find('=');
+  if (eq == std::string::npos) return false;
+  const std::string declared = trimmed(init.substr(0, eq));
+  const size_t space = declared.find_last_of(" \t");
+  const std::string name = space == std::string::npos ? declared : declared.substr(space + 1);
+  if (!is_identifier(name)) return false;
+  const size_t less = condition.find('<');
+  if (less == std::string::npos || trimmed(condition.substr(0, less)) != name) return false;
+  const size_t bound = condition.compare(less, 2, "<=") == 0 ? less + 2 : less + 1;
+  if (!is_constant_bound(condition.substr(bound))) return false;
+  bool step_ok = step == "++" + name || step == name + "++";
+  if (!step_ok && step.compare(0, name.size(), name) == 0) {
+    const std::string rest = trimmed(step.substr(name.size()));
+    if (rest.compare(0, 2, "+=") == 0) {
+      const std::string amount = trimmed(rest.substr(2));
+      step_ok = !amount.empty() && std::all_of(amount.begin(), amount.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }) &&
+                std::stoul(amount.substr(0, 9)) > 0;
+    }
+  }
+  if (!step_ok) return false;
+  // The body: a braced block, or one simple statement (a nested loop or branch counts as unknown).
+  const size_t first = skip_space(s, p.close + 1);
+  if (first >= s.size()) return false;
+  size_t end = std::string::npos;
+  if (s[first] == '{') {
+    int depth = 0;
+    for (size_t i = first; i < s.size();) {
+      if (const size_t after = skip_comment(s, i); after != i) {
+        i = after;
+        continue;
+      }
+      if (s[i] == '{') ++depth;
+      else if (s[i] == '}' && --depth == 0) {
+        end = i;
+        break;
+      }
+      ++i;
+    }
+  } else {
+    size_t word_end = first;
+    while (word_end < s.size() && identifier_char(s[word_end])) ++word_end;
+    const std::string word = s.substr(first, word_end - first);
+    if (word == "for" || word == "while" || word == "do" || word == "if" || word == "switch") return false;
+    end = s.find(';', first);
+  }
+  if (end == std::string::npos) return false;
+  return !may_change(s.substr(first, end - first + 1), name, written);
+}
+
+struct Insertion {
+  size_t at;
+  std::string text;
+};
+
+std::string guard_call(size_t id) { return "pnLoopGuard(" + std::to_string(id) + "u)"; }
+
+// One counter per loop, so that the limit reads as llvmpipe's own cap does: a loop's
+// iterations summed over all its entries in one invocation.
+std::string guard_prelude(const LoopGuardSettings& settings, size_t loops) {
+  const std::string limit = std::to_string(settings.iterations) + "u";
+  const std::string n = std::to_string(std::max<size_t>(loops, 1));
+  std::string zeros;
+  for (size_t k = 0; k < std::max<size_t>(loops, 1); ++k) zeros += k == 0 ? "0u" : ", 0u";
+  return "layout(std430, binding = " + std::to_string(settings.binding) +
+         ") coherent buffer PnLoopGuardState { uint pnLoopGuardTripped; uint pnLoopGuardSpare; };\n"
+         "uint pnLoopGuardCounts[" + n + "] = uint[" + n + "](" + zeros + ");\n"
+         "bool pnLoopGuard(uint loop) {\n"
+         "  pnLoopGuardCounts[loop] += 1u;\n"
+         "  if (pnLoopGuardCounts[loop] <= " + limit + " && pnLoopGuardTripped == 0u) return true;\n"
+         "  if (pnLoopGuardCounts[loop] > " + limit + ") atomicCompSwap(pnLoopGuardTripped, 0u, loop + 1u);\n"
+         "  return false;\n"
+         "}\n";
+}
+
+}  // namespace
+
+std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettings& settings) {
+  std::string& s = source.text;
+  // The prelude goes before the first #line marker: lines up to there map to "<wrapper>".
+  size_t start = s.find("\n#line ");
+  start = start == std::string::npos ? s.size() : start + 1;
+
+  std::vector<Insertion> edits;
+  std::vector<GuardedLoop> loops;
+  const std::vector<CallArgument> written = written_arguments(s);
+  for (size_t i = start; i < s.size();) {
+    if (const size_t after = skip_comment(s, i); after != i) {
+      i = after;
+      continue;
+    }
+    if (!identifier_char(s[i])) {
+      ++i;
+      continue;
+    }
+    size_t end = i;
+    while (end < s.size() && identifier_char(s[end])) ++end;
+    const std::string word = s.substr(i, end - i);
+    const size_t keyword = i;
+    i = end;
+    if (word != "for" && word != "while") continue;
+    const size_t open = skip_space(s, end);
+    if (open >= s.size() || s[open] != '(') continue;
+    const Parens parens = match_parens(s, open);
+    if (parens.close == std::string::npos) continue;  // the compiler reports the syntax error
+    const size_t id = loops.size();
+    if (word == "while") {
+      edits.push_back({open + 1, guard_call(id) + " && ("});
+      edits.push_back({parens.close, ")"});
+    } else {
+      if (parens.semicolons.size() != 2) continue;  // not a for header the compiler accepts
+      if (bounded_by_construction(s, open, parens, written)) continue;
+      const size_t from = parens.semicolons[0] + 1, to = parens.semicolons[1];
+      const bool empty = skip_space(s, from) >= to;
+      edits.push_back({from, " " + guard_call(id) + (empty ? "" : " && (")});
+      if (!empty) edits.push_back({to, ")"});
+    }
+    const int line = static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(keyword), '\n')) + 1;
+    const auto [file, file_line] = source.origin_of_line(line);
+    loops.push_back({file, file_line});
+  }
+  // Back to front, so that each insertion leaves the earlier positions valid.
+  std::stable_sort(edits.begin(), edits.end(), [](const Insertion& a, const Insertion& b) { return a.at > b.at; });
+  for (const Insertion& e : edits) s.insert(e.at, e.text);
+  s.insert(start, guard_prelude(settings, loops.size()));
+  return loops;
+}
+
+}  // namespace pn

@@ -1,0 +1,121 @@
+// The loop guard's rewrite (shader/loop_guard.h): every for/while condition
+// prefixed, nothing else touched, each loop's file and line, and the result
+// still a valid shader for every target glslang knows.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+#include "shader/glslang_compiler.h"
+#include "shader/loop_guard.h"
+
+namespace {
+
+pn::ShaderSource wrapped(const std::string& body, pn::Target target = pn::Target::gl450) {
+  pn::FlatSource flat;
+  flat.text = "#line 1 0\n" + body;
+  flat.files = {"m.glsl"};
+  flat.has_main = true;  // no entry point appended: the text ends where the module does
+  return pn::standalone_source(flat, target);
+}
+
+// The text after the guard's prelude (the part the rewrite edits loop by loop).
+std::string after_prelude(const pn::ShaderSource& s) { return s.text.substr(s.text.find("\n#line 1 0\n") + 1); }
+
+}  // namespace
+
+TEST_CASE("the loop guard prefixes every loop condition and records where each loop is") {
+  const std::string body =
+      "uint f(uint n) {\n"                                        // line 1
+      "  uint s = 0u;\n"                                          // 2
+      "  for (uint i = 0u; i < n; ++i) s += i;\n"                 // 3
+      "  while (s > 7u) { s -= 3u; }\n"                           // 4
+      "  do { s += 1u; } while ((s & 1u) == 0u);\n"               // 5
+      "  for (;;) { if (s > 0u) break; }\n"                       // 6
+      "  // while (comment) for (;;)\n"                           // 7
+      "  /* for (uint j = 0u; j < 4u; ++j) */ uint whiley = 0u;\n"  // 8
+      "  for (uint k = 0u; k < min(n, 4u); k++)\n"                // 9
+      "    while (whiley < k) whiley++;\n"                        // 10
+      "  return s + whiley;\n"
+      "}\n";
+  pn::ShaderSource source = wrapped(body);
+  const std::vector<pn::GuardedLoop> loops = pn::guard_loops(source, {7, 1000});
+  CHECK(after_prelude(source) ==
+        "#line 1 0\n"
+        "uint f(uint n) {\n"
+        "  uint s = 0u;\n"
+        "  for (uint i = 0u; pnLoopGuard(0u) && ( i < n); ++i) s += i;\n"
+        "  while (pnLoopGuard(1u) && (s > 7u)) { s -= 3u; }\n"
+        "  do { s += 1u; } while (pnLoopGuard(2u) && ((s & 1u) == 0u));\n"
+        "  for (; pnLoopGuard(3u);) { if (s > 0u) break; }\n"
+        "  // while (comment) for (;;)\n"
+        "  /* for (uint j = 0u; j < 4u; ++j) */ uint whiley = 0u;\n"
+        "  for (uint k = 0u; pnLoopGuard(4u) && ( k < min(n, 4u)); k++)\n"
+        "    while (pnLoopGuard(5u) && (whiley < k)) whiley++;\n"
+        "  return s + whiley;\n"
+        "}\n");
+  std::vector<int> lines;
+  for (const pn::GuardedLoop& l : loops) {
+    CHECK(l.file == "m.glsl");
+    lines.push_back(l.line);
+  }
+  CHECK(lines == std::vector<int>{3, 4, 5, 6, 9, 10});
+  CHECK(source.text.find("binding = 7") != std::string::npos);
+  CHECK(source.text.find("1000u") != std::string::npos);
+  // The rewrite adds no line: every line of the module keeps its number.
+  const std::string guarded = after_prelude(source), plain = after_prelude(wrapped(body));
+  CHECK(std::count(guarded.begin(), guarded.end(), '\n') == std::count(plain.begin(), plain.end(), '\n'));
+  const auto at = static_cast<std::ptrdiff_t>(source.text.find("while (pnLoopGuard(1u)"));
+  const int physical = static_cast<int>(std::count(source.text.begin(), source.text.begin() + at, '\n')) + 1;
+  CHECK(source.origin_of_line(physical) == std::pair<std::string, int>{"m.glsl", 4});
+}
+
+TEST_CASE("a guarded shader compiles for gl450, vulkan and es310") {
+  const std::string body =
+      "layout(local_size_x = 1) in;\n"
+      "layout(std430, binding = 0) buffer Out { uint result; };\n"
+      "void main() {\n"
+      "  uint s = 0u;\n"
+      "  for (uint i = 0u; i < 10u; ++i) { uint j = 0u; while (j < i) { s += j; j++; } }\n"
+      "  do { s >>= 1u; } while (s > 100u);\n"
+      "  result = s;\n"
+      "}\n";
+  const pn::GlslangProcess process;
+  for (pn::Target target : pn::all_targets()) {
+    pn::FlatSource flat;
+    flat.text = "#line 1 0\n" + body;
+    flat.files = {"m.comp"};
+    flat.has_main = true;
+    pn::ShaderSource source = pn::standalone_source(flat, target);
+    CHECK(pn::guard_loops(source, {5, 1u << 22}).size() == 2);  // the while and the do; the for has a constant bound
+    const pn::CompileResult compiled = pn::compile_with_glslang(process, source, target);
+    INFO(pn::target_name(target) << ":\n" << source.text);
+    for (const auto& d : compiled.diagnostics) INFO(d.str());
+    CHECK(compiled.ok);
+  }
+}
+
+TEST_CASE("only for loops bounded by construction stay unguarded") {
+  const auto guarded = [](const std::string& loop) {
+    pn::ShaderSource source = wrapped("void bump(inout int x) { x = 0; }\nvoid add(inout int s, int x) { s += x; }\nint f(int n) {\n  int s = 0;\n  " + loop +
+                                      "\n  return s;\n}\n");
+    return !pn::guard_loops(source, {0, 100}).empty();
+  };
+  // At most B - A iterations whatever the body computes:
+  CHECK_FALSE(guarded("for (int i = 0; i < 8; ++i) s += i;"));
+  CHECK_FALSE(guarded("for (int i = 0; i <= PN_MAX_TAPS; i++) { s += i * 2; }"));
+  CHECK_FALSE(guarded("for (int i = 0; i < 2 * (PN_TILE - 1); i += 4) { s += min(i, 3); }"));
+  CHECK_FALSE(guarded("for (int i = 0; i < PN_DISK.length(); ++i) s += i == 3 ? 1 : 0;"));
+  CHECK_FALSE(guarded("for (int i = 0; i < 8; ++i) { add(s, i); }"));  // an in argument of a call with an inout one
+  // Anything else may not end:
+  CHECK(guarded("for (int i = 0; i < n; ++i) s += i;"));            // a bound known only at run time
+  CHECK(guarded("for (int i = 0; i < 8; i += 0) s += i;"));         // a step that does not step
+  CHECK(guarded("for (int i = 0; i < 8; i += PN_STEP) s += i;"));   // a step a copy may define as 0
+  CHECK(guarded("for (int i = 0; i < 8; ++i) { i -= 1; }"));       // the body moves the counter back
+  CHECK(guarded("for (int i = 0; i < 8; ++i) { --i; }"));
+  CHECK(guarded("for (int i = 0; i < 8; ++i) { bump(i); }"));      // an inout argument
+  CHECK(guarded("for (int i = 0; i < 8; ++i) { add(i, 1); }"));
+  CHECK(guarded("for (int i = 0; i < 8; ++i) { float f = modf(1.5, i); }"));
+  CHECK(guarded("for (int i = 0; i < 8; ++i) for (;;) s++;"));     // a nested loop as the body
+  CHECK(guarded("for (int i = 0; i > -8; --i) s += i;"));
+  CHECK(guarded("while (s < 8) s += 1;"));
+}
