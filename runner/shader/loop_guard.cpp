@@ -30,28 +30,30 @@ size_t skip_space(const std::string& s, size_t i) {
   return i;
 }
 
-// For the '(' at `open`: the index of its ')' and of the ';' at its own depth inside it.
-struct Parens {
+// For the bracket at `open` ('(' or '{'): the index of the one that closes it, and of each
+// ';' at its own depth inside it (a for header's two).
+struct Bracketed {
   size_t close = std::string::npos;
   std::vector<size_t> semicolons;
 };
 
-Parens match_parens(const std::string& s, size_t open) {
-  Parens p;
+Bracketed match_bracket(const std::string& s, size_t open) {
+  const char opening = s[open], closing = opening == '(' ? ')' : '}';
+  Bracketed b;
   int depth = 0;
   for (size_t i = open; i < s.size();) {
     if (const size_t after = skip_comment(s, i); after != i) {
       i = after;
       continue;
     }
-    if (s[i] == '(') ++depth;
-    else if (s[i] == ')' && --depth == 0) {
-      p.close = i;
-      return p;
-    } else if (s[i] == ';' && depth == 1) p.semicolons.push_back(i);
+    if (s[i] == opening) ++depth;
+    else if (s[i] == closing && --depth == 0) {
+      b.close = i;
+      return b;
+    } else if (s[i] == ';' && depth == 1) b.semicolons.push_back(i);
     ++i;
   }
-  return p;
+  return b;
 }
 
 std::string trimmed(const std::string& s) {
@@ -160,7 +162,7 @@ bool may_change(const std::string& body, const std::string& name, const std::vec
 // i += a positive literal, and a body that does not touch i: at most B - A iterations by
 // construction. Such loops stay as they are, so that the compiler still unrolls them (a
 // guarded loop is not unrolled, and llvmpipe caps each loop's iterations at 65535).
-bool bounded_by_construction(const std::string& s, size_t open, const Parens& p,
+bool bounded_by_construction(const std::string& s, size_t open, const Bracketed& p,
                              const std::vector<CallArgument>& written) {
   const std::string init = s.substr(open + 1, p.semicolons[0] - open - 1);
   const std::string condition = trimmed(s.substr(p.semicolons[0] + 1, p.semicolons[1] - p.semicolons[0] - 1));
@@ -190,19 +192,7 @@ bool bounded_by_construction(const std::string& s, size_t open, const Parens& p,
   if (first >= s.size()) return false;
   size_t end = std::string::npos;
   if (s[first] == '{') {
-    int depth = 0;
-    for (size_t i = first; i < s.size();) {
-      if (const size_t after = skip_comment(s, i); after != i) {
-        i = after;
-        continue;
-      }
-      if (s[i] == '{') ++depth;
-      else if (s[i] == '}' && --depth == 0) {
-        end = i;
-        break;
-      }
-      ++i;
-    }
+    end = match_bracket(s, first).close;
   } else {
     size_t word_end = first;
     while (word_end < s.size() && identifier_char(s[word_end])) ++word_end;
@@ -267,7 +257,7 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
     if (word != "for" && word != "while") continue;
     const size_t open = skip_space(s, end);
     if (open >= s.size() || s[open] != '(') continue;
-    const Parens parens = match_parens(s, open);
+    const Bracketed parens = match_bracket(s, open);
     if (parens.close == std::string::npos) continue;  // the compiler reports the syntax error
     const size_t id = loops.size();
     if (word == "while") {
