@@ -1,7 +1,6 @@
 #include "gl/compute_program.h"
 
 #include <algorithm>
-#include <cstring>
 #include <vector>
 
 #include "core/error.h"
@@ -96,28 +95,17 @@ ComputeProgram::ComputeProgram(const Context& context, const std::string& name, 
   program_ = link_program(context, name, {&compiled});
   context.gl().GetProgramiv(program_.id(), GL_COMPUTE_WORK_GROUP_SIZE, local_size_);
   if (context.dispatch_bounds().enabled) {
-    const auto& gl = context.gl();
-    guard_state_ = GlObject(context, GlKind::buffer);
     const LoopGuardState zero;
-    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, guard_state_.id());
-    gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof zero, &zero, GL_DYNAMIC_READ);
-    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    context.throw_if_gl_error(name + ": the loop guard's buffer");
+    guard_state_ = make_buffer(context, sizeof zero, &zero, GL_DYNAMIC_READ);
   }
 }
 
 void ComputeProgram::run(const std::string& what, const std::function<void()>& issue) const {
   const auto& gl = context_->gl();
   const DispatchBounds& bounds = context_->dispatch_bounds();
-  if (!bounds.enabled || guard_state_.id() == 0) {
-    issue();
-    context_->throw_if_gl_error(name_ + ": " + what);
-    return;
-  }
+  if (!bounds.enabled || guard_state_.id() == 0) return issue();  // the caller checks for GL errors
   const LoopGuardState zero;
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, guard_state_.id());
-  gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof zero, &zero);
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  write_buffer(*context_, guard_state_, 0, sizeof zero, &zero);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, guard_binding_, guard_state_.id());
   issue();
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, guard_binding_, 0);
@@ -135,14 +123,7 @@ void ComputeProgram::run(const std::string& what, const std::function<void()>& i
   if (waited == GL_WAIT_FAILED) throw Error(name_ + ": " + what + ": waiting for it failed", ExitCode::failed);
 
   LoopGuardState state;
-  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, guard_state_.id());
-  if (const void* mapped = gl.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, sizeof state, GL_MAP_READ_BIT)) {
-    std::memcpy(&state, mapped, sizeof state);
-    gl.UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
-  }
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  context_->throw_if_gl_error(name_ + ": reading the loop guard");
+  read_buffer(*context_, guard_state_, 0, sizeof state, &state);
   if (state.tripped == 0) return;
   const size_t loop = state.tripped - 1;
   const std::string where = loop < loops_.size() ? loops_[loop].file + ":" + std::to_string(loops_[loop].line) : "?";

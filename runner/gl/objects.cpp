@@ -1,5 +1,7 @@
 #include "gl/objects.h"
 
+#include <cstring>
+
 #include "core/error.h"
 
 namespace pn {
@@ -49,6 +51,21 @@ void write_buffer(const Context& context, const GlObject& buffer, std::size_t of
   gl.BufferSubData(GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size), data);
   gl.BindBuffer(GL_COPY_WRITE_BUFFER, 0);
   context.throw_if_gl_error("writing a buffer");
+}
+
+void read_buffer(const Context& context, const GlObject& buffer, std::size_t offset, std::size_t size, void* data) {
+  const auto& gl = context.gl();
+  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl.BindBuffer(GL_COPY_READ_BUFFER, buffer.id());
+  const void* mapped = gl.MapBufferRange(GL_COPY_READ_BUFFER, static_cast<GLintptr>(offset),
+                                         static_cast<GLsizeiptr>(size), GL_MAP_READ_BIT);
+  if (mapped != nullptr) {
+    std::memcpy(data, mapped, size);
+    gl.UnmapBuffer(GL_COPY_READ_BUFFER);
+  }
+  gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
+  context.throw_if_gl_error("reading a buffer back");
+  if (mapped == nullptr) throw Error("reading a buffer back: glMapBufferRange failed", ExitCode::failed);
 }
 
 }  // namespace pn

@@ -53,5 +53,8 @@ class GlObject {
 GlObject make_buffer(const Context& context, std::size_t size, const void* data, GLenum usage = GL_STATIC_DRAW);
 // Replaces `size` bytes at `offset` of `buffer` (glBufferSubData, same target).
 void write_buffer(const Context& context, const GlObject& buffer, std::size_t offset, std::size_t size, const void* data);
+// Reads `size` bytes at `offset` back (glMapBufferRange, on both APIs), after the writes of
+// earlier commands.
+void read_buffer(const Context& context, const GlObject& buffer, std::size_t offset, std::size_t size, void* data);
 
 }  // namespace pn
