@@ -3,7 +3,9 @@
 // texture-fetch barrier between levels: level 0 from the shadow map, level i
 // from layer i-1 of the pyramid itself (read through the sampler, written
 // through the image; the layers differ, so no texel is read and written in
-// the same dispatch).
+// the same dispatch). A dispatch covers the whole level, or only the listed
+// tiles (tile_list.glsl) when a cache updates the pyramid where its map
+// changed.
 //   bindings and block: depth_pyramid.h
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -15,9 +17,11 @@ layout(binding = PN_PYRAMID_BUILD_READ_BINDING) uniform sampler2DArray pnPyramid
 layout(rgba32f, binding = PN_PYRAMID_BUILD_WRITE_IMAGE) writeonly uniform image2DArray pnPyramidWrite;
 
 #include "depth_pyramid.glsl"
+#define PN_TILE_LIST_BINDING PN_PYRAMID_BUILD_TILES_BINDING
+#include "tile_list.glsl"
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 p = pnTileListTexel(pnParams.tileFirst, pnParams.tileCount);
   int size = pnPyramidLevelSize(imageSize(pnPyramidWrite).x, pnParams.level);
   if (any(greaterThanEqual(p, ivec2(size)))) return;
   vec4 texel = (pnParams.level == 0) ? pnPyramidLevel0(pnShadowMap, p)

@@ -1,8 +1,10 @@
 // minmax_mip_build.comp — one level of minmax_mip.glsl's aligned min / max
 // mip chain per dispatch (two nodes a texel): level 0 from the shadow map (padded to the next
 // power of two), level i from level i-1. The chain is read (all levels) and
-// written (the level being built) through the same texture. Bindings and the
-// parameter block: minmax_mip_build.h.
+// written (the level being built) through the same texture. A dispatch covers
+// the whole level, or only the listed tiles (tile_list.glsl) when a cache
+// updates the chain where its map changed. Bindings and the parameter block:
+// minmax_mip_build.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -13,9 +15,11 @@ layout(binding = PN_MINMAX_MIP_READ_BINDING) uniform sampler2D pnMipRead;
 layout(rgba32f, binding = PN_MINMAX_MIP_WRITE_BINDING) writeonly uniform image2D pnMipWrite;
 
 #include "minmax_mip.glsl"
+#define PN_TILE_LIST_BINDING PN_MINMAX_MIP_TILES_BINDING
+#include "tile_list.glsl"
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 p = pnTileListTexel(pnParams.tileFirst, pnParams.tileCount);
   if (any(greaterThanEqual(p, imageSize(pnMipWrite)))) return;
   imageStore(pnMipWrite, p, (pnParams.level == 0) ? pnMipLevel0Texel(pnShadowMap, p)
                                                   : pnMipCombineTexel(pnMipRead, pnParams.level, p));

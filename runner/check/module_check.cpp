@@ -37,6 +37,9 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_summed_area_check},
       {"minmax_mip", "aligned min/max mip chain levels (padded to a power of two) vs node scans (exact)",
        &run_minmax_mip_check},
+      {"depth_cache", "min(static, dynamic) and its shadow test vs the definition; both caches over 100-frame motion "
+                      "sequences vs a full render (map, mip chain, pyramid, Fast PCSS: exact)",
+       &run_depth_cache_check},
   };
   return checks;
 }

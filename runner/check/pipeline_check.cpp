@@ -150,7 +150,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
                              std::to_string(kScreen) + "² screen";
     const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, kScreen);
     const TechniqueInputs inputs = scene_frame.inputs();
-    const Image map = read1(context, scene_frame.shadow_map, kMap), gbuffer = read4(context, scene_frame.gbuffer, kScreen);
+    const Image map = read1(context, *scene_frame.shadow_map, kMap), gbuffer = read4(context, scene_frame.gbuffer, kScreen);
 
     // Every registry entry through the technique seam: a visibility image, finite and in [0, 1],
     // exactly 1 where the pixel sees no surface (no shadow on the sky).
@@ -251,7 +251,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     point.light.width = 0.0;
     const SceneFrame point_frame = render_scene_frame(context, source, gbuffers, point, kScreen);
     const TechniqueInputs point_inputs = point_frame.inputs();
-    const Image hard = hard_shadow(read1(context, point_frame.shadow_map, kMap), read4(context, point_frame.gbuffer, kScreen), exact.bias);
+    const Image hard = hard_shadow(read1(context, *point_frame.shadow_map, kMap), read4(context, point_frame.gbuffer, kScreen), exact.bias);
     for (const PcssSettings& s : {exact, fast_pcss()})  // fast: exact regions, no blur
       results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
                          compare(hard, read1(context, pipeline.run(point_inputs, s).soft_shadow(), kScreen), Tolerance::exact())});

@@ -22,7 +22,7 @@ Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree) {
   const auto read = [&](const GlObject& t, int size, int channels) {
     return flip_rows(read_float_texture(context, t, size, size, channels));
   };
-  const Image map = read(scene_frame.shadow_map, n, 1), gbuffer = read(scene_frame.gbuffer, n, 4);
+  const Image map = read(*scene_frame.shadow_map, n, 1), gbuffer = read(scene_frame.gbuffer, n, 4);
   const Image search = read(frame.search_map, n, 4), filter = read(frame.filter_map, n, 4);
   // Region sides on a log scale from 1 to 64 texels; lit entries (s < 0) white.
   const auto sides = [&](const Image& entries) {

@@ -2,6 +2,10 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
+
+#include "core/texel_rect.h"
+#include "gl/tile_list.h"
 
 #include "core/image.h"
 #include "gl/compute_program.h"
@@ -33,9 +37,21 @@ class DepthPyramidBuilder {
   // Dispatches only, into an existing pyramid (for benchmarks).
   void build_into(const GlObject& shadow_map, const DepthPyramid& pyramid) const;
 
+  // Rebuilds only what changed where the map changed in `rects` (a shadow-map cache's dirty
+  // rectangles): at level i every window that holds a texel of a rectangle — each rectangle
+  // dilated by the window's side less one towards the origin (2^i - 1 texels, up to the largest
+  // window's) — as one dispatch a level over their tiles; then re-takes level0 (a copy where
+  // the context has no views). Everything else must already be the pyramid of the map as it is
+  // outside the rectangles. `dilate` false is the broken rule a check must catch.
+  void update_into(const GlObject& shadow_map, DepthPyramid& pyramid, const std::vector<TexelRect>& rects,
+                   TileList& tiles, bool dilate = true) const;
+
  private:
+  void dispatch_level(const GlObject& shadow_map, const DepthPyramid& pyramid, int level, TileRun run,
+                      const GlObject& tiles) const;
   const Context* context_;
   ComputeProgram program_;
+  GlObject no_tiles_;
 };
 
 class DepthPyramidQuery {

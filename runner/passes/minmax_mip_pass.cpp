@@ -12,6 +12,7 @@
 namespace pn::glsl {
 #include "passes/minmax_mip_build.h"
 PN_STD140_SIZE(PnMipBuildParams, 16);
+PN_STD140_OFFSET(PnMipBuildParams, tileCount, 8);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -30,7 +31,9 @@ std::size_t MinMaxMipChain::memory_bytes(int map_size) {
 }
 
 MinMaxMipBuilder::MinMaxMipBuilder(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/minmax_mip_build.comp")) {}
+    : context_(&context),
+      program_(compile_pass(context, tree, "passes/minmax_mip_build.comp")),
+      no_tiles_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
 
 MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
   const auto& gl = context_->gl();
@@ -49,17 +52,47 @@ MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
   return chain;
 }
 
+void MinMaxMipBuilder::dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TileRun run,
+                                      const GlObject& tiles) const {
+  const bool listed = run.count > 0 && run.count <= kMaxTileGroups;
+  const glsl::PnMipBuildParams block{level, run.first, listed ? run.count : 0};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_MINMAX_MIP_SHADOW_MAP_BINDING, shadow_map);
+  bind.texture(PN_MINMAX_MIP_READ_BINDING, chain.texture);
+  bind.image(PN_MINMAX_MIP_WRITE_BINDING, chain.texture, GL_WRITE_ONLY, GL_RGBA32F, level);
+  bind.storage_buffer(PN_MINMAX_MIP_TILES_BINDING, listed ? tiles : no_tiles_);
+  const int rows = chain.padded_size >> level;
+  if (listed) program_.dispatch(run.count * kTileSide, kTileSide);
+  else program_.dispatch(std::max(rows / 2, 1), rows);
+}
+
 void MinMaxMipBuilder::build_into(const GlObject& shadow_map, const MinMaxMipChain& chain) const {
+  for (int level = 0; level < chain.levels; ++level) dispatch_level(shadow_map, chain, level, {}, no_tiles_);
+}
+
+void MinMaxMipBuilder::update_into(const GlObject& shadow_map, const MinMaxMipChain& chain,
+                                   const std::vector<TexelRect>& rects, TileList& tiles, bool round_out) const {
+  tiles.clear();
+  std::vector<TileRun> runs;
+  std::vector<TexelRect> at_level;
   for (int level = 0; level < chain.levels; ++level) {
-    const glsl::PnMipBuildParams block{level};
-    PassBindings bind(*context_);
-    bind.uniform(block);
-    bind.texture(PN_MINMAX_MIP_SHADOW_MAP_BINDING, shadow_map);
-    bind.texture(PN_MINMAX_MIP_READ_BINDING, chain.texture);
-    bind.image(PN_MINMAX_MIP_WRITE_BINDING, chain.texture, GL_WRITE_ONLY, GL_RGBA32F, level);
-    const int rows = chain.padded_size >> level;
-    program_.dispatch(std::max(rows / 2, 1), rows);
+    const int rows = chain.padded_size >> level, width = std::max(rows / 2, 1);
+    at_level.clear();
+    for (const TexelRect& r : rects) {
+      if (r.empty()) continue;
+      // Nodes [n0, n1) on each axis; two nodes a texel across.
+      const auto end = [&](int e) { return round_out ? ((e - 1) >> level) + 1 : e >> level; };
+      const int nx0 = r.x0 >> level, nx1 = end(r.x1), ny0 = r.y0 >> level, ny1 = end(r.y1);
+      if (nx1 <= nx0 || ny1 <= ny0) continue;
+      at_level.push_back({nx0 >> 1, ny0, ((nx1 - 1) >> 1) + 1, ny1});
+    }
+    runs.push_back(tiles.add(at_level, width, rows));
   }
+  tiles.upload(*context_);
+  for (int level = 0; level < chain.levels; ++level)
+    if (runs[static_cast<size_t>(level)].count > 0)
+      dispatch_level(shadow_map, chain, level, runs[static_cast<size_t>(level)], tiles.buffer());
 }
 
 MinMaxMipChain MinMaxMipBuilder::build(const GlObject& shadow_map, int map_size) const {

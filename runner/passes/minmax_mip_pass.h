@@ -5,6 +5,10 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
+
+#include "core/texel_rect.h"
+#include "gl/tile_list.h"
 
 #include "gl/compute_program.h"
 #include "shader/source_tree.h"
@@ -30,9 +34,20 @@ class MinMaxMipBuilder {
   // allocate + build_into, for a map_size × map_size R32F shadow map.
   MinMaxMipChain build(const GlObject& shadow_map, int map_size) const;
 
+  // Rebuilds only what changed where the map changed in `rects` (a shadow-map cache's dirty
+  // rectangles): at level i the nodes holding a texel of a rectangle — each rectangle rounded out
+  // to whole 2^i × 2^i nodes — as one dispatch a level over their tiles. Everything else of the
+  // chain must already be the chain of the map as it is outside the rectangles.
+  // `round_out` false rounds the rectangles' far ends in: the broken rule a check must catch.
+  void update_into(const GlObject& shadow_map, const MinMaxMipChain& chain, const std::vector<TexelRect>& rects,
+                   TileList& tiles, bool round_out = true) const;
+
  private:
+  void dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TileRun run,
+                      const GlObject& tiles) const;
   const Context* context_;
   ComputeProgram program_;
+  GlObject no_tiles_;
 };
 
 }  // namespace pn

@@ -17,13 +17,28 @@ namespace pn {
 ShadowMapRenderer::ShadowMapRenderer(const Context& context, const SourceTree& tree)
     : context_(&context), program_(link_raster_pass(context, tree, "passes/shadow_depth")) {}
 
+namespace {
+glsl::PnShadowDepthParams light_block(const Scene& scene) {
+  return {glsl::std140_mat4(scene.light_view()), glsl::std140_mat4(scene.light_projection())};
+}
+}  // namespace
+
+const float* ShadowMapRenderer::far_clear() {
+  static const float far[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
+  return far;
+}
+
 GlObject ShadowMapRenderer::render(const Scene& scene) const {
-  const glsl::PnShadowDepthParams block{glsl::std140_mat4(scene.light_view()),
-                                        glsl::std140_mat4(scene.light_projection())};
-  const float far[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
   PassBindings bind(*context_);
-  bind.uniform(block);
-  return draw_scene(*context_, program_, scene, scene.light.map_size, 1, far);
+  bind.uniform(light_block(scene));
+  return draw_scene(*context_, program_, scene, scene.light.map_size, 1, far_clear());
+}
+
+void ShadowMapRenderer::draw(const Scene& scene, const SceneGeometry& geometry, const RasterTarget& target,
+                             const std::vector<VertexRun>& runs, const std::vector<TexelRect>& rects) const {
+  PassBindings bind(*context_);
+  bind.uniform(light_block(scene));
+  target.draw(program_, geometry, runs, rects);
 }
 
 }  // namespace pn

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/compute_program.h"
+#include "passes/scene_draw.h"
 #include "scene/scene.h"
 #include "shader/source_tree.h"
 
@@ -15,6 +16,13 @@ class ShadowMapRenderer {
 
   // N×N R32F texture, N = scene.light.map_size; rows from the framebuffer's bottom.
   GlObject render(const Scene& scene) const;
+
+  // Into a kept N×N R32F target: `runs` of `geometry` (the scene's vertices) with the scene's
+  // light, within `rects` (everywhere for none), over what the target holds. What the caches draw.
+  void draw(const Scene& scene, const SceneGeometry& geometry, const RasterTarget& target,
+            const std::vector<VertexRun>& runs, const std::vector<TexelRect>& rects = {}) const;
+  // The map's clear value: +Inf, "no occluder".
+  static const float* far_clear();
 
  private:
   const Context* context_;

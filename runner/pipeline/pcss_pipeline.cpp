@@ -8,6 +8,7 @@
 #include "gl/std140.h"
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
+#include "reference/depth_pyramid_reference.h"
 #include "sampling/poisson_disk.h"
 #include "sampling/sample_table.h"
 
@@ -129,12 +130,27 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       no_mip_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
       no_depth_sums_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
 
-void PcssPipeline::build_structure(PcssFrame& frame, const GlObject& shadow_map, int n) const {
+void PcssPipeline::build_structure(PcssFrame& frame, const TechniqueInputs& inputs, int n) const {
   const PcssSettings& s = frame.settings;
+  const GlObject& shadow_map = *inputs.shadow_map;
   const bool levels = uses_structure_levels(s);
-  if (uses_sanitized_map(s)) frame.pyramid = pyramid_.build(shadow_map, n, n, s.structure == Structure::pyramid && levels ? 31 : 0);
+  if (uses_sanitized_map(s)) {
+    const int max_level = s.structure == Structure::pyramid && levels ? 31 : 0;
+    const DepthPyramid* kept = inputs.pyramid;  // the source's, kept up to date, when it has the levels read here
+    if (kept && kept->map_size == n && kept->levels >= pyramid_level_count(n, max_level)) {
+      frame.pyramid = kept;
+    } else {
+      frame.built_pyramid = pyramid_.build(shadow_map, n, n, max_level);
+      frame.pyramid = &frame.built_pyramid;
+    }
+  }
   if (s.structure == Structure::mip && levels) {
-    frame.mip = mip_.build(shadow_map, n);
+    if (inputs.mip && inputs.mip->map_size == n) {
+      frame.mip = inputs.mip;
+    } else {
+      frame.built_mip = mip_.build(shadow_map, n);
+      frame.mip = &frame.built_mip;
+    }
     if (s.blockers == Estimator::traversal && s.depth_sums == DepthSums::table)
       frame.depth_sums = depth_sums_.build(shadow_map);
   }
@@ -160,19 +176,19 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
     block.leafMode = static_cast<std::int32_t>(*frame.settings.blocker_leaf_mode);
   // What every estimator reads; each dispatch below binds it in its own scope.
   const auto bind_inputs = [&](PassBindings& bind) {
-    bind.texture(PN_PCSS_PYRAMID_BINDING, made_or(frame.pyramid.texture, no_pyramid_));
-    bind.texture(PN_PCSS_MIP_BINDING, made_or(frame.mip.texture, no_mip_));
+    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? frame.pyramid->texture : no_pyramid_);
+    bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? frame.mip->texture : no_mip_);
     bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
     bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
     bind.texture(PN_PCSS_ENTRIES_BINDING, entries);
     bind.texture(PN_PCSS_PARENTS_BINDING, parents ? *parents : no_parents_);
-    bind.texture(PN_PCSS_DEPTH_MAP_BINDING, made_or(frame.pyramid.level0, no_mip_));  // sampler2D of the sanitized map
+    bind.texture(PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid ? frame.pyramid->level0 : no_mip_);  // sampler2D of the sanitized map
   };
 
   if (estimator == Estimator::scan) {
     // Bands of rows, ping-pong between `result` and a partner so the last band lands in `result`.
     GlObject partner = cleared_texture(*context_, size, 4);
-    const int bands = (frame.pyramid.map_size + kScanBandRows - 1) / kScanBandRows;
+    const int bands = (frame.pyramid->map_size + kScanBandRows - 1) / kScanBandRows;
     const GlObject* target[2] = {&result, &partner};
     const int first = (bands - 1) % 2;
     for (int band = 0; band < bands; ++band) {
@@ -254,7 +270,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   clock.start();
 
   // Step 1's structure: what Steps 3-5 read.
-  build_structure(frame, *inputs.shadow_map, n);
+  build_structure(frame, inputs, n);
   clock.stage(settings.structure == Structure::pyramid ? "pyramid"
               : frame.depth_sums.texture.id() != 0 ? "mip chain + sums"
                                                    : "mip chain");
@@ -273,8 +289,8 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     PcssBlock search_block = block;
     search_block.writeKeys = own_search_keys ? 1 : 0;
     bind.uniform(search_block);
-    bind.texture(PN_PCSS_PYRAMID_BINDING, made_or(frame.pyramid.texture, no_pyramid_));
-    bind.texture(PN_PCSS_MIP_BINDING, made_or(frame.mip.texture, no_mip_));
+    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? frame.pyramid->texture : no_pyramid_);
+    bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? frame.mip->texture : no_mip_);
     bind.texture(PN_PCSS_GBUFFER_BINDING, *inputs.gbuffer);
     bind.image(PN_PCSS_SEARCH_MAP_IMAGE, frame.search_map, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_SEARCH_KEYS_IMAGE, frame.search_keys, GL_WRITE_ONLY, GL_RGBA32F);

@@ -31,8 +31,11 @@ class PassBindings;
 struct PcssFrame {
   PcssSettings settings;
   int size = 0;  // screen side
-  DepthPyramid pyramid;        // Structure::pyramid; level 0 only (the sanitized map) when nothing reads its levels
-  MinMaxMipChain mip;          // Structure::mip: the aligned min/max chain
+  // Step 1's structures, the source's (TechniqueInputs) when it keeps them, else built_*: null where unused.
+  const DepthPyramid* pyramid = nullptr;  // Structure::pyramid; level 0 only (the sanitized map) when nothing reads its levels
+  const MinMaxMipChain* mip = nullptr;    // Structure::mip: the aligned min/max chain
+  DepthPyramid built_pyramid;
+  MinMaxMipChain built_mip;
   SummedAreaTable depth_sums;  // Structure::mip: summed-area table of depth (Step 4's clipped sums)
   GlObject receiver_depth;     // R32F light depth of each pixel's receiver, +Inf where it sees no surface
   GlObject search_map;         // (d, x, y, s), s < 0: lit
@@ -92,7 +95,8 @@ class PcssPipeline {
                           const GlObject& keys, const GlObject& entries, int tile, Estimator estimator, int samples,
                           bool wants_depth_sums, GlObject& parents, GlObject& results) const;
   // Step 1's structure: the pyramid's levels, or the mip chain and the depth sums, as `settings` reads them.
-  void build_structure(PcssFrame& frame, const GlObject& shadow_map, int map_size) const;
+  // The source's structures (inputs.pyramid, inputs.mip) are used as they are when they fit.
+  void build_structure(PcssFrame& frame, const TechniqueInputs& inputs, int map_size) const;
   // Their second half's inputs into `bind`: `entries`, parents (tile > 0), results, and the
   // uniform block with the tile.
   void bind_representatives(PassBindings& bind, glsl::PnPcssParams block, const GlObject& entries, int tile,

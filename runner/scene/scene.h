@@ -22,12 +22,23 @@ struct Box {
   glm::vec3 lo, hi;
 };
 
+// A part of a scene that may move on its own (issue 13, scene/animated_scene.h):
+// a run of triangles() vertices and the transform that placed them this frame.
+// A shadow-map cache calls an object dynamic in a frame when its transform
+// differs from the previous frame's, static otherwise.
+struct SceneObject {
+  int first_vertex = 0;
+  int vertex_count = 0;
+  glm::mat4 transform{1.0f};
+};
+
 struct Scene {
   std::string name;
   std::vector<Box> boxes;  // boxes[0] is the ground slab
   std::vector<glm::vec3> mesh;  // a model's triangles, world space, 3 vertices each (empty for the box scenes)
   LightModel light;        // width, planes, field of view, shadow-map size
   glm::vec3 light_position{0.0f};
+  std::vector<SceneObject> objects;  // in triangles() order; empty: the scene is one object that never moves
 
   // Light space: looking down −y from light_position, +x right, +z "up" in the map.
   glm::mat4 light_view() const;

@@ -27,7 +27,7 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
                               const ComparisonSetup& setup) {
   if (setup.techniques.empty()) throw Error("no methods to compare");
   const int size = setup.screen_size;
-  const auto source = find_shadow_map_source(setup.source).make(context, tree);
+  const auto source = find_shadow_map_source(setup.source).make(context, tree, {});
   const GBufferRenderer gbuffer(context, tree);
   const SceneFrame frame = render_scene_frame(context, *source, gbuffer, scene, size);
 

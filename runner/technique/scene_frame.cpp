@@ -17,8 +17,11 @@ SceneFrame render_scene_frame(const Context& context, ShadowMapSource& source, c
   frame.screen_size = screen_size;
   StageClock clock(context);
   clock.start();
-  frame.shadow_map = source.render(scene);
+  const SourcedMap& sourced = source.render(scene);
   clock.stage("shadow map");
+  frame.shadow_map = sourced.map;
+  frame.mip = sourced.mip;
+  frame.pyramid = sourced.pyramid;
   frame.shadow_map_ms = clock.read().front().second;
   frame.gbuffer = gbuffer.render(scene, screen_size, fixtures::kNormalOffsetTexels);
   return frame;

@@ -9,14 +9,17 @@
 
 namespace pn {
 
+// The map and its structures are the source's: valid until it renders again.
 struct SceneFrame {
   LightModel light;
   int screen_size = 0;
-  GlObject shadow_map;
+  const GlObject* shadow_map = nullptr;
+  const MinMaxMipChain* mip = nullptr;    // when the source keeps them (SourceOptions)
+  const DepthPyramid* pyramid = nullptr;
   GlObject gbuffer;
   double shadow_map_ms = 0.0;  // the source's GPU time for this frame (not part of a technique's total)
 
-  TechniqueInputs inputs() const { return {light, screen_size, &shadow_map, &gbuffer}; }
+  TechniqueInputs inputs() const { return {light, screen_size, shadow_map, &gbuffer, mip, pyramid}; }
 };
 
 // Throws Error for a screen size outside 1..8192. The G-buffer's receivers

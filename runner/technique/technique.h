@@ -19,12 +19,19 @@
 
 namespace pn {
 
+struct MinMaxMipChain;  // passes/minmax_mip_pass.h
+struct DepthPyramid;    // passes/depth_pyramid_pass.h
+
 // What a technique reads for one frame (non-owning: see SceneFrame).
 struct TechniqueInputs {
   LightModel light;
   int screen_size = 0;
   const GlObject* shadow_map = nullptr;  // N×N R32F linear light depth, +Inf where empty (N = light.map_size)
   const GlObject* gbuffer = nullptr;     // screen² RGBA32F (u, v in texels, light depth, valid), rows from the bottom
+  // The map's structures when the source keeps them up to date (a cache updates them where the map
+  // changed); null: a technique that reads one builds its own from shadow_map.
+  const MinMaxMipChain* mip = nullptr;
+  const DepthPyramid* pyramid = nullptr;
 };
 
 // Named values, in the order they are printed.

@@ -1,0 +1,62 @@
+#include "passes/depth_cache_pass.h"
+
+#include "core/query_grid.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
+#include "gl/texture.h"
+
+namespace pn::glsl {
+#include "passes/depth_cache.h"
+PN_STD140_SIZE(PnDepthCacheComposeParams, 16);
+PN_STD140_OFFSET(PnDepthCacheComposeParams, tileCount, 4);
+}  // namespace pn::glsl
+
+namespace pn {
+
+DepthCacheComposer::DepthCacheComposer(const Context& context, const SourceTree& tree)
+    : context_(&context),
+      program_(compile_pass(context, tree, "passes/depth_cache_compose.comp")),
+      no_tiles_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
+
+void DepthCacheComposer::compose(const GlObject& static_map, const GlObject& dynamic_map, const GlObject& composed,
+                                 int n, TileRun run, const TileList* tiles) const {
+  const bool listed = tiles && run.count > 0 && run.count <= kMaxTileGroups;
+  PassBindings bind(*context_);
+  bind.uniform(glsl::PnDepthCacheComposeParams{run.first, listed ? run.count : 0});
+  bind.texture(PN_DEPTH_CACHE_STATIC_BINDING, static_map);
+  bind.texture(PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map);
+  bind.image(PN_DEPTH_CACHE_COMPOSED_IMAGE, composed, GL_WRITE_ONLY, GL_R32F);
+  bind.storage_buffer(PN_DEPTH_CACHE_TILES_BINDING, listed ? tiles->buffer() : no_tiles_);
+  if (listed) program_.dispatch(run.count * kTileSide, kTileSide);
+  else program_.dispatch(n, n);
+}
+
+DepthCacheQueryPass::DepthCacheQueryPass(const Context& context, const SourceTree& tree)
+    : context_(&context), program_(compile_pass(context, tree, "passes/depth_cache_query.comp")) {}
+
+std::vector<DepthCacheResult> DepthCacheQueryPass::run(const GlObject& static_map, const GlObject& dynamic_map,
+                                                       const std::vector<DepthCacheQuery>& queries) const {
+  if (queries.empty()) return {};
+  std::vector<Query> q;
+  for (const DepthCacheQuery& k : queries) q.push_back({float(k.u), float(k.v), k.receiver_depth, k.bias});
+  const Image image = query_image(q);
+  const GlObject texture = upload_float_texture(*context_, image);
+  const GlObject results = make_float_texture(*context_, image.width, image.height, 4);
+  {
+    PassBindings bind(*context_);
+    bind.texture(PN_DEPTH_CACHE_STATIC_BINDING, static_map);
+    bind.texture(PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map);
+    bind.texture(PN_DEPTH_CACHE_QUERIES_BINDING, texture);
+    bind.image(PN_DEPTH_CACHE_RESULTS_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
+    program_.dispatch(image.width, image.height);
+  }
+  const Image r = read_float_texture(*context_, results, image.width, image.height, 4);
+  std::vector<DepthCacheResult> out;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const Query v = query_result(r, k);
+    out.push_back({v[0], v[1]});
+  }
+  return out;
+}
+
+}  // namespace pn
