@@ -11,14 +11,14 @@
 #define PN_DEPTH_CACHE_STATIC_BINDING 0   // sampler2D, R32F
 #define PN_DEPTH_CACHE_DYNAMIC_BINDING 1  // sampler2D, R32F
 
-// depth_cache_compose.comp: the composition written over the whole composed map or its listed tiles.
+// depth_cache_compose.comp: the composition written over the whole composed map or its listed texels.
 #define PN_DEPTH_CACHE_COMPOSED_IMAGE 2   // image2D, r32f
 #define PN_DEPTH_CACHE_COMPOSE_PARAMS_BINDING 3
-#define PN_DEPTH_CACHE_TILES_BINDING 6    // storage buffer: the tiles (tile_list.glsl)
+#define PN_DEPTH_CACHE_TEXELS_BINDING 6    // storage buffer: the texels (texel_list.glsl)
 
 PN_UNIFORM_BLOCK(PnDepthCacheComposeParams, PN_DEPTH_CACHE_COMPOSE_PARAMS_BINDING)
-  int tileFirst;  // tileCount > 0: one work group per tile of the list, from tileFirst
-  int tileCount;  // 0: the dispatch's grid covers the whole map
+  int texelFirst;  // texelCount > 0: one invocation per listed texel, from texelFirst
+  int texelCount;  // 0: the dispatch's grid covers the whole map
 PN_END_UNIFORM_BLOCK(pnParams)
 
 // depth_cache_query.comp: query k is texel k of the query image, (u, v, receiver depth, bias), u and v

@@ -13,12 +13,12 @@
 #define PN_PYRAMID_BUILD_READ_BINDING 1   // sampler2DArray, RGBA32F: the pyramid
 #define PN_PYRAMID_BUILD_WRITE_IMAGE 2    // image2DArray, rgba32f, layered: the same texture
 #define PN_PYRAMID_BUILD_PARAMS_BINDING 3
-#define PN_PYRAMID_BUILD_TILES_BINDING 4  // storage buffer: the tiles of an incremental update (tile_list.glsl)
+#define PN_PYRAMID_BUILD_TEXELS_BINDING 4  // storage buffer: the texels of an incremental update (texel_list.glsl)
 
 PN_UNIFORM_BLOCK(PnPyramidBuildParams, PN_PYRAMID_BUILD_PARAMS_BINDING)
   int level;
-  int tileFirst;  // tileCount > 0: one work group per tile of the list, from tileFirst
-  int tileCount;  // 0: the dispatch's grid covers the whole level
+  int texelFirst;  // texelCount > 0: one invocation per listed texel, from texelFirst
+  int texelCount;  // 0: the dispatch's grid covers the whole level
 PN_END_UNIFORM_BLOCK(pnParams)
 
 // depth_pyramid_query.comp: query k is texel k of the query image, (u, v, side, unused).

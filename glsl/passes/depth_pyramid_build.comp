@@ -4,7 +4,7 @@
 // from layer i-1 of the pyramid itself (read through the sampler, written
 // through the image; the layers differ, so no texel is read and written in
 // the same dispatch). A dispatch covers the whole level, or only the listed
-// tiles (tile_list.glsl) when a cache updates the pyramid where its map
+// texels (texel_list.glsl) when a cache updates the pyramid where its map
 // changed.
 //   bindings and block: depth_pyramid.h
 
@@ -17,13 +17,13 @@ layout(binding = PN_PYRAMID_BUILD_READ_BINDING) uniform sampler2DArray pnPyramid
 layout(rgba32f, binding = PN_PYRAMID_BUILD_WRITE_IMAGE) writeonly uniform image2DArray pnPyramidWrite;
 
 #include "depth_pyramid.glsl"
-#define PN_TILE_LIST_BINDING PN_PYRAMID_BUILD_TILES_BINDING
-#include "tile_list.glsl"
+#define PN_TEXEL_LIST_BINDING PN_PYRAMID_BUILD_TEXELS_BINDING
+#include "texel_list.glsl"
 
 void main() {
-  ivec2 p = pnTileListTexel(pnParams.tileFirst, pnParams.tileCount);
+  ivec2 p;
   int size = pnPyramidLevelSize(imageSize(pnPyramidWrite).x, pnParams.level);
-  if (any(greaterThanEqual(p, ivec2(size)))) return;
+  if (!pnTexelListTexel(pnParams.texelFirst, pnParams.texelCount, p) || any(greaterThanEqual(p, ivec2(size)))) return;
   vec4 texel = (pnParams.level == 0) ? pnPyramidLevel0(pnShadowMap, p)
                                      : pnPyramidCombine(pnPyramidRead, pnParams.level, p);
   imageStore(pnPyramidWrite, ivec3(p, pnParams.level), texel);

@@ -2,7 +2,7 @@
 // mip chain per dispatch (two nodes a texel): level 0 from the shadow map (padded to the next
 // power of two), level i from level i-1. The chain is read (all levels) and
 // written (the level being built) through the same texture. A dispatch covers
-// the whole level, or only the listed tiles (tile_list.glsl) when a cache
+// the whole level, or only the listed texels (texel_list.glsl) when a cache
 // updates the chain where its map changed. Bindings and the parameter block:
 // minmax_mip_build.h.
 
@@ -15,12 +15,13 @@ layout(binding = PN_MINMAX_MIP_READ_BINDING) uniform sampler2D pnMipRead;
 layout(rgba32f, binding = PN_MINMAX_MIP_WRITE_BINDING) writeonly uniform image2D pnMipWrite;
 
 #include "minmax_mip.glsl"
-#define PN_TILE_LIST_BINDING PN_MINMAX_MIP_TILES_BINDING
-#include "tile_list.glsl"
+#define PN_TEXEL_LIST_BINDING PN_MINMAX_MIP_TEXELS_BINDING
+#include "texel_list.glsl"
 
 void main() {
-  ivec2 p = pnTileListTexel(pnParams.tileFirst, pnParams.tileCount);
-  if (any(greaterThanEqual(p, imageSize(pnMipWrite)))) return;
+  ivec2 p;
+  if (!pnTexelListTexel(pnParams.texelFirst, pnParams.texelCount, p) ||
+      any(greaterThanEqual(p, imageSize(pnMipWrite)))) return;
   imageStore(pnMipWrite, p, (pnParams.level == 0) ? pnMipLevel0Texel(pnShadowMap, p)
                                                   : pnMipCombineTexel(pnMipRead, pnParams.level, p));
 }

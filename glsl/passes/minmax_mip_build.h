@@ -12,12 +12,12 @@
 #define PN_MINMAX_MIP_READ_BINDING 1        // sampler2D, RGBA32F (two nodes a texel), all levels: the chain (minmax_mip.glsl)
 #define PN_MINMAX_MIP_WRITE_BINDING 2       // image2D, rgba32f: the chain at the level being written
 #define PN_MINMAX_MIP_PARAMS_BINDING 3
-#define PN_MINMAX_MIP_TILES_BINDING 4       // storage buffer: the tiles of an incremental update (tile_list.glsl)
+#define PN_MINMAX_MIP_TEXELS_BINDING 4       // storage buffer: the texels of an incremental update (texel_list.glsl)
 
 PN_UNIFORM_BLOCK(PnMipBuildParams, PN_MINMAX_MIP_PARAMS_BINDING)
   int level;
-  int tileFirst;  // tileCount > 0: one work group per tile of the list, from tileFirst
-  int tileCount;  // 0: the dispatch's grid covers the whole level
+  int texelFirst;  // texelCount > 0: one invocation per listed texel, from texelFirst
+  int texelCount;  // 0: the dispatch's grid covers the whole level
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_MINMAX_MIP_BUILD_H

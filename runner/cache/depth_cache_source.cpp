@@ -20,6 +20,12 @@ std::vector<VertexRun> runs_of(const std::vector<SceneObject>& objects, const Ta
   return runs;
 }
 
+long long total_area(const std::vector<TexelRect>& rects) {
+  long long a = 0;
+  for (const TexelRect& r : rects) a += r.area();
+  return a;
+}
+
 }  // namespace
 
 DepthCacheSource::DepthCacheSource(const Context& context, const SourceTree& tree, CacheScheme scheme,
@@ -27,16 +33,18 @@ DepthCacheSource::DepthCacheSource(const Context& context, const SourceTree& tre
     : context_(&context), scheme_(scheme), renderer_(context, tree), composer_(context, tree),
       structures_(context, tree, options) {}
 
-void DepthCacheSource::draw_everything(const Scene& scene, const std::vector<VertexRun>& still,
-                                       const std::vector<VertexRun>& moving) {
+void DepthCacheSource::compose_whole(const Scene& scene, const std::vector<VertexRun>& moving) {
   const int n = scene.light.map_size;
-  static_->clear(ShadowMapRenderer::far_clear());
-  renderer_.draw(scene, *geometry_, *static_, still);
-  dynamic_->clear(ShadowMapRenderer::far_clear());
-  renderer_.draw(scene, *geometry_, *dynamic_, moving);
-  composer_.compose(static_->texture(), dynamic_->texture(), composed_, n);
-  structures_.rebuild(composed_, n);
-  out_.changed = out_.redrawn = {TexelRect::square(n)};
+  if (scheme_ == CacheScheme::whole_maps) {
+    dynamic_->clear(ShadowMapRenderer::far_clear());
+    if (!moving.empty()) renderer_.draw(scene, *geometry_, *dynamic_, moving);
+    composer_.compose(static_->texture(), dynamic_->texture(), composed_->texture(), n);
+  } else {
+    composed_->copy_from(*static_);
+    if (!moving.empty()) renderer_.draw(scene, *geometry_, *composed_, moving);
+  }
+  structures_.rebuild(composed_->texture(), n);
+  out_.changed = {TexelRect::square(n)};
 }
 
 const SourcedMap& DepthCacheSource::render(const Scene& scene) {
@@ -45,71 +53,75 @@ const SourcedMap& DepthCacheSource::render(const Scene& scene) {
   const bool continues = motion_.track(scene, vertices);
   const std::vector<ObjectFrame>& objects = motion_.objects();
   const std::vector<SceneObject>& layout = motion_.layout();
-  const auto moved = [&](size_t i) { return objects[i].dynamic; };
-  const auto still = [&](size_t i) { return !objects[i].dynamic; };
-  const std::vector<VertexRun> still_runs = runs_of(layout, still), moving_runs = runs_of(layout, moved);
+  const std::vector<VertexRun> still = runs_of(layout, [&](size_t i) { return !objects[i].dynamic; });
+  const std::vector<VertexRun> moving = runs_of(layout, [&](size_t i) { return objects[i].dynamic; });
+  const TexelRect whole = TexelRect::square(n);
 
   if (!continues) {  // a new scene (or the first frame): everything drawn
     geometry_.emplace(*context_, scene);
     static_.emplace(*context_, n, 1);
-    dynamic_.emplace(*context_, n, 1);
-    composed_ = make_float_texture(*context_, n, n, 1);
-    draw_everything(scene, still_runs, moving_runs);
+    if (scheme_ == CacheScheme::whole_maps) dynamic_.emplace(*context_, n, 1);
+    composed_.emplace(*context_, n, 1);
+    static_->clear(ShadowMapRenderer::far_clear());
+    renderer_.draw(scene, *geometry_, *static_, still);
+    compose_whole(scene, moving);
+    out_.redrawn = {whole};
   } else {
-    std::vector<int> moved_objects;
+    std::vector<int> moved;
     bool state_changed = false;
     for (size_t i = 0; i < objects.size(); ++i) {
-      if (objects[i].dynamic) moved_objects.push_back(static_cast<int>(i));
+      if (objects[i].dynamic) moved.push_back(static_cast<int>(i));
       state_changed = state_changed || objects[i].dynamic != objects[i].was_dynamic;
     }
-    geometry_->update(vertices, layout, moved_objects);
+    geometry_->update(vertices, layout, moved);
 
     if (scheme_ == CacheScheme::whole_maps) {
+      out_.redrawn.clear();
       if (state_changed) {
         static_->clear(ShadowMapRenderer::far_clear());
-        renderer_.draw(scene, *geometry_, *static_, still_runs);
+        renderer_.draw(scene, *geometry_, *static_, still);
+        out_.redrawn = {whole};
       }
-      dynamic_->clear(ShadowMapRenderer::far_clear());
-      renderer_.draw(scene, *geometry_, *dynamic_, moving_runs);
-      composer_.compose(static_->texture(), dynamic_->texture(), composed_, n);
-      structures_.rebuild(composed_, n);
-      out_.changed = out_.redrawn = {TexelRect::square(n)};
+      for (const ObjectFrame& o : objects)
+        if (o.dynamic && out_.redrawn.size() != 1) out_.redrawn.push_back(o.bounds);
+      compose_whole(scene, moving);
     } else {
       // The static map changes where an object left it (started moving: its old place) or joined
-      // it (stopped: where it stands, its bounds unchanged since the frame it stopped in).
-      std::vector<TexelRect> static_rects, dynamic_rects;
+      // it (stopped: where it stands, its bounds unchanged since the frame it stopped in); the
+      // frame's map also where a moving object was and is.
+      std::vector<TexelRect> static_rects, changed;
       for (const ObjectFrame& o : objects) {
         if (o.dynamic && !o.was_dynamic) static_rects.push_back(o.old_bounds);
         if (!o.dynamic && o.was_dynamic) static_rects.push_back(o.bounds);
-        // The dynamic map changes where a moving object was and where it is.
-        if (o.dynamic || o.was_dynamic)
-          dynamic_rects.push_back(bounding(o.was_dynamic ? o.old_bounds : TexelRect{}, o.dynamic ? o.bounds : TexelRect{}));
+        // One rectangle for both: an object moves little in a frame, so the two overlap mostly.
+        const TexelRect both = bounding(o.was_dynamic ? o.old_bounds : TexelRect{}, o.dynamic ? o.bounds : TexelRect{});
+        if (!both.empty()) changed.push_back(both);
       }
       static_rects = merged_rects(static_rects, kMaxStaticRects);
       if (!static_rects.empty()) {
         static_->clear(ShadowMapRenderer::far_clear(), static_rects);
-        renderer_.draw(scene, *geometry_, *static_, still_runs, static_rects);
+        renderer_.draw(scene, *geometry_, *static_, still, static_rects);
       }
-      // Every texel a moving object covers lies in its cleared bounds: drawn unscissored.
-      dynamic_rects.erase(std::remove_if(dynamic_rects.begin(), dynamic_rects.end(),
-                                         [](const TexelRect& r) { return r.empty(); }),
-                          dynamic_rects.end());
-      if (!dynamic_rects.empty()) dynamic_->clear(ShadowMapRenderer::far_clear(), dynamic_rects);
-      if (!moving_runs.empty()) renderer_.draw(scene, *geometry_, *dynamic_, moving_runs);
-
-      out_.changed = static_rects;
-      out_.changed.insert(out_.changed.end(), dynamic_rects.begin(), dynamic_rects.end());
-      out_.redrawn = out_.changed;
-      if (!out_.changed.empty()) {
-        tiles_.clear();
-        const TileRun run = tiles_.add(out_.changed, n, n);
-        tiles_.upload(*context_);
-        composer_.compose(static_->texture(), dynamic_->texture(), composed_, n, run, &tiles_);
-        structures_.update(composed_, out_.changed);
+      // Not merged: a merge of overlapping rectangles into their bounds grows with every object it
+      // takes in, and a texel that two rectangles hold is merely copied and computed twice.
+      changed.insert(changed.end(), static_rects.begin(), static_rects.end());
+      out_.redrawn = out_.changed = changed;
+      if (static_cast<double>(total_area(changed)) >= kWholeFrameShare * n * n) {
+        // Most of the map changed: drawn whole, as the full render draws it.
+        composed_->clear(ShadowMapRenderer::far_clear());
+        renderer_.draw(scene, *geometry_, *composed_, {{0, geometry_->vertex_count()}});
+        structures_.rebuild(composed_->texture(), n);
+        out_.changed = out_.redrawn = {whole};
+      } else if (!changed.empty()) {
+        // The static map's colour and depth where anything changed, then the moving objects drawn
+        // over it with the depth test: every texel they cover lies in their bounds, copied afresh.
+        composed_->copy_from(*static_, changed);
+        if (!moving.empty()) renderer_.draw(scene, *geometry_, *composed_, moving);
+        structures_.update(composed_->texture(), changed);
       }
     }
   }
-  out_.map = &composed_;
+  out_.map = &composed_->texture();
   out_.mip = structures_.mip();
   out_.pyramid = structures_.pyramid();
   return out_;

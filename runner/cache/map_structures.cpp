@@ -29,8 +29,8 @@ void MapStructures::rebuild(const GlObject& map, int n) {
 
 void MapStructures::update(const GlObject& map, const std::vector<TexelRect>& rects) {
   if (rects.empty()) return;
-  if (mip_builder_) mip_builder_->update_into(map, mip_, rects, tiles_, options_.dilate_updates);
-  if (pyramid_builder_) pyramid_builder_->update_into(map, pyramid_, rects, tiles_, options_.dilate_updates);
+  if (mip_builder_) mip_builder_->update_into(map, mip_, rects, texels_, options_.dilate_updates);
+  if (pyramid_builder_) pyramid_builder_->update_into(map, pyramid_, rects, texels_, options_.dilate_updates);
 }
 
 }  // namespace pn

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/texel_rect.h"
-#include "gl/tile_list.h"
+#include "gl/texel_list.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
 
@@ -41,7 +41,7 @@ class MapStructures {
   std::optional<DepthPyramidBuilder> pyramid_builder_;
   MinMaxMipChain mip_;
   DepthPyramid pyramid_;
-  TileList tiles_;
+  TexelList texels_;
 };
 
 }  // namespace pn

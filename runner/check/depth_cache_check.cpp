@@ -2,7 +2,7 @@
 //  - depth_cache.glsl's composition and shadow test over pairs of fixture maps (NaN and ±Inf among
 //    them) at every texel against the definition, and receivers at, just in front of and just
 //    behind the composed depth, NaN and +Inf ones, with and without a bias: exact;
-//  - the compose pass over a tile list: the listed tiles composed, every other texel untouched;
+//  - the compose pass over a texel list: the listed texels composed, every other texel untouched;
 //  - motion sequences of the animated scene through both caches: every frame's composed map equals
 //    a full render of the frame texel for texel, the incrementally kept min/max mip chain and
 //    pyramid equal full rebuilds from that render (exact: the same operations on the same texels;
@@ -19,7 +19,7 @@
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
-#include "gl/tile_list.h"
+#include "gl/texel_list.h"
 #include "passes/depth_cache_pass.h"
 #include "passes/gbuffer_pass.h"
 #include "pipeline/pcss_pipeline.h"
@@ -99,24 +99,20 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
       list.push_back({x, y, x + random.uniform_int(1, 25), y + random.uniform_int(1, 25)});
     }
     const GlObject target = upload_float_texture(env.context, Image(n, n, 1, kUntouched));
-    TileList tiles;
-    const TileRun run = tiles.add(list, n, n);
-    tiles.upload(env.context);
+    TexelList texels;
+    const TexelRun run = texels.add(list, n, n);  // overlapping rectangles list a texel twice: harmless
+    texels.upload(env.context);
     if (rects == 0) composer.compose(ta, tb, target, n);  // no list: the whole map
-    else composer.compose(ta, tb, target, n, run, &tiles);
-    // A texel is written when its 8×8 tile meets a rectangle.
+    else composer.compose(ta, tb, target, n, run, &texels);
     Image expected(n, n, 1, kUntouched);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
         bool written = rects == 0;
-        for (const TexelRect& r : list) {
-          const TexelRect tile{x / 8 * 8, y / 8 * 8, x / 8 * 8 + 8, y / 8 * 8 + 8};
-          written = written || overlap(tile, intersection(r, TexelRect::square(n)));
-        }
+        for (const TexelRect& r : list) written = written || (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1);
         if (written) expected.at(x, y) = composed.at(x, y);
       }
     results.push_back({"compose pass " + std::to_string(n) + "x" + std::to_string(n) + ", " +
-                           (rects == 0 ? std::string("whole map") : std::to_string(rects) + " seeded rectangles' tiles") +
+                           (rects == 0 ? std::string("whole map") : std::to_string(rects) + " seeded rectangles' texels") +
                            ": composed there, untouched elsewhere",
                        Tolerance::exact(), compare(expected, read_float_texture(env.context, target, n, n, 1), Tolerance::exact())});
   }

@@ -1,6 +1,7 @@
 #include <ctime>
 #include <iostream>
 
+#include "bench/cache_bench.h"
 #include "bench/pipeline_bench.h"
 #include "bench/pyramid_bench.h"
 #include "bench/sweep_bench.h"
@@ -21,13 +22,14 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     TraversalBenchSetup traversal;
     PipelineBenchSetup pipeline;
     SweepBenchSetup sweep;
+    CacheBenchSetup cache;
     std::vector<std::string> methods;
     int max_level = 31;
     std::string json;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
-  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep")->required();
+  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | cache")->required();
   auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
   auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline, 3 for sweep)");
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
@@ -41,12 +43,19 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)");
   cmd->add_option("--receivers", opt->traversal.receivers, "traversal: receivers in the batch (default 4096)");
   cmd->add_option("--leaf-sizes", opt->traversal.leaf_sides, "traversal: leaf sizes (default 1,2,4,8,16)")->delimiter(',');
+  cmd->add_option("--k", opt->cache.ks, "cache: shares K of moving triangles (default 0,0.1,...,1)")->delimiter(',');
+  cmd->add_option("--sources", opt->cache.sources, "cache: shadow-map sources (default full,two-map,dirty-rect)")->delimiter(',');
+  cmd->add_option("--frames", opt->cache.frames, "cache: timed frames per K (default 20, after --warmup untimed ones)");
+  cmd->add_option("--warmup", opt->cache.warmup, "cache: untimed frames first (default 3)");
+  cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512)");
+  cmd->add_option("--animated-scene", opt->cache.scene, "cache: moving_city | moving (default moving_city)");
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([opt, repeats, sizes, truth_samples, &global, &exit_code] {
-    if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep")
-      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep");
+    if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep" &&
+        opt->what != "cache")
+      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, cache");
     if (!opt->methods.empty()) require_list_length("methods", opt->methods.size());
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
@@ -55,6 +64,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
       if (truth_samples->count() > 0) opt->sweep.truth_samples = opt->pipeline.truth_samples;
       validate_sweep_setup(opt->sweep);
+    } else if (opt->what == "cache") {
+      if (sizes->count() > 0) opt->cache.sizes = opt->sizes;
+      if (!opt->pipeline.model.empty()) opt->cache.model = opt->pipeline.model;
+      validate_cache_bench_setup(opt->cache);
     } else if (opt->what == "pipeline") {
       if (repeats->count() > 0) opt->pipeline.repeats = opt->repeats;
       if (sizes->count() > 0) opt->pipeline.sizes = opt->sizes;
@@ -79,6 +92,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const SweepBench bench = bench_sweep(*context, tree, opt->sweep);
       print_sweep_bench(std::cout, bench);
       results = sweep_bench_json(opt->sweep, bench);
+    } else if (opt->what == "cache") {
+      const CacheBench bench = bench_cache(*context, tree, opt->cache);
+      print_cache_bench(std::cout, bench);
+      results = cache_bench_json(opt->cache, bench);
     } else if (opt->what == "pipeline") {
       const auto rows = bench_pipeline(*context, tree, opt->pipeline);
       print_pipeline_bench(std::cout, rows);

@@ -8,7 +8,7 @@
 namespace pn::glsl {
 #include "passes/depth_cache.h"
 PN_STD140_SIZE(PnDepthCacheComposeParams, 16);
-PN_STD140_OFFSET(PnDepthCacheComposeParams, tileCount, 4);
+PN_STD140_OFFSET(PnDepthCacheComposeParams, texelCount, 4);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -16,19 +16,18 @@ namespace pn {
 DepthCacheComposer::DepthCacheComposer(const Context& context, const SourceTree& tree)
     : context_(&context),
       program_(compile_pass(context, tree, "passes/depth_cache_compose.comp")),
-      no_tiles_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
+      no_texels_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
 
 void DepthCacheComposer::compose(const GlObject& static_map, const GlObject& dynamic_map, const GlObject& composed,
-                                 int n, TileRun run, const TileList* tiles) const {
-  const bool listed = tiles && run.count > 0 && run.count <= kMaxTileGroups;
+                                 int n, TexelRun run, const TexelList* texels) const {
+  const bool listed = texels && run.count > 0 && !run.whole;
   PassBindings bind(*context_);
   bind.uniform(glsl::PnDepthCacheComposeParams{run.first, listed ? run.count : 0});
   bind.texture(PN_DEPTH_CACHE_STATIC_BINDING, static_map);
   bind.texture(PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map);
   bind.image(PN_DEPTH_CACHE_COMPOSED_IMAGE, composed, GL_WRITE_ONLY, GL_R32F);
-  bind.storage_buffer(PN_DEPTH_CACHE_TILES_BINDING, listed ? tiles->buffer() : no_tiles_);
-  if (listed) program_.dispatch(run.count * kTileSide, kTileSide);
-  else program_.dispatch(n, n);
+  bind.storage_buffer(PN_DEPTH_CACHE_TEXELS_BINDING, listed ? texels->buffer() : no_texels_);
+  dispatch_texel_run(program_, texels ? run : TexelRun{0, 0, true}, n, n);
 }
 
 DepthCacheQueryPass::DepthCacheQueryPass(const Context& context, const SourceTree& tree)

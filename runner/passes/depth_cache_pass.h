@@ -1,6 +1,6 @@
 // Runner side of glsl/passes/depth_cache_compose.comp and depth_cache_query.comp:
 // depth_cache.glsl's composition of a static and a dynamic map, written into
-// a composed map (everywhere or over a list of tiles), and its shadow test
+// a composed map (everywhere or over a list of texels), and its shadow test
 // over a batch of receivers (for the check).
 #pragma once
 
@@ -8,7 +8,7 @@
 
 #include "core/image.h"
 #include "gl/compute_program.h"
-#include "gl/tile_list.h"
+#include "gl/texel_list.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -16,15 +16,15 @@ namespace pn {
 class DepthCacheComposer {
  public:
   DepthCacheComposer(const Context& context, const SourceTree& tree);
-  // composed := min(static, dynamic) over the whole n×n map (`run` empty) or the tiles of `run` in
-  // `tiles` (uploaded). All three maps n×n R32F.
+  // composed := min(static, dynamic) over the whole n×n map (no list) or the texels of `run` in
+  // `texels` (uploaded). All three maps n×n R32F.
   void compose(const GlObject& static_map, const GlObject& dynamic_map, const GlObject& composed, int n,
-               TileRun run = {}, const TileList* tiles = nullptr) const;
+               TexelRun run = {0, 0, true}, const TexelList* texels = nullptr) const;
 
  private:
   const Context* context_;
   ComputeProgram program_;
-  GlObject no_tiles_;
+  GlObject no_texels_;
 };
 
 struct DepthCacheQuery {

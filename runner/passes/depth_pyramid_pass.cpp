@@ -13,7 +13,7 @@ namespace pn::glsl {
 #include "passes/depth_pyramid.h"
 PN_STD140_SIZE(PnPyramidBuildParams, 16);
 PN_STD140_OFFSET(PnPyramidBuildParams, level, 0);
-PN_STD140_OFFSET(PnPyramidBuildParams, tileCount, 8);
+PN_STD140_OFFSET(PnPyramidBuildParams, texelCount, 8);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -33,7 +33,7 @@ void validate_shadow_map_size(int width, int height) {
 DepthPyramidBuilder::DepthPyramidBuilder(const Context& context, const SourceTree& tree)
     : context_(&context),
       program_(compile_pass(context, tree, "passes/depth_pyramid_build.comp")),
-      no_tiles_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
+      no_texels_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
 
 DepthPyramid DepthPyramidBuilder::build(const GlObject& shadow_map, int width, int height, int max_level) const {
   validate_shadow_map_size(width, height);
@@ -48,39 +48,39 @@ DepthPyramid DepthPyramidBuilder::build(const GlObject& shadow_map, int width, i
 }
 
 void DepthPyramidBuilder::dispatch_level(const GlObject& shadow_map, const DepthPyramid& pyramid, int level,
-                                         TileRun run, const GlObject& tiles) const {
-  const bool listed = run.count > 0 && run.count <= kMaxTileGroups;
+                                         TexelRun run, const GlObject& texels) const {
+  if (!run.whole && run.count <= 0) return;
+  const bool listed = run.count > 0 && !run.whole;
   PassBindings bind(*context_);
   bind.texture(PN_PYRAMID_BUILD_MAP_BINDING, shadow_map);
   bind.texture(PN_PYRAMID_BUILD_READ_BINDING, pyramid.texture);
   bind.image(PN_PYRAMID_BUILD_WRITE_IMAGE, pyramid.texture, GL_WRITE_ONLY, GL_RGBA32F, 0, true);
-  bind.storage_buffer(PN_PYRAMID_BUILD_TILES_BINDING, listed ? tiles : no_tiles_);
+  bind.storage_buffer(PN_PYRAMID_BUILD_TEXELS_BINDING, listed ? texels : no_texels_);
   bind.uniform(glsl::PnPyramidBuildParams{level, run.first, listed ? run.count : 0});
   const int size = pyramid.map_size - (1 << level) + 1;
   // Ends with the barrier the next level's fetches need.
-  if (listed) program_.dispatch(run.count * kTileSide, kTileSide);
-  else program_.dispatch(size, size);
+  dispatch_texel_run(program_, run, size, size);
 }
 
 void DepthPyramidBuilder::build_into(const GlObject& shadow_map, const DepthPyramid& pyramid) const {
-  for (int level = 0; level < pyramid.levels; ++level) dispatch_level(shadow_map, pyramid, level, {}, no_tiles_);
+  for (int level = 0; level < pyramid.levels; ++level) dispatch_level(shadow_map, pyramid, level, {0, 0, true}, no_texels_);
 }
 
 void DepthPyramidBuilder::update_into(const GlObject& shadow_map, DepthPyramid& pyramid,
-                                      const std::vector<TexelRect>& rects, TileList& tiles, bool dilate) const {
-  tiles.clear();
-  std::vector<TileRun> runs;
+                                      const std::vector<TexelRect>& rects, TexelList& texels, bool dilate) const {
+  texels.clear();
+  std::vector<TexelRun> runs;
   std::vector<TexelRect> at_level;
   for (int level = 0; level < pyramid.levels; ++level) {
     const int size = pyramid.map_size - (1 << level) + 1, reach = dilate ? (1 << level) - 1 : 0;
     at_level.clear();
-    for (const TexelRect& r : rects) at_level.push_back({r.x0 - reach, r.y0 - reach, r.x1, r.y1});
-    runs.push_back(tiles.add(at_level, size, size));
+    for (const TexelRect& r : rects)
+      if (!r.empty()) at_level.push_back({r.x0 - reach, r.y0 - reach, r.x1, r.y1});
+    runs.push_back(texels.add(at_level, size, size));
   }
-  tiles.upload(*context_);
+  texels.upload(*context_);
   for (int level = 0; level < pyramid.levels; ++level)
-    if (runs[static_cast<size_t>(level)].count > 0)
-      dispatch_level(shadow_map, pyramid, level, runs[static_cast<size_t>(level)], tiles.buffer());
+    dispatch_level(shadow_map, pyramid, level, runs[static_cast<size_t>(level)], texels.buffer());
   pyramid.level0 = texture_of_layer(*context_, pyramid.texture, 0, pyramid.map_size, pyramid.map_size, 4);
 }
 

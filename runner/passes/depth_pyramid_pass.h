@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/texel_rect.h"
-#include "gl/tile_list.h"
+#include "gl/texel_list.h"
 
 #include "core/image.h"
 #include "gl/compute_program.h"
@@ -40,18 +40,19 @@ class DepthPyramidBuilder {
   // Rebuilds only what changed where the map changed in `rects` (a shadow-map cache's dirty
   // rectangles): at level i every window that holds a texel of a rectangle — each rectangle
   // dilated by the window's side less one towards the origin (2^i - 1 texels, up to the largest
-  // window's) — as one dispatch a level over their tiles; then re-takes level0 (a copy where
+  // window's) — as one dispatch a level over their texels (where they overlap, a texel is
+  // computed twice, to the same value); then re-takes level0 (a copy where
   // the context has no views). Everything else must already be the pyramid of the map as it is
   // outside the rectangles. `dilate` false is the broken rule a check must catch.
   void update_into(const GlObject& shadow_map, DepthPyramid& pyramid, const std::vector<TexelRect>& rects,
-                   TileList& tiles, bool dilate = true) const;
+                   TexelList& texels, bool dilate = true) const;
 
  private:
-  void dispatch_level(const GlObject& shadow_map, const DepthPyramid& pyramid, int level, TileRun run,
-                      const GlObject& tiles) const;
+  void dispatch_level(const GlObject& shadow_map, const DepthPyramid& pyramid, int level, TexelRun run,
+                      const GlObject& texels) const;
   const Context* context_;
   ComputeProgram program_;
-  GlObject no_tiles_;
+  GlObject no_texels_;
 };
 
 class DepthPyramidQuery {

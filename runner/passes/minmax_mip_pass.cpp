@@ -12,7 +12,7 @@
 namespace pn::glsl {
 #include "passes/minmax_mip_build.h"
 PN_STD140_SIZE(PnMipBuildParams, 16);
-PN_STD140_OFFSET(PnMipBuildParams, tileCount, 8);
+PN_STD140_OFFSET(PnMipBuildParams, texelCount, 8);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -33,7 +33,7 @@ std::size_t MinMaxMipChain::memory_bytes(int map_size) {
 MinMaxMipBuilder::MinMaxMipBuilder(const Context& context, const SourceTree& tree)
     : context_(&context),
       program_(compile_pass(context, tree, "passes/minmax_mip_build.comp")),
-      no_tiles_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
+      no_texels_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
 
 MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
   const auto& gl = context_->gl();
@@ -52,29 +52,29 @@ MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
   return chain;
 }
 
-void MinMaxMipBuilder::dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TileRun run,
-                                      const GlObject& tiles) const {
-  const bool listed = run.count > 0 && run.count <= kMaxTileGroups;
+void MinMaxMipBuilder::dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TexelRun run,
+                                      const GlObject& texels) const {
+  if (!run.whole && run.count <= 0) return;
+  const bool listed = run.count > 0 && !run.whole;
   const glsl::PnMipBuildParams block{level, run.first, listed ? run.count : 0};
   PassBindings bind(*context_);
   bind.uniform(block);
   bind.texture(PN_MINMAX_MIP_SHADOW_MAP_BINDING, shadow_map);
   bind.texture(PN_MINMAX_MIP_READ_BINDING, chain.texture);
   bind.image(PN_MINMAX_MIP_WRITE_BINDING, chain.texture, GL_WRITE_ONLY, GL_RGBA32F, level);
-  bind.storage_buffer(PN_MINMAX_MIP_TILES_BINDING, listed ? tiles : no_tiles_);
+  bind.storage_buffer(PN_MINMAX_MIP_TEXELS_BINDING, listed ? texels : no_texels_);
   const int rows = chain.padded_size >> level;
-  if (listed) program_.dispatch(run.count * kTileSide, kTileSide);
-  else program_.dispatch(std::max(rows / 2, 1), rows);
+  dispatch_texel_run(program_, run, std::max(rows / 2, 1), rows);
 }
 
 void MinMaxMipBuilder::build_into(const GlObject& shadow_map, const MinMaxMipChain& chain) const {
-  for (int level = 0; level < chain.levels; ++level) dispatch_level(shadow_map, chain, level, {}, no_tiles_);
+  for (int level = 0; level < chain.levels; ++level) dispatch_level(shadow_map, chain, level, {0, 0, true}, no_texels_);
 }
 
 void MinMaxMipBuilder::update_into(const GlObject& shadow_map, const MinMaxMipChain& chain,
-                                   const std::vector<TexelRect>& rects, TileList& tiles, bool round_out) const {
-  tiles.clear();
-  std::vector<TileRun> runs;
+                                   const std::vector<TexelRect>& rects, TexelList& texels, bool round_out) const {
+  texels.clear();
+  std::vector<TexelRun> runs;
   std::vector<TexelRect> at_level;
   for (int level = 0; level < chain.levels; ++level) {
     const int rows = chain.padded_size >> level, width = std::max(rows / 2, 1);
@@ -87,12 +87,11 @@ void MinMaxMipBuilder::update_into(const GlObject& shadow_map, const MinMaxMipCh
       if (nx1 <= nx0 || ny1 <= ny0) continue;
       at_level.push_back({nx0 >> 1, ny0, ((nx1 - 1) >> 1) + 1, ny1});
     }
-    runs.push_back(tiles.add(at_level, width, rows));
+    runs.push_back(texels.add(at_level, width, rows));
   }
-  tiles.upload(*context_);
+  texels.upload(*context_);
   for (int level = 0; level < chain.levels; ++level)
-    if (runs[static_cast<size_t>(level)].count > 0)
-      dispatch_level(shadow_map, chain, level, runs[static_cast<size_t>(level)], tiles.buffer());
+    dispatch_level(shadow_map, chain, level, runs[static_cast<size_t>(level)], texels.buffer());
 }
 
 MinMaxMipChain MinMaxMipBuilder::build(const GlObject& shadow_map, int map_size) const {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/texel_rect.h"
-#include "gl/tile_list.h"
+#include "gl/texel_list.h"
 
 #include "gl/compute_program.h"
 #include "shader/source_tree.h"
@@ -36,18 +36,19 @@ class MinMaxMipBuilder {
 
   // Rebuilds only what changed where the map changed in `rects` (a shadow-map cache's dirty
   // rectangles): at level i the nodes holding a texel of a rectangle — each rectangle rounded out
-  // to whole 2^i × 2^i nodes — as one dispatch a level over their tiles. Everything else of the
+  // to whole 2^i × 2^i nodes — as one dispatch a level over their texels (where rectangles
+  // overlap, a texel is computed twice, to the same value). Everything else of the
   // chain must already be the chain of the map as it is outside the rectangles.
   // `round_out` false rounds the rectangles' far ends in: the broken rule a check must catch.
   void update_into(const GlObject& shadow_map, const MinMaxMipChain& chain, const std::vector<TexelRect>& rects,
-                   TileList& tiles, bool round_out = true) const;
+                   TexelList& texels, bool round_out = true) const;
 
  private:
-  void dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TileRun run,
-                      const GlObject& tiles) const;
+  void dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TexelRun run,
+                      const GlObject& texels) const;
   const Context* context_;
   ComputeProgram program_;
-  GlObject no_tiles_;
+  GlObject no_texels_;
 };
 
 }  // namespace pn

@@ -1,5 +1,6 @@
 #include "passes/scene_draw.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.h"
@@ -37,11 +38,15 @@ void check_layout(const std::vector<glm::vec3>& vertices, int expected) {
 void SceneGeometry::update(const std::vector<glm::vec3>& vertices, const std::vector<SceneObject>& objects,
                            const std::vector<int>& which) {
   check_layout(vertices, vertex_count_);
+  if (which.empty()) return;
+  size_t first = vertices.size(), end = 0;
   for (int o : which) {
     const SceneObject& object = objects.at(static_cast<size_t>(o));
-    write_buffer(*context_, buffer_, static_cast<size_t>(object.first_vertex) * sizeof(glm::vec3),
-                 static_cast<size_t>(object.vertex_count) * sizeof(glm::vec3), &vertices[static_cast<size_t>(object.first_vertex)]);
+    first = std::min(first, static_cast<size_t>(object.first_vertex));
+    end = std::max(end, static_cast<size_t>(object.first_vertex) + static_cast<size_t>(object.vertex_count));
   }
+  if (end > vertices.size()) throw Error("scene geometry: an object past the scene's vertices");
+  write_buffer(*context_, buffer_, first * sizeof(glm::vec3), (end - first) * sizeof(glm::vec3), &vertices[first]);
 }
 
 void SceneGeometry::update_all(const std::vector<glm::vec3>& vertices) {
@@ -92,6 +97,21 @@ void RasterTarget::clear(const float clear[4], const std::vector<TexelRect>& rec
   });
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   context_->throw_if_gl_error("clearing a raster target");
+}
+
+void RasterTarget::copy_from(const RasterTarget& source, const std::vector<TexelRect>& rects) const {
+  const auto& gl = context_->gl();
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, source.framebuffer_.id());
+  gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+  const auto blit = [&](const TexelRect& r) {
+    gl.BlitFramebuffer(r.x0, r.y0, r.x1, r.y1, r.x0, r.y0, r.x1, r.y1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  };
+  if (rects.empty()) blit(TexelRect::square(size_));
+  for (const TexelRect& r : rects)
+    if (!r.empty()) blit(intersection(r, TexelRect::square(size_)));
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  context_->throw_if_gl_error("copying between raster targets");
 }
 
 void RasterTarget::draw(const GlObject& program, const SceneGeometry& geometry, const std::vector<VertexRun>& runs,

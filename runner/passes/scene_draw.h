@@ -18,7 +18,8 @@ class SceneGeometry {
   SceneGeometry(const Context& context, const Scene& scene);
   int vertex_count() const { return vertex_count_; }
   // Writes the vertices of objects[o] for each o of `which` from `vertices` (a scene's triangles(), of
-  // the layout the geometry was made with), or every vertex.
+  // the layout the geometry was made with) — one write from the first to the last, the unchanged
+  // vertices between them written again — or every vertex.
   void update(const std::vector<glm::vec3>& vertices, const std::vector<SceneObject>& objects, const std::vector<int>& which);
   void update_all(const std::vector<glm::vec3>& vertices);
   const GlObject& vertex_array() const { return vertex_array_; }
@@ -45,6 +46,9 @@ class RasterTarget {
 
   // Colour to `clear`, depth to the far plane, inside each rectangle (the whole target for none given).
   void clear(const float clear[4], const std::vector<TexelRect>& rects = {}) const;
+  // Colour and depth of `source` (the same size and channels) copied into this target inside each
+  // rectangle (everywhere for none given), bit for bit.
+  void copy_from(const RasterTarget& source, const std::vector<TexelRect>& rects = {}) const;
   // Draws `runs` of `geometry` with `program` (output PN_SCENE_TARGET_LOCATION, nearest surface
   // kept), scissored to each rectangle in turn (unscissored for none given). Binds no resources:
   // the caller's PassBindings holds what the program reads.

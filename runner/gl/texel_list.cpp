@@ -1,0 +1,45 @@
+#include "gl/texel_list.h"
+
+#include <algorithm>
+
+#include "gl/compute_program.h"
+
+namespace pn {
+
+TexelRun TexelList::add(const std::vector<TexelRect>& rects, int width, int height) {
+  TexelRun run{static_cast<int>(texels_.size() / 2), 0, false};
+  long long total = 0;
+  for (const TexelRect& r : rects) total += intersection(r, {0, 0, width, height}).area();
+  if (total > kMaxListedTexels) {
+    run.whole = true;
+    return run;
+  }
+  for (const TexelRect& r : rects) {
+    const TexelRect c = intersection(r, {0, 0, width, height});
+    for (int y = c.y0; y < c.y1; ++y)
+      for (int x = c.x0; x < c.x1; ++x) {
+        texels_.push_back(x);
+        texels_.push_back(y);
+      }
+  }
+  run.count = static_cast<int>(total);
+  return run;
+}
+
+void TexelList::upload(const Context& context) {
+  const size_t bytes = std::max<size_t>(texels_.size(), 2) * sizeof(int);
+  if (capacity_ < bytes) {
+    capacity_ = 2 * bytes;
+    buffer_ = make_buffer(context, capacity_, nullptr, GL_DYNAMIC_DRAW);
+  }
+  if (!texels_.empty()) write_buffer(context, buffer_, 0, texels_.size() * sizeof(int), texels_.data());
+}
+
+void dispatch_texel_run(const ComputeProgram& program, const TexelRun& run, int width, int height) {
+  if (run.whole) return program.dispatch(width, height);
+  if (run.count <= 0) return;
+  const int groups = (run.count + kTexelListGroup - 1) / kTexelListGroup;
+  program.dispatch(groups * 8, 8);  // groups × 1 work groups of 8×8
+}
+
+}  // namespace pn
