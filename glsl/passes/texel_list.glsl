@@ -8,6 +8,10 @@
 #ifndef PENUMBRA_TEXEL_LIST_GLSL
 #define PENUMBRA_TEXEL_LIST_GLSL
 
+#ifndef PN_TEXEL_LIST_BINDING
+#define PN_TEXEL_LIST_BINDING 7  // standalone (lint, bundle); every pass defines its own
+#endif
+
 layout(std430, binding = PN_TEXEL_LIST_BINDING) readonly buffer PnTexelList {
   ivec2 pnListedTexels[];
 };

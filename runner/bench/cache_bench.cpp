@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/progress.h"
+#include "figures/line_chart.h"
 #include "gl/gpu_timer.h"
 #include "passes/gbuffer_pass.h"
 #include "scene/animated_scene.h"
@@ -142,6 +143,31 @@ nlohmann::json cache_bench_json(const CacheBenchSetup& setup, const CacheBench& 
                     {"frame_ms", r.frame_ms}, {"redrawn_share", r.redrawn_share}});
   return {{"scene", bench.scene}, {"triangles", bench.triangles}, {"frames", setup.frames}, {"warmup", setup.warmup},
           {"screen", setup.screen}, {"rows", rows}};
+}
+
+Canvas cache_bench_chart(const CacheBench& bench, const std::string& title) {
+  ChartPanel stage{"shadow-map stage: drawing, composition, mip chain", "K (share of moving triangles)", "GPU ms (median)", {}};
+  ChartPanel frame{"whole frame: shadow-map stage + Fast PCSS", "K (share of moving triangles)", "frames per second (1000 / median ms)", {}};
+  std::vector<int> sizes;
+  std::vector<std::string> sources;
+  for (const CacheBenchRow& r : bench.rows) {
+    if (std::find(sizes.begin(), sizes.end(), r.size) == sizes.end()) sizes.push_back(r.size);
+    if (std::find(sources.begin(), sources.end(), r.source) == sources.end()) sources.push_back(r.source);
+  }
+  const Rgb colours[] = {{90, 90, 90}, {33, 102, 172}, {200, 40, 40}, {30, 140, 60}, {150, 80, 170}};
+  for (size_t z = 0; z < sizes.size(); ++z)
+    for (size_t s = 0; s < sources.size(); ++s) {
+      ChartSeries a{sources[s] + " " + std::to_string(sizes[z]) + "²", colours[s % std::size(colours)], z % 2 == 1, {}};
+      ChartSeries b = a;
+      for (const CacheBenchRow& r : bench.rows)
+        if (r.size == sizes[z] && r.source == sources[s]) {
+          a.points.emplace_back(r.k, r.map_ms);
+          b.points.emplace_back(r.k, r.frame_ms > 0.0 ? 1000.0 / r.frame_ms : NAN);
+        }
+      stage.series.push_back(a);
+      frame.series.push_back(b);
+    }
+  return draw_line_charts(title, {stage, frame});
 }
 
 }  // namespace pn

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "figures/canvas.h"
 #include "gl/context.h"
 #include "shader/source_tree.h"
 
@@ -55,5 +56,9 @@ struct CacheBench {
 CacheBench bench_cache(const Context& context, const SourceTree& tree, const CacheBenchSetup& setup);
 void print_cache_bench(std::ostream& out, const CacheBench& bench);
 nlohmann::json cache_bench_json(const CacheBenchSetup& setup, const CacheBench& bench);
+
+// The seed's Fig. 9 for this run: the shadow-map stage's GPU ms and the whole Fast PCSS frame's
+// rate (frames a second) against K, a line per source and map size. `title` heads it.
+Canvas cache_bench_chart(const CacheBench& bench, const std::string& title);
 
 }  // namespace pn

@@ -26,6 +26,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::vector<std::string> methods;
     int max_level = 31;
     std::string json;
+    std::string plot;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
@@ -50,6 +51,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512)");
   cmd->add_option("--animated-scene", opt->cache.scene, "cache: moving_city | moving (default moving_city)");
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
+  cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG");
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([opt, repeats, sizes, truth_samples, &global, &exit_code] {
@@ -79,6 +81,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       validate_traversal_bench_setup(opt->traversal);
     }
     if (!opt->json.empty()) validate_output_path(opt->json);  // before the bench's minutes of work
+    if (!opt->plot.empty() && opt->what != "cache") throw Error("--plot: only bench cache draws its plot (sweep: scripts/plot_sweep.py)");
+    if (!opt->plot.empty()) validate_output_path(opt->plot);
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "
@@ -96,6 +100,12 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const CacheBench bench = bench_cache(*context, tree, opt->cache);
       print_cache_bench(std::cout, bench);
       results = cache_bench_json(opt->cache, bench);
+      if (!opt->plot.empty()) {
+        cache_bench_chart(bench, "penumbra bench cache: '" + bench.scene + "', " + std::to_string(bench.triangles) +
+                                     " triangles, Fast PCSS at " + std::to_string(opt->cache.screen) + "², " +
+                                     context->renderer()).write_png(opt->plot);
+        std::cout << "wrote " << opt->plot << "\n";
+      }
     } else if (opt->what == "pipeline") {
       const auto rows = bench_pipeline(*context, tree, opt->pipeline);
       print_pipeline_bench(std::cout, rows);

@@ -4,6 +4,7 @@
 #include "cli/commands.h"
 #include "core/bounds.h"
 #include "core/error.h"
+#include "render/frames_job.h"
 #include "render/render_job.h"
 #include "technique/technique_registry.h"
 
@@ -13,10 +14,13 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto setup = std::make_shared<RenderSetup>();
   auto methods = std::make_shared<std::vector<std::string>>();
   auto stages = std::make_shared<bool>(false);
+  auto frames = std::make_shared<FramesSetup>();
   auto* cmd = app.add_subcommand("render", "Render a scene with every technique, scored against the ray-traced truth and exact PCSS: PNGs, a labelled sheet, tables");
-  cmd->add_option("--scene", setup->scene, "boxes | fence | tall_blocker (default boxes)");
+  auto* scene = cmd->add_option("--scene", setup->scene, "boxes | fence | tall_blocker (default boxes); with --frames: moving | moving_city (default moving)");
   cmd->add_option("--model", setup->model, "A mesh file (any format Assimp reads: glTF, OBJ, ...) placed on the ground instead of --scene");
-  cmd->add_option("--source", setup->source, "Shadow-map source (default full)");
+  auto* source = cmd->add_option("--source", setup->source, "Shadow-map source: full | two-map | dirty-rect (default full; with --frames dirty-rect)");
+  auto* frame_count = cmd->add_option("--frames", frames->frames, "Render this many frames of an animated scene with one technique (--methods, default fast): a lit image and a shadow map with the changed rectangles a frame, and the timing table");
+  cmd->add_option("--k", frames->k, "With --frames: share K of moving triangles, 0..1 (default 0.3)");
   cmd->add_option("--light-scale", setup->light_scale, "Multiply the scene's light width by this (default 1): wider penumbrae");
   cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 512)");
   cmd->add_option("--screen", setup->screen_size, "Screen size (default 512)");
@@ -29,7 +33,27 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--glsl-root", global.glsl_root, "Render with the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   add_api_option(*cmd, global);
-  cmd->callback([setup, methods, stages, &global, &exit_code] {
+  cmd->callback([setup, methods, stages, frames, scene, source, frame_count, &global, &exit_code] {
+    if (frame_count->count() > 0) {
+      if (scene->count() > 0) frames->scene = setup->scene;
+      if (source->count() > 0) frames->source = setup->source;
+      if (methods->size() > 1) throw Error("render --frames: expected one method, got " + std::to_string(methods->size()));
+      if (methods->size() == 1) frames->method = parse_technique(methods->front());
+      frames->model = setup->model;
+      frames->map_size = setup->map_size;
+      frames->screen_size = setup->screen_size;
+      frames->out = setup->out;
+      validate_frames_setup(*frames);  // before looking for a GL context
+      const Api api = chosen_api(global);
+      const SourceTree tree(glsl_root_or_default(global));
+      const auto context = create_context(chosen_backend(global), api);
+      std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << "\n";
+      const FramesResult result = run_frames(*context, tree, *frames);
+      print_frames_table(std::cout, *frames, result);
+      std::cout << "wrote " << result.written.size() << " files into " << frames->out.string() << "\n";
+      exit_code = 0;
+      return;
+    }
     if (!methods->empty()) require_list_length("methods", methods->size());
     for (const std::string& spec : *methods) setup->methods.push_back(parse_technique(spec));
     validate_render_setup(*setup);  // bad input is reported before looking for a GL context

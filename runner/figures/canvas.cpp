@@ -51,6 +51,18 @@ Rgb Canvas::pixel(int x, int y) const {
   return {p[0], p[1], p[2]};
 }
 
+void Canvas::line(double x0, double y0, double x1, double y1, Rgb colour, int width, int dash) {
+  const double length = std::hypot(x1 - x0, y1 - y0);
+  const int steps = std::max(1, static_cast<int>(std::ceil(2.0 * length)));
+  for (int i = 0; i <= steps; ++i) {
+    const double t = static_cast<double>(i) / steps;
+    if (dash > 0 && static_cast<int>(t * length / dash) % 2 == 1) continue;
+    const int x = static_cast<int>(std::lround(x0 + t * (x1 - x0))) - width / 2;
+    const int y = static_cast<int>(std::lround(y0 + t * (y1 - y0))) - width / 2;
+    fill(x, y, width, width, colour);
+  }
+}
+
 void Canvas::outline(int x, int y, int w, int h, Rgb colour, int thickness) {
   fill(x, y, w, thickness, colour);
   fill(x, y + h - thickness, w, thickness, colour);

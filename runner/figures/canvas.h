@@ -38,6 +38,9 @@ class Canvas {
   // Blends `colour` over the rectangle with opacity `alpha` in [0, 1]; clipped to the canvas.
   void fill(int x, int y, int w, int h, Rgb colour, float alpha = 1.0f);
   void outline(int x, int y, int w, int h, Rgb colour, int thickness = 1);
+  // A straight line from (x0, y0) to (x1, y1), `width` pixels wide (squares stamped every half
+  // pixel along it); `dash` > 0: drawn `dash` pixels, left `dash` pixels, and so on. Clipped.
+  void line(double x0, double y0, double x1, double y1, Rgb colour, int width = 2, int dash = 0);
   // Draws channel `channel` of `image`, each texel a scale×scale block, grey from lo (black) to hi (white);
   // non-finite values are drawn in `nonfinite`.
   void grey(const Image& image, int channel, int x, int y, int scale, float lo, float hi, Rgb nonfinite);
