@@ -4,8 +4,9 @@
 // K of moving triangles and each map size: per frame the GPU time of the
 // shadow-map stage (drawing, composition and the update of Fast PCSS's mip
 // chain) and of the whole Fast PCSS frame (that stage plus the technique),
-// medians over the frames. The sources run frame by frame in turn, so a
-// machine whose speed drifts slows them alike.
+// medians over the frames. The sources run frame by frame in turn (each
+// frame starting with the next one, each stage on an idle GPU), so a machine
+// whose speed drifts slows them alike and none pays for another's leftovers.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -37,7 +37,7 @@ enum class CacheScheme { whole_maps, dirty_rects };
 // each is one scissored draw of every static object.
 inline constexpr size_t kMaxStaticRects = 8;
 // A frame whose changed rectangles cover this share of the map or more is drawn whole.
-inline constexpr double kWholeFrameShare = 0.5;
+inline constexpr double kWholeFrameShare = 0.75;
 
 class DepthCacheSource : public ShadowMapSource {
  public:

@@ -18,7 +18,7 @@ double nice_tick_step(double top, int count) {
 Canvas draw_line_charts(const std::string& title, const std::vector<ChartPanel>& panels) {
   const Font font;
   const Rgb ink{20, 20, 20}, grid{225, 225, 225};
-  const int text = 13, panel_w = 460, panel_h = 330, left = 62, right = 16, top = 46, bottom = 44, gap = 24;
+  const int text = 13, panel_w = 460, panel_h = 330, left = 62, right = 16, top = 62, bottom = 44, gap = 24;
   const size_t legend_items = panels.empty() ? 0 : panels.front().series.size();
   const int legend_rows = static_cast<int>((legend_items + 2) / 3);
   const int width = static_cast<int>(panels.size()) * (left + panel_w + right) + (static_cast<int>(panels.size()) - 1) * gap;
