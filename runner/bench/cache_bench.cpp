@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <memory>
@@ -59,7 +58,7 @@ CacheBench bench_cache(const Context& context, const SourceTree& tree, const Cac
   TechniqueResources resources(context, tree);
   const std::unique_ptr<Technique> fast = parse_technique(kFast)->create(resources);
   SourceOptions options;
-  options.mip_chain = !std::getenv("PN_NO_MIP");  // what Fast PCSS reads: kept by every source, so its update is in the stage
+  options.mip_chain = true;  // what Fast PCSS reads: kept by every source, so its update is in the stage
   CacheBench bench;
   bench.scene = setup.scene + (model.empty() ? "" : " + " + model.filename().string());
   Progress progress("bench cache", setup.sizes.size() * setup.ks.size());
