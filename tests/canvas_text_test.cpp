@@ -221,3 +221,25 @@ TEST_CASE("colour bar: positive end on top, negative at the bottom, white in the
   CHECK(box.x + box.width > 10 + 12 + 4 + dejavu().text_width("\u22120.05", 12) - 1);
   CHECK(changes(canvas, box, {200, 200, 200}).outside == 0);
 }
+
+TEST_CASE("canvas lines: a horizontal line covers its pixels and no others, a dashed one leaves gaps, clipped at the edges") {
+  pn::Canvas canvas(40, 20, kWhite);
+  canvas.line(5, 10, 30, 10, kInk, 1);
+  int inked = 0;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 40; ++x)
+      if (canvas.pixel(x, y) == kInk) {
+        ++inked;
+        CHECK(y == 10);
+        CHECK((x >= 5 && x <= 30));
+      }
+  CHECK(inked == 26);
+  pn::Canvas dashed(40, 20, kWhite);
+  dashed.line(0, 5, 39, 5, kInk, 1, 4);
+  CHECK(dashed.pixel(1, 5) == kInk);   // drawn 0..3
+  CHECK(dashed.pixel(5, 5) == kWhite);  // left 4..7
+  CHECK(dashed.pixel(9, 5) == kInk);
+  pn::Canvas clipped(10, 10, kWhite);
+  CHECK_NOTHROW(clipped.line(-50, -50, 60, 60, kInk, 3));
+  CHECK(clipped.pixel(5, 5) == kInk);
+}
