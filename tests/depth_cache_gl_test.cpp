@@ -84,7 +84,9 @@ TEST_CASE("negative: a dirty-rectangle cache that rounds its rectangles in for t
           "full render but a stale mip chain and pyramid") {
   const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
   const pn::CheckOptions options;
-  pn::MotionSequence sequence{"dirty-rect", 0.3};
+  pn::MotionSequence sequence;
+  sequence.source = "dirty-rect";
+  sequence.k = 0.3;
   sequence.frames = 40;
   sequence.options.dilate_updates = false;
   const auto results = pn::run_motion_sequence({pn::test::gl_context(), tree, options}, sequence);

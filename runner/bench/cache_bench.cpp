@@ -22,11 +22,6 @@ namespace {
 
 constexpr const char* kFast = "fast";
 
-std::filesystem::path model_of(const CacheBenchSetup& setup) {
-  if (!setup.model.empty()) return setup.model;
-  return std::filesystem::exists(fixtures::kAnimatedModel) ? fixtures::kAnimatedModel : "";
-}
-
 const CacheBenchRow* find_row(const CacheBench& bench, int size, double k, const std::string& source) {
   for (const CacheBenchRow& r : bench.rows)
     if (r.size == size && r.k == k && r.source == source) return &r;
@@ -53,7 +48,7 @@ void validate_cache_bench_setup(const CacheBenchSetup& setup) {
 
 CacheBench bench_cache(const Context& context, const SourceTree& tree, const CacheBenchSetup& setup) {
   validate_cache_bench_setup(setup);
-  const std::filesystem::path model = model_of(setup);
+  const std::filesystem::path model = animated_scene_model(setup.model);
   const GBufferRenderer gbuffers(context, tree);
   TechniqueResources resources(context, tree);
   const std::unique_ptr<Technique> fast = parse_technique(kFast)->create(resources);
@@ -76,7 +71,7 @@ CacheBench bench_cache(const Context& context, const SourceTree& tree, const Cac
         const Scene scene = animation.frame(f);
         bench.triangles = static_cast<int>(scene.triangles().size() / 3);
         const bool timed = f >= setup.warmup;
-        if (timed) moving += animation.moving_triangles(f) / std::max(1.0, double(animation.movable_triangles()));
+        if (timed) moving += animation.moving_share(f);
         const GlObject gbuffer = gbuffers.render(scene, setup.screen, fixtures::kNormalOffsetTexels);
         // Each frame starts with the next source in turn, and each source's stage starts on an idle
         // GPU: work left by the one before (llvmpipe frees the textures of a technique's frame at
@@ -96,9 +91,7 @@ CacheBench bench_cache(const Context& context, const SourceTree& tree, const Cac
           map_ms[s].push_back(stage_ms);
           fast_ms[s].push_back(technique_ms);
           frame_ms[s].push_back(stage_ms + technique_ms);
-          double texels = 0.0;
-          for (const TexelRect& r : sourced.redrawn) texels += static_cast<double>(r.area());
-          redrawn[s] += std::min(1.0, texels / (double(n) * n));
+          redrawn[s] += map_share(sourced.redrawn, n);
         }
       }
       for (size_t s = 0; s < count; ++s) {

@@ -20,12 +20,6 @@ std::vector<VertexRun> runs_of(const std::vector<SceneObject>& objects, const Ta
   return runs;
 }
 
-long long total_area(const std::vector<TexelRect>& rects) {
-  long long a = 0;
-  for (const TexelRect& r : rects) a += r.area();
-  return a;
-}
-
 }  // namespace
 
 DepthCacheSource::DepthCacheSource(const Context& context, const SourceTree& tree, CacheScheme scheme,

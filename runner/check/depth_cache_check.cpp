@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "core/format.h"
 #include "core/seeded_random.h"
@@ -118,16 +119,6 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
   }
 }
 
-Image read_mip_level(const Context& context, const MinMaxMipChain& chain, int level) {
-  const int rows = chain.padded_size >> level, width = std::max(rows / 2, 1);
-  return read_float_texture_layer(context, chain.texture, 0, width, rows, 4, level);
-}
-
-Image read_pyramid_level(const Context& context, const DepthPyramid& pyramid, int level) {
-  const int size = pyramid.map_size - (1 << level) + 1;
-  return read_float_texture_layer(context, pyramid.texture, level, size, size, 4);
-}
-
 // What the sequence exercised, counted from the scenes themselves.
 struct MotionEvents {
   int starts = 0, stops = 0, exits = 0, crossings = 0;
@@ -143,7 +134,7 @@ bool outside_map(const Box& b) {
 std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const MotionSequence& sequence) {
   const Context& context = env.context;
   const int n = sequence.map_size;
-  const std::filesystem::path model = std::filesystem::exists(fixtures::kAnimatedModel) ? fixtures::kAnimatedModel : "";
+  const std::filesystem::path model = animated_scene_model("");
   AnimatedScene animation(find_animated_scene_fixture("moving"), sequence.k, n, model);
   SourceOptions options = sequence.options;
   options.mip_chain = true;
@@ -168,7 +159,7 @@ std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const M
 
     const MinMaxMipChain rebuilt = mip_builder.build(reference, n);
     for (int level = 0; level < rebuilt.levels; ++level)
-      mip.add(compare(read_mip_level(context, rebuilt, level), read_mip_level(context, *cached.mip, level), exact), f);
+      mip.add(compare(read_mip_chain_level(context, rebuilt, level), read_mip_chain_level(context, *cached.mip, level), exact), f);
     if (f % kPyramidEvery == 0 || f + 1 == sequence.frames) {
       const DepthPyramid whole = pyramid_builder.build(reference, n, n, 31);
       for (int level = 0; level < whole.levels; ++level)
@@ -221,7 +212,10 @@ std::vector<CaseResult> run_depth_cache_check(const CheckEnvironment& env) {
   std::vector<CaseResult> results;
   module_cases(env, results);
   compose_pass_cases(env, results);
-  for (const MotionSequence& s : {MotionSequence{"two-map", 0.3}, MotionSequence{"dirty-rect", 0.3}, MotionSequence{"dirty-rect", 1.0}}) {
+  for (const auto& [source, k] : {std::pair{"two-map", 0.3}, std::pair{"dirty-rect", 0.3}, std::pair{"dirty-rect", 1.0}}) {
+    MotionSequence s;
+    s.source = source;
+    s.k = k;
     const std::vector<CaseResult> cases = run_motion_sequence(env, s);
     results.insert(results.end(), cases.begin(), cases.end());
   }

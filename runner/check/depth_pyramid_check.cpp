@@ -76,8 +76,7 @@ std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
       const DepthPyramid pyramid = builder.build(map_texture, n, n, 31);
       const float m = largest_finite_magnitude(map, FLT_MIN);
       for (int level = 0; level < pyramid.levels; ++level) {
-        const int size = n - (1 << level) + 1;
-        const Image observed = read_float_texture_layer(env.context, pyramid.texture, level, size, size, 4);
+        const Image observed = read_pyramid_level(env.context, pyramid, level);
         const Image expected = pyramid_level_reference(map, level);
         const std::string name = label(fixture.name, n) + " level " + std::to_string(level);
         const Tolerance exact = Tolerance::exact();

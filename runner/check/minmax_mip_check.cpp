@@ -38,11 +38,6 @@ Image expected_level(const Image& depth, int padded, int level) {
   return out;
 }
 
-Image read_level(const Context& context, const MinMaxMipChain& chain, int level) {
-  const int rows = chain.padded_size >> level, width = std::max(rows / 2, 1);
-  return read_float_texture_layer(context, chain.texture, 0, width, rows, 4, level);
-}
-
 }  // namespace
 
 std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env) {
@@ -56,7 +51,7 @@ std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env) {
       const MinMaxMipChain chain = builder.build(upload_float_texture(env.context, map), n);
       for (int level = 0; level < chain.levels; ++level) {
         const Image expected = expected_level(depth, chain.padded_size, level);
-        const Image observed = read_level(env.context, chain, level);
+        const Image observed = read_mip_chain_level(env.context, chain, level);
         results.push_back({std::string(fixture.name) + " " + std::to_string(n) + "x" + std::to_string(n) + " (P = " +
                                std::to_string(chain.padded_size) + ") level " + std::to_string(level) +
                                ": texel (c, r) = (min, max) of nodes 2c, 2c+1",

@@ -31,6 +31,18 @@ inline TexelRect intersection(const TexelRect& a, const TexelRect& b) {
 
 inline bool overlap(const TexelRect& a, const TexelRect& b) { return !intersection(a, b).empty(); }
 
+// The rectangles' areas summed (a texel two of them hold counts twice).
+inline long long total_area(const std::vector<TexelRect>& rects) {
+  long long a = 0;
+  for (const TexelRect& r : rects) a += r.area();
+  return a;
+}
+
+// total_area as a share of an n×n map, at most 1.
+inline double map_share(const std::vector<TexelRect>& rects, int n) {
+  return std::min(1.0, static_cast<double>(total_area(rects)) / (static_cast<double>(n) * n));
+}
+
 // The rectangles with the empty ones dropped and overlapping ones replaced by
 // their bounding rectangle until none overlap; more than `max_count` left
 // become their one bounding rectangle. O(n²) a pass.

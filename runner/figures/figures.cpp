@@ -60,8 +60,7 @@ Canvas pyramid_figure(const Context& context, const SourceTree& tree) {
   const DepthPyramid pyramid = builder.build(upload_float_texture(context, map), n, n, 31);
   Canvas canvas(4 * n * scale + 5 * gap, 2 * n * scale + 3 * gap, kPaper);
   for (int i = 0; i < 4; ++i) {
-    const int size = n - (1 << levels[i]) + 1;
-    const Image level = read_float_texture_layer(context, pyramid.texture, levels[i], size, size, 4);
+    const Image level = read_pyramid_level(context, pyramid, levels[i]);
     const int x = gap + i * (n * scale + gap);
     canvas.outline(x - 1, gap - 1, n * scale + 2, n * scale + 2, kGrid);
     canvas.outline(x - 1, 2 * gap + n * scale - 1, n * scale + 2, n * scale + 2, kGrid);

@@ -22,6 +22,11 @@ std::size_t DepthPyramid::memory_bytes(int map_size, int levels) {
   return std::size_t{16} * static_cast<std::size_t>(map_size) * map_size * levels;
 }
 
+Image read_pyramid_level(const Context& context, const DepthPyramid& pyramid, int level) {
+  const int size = pyramid.level_size(level);
+  return read_float_texture_layer(context, pyramid.texture, level, size, size, 4);
+}
+
 void validate_shadow_map_size(int width, int height) {
   if (width != height)
     throw Error("shadow map " + std::to_string(width) + "x" + std::to_string(height) +
@@ -57,7 +62,7 @@ void DepthPyramidBuilder::dispatch_level(const GlObject& shadow_map, const Depth
   bind.image(PN_PYRAMID_BUILD_WRITE_IMAGE, pyramid.texture, GL_WRITE_ONLY, GL_RGBA32F, 0, true);
   bind.storage_buffer(PN_PYRAMID_BUILD_TEXELS_BINDING, listed ? texels : no_texels_);
   bind.uniform(glsl::PnPyramidBuildParams{level, run.first, listed ? run.count : 0});
-  const int size = pyramid.map_size - (1 << level) + 1;
+  const int size = pyramid.level_size(level);
   // Ends with the barrier the next level's fetches need.
   dispatch_texel_run(program_, run, size, size);
 }
@@ -72,7 +77,7 @@ void DepthPyramidBuilder::update_into(const GlObject& shadow_map, DepthPyramid& 
   std::vector<TexelRun> runs;
   std::vector<TexelRect> at_level;
   for (int level = 0; level < pyramid.levels; ++level) {
-    const int size = pyramid.map_size - (1 << level) + 1, reach = dilate ? (1 << level) - 1 : 0;
+    const int size = pyramid.level_size(level), reach = dilate ? (1 << level) - 1 : 0;
     at_level.clear();
     for (const TexelRect& r : rects)
       if (!r.empty()) at_level.push_back({r.x0 - reach, r.y0 - reach, r.x1, r.y1});

@@ -24,7 +24,12 @@ struct DepthPyramid {
 
   // Bytes of GPU memory: 16 · N² · levels.
   static std::size_t memory_bytes(int map_size, int levels);
+  // Window origins a side of level `level` holds: N − 2^level + 1.
+  int level_size(int level) const { return map_size - (1 << level) + 1; }
 };
+
+// Level `level` read back: level_size(level)² texels of (min, max, mean, 0).
+Image read_pyramid_level(const Context& context, const DepthPyramid& pyramid, int level);
 
 class DepthPyramidBuilder {
  public:

@@ -30,6 +30,10 @@ std::size_t MinMaxMipChain::memory_bytes(int map_size) {
   return 16 * texels;  // RGBA32F texels, two nodes each
 }
 
+Image read_mip_chain_level(const Context& context, const MinMaxMipChain& chain, int level) {
+  return read_float_texture_layer(context, chain.texture, 0, chain.level_width(level), chain.level_rows(level), 4, level);
+}
+
 MinMaxMipBuilder::MinMaxMipBuilder(const Context& context, const SourceTree& tree)
     : context_(&context),
       program_(compile_pass(context, tree, "passes/minmax_mip_build.comp")),
@@ -63,8 +67,7 @@ void MinMaxMipBuilder::dispatch_level(const GlObject& shadow_map, const MinMaxMi
   bind.texture(PN_MINMAX_MIP_READ_BINDING, chain.texture);
   bind.image(PN_MINMAX_MIP_WRITE_BINDING, chain.texture, GL_WRITE_ONLY, GL_RGBA32F, level);
   bind.storage_buffer(PN_MINMAX_MIP_TEXELS_BINDING, listed ? texels : no_texels_);
-  const int rows = chain.padded_size >> level;
-  dispatch_texel_run(program_, run, std::max(rows / 2, 1), rows);
+  dispatch_texel_run(program_, run, chain.level_width(level), chain.level_rows(level));
 }
 
 void MinMaxMipBuilder::build_into(const GlObject& shadow_map, const MinMaxMipChain& chain) const {
@@ -77,7 +80,6 @@ void MinMaxMipBuilder::update_into(const GlObject& shadow_map, const MinMaxMipCh
   std::vector<TexelRun> runs;
   std::vector<TexelRect> at_level;
   for (int level = 0; level < chain.levels; ++level) {
-    const int rows = chain.padded_size >> level, width = std::max(rows / 2, 1);
     at_level.clear();
     for (const TexelRect& r : rects) {
       if (r.empty()) continue;
@@ -87,7 +89,7 @@ void MinMaxMipBuilder::update_into(const GlObject& shadow_map, const MinMaxMipCh
       if (nx1 <= nx0 || ny1 <= ny0) continue;
       at_level.push_back({nx0 >> 1, ny0, ((nx1 - 1) >> 1) + 1, ny1});
     }
-    runs.push_back(texels.add(at_level, width, rows));
+    runs.push_back(texels.add(at_level, chain.level_width(level), chain.level_rows(level)));
   }
   texels.upload(*context_);
   for (int level = 0; level < chain.levels; ++level)

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/image.h"
 #include "core/texel_rect.h"
 #include "gl/texel_list.h"
 
@@ -23,7 +24,13 @@ struct MinMaxMipChain {
 
   static int padded_size_for(int map_size);
   static std::size_t memory_bytes(int map_size);  // 16 bytes × texels of every level (8 a node)
+  // Texels of level `level`: P / 2^level rows, half as many (at least one) across.
+  int level_rows(int level) const { return padded_size >> level; }
+  int level_width(int level) const { return level_rows(level) / 2 > 0 ? level_rows(level) / 2 : 1; }
 };
+
+// Level `level` read back as the texture holds it: texel (c, r) = nodes 2c and 2c + 1 of row r.
+Image read_mip_chain_level(const Context& context, const MinMaxMipChain& chain, int level);
 
 class MinMaxMipBuilder {
  public:

@@ -26,11 +26,6 @@ constexpr const char* kDefaultMethod = "fast";
 constexpr float kDepthBlack = 10.0f, kDepthWhite = 21.0f;
 constexpr Rgb kChanged{220, 30, 30};
 
-std::filesystem::path model_of(const FramesSetup& setup) {
-  if (!setup.model.empty()) return setup.model;
-  return std::filesystem::exists(fixtures::kAnimatedModel) ? fixtures::kAnimatedModel : "";
-}
-
 std::string frame_stem(const std::string& scene, int f) {
   char name[32];
   std::snprintf(name, sizeof name, "_frame_%04d", f);
@@ -51,7 +46,7 @@ void validate_frames_setup(const FramesSetup& s) {
 
 FramesResult run_frames(const Context& context, const SourceTree& tree, const FramesSetup& setup) {
   validate_frames_setup(setup);
-  AnimatedScene animation(find_animated_scene_fixture(setup.scene), setup.k, setup.map_size, model_of(setup));
+  AnimatedScene animation(find_animated_scene_fixture(setup.scene), setup.k, setup.map_size, animated_scene_model(setup.model));
   SourceOptions options;
   options.mip_chain = true;  // Fast PCSS's structure, kept by the source
   const auto source = find_shadow_map_source(setup.source).make(context, tree, options);
@@ -78,10 +73,8 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
     FrameRow row;
     row.frame = f;
     row.map_ms = clock.read().front().second;
-    row.moving_share = animation.moving_triangles(f) / std::max(1.0, double(animation.movable_triangles()));
-    double texels = 0.0;
-    for (const TexelRect& r : sourced.changed) texels += static_cast<double>(r.area());
-    row.changed_share = std::min(1.0, texels / (double(n) * n));
+    row.moving_share = animation.moving_share(f);
+    row.changed_share = map_share(sourced.changed, n);
     const GlObject gbuffer = gbuffers.render(scene, size, fixtures::kNormalOffsetTexels);
     const TechniqueInputs inputs{scene.light, size, sourced.map, &gbuffer, sourced.mip, sourced.pyramid};
     const TechniqueFrame frame = technique->run(inputs, false);

@@ -22,6 +22,11 @@ const fixtures::AnimatedSceneFixture& find_animated_scene_fixture(const std::str
   throw Error("animated scene '" + name + "': expected one of " + names);
 }
 
+std::filesystem::path animated_scene_model(const std::filesystem::path& chosen) {
+  if (!chosen.empty()) return chosen;
+  return std::filesystem::exists(fixtures::kAnimatedModel) ? fixtures::kAnimatedModel : "";
+}
+
 void validate_moving_share(double k, const char* what) {
   if (!(k >= 0.0 && k <= 1.0)) throw Error(std::string(what) + " " + std::to_string(k) + ": expected 0 <= K <= 1");
 }
@@ -116,6 +121,11 @@ int AnimatedScene::moving_triangles(int f) {
   for (size_t i = 0; i < movers_.size(); ++i)
     if (moving_[i]) n += movers_[i].triangles;
   return n;
+}
+
+double AnimatedScene::moving_share(int f) {
+  const int moving = moving_triangles(f);
+  return movable_triangles_ > 0 ? static_cast<double>(moving) / movable_triangles_ : 0.0;
 }
 
 Scene AnimatedScene::frame(int f) {

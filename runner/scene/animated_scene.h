@@ -22,6 +22,10 @@ namespace pn {
 // The fixture called `name`; throws Error listing the names.
 const fixtures::AnimatedSceneFixture& find_animated_scene_fixture(const std::string& name);
 
+// The model an animated scene carries: `chosen`, or fixtures::kAnimatedModel when `chosen` is empty
+// and that file exists, else none (empty: boxes only).
+std::filesystem::path animated_scene_model(const std::filesystem::path& chosen);
+
 // Throws Error unless 0 <= k <= 1 (named `what`).
 void validate_moving_share(double k, const char* what);
 
@@ -38,6 +42,8 @@ class AnimatedScene {
   int movable_triangles() const { return movable_triangles_; }
   // The triangles of the objects P sets moving for frame f (0 for frame 0).
   int moving_triangles(int f);
+  // moving_triangles(f) / movable_triangles() (0 without movable triangles).
+  double moving_share(int f);
 
  private:
   struct Mover {
