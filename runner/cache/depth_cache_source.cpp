@@ -75,9 +75,10 @@ const SourcedMap& DepthCacheSource::render(const Scene& scene) {
         static_->clear(ShadowMapRenderer::far_clear());
         renderer_.draw(scene, *geometry_, *static_, still);
         out_.redrawn = {whole};
+      } else {  // only the moving objects were drawn, into the dynamic map
+        for (const ObjectFrame& o : objects)
+          if (o.dynamic) out_.redrawn.push_back(o.bounds);
       }
-      for (const ObjectFrame& o : objects)
-        if (o.dynamic && out_.redrawn.size() != 1) out_.redrawn.push_back(o.bounds);
       compose_whole(scene, moving);
     } else {
       // The static map changes where an object left it (started moving: its old place) or joined
