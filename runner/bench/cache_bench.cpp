@@ -69,7 +69,7 @@ CacheBench bench_cache(const Context& context, const SourceTree& tree, const Cac
       double moving = 0.0;
       for (int f = 0; f < setup.warmup + setup.frames; ++f) {
         const Scene scene = animation.frame(f);
-        bench.triangles = static_cast<int>(scene.triangles().size() / 3);
+        if (f == 0) bench.triangles = static_cast<int>(scene.triangles().size() / 3);
         const bool timed = f >= setup.warmup;
         if (timed) moving += animation.moving_share(f);
         const GlObject gbuffer = gbuffers.render(scene, setup.screen, fixtures::kNormalOffsetTexels);

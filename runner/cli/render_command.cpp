@@ -45,6 +45,7 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       frames->out = setup->out;
       validate_frames_setup(*frames);  // before looking for a GL context
       const Api api = chosen_api(global);
+      create_output_directory(frames->out);  // an --out that cannot be made is refused before any GL work
       const SourceTree tree(glsl_root_or_default(global));
       const auto context = create_context(chosen_backend(global), api);
       std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << "\n";
