@@ -40,6 +40,9 @@ const std::vector<ModuleCheck>& module_checks() {
       {"depth_cache", "min(static, dynamic) and its shadow test vs the definition; both caches over 100-frame motion "
                       "sequences vs a full render (map, mip chain, pyramid, Fast PCSS: exact)",
        &run_depth_cache_check},
+      {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
+                   "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
+       &run_cascades_check},
   };
   return checks;
 }
