@@ -48,3 +48,29 @@ TEST_CASE("negative: a light with a negative or NaN width, near >= far or a bad 
   CHECK_THROWS_WITH(l.validate(), Catch::Contains("light field of view 4"));
   CHECK_NOTHROW(light().validate());
 }
+
+TEST_CASE("directional light: the sun's rays spread S = 2 tan(theta / 2) per unit of distance, on an orthographic map") {
+  // S = 0.01 (theta ~ 0.573 deg), texels 0.05 wide, depth range from 1.
+  pn::LightModel sun{0.0, 1.0, 400.0, 0.0, 1024, 0.01, 0.05};
+  REQUIRE_NOTHROW(sun.validate());
+  // A receiver at 101 sees the sun's disc through a window 0.01 x 100 = 1 world unit wide at depth 1: 20 texels.
+  CHECK(sun.search_width_texels(101.0) == Approx(20.0).epsilon(1e-12));
+  // Blockers at 81: the window is 0.01 x 20 = 0.2 wide, 4 texels, whatever the depths themselves.
+  CHECK(sun.blocker_window_texels(101.0, 81.0) == Approx(4.0).epsilon(1e-12));
+  CHECK(sun.blocker_window_texels(301.0, 281.0) == Approx(4.0).epsilon(1e-12));
+  // Eq. 1 at infinity: the penumbra is S (dP - dz), 0.2 world units = 4 texels.
+  CHECK(sun.penumbra_world(101.0, 81.0) == Approx(0.2).epsilon(1e-12));
+  CHECK(sun.penumbra_texels(101.0, 81.0) == Approx(4.0).epsilon(1e-12));
+  CHECK(sun.texel_world_at(5.0) == 0.05);
+  // No spread: hard shadows; a perspective light's texel grows with depth: 10 x W_n(2) / (1 x 1024).
+  pn::LightModel point_sun = sun;
+  point_sun.spread = 0.0;
+  CHECK(point_sun.penumbra_texels(101.0, 81.0) == 0.0);
+  CHECK(light().texel_world_at(10.0) == Approx(20.0 / 1024).epsilon(1e-12));
+  // A negative spread or texel width is refused; an orthographic map needs no field of view.
+  pn::LightModel bad = sun;
+  bad.spread = -1;
+  CHECK_THROWS_WITH(bad.validate(), "light spread -1: expected a finite number >= 0");
+  bad = sun, bad.texel_world = std::nan("");
+  CHECK_THROWS_WITH(bad.validate(), "light texel width nan: expected a finite number >= 0");
+}

@@ -29,10 +29,23 @@ TEST_CASE("light_model: the GLSL widths equal the C++ light model") {
 }
 
 TEST_CASE("negative: a penumbra divided by the receiver depth instead of the blocker's fails the light_model check") {
-  const BrokenCopy copy("light_model.glsl", "(receiverDepth - blockerDepth) / blockerDepth)",
-                        "(receiverDepth - blockerDepth) / receiverDepth)");
+  const BrokenCopy copy("light_model.glsl", "(light.width / blockerDepth + light.spread)",
+                        "(light.width / receiverDepth + light.spread)");
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("light_model"), copy.root())) > 0);
+}
+
+TEST_CASE("negative: a penumbra without the directional light's spread fails the directional cases only") {
+  const BrokenCopy copy("light_model.glsl", "(light.width / blockerDepth + light.spread)", "(light.width / blockerDepth)");
+  REQUIRE(copy.found());
+  const auto results = run_check(pn::find_module_check("light_model"), copy.root());
+  size_t directional_failures = 0;
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    if (pn::test::named(r, "directional light")) directional_failures += r.comparison.pass ? 0 : 1;
+    else CHECK(r.comparison.pass);
+  }
+  CHECK(directional_failures > 0);
 }
 
 TEST_CASE("shadow_map: each scene's shadow map and G-buffer equal their ray casts off silhouettes") {

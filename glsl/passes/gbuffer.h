@@ -18,7 +18,9 @@ PN_UNIFORM_BLOCK(PnGBufferParams, PN_GBUFFER_PARAMS_BINDING)
   vec4 cameraPosition;  // xyz
   float mapSize;
   float normalOffset;   // texels
-  float texelPerDepth;  // a texel's world width per unit of light depth: W_n / (n N)
+  float lightNear;            // PnLight's near, nearPlaneWidth and texelWorld: a texel's world width at a depth
+  float lightNearPlaneWidth;  // (pnLightTexelWorld, light_model.glsl)
+  float lightTexelWorld;
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_GBUFFER_H

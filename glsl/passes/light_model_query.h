@@ -18,6 +18,8 @@ PN_UNIFORM_BLOCK(PnLightParams, PN_LIGHT_MODEL_QUERY_PARAMS_BINDING)
   float near;
   float nearPlaneWidth;
   float mapSize;
+  float spread;
+  float texelWorld;
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_LIGHT_MODEL_QUERY_H

@@ -32,7 +32,8 @@
 #endif
 
 PnLight pnPcssLight() {
-  return PnLight(pnPcss.lightWidth, pnPcss.lightNear, pnPcss.lightNearPlaneWidth, pnPcss.mapSize);
+  return PnLight(pnPcss.lightWidth, pnPcss.lightNear, pnPcss.lightNearPlaneWidth, pnPcss.mapSize, pnPcss.lightSpread,
+                 pnPcss.lightTexelWorld);
 }
 
 #endif  // PENUMBRA_PCSS_PARAMS_GLSL

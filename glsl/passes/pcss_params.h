@@ -66,6 +66,8 @@ PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
   int leafDivisor;      // pcss_traverse: > 0: the leaf side is at least the region's side / leafDivisor
   int writeKeys;        // pcss_search, pcss_filter: 0 when the reuse keys are not needed or are the entries
                         // themselves (no reuse, or the exact region mode: pnEntryLinkKey returns the entry)
+  float lightSpread;      // PnLight.spread: a directional light's width per unit of distance (0: area light)
+  float lightTexelWorld;  // PnLight.texelWorld: an orthographic map's texel width (0: perspective)
 PN_END_UNIFORM_BLOCK(pnPcss)
 
 // Points in the unit disk (Bridson's, runner/sampling/poisson_disk.h), count = sampleCount.

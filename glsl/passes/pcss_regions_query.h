@@ -31,6 +31,8 @@ PN_UNIFORM_BLOCK(PnPcssRegionsQueryParams, PN_PCSS_REGIONS_QUERY_PARAMS_BINDING)
   float lightNear;
   float lightNearPlaneWidth;
   float mapSize;              // N, the pyramid's size
+  float lightSpread;
+  float lightTexelWorld;
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_PCSS_REGIONS_QUERY_H

@@ -1,5 +1,6 @@
 // Cases of the light_model check: the GLSL widths equal runner/scene/light_model.h
-// over a grid of receiver and blocker depths for several lights (relative
+// over a grid of receiver and blocker depths for several lights (area lights on
+// perspective maps, directional lights on orthographic ones) (relative
 // float rounding, the grid keeping dP / z >= 1.01 so the difference does not
 // cancel), and degenerate inputs give exactly 0 where the definition says 0.
 #include <cmath>
@@ -17,7 +18,8 @@
 
 namespace pn::glsl {
 #include "passes/light_model_query.h"
-PN_STD140_SIZE(PnLightParams, 16);
+PN_STD140_SIZE(PnLightParams, 32);
+PN_STD140_OFFSET(PnLightParams, texelWorld, 20);
 PN_STD140_OFFSET(PnLightParams, nearPlaneWidth, 8);
 PN_STD140_OFFSET(PnLightParams, mapSize, 12);
 }  // namespace pn::glsl
@@ -28,9 +30,14 @@ std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
   const ComputeProgram program = compile_pass(env.context, env.tree, "passes/light_model_query.comp");
   std::vector<CaseResult> results;
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  // Area lights (perspective maps), then directional lights on orthographic maps: the sun
+  // (0.53 degrees: S = 2 tan(0.265 deg)) on a fine and a coarse cascade, a wider sun, a point sun.
+  const double sun = 2.0 * std::tan(0.5 * 0.53 * 3.14159265358979 / 180.0);
   for (LightModel light : {LightModel{2.0, 1.0, 100.0, 1.5707963267948966, 1024},
                            LightModel{0.5, 0.1, 50.0, 0.8, 512}, LightModel{0.0, 1.0, 100.0, 1.0, 1024},
-                           LightModel{10.0, 2.0, 500.0, 2.0, 2048}}) {
+                           LightModel{10.0, 2.0, 500.0, 2.0, 2048}, LightModel{0.0, 1.0, 400.0, 0.0, 1024, sun, 0.02},
+                           LightModel{0.0, 3.0, 600.0, 0.0, 2048, sun, 0.7}, LightModel{0.0, 1.0, 400.0, 0.0, 512, 4 * sun, 0.1},
+                           LightModel{0.0, 1.0, 400.0, 0.0, 1024, 0.0, 0.05}}) {
     std::vector<Query> regular, degenerate;
     for (int i = 0; i < 40; ++i)
       for (int j = 0; j < 40; ++j) {
@@ -48,7 +55,8 @@ std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
       {
         const glsl::PnLightParams block{static_cast<float>(light.width), n,
                                         static_cast<float>(light.near_plane_width()),
-                                        static_cast<float>(light.map_size)};
+                                        static_cast<float>(light.map_size), static_cast<float>(light.spread),
+                                        static_cast<float>(light.texel_world)};
         PassBindings bind(env.context);
         bind.uniform(block);
         bind.texture(PN_LIGHT_MODEL_QUERY_QUERIES_BINDING, query_texture);
@@ -65,9 +73,13 @@ std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
           expected.at(x, y, 2) = static_cast<float>(light.penumbra_world(r, b));
           expected.at(x, y, 3) = static_cast<float>(light.penumbra_texels(r, b));
         }
-      const std::string name = "light width " + format_number("%g", light.width) + ", near " +
-                               format_number("%g", light.near_plane) + ", fov " + format_number("%.3g", light.fov_radians) +
-                               ", N " + std::to_string(light.map_size);
+      const std::string name =
+          light.orthographic()
+              ? "directional light, spread " + format_number("%.3g", light.spread) + ", texel " +
+                    format_number("%g", light.texel_world) + ", near " + format_number("%g", light.near_plane) + ", N " +
+                    std::to_string(light.map_size)
+              : "light width " + format_number("%g", light.width) + ", near " + format_number("%g", light.near_plane) +
+                    ", fov " + format_number("%.3g", light.fov_radians) + ", N " + std::to_string(light.map_size);
       // A dozen float operations, |dP - z| >= 1 % of dP: 64 ulps relative. Relative
       // to an expected 0 (the degenerate widths), any non-zero result fails.
       const Tolerance tolerance = Tolerance::relative(64.0 * 1.1920929e-7);

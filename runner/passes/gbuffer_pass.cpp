@@ -6,11 +6,11 @@
 
 namespace pn::glsl {
 #include "passes/gbuffer.h"
-PN_STD140_SIZE(PnGBufferParams, 224);
+PN_STD140_SIZE(PnGBufferParams, 240);
 PN_STD140_OFFSET(PnGBufferParams, lightView, 64);
 PN_STD140_OFFSET(PnGBufferParams, cameraPosition, 192);
 PN_STD140_OFFSET(PnGBufferParams, mapSize, 208);
-PN_STD140_OFFSET(PnGBufferParams, texelPerDepth, 216);
+PN_STD140_OFFSET(PnGBufferParams, lightTexelWorld, 224);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -26,8 +26,9 @@ GlObject GBufferRenderer::render(const Scene& scene, int screen_size, float norm
   block.cameraPosition = {fixtures::kCameraPosition[0], fixtures::kCameraPosition[1], fixtures::kCameraPosition[2], 0};
   block.mapSize = static_cast<float>(scene.light.map_size);
   block.normalOffset = normal_offset_texels;
-  block.texelPerDepth =
-      static_cast<float>(scene.light.near_plane_width() / scene.light.near_plane / scene.light.map_size);
+  block.lightNear = static_cast<float>(scene.light.near_plane);
+  block.lightNearPlaneWidth = static_cast<float>(scene.light.near_plane_width());
+  block.lightTexelWorld = static_cast<float>(scene.light.texel_world);
   const float nothing[4] = {0, 0, 0, 0};
   PassBindings bind(*context_);
   bind.uniform(block);

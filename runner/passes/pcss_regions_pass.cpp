@@ -10,7 +10,7 @@
 
 namespace pn::glsl {
 #include "passes/pcss_regions_query.h"
-PN_STD140_SIZE(PnPcssRegionsQueryParams, 16);
+PN_STD140_SIZE(PnPcssRegionsQueryParams, 32);
 PN_STD140_OFFSET(PnPcssRegionsQueryParams, lightNear, 4);
 PN_STD140_OFFSET(PnPcssRegionsQueryParams, mapSize, 12);
 }  // namespace pn::glsl
@@ -58,7 +58,8 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
   {
     const glsl::PnPcssRegionsQueryParams block{static_cast<float>(light.width), static_cast<float>(light.near_plane),
                                                static_cast<float>(light.near_plane_width()),
-                                               static_cast<float>(light.map_size)};
+                                               static_cast<float>(light.map_size), static_cast<float>(light.spread),
+                                               static_cast<float>(light.texel_world)};
     PassBindings bind(*context_);
     bind.uniform(block);
     bind.texture(PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING, pyramid.texture);

@@ -14,7 +14,8 @@
 
 namespace pn::glsl {
 #include "passes/pcss_params.h"
-PN_STD140_SIZE(PnPcssParams, 96);
+PN_STD140_SIZE(PnPcssParams, 112);
+PN_STD140_OFFSET(PnPcssParams, lightTexelWorld, 96);
 PN_STD140_OFFSET(PnPcssParams, depthSums, 80);
 PN_STD140_OFFSET(PnPcssParams, refineIterations, 24);
 PN_STD140_OFFSET(PnPcssParams, sigma3, 72);
@@ -38,6 +39,8 @@ PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   b.lightNear = static_cast<float>(light.near_plane);
   b.lightNearPlaneWidth = static_cast<float>(light.near_plane_width());
   b.mapSize = static_cast<float>(light.map_size);
+  b.lightSpread = static_cast<float>(light.spread);
+  b.lightTexelWorld = static_cast<float>(light.texel_world);
   b.bias = s.bias;
   b.filterScale = s.filter_scale;
   b.refineIterations = s.refine_iterations;
