@@ -39,7 +39,7 @@ struct GroundPoint {
   GroundPoint(const pn::Scene& scene, int samples_per_side, double x, double z = 0.0)
       : tracer(scene, 16, settings(samples_per_side)),
         surface(tracer.surface_at({x, 0.0, z}, {0.0, 1.0, 0.0})),
-        lights(tracer.light_samples(3, 5)) {}
+        lights(tracer.light_samples(3, 5, surface)) {}
   double visibility() const { return tracer.visibility(surface, lights); }
   // By hand, for z = 0: the shadow ray starts at height e (the normal offset) and crosses the
   // table's top y = 10 at x + (xs - x)(10 - e)/(20 - e), blocked iff that is <= 1.
@@ -125,11 +125,12 @@ TEST_CASE("truth: a side face near its top edge sees none of a light just behind
   const pn::TruthTracer tracer(scene, 16, settings(4));
   const pn::TruthSurface face = tracer.surface_at({1.0, 0.999, 0.0}, {1.0, 0.0, 0.0});
   CHECK_FALSE(face.faces_light);
-  CHECK(tracer.visibility(face, tracer.light_samples(0, 0)) == 0.0);
+  CHECK(tracer.visibility(face, tracer.light_samples(0, 0, face)) == 0.0);
   // The same light just in front of the plane (x = 1.01) is seen whole.
   scene.light_position.x = 1.01f;
   const pn::TruthTracer front(scene, 16, settings(4));
-  CHECK(front.visibility(front.surface_at({1.0, 0.999, 0.0}, {1.0, 0.0, 0.0}), front.light_samples(0, 0)) == 1.0);
+  const pn::TruthSurface front_face = front.surface_at({1.0, 0.999, 0.0}, {1.0, 0.0, 0.0});
+  CHECK(front.visibility(front_face, front.light_samples(0, 0, front_face)) == 1.0);
 }
 
 TEST_CASE("truth: a one-sided mesh quad wound to face down shadows like the table's top and faces the light from above", "[truth]") {
@@ -149,7 +150,7 @@ TEST_CASE("truth: a one-sided mesh quad wound to face down shadows like the tabl
   CHECK(s.position.y == Approx(10.0).margin(1e-9));
   CHECK(s.normal.y == Approx(1.0).margin(1e-12));  // turned toward the camera, whatever the winding
   CHECK(s.faces_light);
-  CHECK(tracer.visibility(s, tracer.light_samples(top.x, top.y)) == 1.0);
+  CHECK(tracer.visibility(s, tracer.light_samples(top.x, top.y, s)) == 1.0);
 }
 
 TEST_CASE("truth: pixels that see the sky are uncovered with visibility 1; the ground under the table is covered, 0", "[truth]") {
@@ -242,4 +243,40 @@ TEST_CASE("negative: truth inputs out of range are refused naming the setting an
   CHECK_THROWS_WITH(pn::TruthTracer(table_scene(64, -1.0), 8, settings(4)), "truth light width -1: expected a finite number >= 0");
   CHECK_THROWS_WITH(pn::EmbreeScene({{0, 0, 0}, {1, 0, 0}}),
                     "ray-traced truth: 2 triangle vertices: expected a multiple of 3");
+}
+
+TEST_CASE("truth under the sun: points in the cone of its disc, the table's shadow edge under its edge, penumbra S h wide", "[truth]") {
+  // The sun straight down, 2 degrees wide, over the table [-1, 1] x [9, 10] x [-1, 1]: a ground
+  // point (x, 0, 0) has every sun direction (dx, 1, dz) blocked while x + 9 tan(1 deg) < 1, and
+  // none once x - 10 tan(1 deg) > 1: the penumbra reaches from 1 - 9 tan(1 deg) (the
+  // underside's edge, umbra before it) to 1 + 10 tan(1 deg) (the top's edge, lit past it).
+  pn::Scene scene = pn::test::table_scene(64, 0.0);
+  const double theta = 2.0 * 3.14159265358979 / 180.0, tan_half = std::tan(0.5 * theta);
+  pn::light_by_sun(scene, {0.0f, -1.0f, 0.0f}, theta);
+  const pn::TruthTracer tracer(scene, 16, settings(16));
+  REQUIRE(tracer.light().directional);
+  const auto ground = [&](double x) { return tracer.surface_at({x, 0.0, 0.0}, {0.0, 1.0, 0.0}); };
+  const pn::TruthSurface edge = ground(1.0);
+  const std::vector<glm::dvec3> points = tracer.light_samples(3, 5, edge);
+  REQUIRE(points.size() == 256);
+  int blocked_by_hand = 0;
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 d = glm::normalize(p - edge.position);
+    CHECK(d.y >= std::cos(0.5 * theta) - 1e-12);  // inside the sun's cone
+    mean += d / 256.0;
+    const glm::dvec3 origin = tracer.shadow_origin(edge);
+    const double t = (9.0 - origin.y) / d.y;
+    blocked_by_hand += std::fabs(origin.x + t * d.x) <= 1.0 && std::fabs(origin.z + t * d.z) <= 1.0;
+  }
+  CHECK(mean.x == Approx(0.0).margin(0.02 * tan_half));  // stratified: centred on the sun
+  CHECK(mean.z == Approx(0.0).margin(0.02 * tan_half));
+  CHECK(tracer.visibility(edge, points) == Approx(1.0 - blocked_by_hand / 256.0).margin(1e-12));
+  CHECK(tracer.visibility(edge, points) == Approx(0.5).margin(0.03));
+  for (const auto& [x, expected] : {std::pair{1.0 + 10 * tan_half + 0.01, 1.0}, {1.0 - 9 * tan_half - 0.01, 0.0}}) {
+    const pn::TruthSurface s = ground(x);
+    CHECK(tracer.visibility(s, tracer.light_samples(3, 5, s)) == expected);
+  }
+  CHECK(edge.faces_light);
+  CHECK_FALSE(tracer.surface_at({0.0, 9.0, 0.0}, {0.0, -1.0, 0.0}).faces_light);  // the underside faces away
 }

@@ -109,7 +109,7 @@ void slab_test_cases(const Scene& scene, std::vector<CaseResult>& out) {
       faces_expected.at(x, y) = glm::dot(face_normal(scene.boxes[expected->box], expected->position), to_light) > 0;
       faces_observed.at(x, y) = s.faces_light;
       int seen_truth = 0, seen_slab = 0, tied = 0;
-      for (const glm::dvec3& p : tracer.light_samples(x, y)) {
+      for (const glm::dvec3& p : tracer.light_samples(x, y, s)) {
         const bool a = tracer.sees(s, p), b = sees_point(scene, s.position, p);
         seen_truth += a, seen_slab += b, ++segments;
         if (a == b) continue;

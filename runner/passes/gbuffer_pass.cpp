@@ -23,7 +23,7 @@ GlObject GBufferRenderer::render(const Scene& scene, int screen_size, float norm
   block.cameraViewProjection = glsl::std140_mat4(scene.camera_projection() * scene.camera_view());
   block.lightView = glsl::std140_mat4(scene.light_view());
   block.lightProjection = glsl::std140_mat4(scene.light_projection());
-  block.cameraPosition = {fixtures::kCameraPosition[0], fixtures::kCameraPosition[1], fixtures::kCameraPosition[2], 0};
+  block.cameraPosition = {scene.camera.eye.x, scene.camera.eye.y, scene.camera.eye.z, 0};
   block.mapSize = static_cast<float>(scene.light.map_size);
   block.normalOffset = normal_offset_texels;
   block.lightNear = static_cast<float>(scene.light.near_plane);

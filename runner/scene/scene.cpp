@@ -6,26 +6,65 @@
 
 #include "core/error.h"
 #include "core/format.h"
+#include "cascades/cascade_fit.h"
 #include "core/seeded_random.h"
 
 namespace pn {
 
+double SunLight::spread() const { return 2.0 * std::tan(0.5 * angular_diameter_radians); }
+
 glm::mat4 Scene::light_view() const {
+  if (sun) return sun->view;
   return glm::lookAt(light_position, light_position + glm::vec3(0, -1, 0), glm::vec3(0, 0, -1));
 }
 
 glm::mat4 Scene::light_projection() const {
+  if (sun) return sun->projection;
   return glm::perspective(static_cast<float>(light.fov_radians), 1.0f, static_cast<float>(light.near_plane),
                           static_cast<float>(light.far_plane));
 }
 
-glm::mat4 Scene::camera_view() const {
-  const glm::vec3 eye(fixtures::kCameraPosition[0], fixtures::kCameraPosition[1], fixtures::kCameraPosition[2]);
-  return glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
-}
+glm::mat4 Scene::camera_view() const { return glm::lookAt(camera.eye, camera.target, glm::vec3(0, 1, 0)); }
 
 glm::mat4 Scene::camera_projection() const {
-  return glm::perspective(glm::radians(fixtures::kCameraFovDegrees), 1.0f, fixtures::kCameraNear, fixtures::kCameraFar);
+  return glm::perspective(glm::radians(camera.fov_degrees), 1.0f, camera.near_plane, camera.far_plane);
+}
+
+std::pair<glm::vec3, glm::vec3> Scene::bounds() const {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const Box& b : boxes) lo = glm::min(lo, b.lo), hi = glm::max(hi, b.hi);
+  for (const glm::vec3& v : mesh) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  return {lo, hi};
+}
+
+void light_by_sun(Scene& scene, const glm::vec3& direction, double angular_diameter_radians) {
+  const double max_diameter = 10.0 * 3.14159265358979 / 180.0;
+  if (!(angular_diameter_radians > 0 && angular_diameter_radians < max_diameter))
+    throw Error("sun angular diameter " + format_number("%g", angular_diameter_radians * 180.0 / 3.14159265358979) +
+                " degrees: expected 0 < diameter < 10");
+  const auto [lo, hi] = scene.bounds();
+  SunLight sun;
+  sun.direction = direction;
+  sun.angular_diameter_radians = angular_diameter_radians;
+  sun.view = directional_light_view(direction, lo, hi);  // throws for a zero or non-finite direction
+  // The light-space box of the scene's eight corners: a square map over it, depths from its near face.
+  glm::dvec3 box_lo(INFINITY), box_hi(-INFINITY);
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    const glm::dvec3 p(glm::dmat4(sun.view) * glm::dvec4(corner, 1.0));
+    box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
+  }
+  const double half = 0.5 * std::max(box_hi.x - box_lo.x, box_hi.y - box_lo.y);
+  const glm::dvec2 centre = 0.5 * (glm::dvec2(box_lo) + glm::dvec2(box_hi));
+  const double near = -box_hi.z, far = -box_lo.z;  // the view looks down -z
+  sun.projection = glm::mat4(glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, near, far));
+  scene.light.width = 0.0;
+  scene.light.spread = sun.spread();
+  scene.light.near_plane = near;
+  scene.light.far_plane = far;
+  scene.light.texel_world = 2.0 * half / scene.light.map_size;
+  scene.light.validate();
+  scene.sun = sun;
 }
 
 std::vector<glm::vec3> Scene::triangles() const {

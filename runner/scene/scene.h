@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,28 @@ struct SceneObject {
   glm::mat4 transform{1.0f};
 };
 
+// The G-buffer's camera: where it stands and looks, its vertical field of view and its
+// near and far planes (square screen). The box scenes' is fixtures/scenes.h's.
+struct SceneCamera {
+  glm::vec3 eye{fixtures::kCameraPosition[0], fixtures::kCameraPosition[1], fixtures::kCameraPosition[2]};
+  glm::vec3 target{0.0f};
+  float fov_degrees = fixtures::kCameraFovDegrees;
+  float near_plane = fixtures::kCameraNear;
+  float far_plane = fixtures::kCameraFar;
+};
+
+// A directional light (issue 14, seed 003's sun): the direction its light travels and its
+// angular diameter. Its soft-shadow width per unit of distance is spread() = 2 tan(theta / 2).
+struct SunLight {
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};
+  double angular_diameter_radians = 0.53 * 3.14159265358979 / 180.0;
+  // The one orthographic map over the whole scene (fit_whole_scene_sun_map): the scene's
+  // light view and projection when it is not cascaded.
+  glm::mat4 view{1.0f}, projection{1.0f};
+
+  double spread() const;
+};
+
 struct Scene {
   std::string name;
   std::vector<Box> boxes;  // boxes[0] is the ground slab
@@ -39,14 +62,22 @@ struct Scene {
   LightModel light;        // width, planes, field of view, shadow-map size
   glm::vec3 light_position{0.0f};
   std::vector<SceneObject> objects;  // in triangles() order; empty: the scene is one object that never moves
+  SceneCamera camera;
+  // Set: the light is the sun, `light` its whole-scene orthographic map (texel_world, spread),
+  // and its techniques run on cascades (cascades/cascaded_frame.h); unset: the area light.
+  std::optional<SunLight> sun;
 
-  // Light space: looking down −y from light_position, +x right, +z "up" in the map.
+  // Light space: the area light looks down −y from light_position, +x right, +z "up" in the
+  // map; the sun's is its whole-scene map's (SunLight::view, projection).
   glm::mat4 light_view() const;
-  glm::mat4 light_projection() const;  // OpenGL perspective, near/far from `light`
+  glm::mat4 light_projection() const;  // OpenGL perspective (near/far from `light`) or the sun's orthographic
 
-  // The G-buffer's camera (fixtures/scenes.h), square screen.
+  // The G-buffer's camera (`camera`), square screen.
   glm::mat4 camera_view() const;
   glm::mat4 camera_projection() const;
+
+  // The bounding box of triangles().
+  std::pair<glm::vec3, glm::vec3> bounds() const;
 
   // Triangles of every box, 36 vertices a box, counter-clockwise seen from
   // outside, followed by the mesh's (in the file's winding).
@@ -58,6 +89,11 @@ const fixtures::SceneFixture& find_scene_fixture(const std::string& name);
 
 // Throws Error for N < 2 or a light that does not validate.
 Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
+
+// Gives a scene the sun along `direction` with angular diameter `angular_diameter_radians`,
+// and one orthographic N×N map over its whole bounds (light: spread, texel width, the depth
+// range; sun->view, projection). Throws Error for a bad direction or diameter (0 < theta < 10 deg).
+void light_by_sun(Scene& scene, const glm::vec3& direction, double angular_diameter_radians);
 
 // Multiplies the scene's light width by `factor` (wider penumbrae). Throws Error
 // "<what> <factor>: expected a finite number > 0", or for a light that then does not validate.

@@ -36,6 +36,9 @@ std::vector<glm::vec3> validated_triangles(const Scene& scene, int screen_size, 
   const double width = scene.light.width;
   if (!std::isfinite(width) || width < 0.0)
     throw Error("truth light width " + format_number("%g", width) + ": expected a finite number >= 0");
+  if (scene.sun && !(scene.sun->angular_diameter_radians >= 0.0 && scene.sun->angular_diameter_radians < 3.0))
+    throw Error("truth sun angular diameter " + format_number("%g", scene.sun->angular_diameter_radians) +
+                ": expected 0 <= diameter < 3 radians");
   return scene.triangles();
 }
 
@@ -91,11 +94,13 @@ TruthSurface TruthTracer::surface_at(const glm::dvec3& position, const glm::dvec
   s.covered = true;
   s.position = position;
   s.normal = glm::normalize(camera_side_normal);
-  s.faces_light = glm::dot(s.normal, light_.centre - position) > 0.0;
+  s.faces_light = faces_light(light_, position, s.normal);
   return s;
 }
 
-std::vector<glm::dvec3> TruthTracer::light_samples(int x, int y) const {
+std::vector<glm::dvec3> TruthTracer::light_samples(int x, int y, const TruthSurface& surface) const {
+  if (light_.directional)
+    return jittered_sun_points(light_, settings_.samples_per_side, settings_.seed, x, y, surface.position);
   return jittered_light_samples(light_, settings_.samples_per_side, settings_.seed, x, y);
 }
 
@@ -126,7 +131,7 @@ Truth trace_truth(const Scene& scene, int screen_size, const TruthSettings& sett
       if (!s.covered) continue;
       truth.covered.at(x, y) = 1.0f;
       truth.faces_light.at(x, y) = s.faces_light ? 1.0f : 0.0f;
-      truth.visibility.at(x, y) = static_cast<float>(tracer.visibility(s, tracer.light_samples(x, y)));
+      truth.visibility.at(x, y) = static_cast<float>(tracer.visibility(s, tracer.light_samples(x, y, s)));
     }
   };
   const int samples = settings.samples_per_side * settings.samples_per_side;

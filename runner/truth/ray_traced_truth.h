@@ -72,8 +72,9 @@ class TruthTracer {
   // A surface point's surface as the truth sees it (position, normal), e.g. one worked by hand.
   TruthSurface surface_at(const glm::dvec3& position, const glm::dvec3& camera_side_normal) const;
 
-  // The S² jittered light points of pixel (x, y).
-  std::vector<glm::dvec3> light_samples(int x, int y) const;
+  // The S² jittered light points of pixel (x, y) whose surface is `surface` (the sun's points
+  // lie along directions from it; an area light's do not depend on it).
+  std::vector<glm::dvec3> light_samples(int x, int y, const TruthSurface& surface) const;
   // Where a surface's shadow rays start: position + offset() · normal.
   glm::dvec3 shadow_origin(const TruthSurface& surface) const;
   double offset() const { return offset_; }
