@@ -5,6 +5,7 @@
 // the face normal (towards the camera), by normalOffset shadow-map texels at
 // its light depth, so that faces seen edge-on by the light (box walls) do not
 // shadow themselves in stripes; 0 keeps the surface point itself.
+// A cascade's G-buffer keeps only the surfaces in its camera view-depth range.
 // The parameter block (shared with gbuffer.vert), its binding and the locations: gbuffer.h.
 
 #include "gbuffer.h"
@@ -14,6 +15,11 @@ layout(location = PN_GBUFFER_WORLD_LOCATION) in vec3 pnWorld;
 layout(location = PN_SCENE_TARGET_LOCATION) out vec4 pnReceiver;
 
 void main() {
+  float viewDepth = dot(pnParams.viewDepthPlane, vec4(pnWorld, 1.0));
+  if (!(viewDepth >= pnParams.viewDepthLo && viewDepth < pnParams.viewDepthHi)) {
+    pnReceiver = vec4(0.0);  // the nearest surface lies outside this map's range: "no surface" (not discarded,
+    return;                  // which would let a farther one through)
+  }
   vec3 world = pnWorld;
   if (pnParams.normalOffset > 0.0) {
     vec3 n = normalize(cross(dFdx(pnWorld), dFdy(pnWorld)));

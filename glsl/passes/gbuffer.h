@@ -21,6 +21,9 @@ PN_UNIFORM_BLOCK(PnGBufferParams, PN_GBUFFER_PARAMS_BINDING)
   float lightNear;            // PnLight's near, nearPlaneWidth and texelWorld: a texel's world width at a depth
   float lightNearPlaneWidth;  // (pnLightTexelWorld, light_model.glsl)
   float lightTexelWorld;
+  float viewDepthLo;      // the surfaces kept: camera view depth in [lo, hi) (0, +Inf: all)
+  float viewDepthHi;
+  vec4 viewDepthPlane;    // view depth = dot(plane, (world, 1))
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_GBUFFER_H

@@ -26,7 +26,7 @@ layout(location = PN_SCENE_TARGET_LOCATION) out vec4 pnSurface;
 void main() {
   vec3 normal = cross(dFdx(pnWorld), dFdy(pnWorld));
   if (dot(normal, pnParams.cameraPosition.xyz - pnWorld) < 0.0) normal = -normal;
-  vec3 toLight = pnParams.lightPosition.xyz - pnWorld;
+  vec3 toLight = pnParams.lightPosition.xyz - pnParams.lightPosition.w * pnWorld;
   // A face seen exactly edge-on (or a fragment at the light) has no direction: 0, never NaN.
   float lengths = length(normal) * length(toLight);
   float cosine = lengths > 0.0 ? dot(normal, toLight) / lengths : 0.0;

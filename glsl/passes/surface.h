@@ -14,7 +14,7 @@
 PN_UNIFORM_BLOCK(PnSurfaceParams, PN_SURFACE_PARAMS_BINDING)
   mat4 cameraViewProjection;
   vec4 cameraPosition;  // xyz: world
-  vec4 lightPosition;   // xyz: world, the area light's centre
+  vec4 lightPosition;   // homogeneous: (the area light's centre, 1), or (the direction towards the sun, 0)
   vec4 groundLo;        // xyz: the ground slab's box
   vec4 groundHi;
   vec4 groundAlbedo;    // rgb

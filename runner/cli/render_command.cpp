@@ -16,13 +16,14 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto stages = std::make_shared<bool>(false);
   auto frames = std::make_shared<FramesSetup>();
   auto* cmd = app.add_subcommand("render", "Render a scene with every technique, scored against the ray-traced truth and exact PCSS: PNGs, a labelled sheet, tables");
-  auto* scene = cmd->add_option("--scene", setup->scene, "boxes | fence | tall_blocker (default boxes); with --frames: moving | moving_city (default moving)");
+  auto* scene = cmd->add_option("--scene", setup->scene, "boxes | fence | tall_blocker | city (default boxes); with --frames: moving | moving_city (default moving)");
   cmd->add_option("--model", setup->model, "A mesh file (any format Assimp reads: glTF, OBJ, ...) placed on the ground instead of --scene");
   auto* source = cmd->add_option("--source", setup->source, "Shadow-map source: full | two-map | dirty-rect (default full; with --frames dirty-rect)");
   auto* frame_count = cmd->add_option("--frames", frames->frames, "Render this many frames of an animated scene with one technique (--methods, default fast): a lit image and a shadow map with the changed rectangles a frame, and the timing table");
   cmd->add_option("--k", frames->k, "With --frames: share K of moving triangles, 0..1 (default 0.3)");
   cmd->add_option("--light-scale", setup->light_scale, "Multiply the scene's light width by this (default 1): wider penumbrae");
-  cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 512)");
+  cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 512; on cascades, each cascade's)");
+  cmd->add_option("--cascades", setup->cascades, "A scene lit by the sun (city): its cascades, 1 to 4 (default 3; 0: one map over the whole scene)");
   cmd->add_option("--screen", setup->screen_size, "Screen size (default 512)");
   cmd->add_option("--truth-samples", setup->truth_samples, "Ray-traced truth: S for S x S light samples per pixel (default 16)");
   cmd->add_option("--repeats", setup->repeats, "Timed runs per technique, median reported (default 3)");

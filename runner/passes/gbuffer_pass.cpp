@@ -6,7 +6,8 @@
 
 namespace pn::glsl {
 #include "passes/gbuffer.h"
-PN_STD140_SIZE(PnGBufferParams, 240);
+PN_STD140_SIZE(PnGBufferParams, 256);
+PN_STD140_OFFSET(PnGBufferParams, viewDepthPlane, 240);
 PN_STD140_OFFSET(PnGBufferParams, lightView, 64);
 PN_STD140_OFFSET(PnGBufferParams, cameraPosition, 192);
 PN_STD140_OFFSET(PnGBufferParams, mapSize, 208);
@@ -18,17 +19,23 @@ namespace pn {
 GBufferRenderer::GBufferRenderer(const Context& context, const SourceTree& tree)
     : context_(&context), program_(link_raster_pass(context, tree, "passes/gbuffer")) {}
 
-GlObject GBufferRenderer::render(const Scene& scene, int screen_size, float normal_offset_texels) const {
+GlObject GBufferRenderer::render(const Scene& scene, int screen_size, float normal_offset_texels, const MapLight& light,
+                                 float view_depth_lo, float view_depth_hi) const {
   glsl::PnGBufferParams block{};
-  block.cameraViewProjection = glsl::std140_mat4(scene.camera_projection() * scene.camera_view());
-  block.lightView = glsl::std140_mat4(scene.light_view());
-  block.lightProjection = glsl::std140_mat4(scene.light_projection());
+  const glm::mat4 camera_view = scene.camera_view();
+  block.cameraViewProjection = glsl::std140_mat4(scene.camera_projection() * camera_view);
+  block.lightView = glsl::std140_mat4(light.view);
+  block.lightProjection = glsl::std140_mat4(light.projection);
   block.cameraPosition = {scene.camera.eye.x, scene.camera.eye.y, scene.camera.eye.z, 0};
-  block.mapSize = static_cast<float>(scene.light.map_size);
+  block.mapSize = static_cast<float>(light.light.map_size);
   block.normalOffset = normal_offset_texels;
-  block.lightNear = static_cast<float>(scene.light.near_plane);
-  block.lightNearPlaneWidth = static_cast<float>(scene.light.near_plane_width());
-  block.lightTexelWorld = static_cast<float>(scene.light.texel_world);
+  block.lightNear = static_cast<float>(light.light.near_plane);
+  block.lightNearPlaneWidth = static_cast<float>(light.light.near_plane_width());
+  block.lightTexelWorld = static_cast<float>(light.light.texel_world);
+  // View depth = -(camera view · p).z: minus the view matrix's third row.
+  block.viewDepthPlane = {-camera_view[0][2], -camera_view[1][2], -camera_view[2][2], -camera_view[3][2]};
+  block.viewDepthLo = view_depth_lo;
+  block.viewDepthHi = view_depth_hi;
   const float nothing[4] = {0, 0, 0, 0};
   PassBindings bind(*context_);
   bind.uniform(block);

@@ -18,8 +18,8 @@ ShadowMapRenderer::ShadowMapRenderer(const Context& context, const SourceTree& t
     : context_(&context), program_(link_raster_pass(context, tree, "passes/shadow_depth")) {}
 
 namespace {
-glsl::PnShadowDepthParams light_block(const Scene& scene) {
-  return {glsl::std140_mat4(scene.light_view()), glsl::std140_mat4(scene.light_projection())};
+glsl::PnShadowDepthParams light_block(const MapLight& light) {
+  return {glsl::std140_mat4(light.view), glsl::std140_mat4(light.projection)};
 }
 }  // namespace
 
@@ -28,16 +28,16 @@ const float* ShadowMapRenderer::far_clear() {
   return far;
 }
 
-GlObject ShadowMapRenderer::render(const Scene& scene) const {
+GlObject ShadowMapRenderer::render(const Scene& scene, const MapLight& light) const {
   PassBindings bind(*context_);
-  bind.uniform(light_block(scene));
-  return draw_scene(*context_, program_, scene, scene.light.map_size, 1, far_clear());
+  bind.uniform(light_block(light));
+  return draw_scene(*context_, program_, scene, light.light.map_size, 1, far_clear());
 }
 
 void ShadowMapRenderer::draw(const Scene& scene, const SceneGeometry& geometry, const RasterTarget& target,
                              const std::vector<VertexRun>& runs, const std::vector<TexelRect>& rects) const {
   PassBindings bind(*context_);
-  bind.uniform(light_block(scene));
+  bind.uniform(light_block(scene.map_light()));
   target.draw(program_, geometry, runs, rects);
 }
 

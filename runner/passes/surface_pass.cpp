@@ -26,7 +26,8 @@ GlObject SurfaceRenderer::render(const Scene& scene, int screen_size) const {
   glsl::PnSurfaceParams block{};
   block.cameraViewProjection = glsl::std140_mat4(scene.camera_projection() * scene.camera_view());
   block.cameraPosition = point(glm::vec3(glm::inverse(scene.camera_view())[3]));
-  block.lightPosition = point(scene.light_position);
+  block.lightPosition = scene.sun ? glsl::std140_vec4(glm::vec4(-glm::normalize(scene.sun->direction), 0.0f))
+                                  : glsl::std140_vec4(glm::vec4(scene.light_position, 1.0f));
   block.groundLo = point(scene.boxes[0].lo);
   block.groundHi = point(scene.boxes[0].hi);
   block.groundAlbedo = point(kGroundAlbedo);

@@ -8,6 +8,8 @@
 #include "core/format.h"
 #include "figures/canvas.h"
 #include "figures/lit_image.h"
+#include "cascades/cascade_math.h"
+#include "scene/city_scene.h"
 #include "scene/model.h"
 #include "scene/scene.h"
 #include "technique/shadow_map_source.h"
@@ -89,10 +91,38 @@ Canvas draw_sheet(const std::string& title, const Comparison& c) {
   return sheet;
 }
 
+// The scene fixture kinds render knows, by name: throws Error listing every name.
+void validate_scene_name(const std::string& name) {
+  if (find_city_scene_fixture_or_null(name)) return;
+  std::string known;
+  for (const auto& f : fixtures::kScenes) {
+    if (name == f.name) return;
+    known += std::string(known.empty() ? "" : ", ") + f.name;
+  }
+  for (const auto& f : fixtures::kCityScenes) known += std::string(", ") + f.name;
+  throw Error("unknown scene '" + name + "': expected one of " + known);
+}
+
+// The lit image with each pixel tinted by its cascade's colour (none: untinted).
+Image cascade_overlay(const Image& lit, const Image& cascade_index) {
+  static const float tints[4][3] = {{1.0f, 0.35f, 0.3f}, {0.35f, 0.9f, 0.35f}, {0.35f, 0.5f, 1.0f}, {1.0f, 0.85f, 0.25f}};
+  Image out = lit;
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      const int c = static_cast<int>(cascade_index.at(x, y));
+      if (c < 0 || c > 3) continue;
+      for (int k = 0; k < 3; ++k) out.at(x, y, k) = 0.6f * out.at(x, y, k) + 0.4f * tints[c][k];
+    }
+  return out;
+}
+
 }  // namespace
 
 void validate_render_setup(const RenderSetup& s) {
-  if (s.model.empty()) find_scene_fixture(s.scene);
+  if (s.model.empty()) validate_scene_name(s.scene);
+  if (s.cascades < 0 || s.cascades > PN_CASCADES_MAX)
+    throw Error("cascades " + std::to_string(s.cascades) + ": expected 0 (one map over the scene) .. " +
+                std::to_string(PN_CASCADES_MAX));
   find_shadow_map_source(s.source);
   validate_light_width_factor(s.light_scale, "light scale");
   if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
@@ -103,8 +133,10 @@ void validate_render_setup(const RenderSetup& s) {
 }
 
 Scene load_render_scene(const RenderSetup& s) {
-  Scene scene =
-      s.model.empty() ? make_scene(find_scene_fixture(s.scene), s.map_size) : make_model_scene(s.model, s.map_size);
+  const fixtures::CitySceneFixture* city = s.model.empty() ? find_city_scene_fixture_or_null(s.scene) : nullptr;
+  Scene scene = city ? make_city_scene(*city, s.map_size)
+                     : s.model.empty() ? make_scene(find_scene_fixture(s.scene), s.map_size)
+                                       : make_model_scene(s.model, s.map_size);
   scale_light_width(scene, s.light_scale, "light scale");
   return scene;
 }
@@ -123,6 +155,12 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
   cs.screen_size = setup.screen_size;
   cs.repeats = setup.repeats;
   cs.truth_samples = setup.truth_samples;
+  if (setup.cascades > 0) {
+    CascadeSettings cascades;
+    cascades.count = setup.cascades;
+    cascades.map_size = setup.map_size;
+    cs.cascades = cascades;
+  }
   cs.techniques = chosen_or_default_techniques(setup.methods, render_techniques(), own);
   RenderResult result;
   result.scene_name = scene.name;
@@ -143,6 +181,7 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
     write(stem + "_shadow", write_grey, r.visibility);
     write(stem + "_lit", write_rgb, compose_lit_image(c.surface, r.visibility));
     write(stem + "_error", write_signed, difference(r.visibility, c.truth));
+    if (c.cascade_index) write(stem + "_cascades", write_rgb, cascade_overlay(compose_lit_image(c.surface, r.visibility), *c.cascade_index));
   }
   const std::string light = setup.light_scale == 1.0 ? "" : ", light width ×" + format_number("%g", setup.light_scale);
   const std::string title = "scene " + scene.name + light + ", shadow map " + std::to_string(setup.map_size) + "², screen " +
@@ -158,8 +197,9 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
 void print_render_table(std::ostream& out, const RenderSetup& setup, const RenderResult& result, bool stages) {
   out << "scene " << result.scene_name;
   if (setup.light_scale != 1.0) out << ", light width x" << format_number("%g", setup.light_scale);
-  out << ", shadow map " << setup.map_size << "x" << setup.map_size << " (source "
-      << setup.source << ", " << format_ms(result.comparison.shadow_map_ms)
+  const size_t cascades = result.comparison.cascades.size();
+  out << ", " << (cascades > 0 ? std::to_string(cascades) + " cascades of " : "shadow map ") << setup.map_size << "x"
+      << setup.map_size << " (source " << setup.source << ", " << format_ms(result.comparison.shadow_map_ms)
       << " ms), screen " << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats
       << " runs, truth " << setup.truth_samples << "x" << setup.truth_samples << " light samples\n";
   out.unsetf(std::ios::floatfield);

@@ -20,7 +20,7 @@
 namespace pn {
 
 struct RenderSetup {
-  std::string scene = "boxes";
+  std::string scene = "boxes";   // a box scene (fixtures/scenes.h) or the city (fixtures/city_scenes.h)
   std::filesystem::path model;  // non-empty: a model scene from this mesh file (scene/model.h) instead
   std::string source = "full";  // the shadow-map source (technique/shadow_map_source.h)
   double light_scale = 1.0;  // multiplies the scene's light width (the penumbrae grow with it)
@@ -28,6 +28,7 @@ struct RenderSetup {
   int screen_size = 512;
   int truth_samples = 16;  // per side of the truth's S×S light samples
   int repeats = 3;         // timed runs per technique (the median is reported)
+  int cascades = 3;        // a scene lit by the sun: its cascades (1..4; 0: one map over the whole scene), each map_size²
   std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: render_techniques()
   std::filesystem::path out = "render";
 };
@@ -39,13 +40,13 @@ struct RenderResult {
 };
 
 // Throws Error naming the first setting out of range (scene, source, light scale, sizes, samples,
-// repeats, methods).
+// repeats, cascades, methods).
 void validate_render_setup(const RenderSetup& setup);
 
 // Creates `out` (and its parents); throws Error naming it when it cannot.
 void create_output_directory(const std::filesystem::path& out);
 
-// The setup's scene: the box scene `scene`, or the model in `model`, its light's width times
+// The setup's scene: the box scene or city `scene`, or the model in `model`, its light's width times
 // `light_scale`. Throws Error for an unknown scene, a model file that cannot be loaded
 // (scene/model.h) or a scaled light that does not validate.
 Scene load_render_scene(const RenderSetup& setup);

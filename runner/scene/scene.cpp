@@ -99,6 +99,10 @@ void validate_light_width_factor(double factor, const char* what) {
 
 void scale_light_width(Scene& scene, double factor, const char* what) {
   validate_light_width_factor(factor, what);
+  if (scene.sun) {  // the sun's angular diameter, its whole-scene map fitted again
+    light_by_sun(scene, scene.sun->direction, scene.sun->angular_diameter_radians * factor);
+    return;
+  }
   scene.light.width *= factor;
   scene.light.validate();
 }

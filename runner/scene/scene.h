@@ -55,6 +55,13 @@ struct SunLight {
   double spread() const;
 };
 
+// What one shadow map is rendered and read with: the light's view and projection and the
+// light model of its texels (the scene's own, or a cascade's).
+struct MapLight {
+  glm::mat4 view{1.0f}, projection{1.0f};
+  LightModel light;
+};
+
 struct Scene {
   std::string name;
   std::vector<Box> boxes;  // boxes[0] is the ground slab
@@ -71,6 +78,7 @@ struct Scene {
   // map; the sun's is its whole-scene map's (SunLight::view, projection).
   glm::mat4 light_view() const;
   glm::mat4 light_projection() const;  // OpenGL perspective (near/far from `light`) or the sun's orthographic
+  MapLight map_light() const { return {light_view(), light_projection(), light}; }
 
   // The G-buffer's camera (`camera`), square screen.
   glm::mat4 camera_view() const;
@@ -95,7 +103,7 @@ Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
 // range; sun->view, projection). Throws Error for a bad direction or diameter (0 < theta < 10 deg).
 void light_by_sun(Scene& scene, const glm::vec3& direction, double angular_diameter_radians);
 
-// Multiplies the scene's light width by `factor` (wider penumbrae). Throws Error
+// Multiplies the scene's light width (the sun's angular diameter) by `factor` (wider penumbrae). Throws Error
 // "<what> <factor>: expected a finite number > 0", or for a light that then does not validate.
 void validate_light_width_factor(double factor, const char* what);
 void scale_light_width(Scene& scene, double factor, const char* what);

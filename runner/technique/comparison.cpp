@@ -7,7 +7,9 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "gl/texture.h"
+#include "cascades/cascaded_frame.h"
 #include "passes/surface_pass.h"
+#include "technique/cascaded_technique.h"
 #include "technique/technique_registry.h"
 #include "truth/ray_traced_truth.h"
 
@@ -15,6 +17,23 @@ namespace pn {
 
 namespace {
 constexpr const char* kTruthRow = "truth (ray traced)";
+
+// Each pixel's cascade from the camera's view depth (z, w = surface): the first whose far end lies
+// beyond it (cascades.glsl's selection), -1 where the pixel sees nothing or lies past the last.
+Image cascade_index_image(const Image& view_depth, const CascadedFrame& frame) {
+  Image out(view_depth.width, view_depth.height, 1, -1.0f);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      if (view_depth.at(x, y, 3) == 0.0f) continue;
+      const float z = view_depth.at(x, y, 2);
+      for (size_t i = 0; i < frame.cascades.size(); ++i)
+        if (z < frame.cascades[i].split_far) {
+          out.at(x, y) = static_cast<float>(i);
+          break;
+        }
+    }
+  return out;
+}
 }  // namespace
 
 const TechniqueResult* Comparison::find(const std::string& name) const {
@@ -27,12 +46,27 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
                               const ComparisonSetup& setup) {
   if (setup.techniques.empty()) throw Error("no methods to compare");
   const int size = setup.screen_size;
+  const bool cascaded = scene.sun && setup.cascades;
+  if (cascaded && setup.source != "full")
+    throw Error("shadow-map source '" + setup.source + "' on cascades: expected full (each cascade's map is drawn whole)");
   const auto source = find_shadow_map_source(setup.source).make(context, tree, {});
   const GBufferRenderer gbuffer(context, tree);
-  const SceneFrame frame = render_scene_frame(context, *source, gbuffer, scene, size);
+  // The frame the techniques read: one map and G-buffer, or the cascades' (each technique then
+  // runs once a cascade through CascadedTechnique, and the visibilities are blended).
+  SceneFrame frame;
+  std::unique_ptr<CascadedFrame> cascades;
+  if (cascaded)
+    cascades = render_cascaded_frame(context, ShadowMapRenderer(context, tree), gbuffer, scene, *setup.cascades, size);
+  else
+    frame = render_scene_frame(context, *source, gbuffer, scene, size);
+  const TechniqueInputs inputs = cascaded ? cascades->inputs(scene.light) : frame.inputs();
 
   Comparison c;
-  c.shadow_map_ms = frame.shadow_map_ms;
+  c.shadow_map_ms = cascaded ? cascades->shadow_map_ms : frame.shadow_map_ms;
+  if (cascaded) {
+    c.cascades = cascades->cascades;
+    c.cascade_index = cascade_index_image(read_float_texture(context, cascades->view_depth, size, size, 4), *cascades);
+  }
   c.surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size), size, size, 4);
   TruthSettings truth_settings;
   truth_settings.samples_per_side = setup.truth_samples;
@@ -42,13 +76,15 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
 
   TechniqueResources resources(context, tree);
   const VisibilityScorer against_truth(c.truth, c.surface);
-  std::vector<std::unique_ptr<Technique>> techniques;
+  std::vector<std::unique_ptr<Technique>> techniques, on_cascades;
   std::vector<const Technique*> timed;
+  const CascadeBlendPass* blend = cascaded ? &resources.shared<CascadeBlendPass>() : nullptr;
   for (const TechniqueConfig* config : setup.techniques) {
     techniques.push_back(config->create(resources));
-    timed.push_back(techniques.back().get());
+    if (cascaded) on_cascades.push_back(std::make_unique<CascadedTechnique>(*techniques.back(), *blend, context));
+    timed.push_back(cascaded ? on_cascades.back().get() : techniques.back().get());
   }
-  std::vector<TechniqueMeasurement> measurements = measure_techniques(timed, frame.inputs(), setup.repeats);
+  std::vector<TechniqueMeasurement> measurements = measure_techniques(timed, inputs, setup.repeats);
   for (size_t k = 0; k < setup.techniques.size(); ++k) {
     TechniqueResult r;
     r.name = setup.techniques[k]->name();

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cascades/cascade_fit.h"
 #include "core/image.h"
 #include "metrics/scores.h"
 #include "scene/scene.h"
@@ -19,6 +20,9 @@ namespace pn {
 
 struct ComparisonSetup {
   std::string source = "full";  // shadow_map_sources()
+  // A scene lit by the sun: its techniques run on these cascades (CascadedTechnique); none: on
+  // one orthographic map over the whole scene. Ignored for the area light's scenes.
+  std::optional<CascadeSettings> cascades;
   int screen_size = 512;
   int repeats = 3;
   int truth_samples = 16;  // per side: S×S light samples per pixel
@@ -40,6 +44,8 @@ struct Comparison {
   double shadow_map_ms = 0.0;
   std::vector<TechniqueResult> results;  // in the order of setup.techniques
   std::optional<Scores> truth_vs_exact;
+  std::optional<Image> cascade_index;  // on cascades: each pixel's cascade (cascades.glsl's selection), -1 where none
+  std::vector<Cascade> cascades;       // on cascades: the fitted cascades
 
   const TechniqueResult* find(const std::string& name) const;  // null when not run
 };

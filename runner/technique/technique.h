@@ -21,6 +21,7 @@ namespace pn {
 
 struct MinMaxMipChain;  // passes/minmax_mip_pass.h
 struct DepthPyramid;    // passes/depth_pyramid_pass.h
+struct CascadeInputs;   // below
 
 // What a technique reads for one frame (non-owning: see SceneFrame).
 struct TechniqueInputs {
@@ -32,6 +33,20 @@ struct TechniqueInputs {
   // changed); null: a technique that reads one builds its own from shadow_map.
   const MinMaxMipChain* mip = nullptr;
   const DepthPyramid* pyramid = nullptr;
+  // Set when the frame is cascaded (cascades/cascaded_frame.h): what CascadedTechnique runs its
+  // technique on, once a cascade; a technique itself reads only the fields above.
+  const CascadeInputs* cascades = nullptr;
+};
+
+// A cascaded frame's layers: each cascade's map, G-buffer and light as one TechniqueInputs, and
+// what blends their visibilities (cascades.glsl, passes/cascade_blend.comp).
+struct CascadeInputs {
+  std::vector<TechniqueInputs> layers;   // nearest cascade first, at most PN_CASCADES_MAX
+  const GlObject* view_depth = nullptr;  // screen² RGBA32F: z the camera's view depth, w = 1 where a surface is seen
+  float split_far[4] = {0, 0, 0, 0};     // C_1 ... C_m
+  float near = 0;                        // C_0
+  float band = 0;
+  bool fade_last = true;
 };
 
 // Named values, in the order they are printed.

@@ -1,0 +1,79 @@
+#include "cascades/cascaded_frame.h"
+
+#include <string>
+
+#include "core/error.h"
+#include "gl/gpu_timer.h"
+#include "scenes.h"
+
+namespace pn {
+
+TechniqueInputs CascadedFrame::inputs(const LightModel& scene_light) const {
+  TechniqueInputs in;
+  in.light = scene_light;
+  in.screen_size = screen_size;
+  in.cascades = &layers;
+  return in;
+}
+
+MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_size) {
+  MapLight out;
+  out.view = cascade.light_view;
+  out.projection = cascade.light_projection;
+  out.light.width = 0.0;
+  out.light.spread = sun.spread();
+  out.light.near_plane = cascade.depth_near;
+  out.light.far_plane = cascade.depth_far;
+  out.light.map_size = map_size;
+  out.light.texel_world = cascade.texel_size;
+  out.light.validate();
+  return out;
+}
+
+std::unique_ptr<CascadedFrame> render_cascaded_frame(const Context& context, const ShadowMapRenderer& maps,
+                                                     const GBufferRenderer& gbuffer, const Scene& scene,
+                                                     const CascadeSettings& settings, int screen_size) {
+  if (!scene.sun) throw Error("scene '" + scene.name + "': cascades need a scene lit by the sun");
+  if (screen_size < 1 || screen_size > 8192)
+    throw Error("screen size " + std::to_string(screen_size) + ": expected 1..8192");
+  CascadeCamera camera;
+  camera.view = scene.camera_view();
+  camera.fov_y_radians = scene.camera.fov_degrees * 3.14159265358979 / 180.0;
+  camera.aspect = 1.0;
+  camera.near_plane = scene.camera.near_plane;
+  camera.far_plane = scene.camera.far_plane;
+  const auto [lo, hi] = scene.bounds();
+  auto frame = std::make_unique<CascadedFrame>();
+  frame->screen_size = screen_size;
+  frame->cascades = fit_cascades(settings, camera, scene.sun->direction, lo, hi);
+  StageClock clock(context);
+  clock.start();
+  for (const Cascade& c : frame->cascades) {
+    frame->lights.push_back(cascade_map_light(c, *scene.sun, settings.map_size));
+    frame->maps.push_back(maps.render(scene, frame->lights.back()));
+  }
+  clock.stage("cascade maps");
+  frame->shadow_map_ms = clock.read().front().second;
+  for (size_t i = 0; i < frame->cascades.size(); ++i)
+    frame->gbuffers.push_back(gbuffer.render(scene, screen_size, fixtures::kNormalOffsetTexels, frame->lights[i],
+                                             frame->cascades[i].fit_near, frame->cascades[i].split_far));
+  MapLight camera_light{scene.camera_view(), scene.camera_projection(), scene.light};
+  frame->view_depth = gbuffer.render(scene, screen_size, 0.0f, camera_light);
+  CascadeInputs& layers = frame->layers;
+  for (size_t i = 0; i < frame->cascades.size(); ++i) {
+    TechniqueInputs layer;
+    layer.light = frame->lights[i].light;
+    layer.screen_size = screen_size;
+    layer.shadow_map = &frame->maps[i];
+    layer.gbuffer = &frame->gbuffers[i];
+    layers.layers.push_back(layer);
+    layers.split_far[i] = frame->cascades[i].split_far;
+  }
+  layers.view_depth = &frame->view_depth;
+  layers.near = static_cast<float>(camera.near_plane);
+  layers.band = static_cast<float>(settings.band);
+  layers.fade_last = false;  // the camera's far plane ends the view: nothing to fade into
+  return frame;
+}
+
+}  // namespace pn

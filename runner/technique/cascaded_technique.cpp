@@ -1,0 +1,35 @@
+#include "technique/cascaded_technique.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
+#include "gl/gpu_timer.h"
+
+namespace pn {
+
+TechniqueFrame CascadedTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
+  if (!inputs.cascades) throw Error("a cascaded technique needs a cascaded frame (a scene lit by the sun)");
+  const CascadeInputs& cascades = *inputs.cascades;
+  std::vector<TechniqueFrame> layers;
+  for (const TechniqueInputs& layer : cascades.layers) layers.push_back(inner_->run(layer, with_stats));
+  std::vector<const GlObject*> visibilities;
+  for (const TechniqueFrame& layer : layers) visibilities.push_back(&layer.visibility);
+  TechniqueFrame out;
+  for (size_t c = 0; c < layers.size(); ++c) {
+    for (const auto& [name, ms] : layers[c].stages) {
+      const auto same = std::find_if(out.stages.begin(), out.stages.end(), [&](const auto& s) { return s.first == name; });
+      if (same == out.stages.end()) out.stages.emplace_back(name, ms);
+      else same->second += ms;
+    }
+    for (const auto& [name, value] : layers[c].stats) out.stats.emplace_back("c" + std::to_string(c) + " " + name, value);
+  }
+  StageClock clock(*context_);
+  clock.start();
+  out.visibility = blend_->run(cascades, visibilities, inputs.screen_size);
+  clock.stage("cascade blend");
+  for (const auto& stage : clock.read()) out.stages.push_back(stage);
+  return out;
+}
+
+}  // namespace pn
