@@ -40,6 +40,9 @@ const std::vector<ModuleCheck>& module_checks() {
       {"depth_cache", "min(static, dynamic) and its shadow test vs the definition; both caches over 100-frame motion "
                       "sequences vs a full render (map, mip chain, pyramid, Fast PCSS: exact)",
        &run_depth_cache_check},
+      {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
+              "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
+       &run_vsm_check},
   };
   return checks;
 }
