@@ -10,6 +10,7 @@
 namespace pn::glsl {
 #include "passes/vsm_moments.h"
 #include "passes/vsm_query.h"
+#include "passes/vsm_shade.h"
 PN_STD140_SIZE(PnVsmMomentsParams, 16);
 PN_STD140_OFFSET(PnVsmMomentsParams, exponents, 8);
 PN_STD140_SIZE(PnVsmQueryParams, 32);
@@ -17,6 +18,10 @@ PN_STD140_OFFSET(PnVsmQueryParams, kind, 16);
 PN_STD140_OFFSET(PnVsmQueryParams, radius, 20);
 PN_STD140_OFFSET(PnVsmQueryParams, minVariance, 24);
 PN_STD140_OFFSET(PnVsmQueryParams, bleedingReduction, 28);
+PN_STD140_SIZE(PnVsmShadeParams, 32);
+PN_STD140_OFFSET(PnVsmShadeParams, radius, 16);
+PN_STD140_OFFSET(PnVsmShadeParams, bias, 20);
+PN_STD140_OFFSET(PnVsmShadeParams, bleedingReduction, 28);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -79,6 +84,30 @@ std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyram
   std::vector<Query> out;
   for (size_t k = 0; k < queries.size(); ++k) out.push_back(query_result(r, k));
   return out;
+}
+
+VsmShadePass::VsmShadePass(const Context& context, const SourceTree& tree)
+    : context_(&context), variants_(context, tree, "passes/vsm_shade.comp") {}
+
+GlObject VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer,
+                           int screen_size, const VsmParams& params, float bias) const {
+  params.validate();
+  const ComputeProgram& program = variants_.get({{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}});
+  GlObject visibility = make_float_texture(*context_, screen_size, screen_size, 1);
+  const glsl::PnVsmShadeParams block{{params.near_depth, params.far_depth},
+                                     {params.positive_exponent, params.negative_exponent},
+                                     params.blur.radius,
+                                     bias,
+                                     params.min_variance,
+                                     params.bleeding_reduction};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_VSM_SHADE_MOMENTS_BINDING, moments.texture);
+  bind.texture(PN_VSM_SHADE_PYRAMID_BINDING, pyramid.texture);
+  bind.texture(PN_VSM_SHADE_GBUFFER_BINDING, gbuffer);
+  bind.image(PN_VSM_SHADE_VISIBILITY_IMAGE, visibility, GL_WRITE_ONLY, GL_R32F);
+  program.dispatch(screen_size, screen_size);
+  return visibility;
 }
 
 }  // namespace pn

@@ -1,6 +1,7 @@
 // Runner side of glsl/passes/vsm_moments.comp (depth map -> moments, then the
-// blur pass over them) and glsl/passes/vsm_query.comp (vsm.glsl's bounds for
-// a batch of receivers, the check's query pass).
+// blur pass over them), glsl/passes/vsm_query.comp (vsm.glsl's bounds for a
+// batch of receivers, the check's query pass) and glsl/passes/vsm_shade.comp
+// (the vsm / evsm techniques' visibility per screen pixel).
 #pragma once
 
 #include <vector>
@@ -55,6 +56,20 @@ class VsmQueryPass {
  private:
   const Context* context_;
   ComputeProgram program_;
+};
+
+// Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid): the
+// visibility of vsm.glsl (pnVsmVisibility / pnEvsmVisibility2 / 4) with `bias`, as a new screen²
+// R32F texture. Pixels that see no surface are 1.
+class VsmShadePass {
+ public:
+  VsmShadePass(const Context& context, const SourceTree& tree);
+  GlObject run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
+               const VsmParams& params, float bias) const;
+
+ private:
+  const Context* context_;
+  PassVariants variants_;  // by PN_VSM_SHADE_KIND
 };
 
 }  // namespace pn
