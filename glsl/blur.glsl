@@ -1,4 +1,4 @@
-// blur.glsl — separable Gaussian blur of a single-channel float image.
+// blur.glsl — separable Gaussian blur of a float image of one to four channels.
 //
 // description:
 //   One 1-D pass of a normalised Gaussian of radius r and standard deviation
@@ -11,6 +11,13 @@
 //   never spreads NaN. The depth-aware variant drops taps whose depth is not
 //   within a relative tolerance of the centre's (a cross-bilateral cut that
 //   keeps penumbrae from bleeding across depth edges) and renormalises.
+//   One code path for every channel count: the core functions (…Vec4) blur
+//   the four channels of a texel at once, each channel by the same weights
+//   and taps (the depth-aware cut and the adaptive radius are decided once
+//   per tap, not per channel); the scalar functions are their .r, so a
+//   single-channel pass costs what it did (the unused channels' arithmetic
+//   is dead code the compiler drops). Moments (vsm.glsl: 2 or 4 channels)
+//   are blurred by the same functions.
 //   The adaptive radius (option) gives each output pixel p its own radius
 //     r(p) = clamp(floor(s(p) * k / 2), 0, radius),
 //   s(p) the side in shadow-map texels of p's filter region (Step 5; s < 0 or
@@ -29,6 +36,8 @@
 //   float pnBlur1DDepthAwareAdaptive(sampler2D src, sampler2D depth, sampler2D filterMap,
 //                          ivec2 p, ivec2 axis, int radius, float sigma,
 //                          float depthTolerance, float pixelsPerTexel)
+//   vec4  pnBlur1DVec4, pnBlur1DDepthAwareVec4, pnBlur1DAdaptiveVec4,
+//         pnBlur1DDepthAwareAdaptiveVec4 (same parameters): every channel of src
 //   int   pnBlurAdaptiveRadius(float filterSide, float pixelsPerTexel, int radius)
 //   float pnBlurGaussian(int offset, float sigma)   unnormalised weight
 //   p, axis in texels (axis = ivec2(1,0) or ivec2(0,1)); radius is clamped to
@@ -82,26 +91,35 @@ bool pnBlurIsFinite(float v) {
   return !isnan(v) && !isinf(v);
 }
 
+// Each non-finite channel replaced by PN_BLUR_NONFINITE_VALUE (a select, bit-exact).
+vec4 pnBlurSanitize(vec4 v) {
+  bvec4 bad = bvec4(ivec4(isnan(v)) | ivec4(isinf(v)));
+  return mix(v, vec4(float(PN_BLUR_NONFINITE_VALUE)), bad);
+}
+
 // Effective radius: clamped, and 0 when sigma cannot define a Gaussian.
 int pnBlurRadius(int radius, float sigma) {
   return (sigma > 0.0) ? clamp(radius, 0, PN_BLUR_MAX_RADIUS) : 0;
 }
 
 // Clamp-to-edge fetch; every read stays inside the texture.
-float pnBlurFetch(sampler2D tex, ivec2 p) {
+vec4 pnBlurFetch4(sampler2D tex, ivec2 p) {
   ivec2 last = textureSize(tex, 0) - ivec2(1);
-  return texelFetch(tex, clamp(p, ivec2(0), last), 0).r;
+  return texelFetch(tex, clamp(p, ivec2(0), last), 0);
 }
 
-float pnBlurValue(sampler2D src, ivec2 p) {
-  float v = pnBlurFetch(src, p);
-  return pnBlurIsFinite(v) ? v : float(PN_BLUR_NONFINITE_VALUE);
+float pnBlurFetch(sampler2D tex, ivec2 p) {
+  return pnBlurFetch4(tex, p).r;
+}
+
+vec4 pnBlurValue(sampler2D src, ivec2 p) {
+  return pnBlurSanitize(pnBlurFetch4(src, p));
 }
 
 // The centre (weight 1), then the taps at -i and +i for i = 1..r.
-float pnBlur1D(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma) {
+vec4 pnBlur1DVec4(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma) {
   int r = pnBlurRadius(radius, sigma);
-  float sum = pnBlurValue(src, p);
+  vec4 sum = pnBlurValue(src, p);
   float weightSum = 1.0;
   PnBlurWeights g = pnBlurWeightsStart(sigma);
   for (int i = 1; i <= r; ++i) {
@@ -121,12 +139,16 @@ bool pnBlurSameSurface(float centreDepth, float tapDepth, float depthTolerance) 
   return abs(tapDepth - centreDepth) <= depthTolerance * abs(centreDepth);
 }
 
+float pnBlur1D(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma) {
+  return pnBlur1DVec4(src, p, axis, radius, sigma).r;
+}
+
 // The centre always counts (so weightSum >= 1); a tap at -i or +i only on the centre's surface.
-float pnBlur1DDepthAware(sampler2D src, sampler2D depth, ivec2 p, ivec2 axis, int radius, float sigma,
-                         float depthTolerance) {
+vec4 pnBlur1DDepthAwareVec4(sampler2D src, sampler2D depth, ivec2 p, ivec2 axis, int radius, float sigma,
+                            float depthTolerance) {
   int r = pnBlurRadius(radius, sigma);
   float centreDepth = pnBlurFetch(depth, p);
-  float sum = pnBlurValue(src, p);
+  vec4 sum = pnBlurValue(src, p);
   float weightSum = 1.0;
   PnBlurWeights g = pnBlurWeightsStart(sigma);
   for (int i = 1; i <= r; ++i) {
@@ -139,6 +161,11 @@ float pnBlur1DDepthAware(sampler2D src, sampler2D depth, ivec2 p, ivec2 axis, in
     }
   }
   return sum / weightSum;
+}
+
+float pnBlur1DDepthAware(sampler2D src, sampler2D depth, ivec2 p, ivec2 axis, int radius, float sigma,
+                         float depthTolerance) {
+  return pnBlur1DDepthAwareVec4(src, depth, p, axis, radius, sigma, depthTolerance).r;
 }
 
 // r(p) from p's filter side s (texels) and k = pixelsPerTexel (screen pixels
@@ -161,18 +188,29 @@ float pnBlurFilterSide(sampler2D filterMap, ivec2 p) {
 // The per-pixel-radius passes: pnBlur1D / pnBlur1DDepthAware with the
 // output pixel's radius r(p); a pixel of radius 0 is a copy of its texel
 // (what the 1-tap pass returns, without the depth fetch and the weight).
-float pnBlur1DAdaptive(sampler2D src, sampler2D filterMap, ivec2 p, ivec2 axis, int radius, float sigma,
-                       float pixelsPerTexel) {
+vec4 pnBlur1DAdaptiveVec4(sampler2D src, sampler2D filterMap, ivec2 p, ivec2 axis, int radius, float sigma,
+                          float pixelsPerTexel) {
   int r = pnBlurAdaptiveRadius(pnBlurFilterSide(filterMap, p), pixelsPerTexel, pnBlurRadius(radius, sigma));
   if (r == 0) return pnBlurValue(src, p);
-  return pnBlur1D(src, p, axis, r, sigma);
+  return pnBlur1DVec4(src, p, axis, r, sigma);
+}
+
+float pnBlur1DAdaptive(sampler2D src, sampler2D filterMap, ivec2 p, ivec2 axis, int radius, float sigma,
+                       float pixelsPerTexel) {
+  return pnBlur1DAdaptiveVec4(src, filterMap, p, axis, radius, sigma, pixelsPerTexel).r;
+}
+
+vec4 pnBlur1DDepthAwareAdaptiveVec4(sampler2D src, sampler2D depth, sampler2D filterMap, ivec2 p, ivec2 axis,
+                                    int radius, float sigma, float depthTolerance, float pixelsPerTexel) {
+  int r = pnBlurAdaptiveRadius(pnBlurFilterSide(filterMap, p), pixelsPerTexel, pnBlurRadius(radius, sigma));
+  if (r == 0) return pnBlurValue(src, p);
+  return pnBlur1DDepthAwareVec4(src, depth, p, axis, r, sigma, depthTolerance);
 }
 
 float pnBlur1DDepthAwareAdaptive(sampler2D src, sampler2D depth, sampler2D filterMap, ivec2 p, ivec2 axis,
                                  int radius, float sigma, float depthTolerance, float pixelsPerTexel) {
-  int r = pnBlurAdaptiveRadius(pnBlurFilterSide(filterMap, p), pixelsPerTexel, pnBlurRadius(radius, sigma));
-  if (r == 0) return pnBlurValue(src, p);
-  return pnBlur1DDepthAware(src, depth, p, axis, r, sigma, depthTolerance);
+  return pnBlur1DDepthAwareAdaptiveVec4(src, depth, filterMap, p, axis, radius, sigma, depthTolerance,
+                                        pixelsPerTexel).r;
 }
 
 #endif  // PENUMBRA_BLUR_GLSL

@@ -27,8 +27,9 @@ std::vector<pn::CaseResult> blur_cases(const fs::path& root, const pn::CheckOpti
 
 TEST_CASE("blur pass equals its reference on every fixture, size and parameter set, adaptive radius included") {
   const auto results = blur_cases(PENUMBRA_GLSL_DIR);
-  // 6 fixed-radius sets, 5 adaptive ones with a radius-0 case each.
-  REQUIRE(results.size() == (6 + 2 * 5) * std::size(pn::fixtures::kTextureFixtures) * std::size(pn::fixtures::kCheckSizes));
+  // 6 fixed-radius sets, 5 adaptive ones with a radius-0 case each; 2 sets on 2 and 4 channels, a case a channel.
+  REQUIRE(results.size() == (6 + 2 * 5 + 2 * (2 + 4)) * std::size(pn::fixtures::kTextureFixtures) *
+                                std::size(pn::fixtures::kCheckSizes));
   pn::test::check_all_pass(results);
 }
 
@@ -88,6 +89,22 @@ TEST_CASE("negative: a copy of blur.glsl whose adaptive radius is the whole penu
   for (const auto& r : results)
     if (!r.comparison.pass && !pn::test::named(r, "adaptive")) ++fixed_failing;
   CHECK(fixed_failing == 0);
+}
+
+TEST_CASE("negative: a copy of blur.glsl that sanitises only the first channel fails the NaN/Inf channels beyond it, no other case") {
+  const pn::test::BrokenCopy copy("blur.glsl", "return mix(v, vec4(float(PN_BLUR_NONFINITE_VALUE)), bad);",
+                                  "return mix(v, vec4(float(PN_BLUR_NONFINITE_VALUE)), bvec4(bad.x, false, false, false));");
+  REQUIRE(copy.found());
+  const auto results = blur_cases(copy.root());
+  size_t later_nonfinite = 0;
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    const bool nonfinite_later = r.name.rfind("nonfinite ", 0) == 0 && r.name.find(" channel 0 of") == std::string::npos &&
+                                 r.name.find(" channel ") != std::string::npos;
+    if (!nonfinite_later) CHECK(r.comparison.pass);
+    else if (!r.comparison.pass) ++later_nonfinite;  // a small image may hold no non-finite texel
+  }
+  CHECK(later_nonfinite >= 4);  // 64x64 and 100x37 at least, 2 and 4 channels
 }
 
 TEST_CASE("the bundle of blur.glsl, #line markers and all, compiles with the GL driver") {

@@ -39,3 +39,18 @@ TEST_CASE("technique registry: bad specs are refused naming the spec (negative)"
   CHECK_THROWS_WITH(pn::parse_technique("fast:bias=-1"), "method 'fast:bias=-1': bias -1: expected a finite number >= 0");
   CHECK_THROWS_WITH(pn::parse_technique("fast:search-tile=17"), "method 'fast:search-tile=17': search reuse tile 17: expected 0 (off) or 1..16");
 }
+
+TEST_CASE("technique registry: vsm and evsm take their own keys and refuse values out of range (negative)") {
+  const auto config = pn::parse_technique("vsm:radius=5:sigma=1.5:bleeding=0.3:min-variance=1e-5:bias=0.05");
+  CHECK(config->name() == "vsm:radius=5:sigma=1.5:bleeding=0.3:min-variance=1e-5:bias=0.05");
+  CHECK(pn::parse_technique("evsm:exponent=30:negative-exponent=10")->name() == "evsm:exponent=30:negative-exponent=10");
+  CHECK_THROWS_WITH(pn::parse_technique("vsm:bleeding=1"),
+                    "method 'vsm:bleeding=1': vsm bleeding reduction 1: expected 0 to 0.99");
+  CHECK_THROWS_WITH(pn::parse_technique("evsm:exponent=50"),
+                    Catch::StartsWith("method 'evsm:exponent=50': evsm exponent 50: expected 0 to 42"));
+  CHECK_THROWS_WITH(pn::parse_technique("vsm:radius=17"),
+                    "method 'vsm:radius=17': blur radius 17: expected an integer from 0 to 16");
+  CHECK_THROWS_WITH(pn::parse_technique("vsm:radius=x"), "method 'vsm:radius=x': radius=x: expected an integer");
+  CHECK_THROWS_WITH(pn::parse_technique("vsm:colour=red"),
+                    Catch::StartsWith("method 'vsm:colour=red': unknown setting 'colour': expected radius, sigma"));
+}

@@ -7,9 +7,9 @@
 #include "uniform_block.h"
 
 // Distinct across resource kinds, so the pass is valid Vulkan GLSL as well.
-#define PN_BLUR_SOURCE_BINDING 0      // sampler2D, R32F
+#define PN_BLUR_SOURCE_BINDING 0      // sampler2D, R32F, RG32F or RGBA32F (the pass's channel count)
 #define PN_BLUR_DEPTH_BINDING 1       // sampler2D, R32F (depth-aware variant)
-#define PN_BLUR_TARGET_BINDING 2      // image2D, r32f
+#define PN_BLUR_TARGET_BINDING 2      // image2D, r32f, rg32f or rgba32f (PN_BLUR_PASS_CHANNELS)
 #define PN_BLUR_PARAMS_BINDING 3
 #define PN_BLUR_FILTER_MAP_BINDING 4  // sampler2D, RGBA32F (adaptive radius): the filter-region map, .w = side
 

@@ -3,6 +3,10 @@
 // depth-aware variant over a step-edge and a NaN/Inf-sprinkled depth, and the
 // adaptive radius over seeded filter sides (lit, contact, every radius, large),
 // plain and depth-aware; and the adaptive radius's radius-0 pixels, bit-exact.
+// Two- and four-channel images (the moments of vsm.glsl), channel c holding
+// fixture i + c, through the same code path, plain (r 3) and depth-aware,
+// against the same direct 2-D convolution per channel, each channel under
+// the tolerance of its own largest magnitude.
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -111,6 +115,53 @@ CaseResult radius_zero_case(const std::string& name, const Image& source, const 
           compare(expected, kept, Tolerance::exact())};
 }
 
+// Channel c of image i: fixture (i + c) mod the fixture count, so every fixture (NaN/Inf too) is some channel.
+Image multi_channel_source(size_t first, int width, int height, int channels) {
+  constexpr size_t n = std::size(fixtures::kTextureFixtures);
+  Image out(width, height, channels);
+  for (int c = 0; c < channels; ++c) {
+    const Image one = generate_fixture(fixtures::kTextureFixtures[(first + static_cast<size_t>(c)) % n], width, height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) out.at(x, y, c) = one.at(x, y);
+  }
+  return out;
+}
+
+// The multi-channel cases: per channel, reference and tolerance as for one channel.
+void multi_channel_cases(const CheckEnvironment& env, const BlurPass& pass, std::vector<CaseResult>& results) {
+  const BlurCase cases[] = {{{3, 1.0, false, 0.0}, nullptr}, {{3, 1.0, true, 0.05}, "step_edge"}};
+  for (int channels : {2, 4})
+    for (const BlurCase& c : cases)
+      for (size_t i = 0; i < std::size(fixtures::kTextureFixtures); ++i)
+        for (const auto& size : fixtures::kCheckSizes) {
+          const Image source = multi_channel_source(i, size.width, size.height, channels);
+          const GlObject source_texture = upload_float_texture(env.context, source);
+          Image depth;
+          GlObject depth_texture;
+          if (c.params.depth_aware) {
+            depth = generate_fixture(find_fixture(c.depth_fixture), size.width, size.height);
+            depth_texture = upload_float_texture(env.context, depth);
+          }
+          const GlObject result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr, size.width,
+                                           size.height, c.params, nullptr, channels);
+          const Image observed = channels_of(
+              read_float_texture(env.context, result, size.width, size.height, image_channels(env.context, channels)),
+              0, channels);
+          const Image expected = c.params.depth_aware ? blur_depth_aware_reference(source, depth, c.params)
+                                                      : blur_reference(source, c.params);
+          for (int ch = 0; ch < channels; ++ch) {
+            const Image one = channels_of(source, ch, 1);
+            const Tolerance tolerance = blur_tolerance(c.params, one);
+            const std::string name = case_name(fixtures::kTextureFixtures[(i + static_cast<size_t>(ch)) %
+                                                                          std::size(fixtures::kTextureFixtures)].name,
+                                               size.width, size.height, c) +
+                                     " channel " + std::to_string(ch) + " of " + std::to_string(channels);
+            results.push_back({name, tolerance,
+                               compare(channels_of(expected, ch, 1), channels_of(observed, ch, 1), tolerance)});
+          }
+        }
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_blur_check(const CheckEnvironment& env) {
@@ -150,6 +201,7 @@ std::vector<CaseResult> run_blur_check(const CheckEnvironment& env) {
       }
     }
   }
+  if (!env.options.blur) multi_channel_cases(env, pass, results);
   return results;
 }
 

@@ -43,6 +43,9 @@ const std::vector<ModuleCheck>& module_checks() {
       {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
        &run_cascades_check},
+      {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
+              "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
+       &run_vsm_check},
   };
   return checks;
 }

@@ -58,5 +58,6 @@ std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_depth_cache_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env);
 
 }  // namespace pn

@@ -12,12 +12,15 @@
 namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
-// traversal_nodes.png, reuse_groups.png and pipeline_stages.png into `out`
+// traversal_nodes.png, reuse_groups.png, pipeline_stages.png and vsm_bleeding.png into `out`
 // (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
 
 // Fast PCSS's stages on the boxes scene, 256² (pipeline_figure.cpp).
 Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree);
+
+// Light bleeding on the two-occluder map, without and with the reduction (vsm_figure.cpp).
+Canvas vsm_bleeding_figure(const Context& context, const SourceTree& tree);
 
 }  // namespace pn

@@ -89,6 +89,8 @@ GLenum float_format(int channels) {
   return formats[channels - 1];
 }
 
+int image_channels(const Context& context, int channels) { return context.is_es() && channels == 2 ? 4 : channels; }
+
 GlObject make_texture(const Context& context, GLenum target, GLenum format, int width, int height, int layers,
                       int levels) {
   GlObject texture(context, GlKind::texture, target);

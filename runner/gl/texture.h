@@ -70,4 +70,9 @@ void read_texels_via_framebuffer(const Context& context, const GlObject& texture
 // GL internal format for `channels` floats (GL_R32F … GL_RGBA32F).
 GLenum float_format(int channels);
 
+// The channels of the image a pass writes `channels` floats into: `channels` on GL 4.5; on ES,
+// where RG32F is not an image format (ES 3.1 Table 8.27), 2 become 4 (RGBA32F; the passes'
+// shaders pick rgba32f under GL_ES the same way).
+int image_channels(const Context& context, int channels);
+
 }  // namespace pn

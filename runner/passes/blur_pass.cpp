@@ -18,27 +18,34 @@ PN_STD140_OFFSET(PnBlurPassParams, pixelsPerTexel, 28);
 
 namespace pn {
 
-namespace {
+BlurPass::BlurPass(const Context& context, const SourceTree& tree)
+    : context_(&context), variants_(context, tree, "passes/blur.comp") {
+  for (int v = 0; v < 4; ++v) {  // the single-channel variants now, so a copy that does not compile fails here
+    BlurParams params;
+    params.depth_aware = (v & 2) != 0;
+    params.adaptive = (v & 1) != 0;
+    program(params, 1);
+  }
+}
 
-// The program of one variant (blur.comp's PN_BLUR_PASS_* switches); index depth_aware * 2 + adaptive.
-int variant(bool depth_aware, bool adaptive) { return (depth_aware ? 2 : 0) + (adaptive ? 1 : 0); }
-
-}  // namespace
-
-BlurPass::BlurPass(const Context& context, const SourceTree& tree) : context_(&context) {
+const ComputeProgram& BlurPass::program(const BlurParams& params, int channels) const {
   const auto truth = [](bool b) { return std::string(b ? "true" : "false"); };
-  for (int v = 0; v < 4; ++v)  // limits: glsl/blur.h, as the reference
-    programs_.push_back(compile_pass(context, tree, "passes/blur.comp",
-                                     {{"PN_BLUR_PASS_DEPTH_AWARE", truth(v & 2)}, {"PN_BLUR_PASS_ADAPTIVE", truth(v & 1)}}));
+  return variants_.get({{"PN_BLUR_PASS_DEPTH_AWARE", truth(params.depth_aware)},
+                        {"PN_BLUR_PASS_ADAPTIVE", truth(params.adaptive)},
+                        {"PN_BLUR_PASS_CHANNELS", std::to_string(channels)}});
 }
 
 GlObject BlurPass::run(const GlObject& source, const GlObject* depth, int width, int height,
-                       const BlurParams& params, const GlObject* filter_map) const {
+                       const BlurParams& params, const GlObject* filter_map, int channels) const {
   params.validate();
+  if (channels != 1 && channels != 2 && channels != 4)
+    throw Error("blur: " + std::to_string(channels) + " channels: expected 1, 2 or 4");
   if (params.adaptive && filter_map == nullptr)
     throw Error("blur: the adaptive radius needs the filter-region map (none given)");
-  GlObject temporary = make_float_texture(*context_, width, height, 1);
-  GlObject target = make_float_texture(*context_, width, height, 1);
+  const ComputeProgram& pass = program(params, channels);
+  const int stored = image_channels(*context_, channels);
+  GlObject temporary = make_float_texture(*context_, width, height, stored);
+  GlObject target = make_float_texture(*context_, width, height, stored);
 
   auto one_pass = [&](const GlObject& in, const GlObject& out, int ax, int ay) {
     const glsl::PnBlurPassParams block{{ax, ay},
@@ -53,8 +60,8 @@ GlObject BlurPass::run(const GlObject& source, const GlObject* depth, int width,
     bind.texture(PN_BLUR_SOURCE_BINDING, in);
     bind.texture(PN_BLUR_DEPTH_BINDING, depth != nullptr ? *depth : source);
     bind.texture(PN_BLUR_FILTER_MAP_BINDING, params.adaptive ? *filter_map : source);
-    bind.image(PN_BLUR_TARGET_BINDING, out, GL_WRITE_ONLY, GL_R32F);
-    programs_[static_cast<size_t>(variant(params.depth_aware, params.adaptive))].dispatch(width, height);
+    bind.image(PN_BLUR_TARGET_BINDING, out, GL_WRITE_ONLY, float_format(stored));
+    pass.dispatch(width, height);
   };
   one_pass(source, temporary, 1, 0);
   one_pass(temporary, target, 0, 1);

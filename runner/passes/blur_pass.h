@@ -1,10 +1,11 @@
 // Runner side of glsl/passes/blur.comp: the two 1-D dispatches (x, then y)
-// that blur an R32F texture with glsl/blur.glsl.
+// that blur an R32F, RG32F or RGBA32F texture with glsl/blur.glsl.
 #pragma once
 
 #include <vector>
 
 #include "gl/compute_program.h"
+#include "gl/pass_variants.h"
 #include "reference/blur_reference.h"
 #include "shader/source_tree.h"
 
@@ -13,19 +14,24 @@ namespace pn {
 class BlurPass {
  public:
   // Flattens and compiles passes/blur.comp from `tree` (a user's copy under
-  // --glsl-root too), once per variant: plain or depth-aware, fixed or adaptive radius.
+  // --glsl-root too), once per variant: plain or depth-aware, fixed or adaptive
+  // radius, 1, 2 or 4 channels (the single-channel variants now, the others on first use).
   BlurPass(const Context& context, const SourceTree& tree);
 
-  // Returns a new width × height R32F texture. `depth` (same size) is read
-  // only when params.depth_aware, `filter_map` (same size, RGBA32F, the
-  // filter-region map: .w = side in texels) only when params.adaptive.
-  // Throws Error for invalid params, and when adaptive without a filter map.
+  // Returns a new width × height texture of `channels` floats (1, 2 or 4; the
+  // source's format, R32F, RG32F or RGBA32F), every channel blurred alike
+  // (stored as image_channels(context, channels): RGBA32F for 2 on ES).
+  // `depth` (same size, R32F) is read only when params.depth_aware, `filter_map`
+  // (same size, RGBA32F, the filter-region map: .w = side in texels) only when
+  // params.adaptive. Throws Error for invalid params or channel counts, and
+  // when adaptive without a filter map.
   GlObject run(const GlObject& source, const GlObject* depth, int width, int height, const BlurParams& params,
-               const GlObject* filter_map = nullptr) const;
+               const GlObject* filter_map = nullptr, int channels = 1) const;
 
  private:
+  const ComputeProgram& program(const BlurParams& params, int channels) const;
   const Context* context_;
-  std::vector<ComputeProgram> programs_;  // by variant (blur_pass.cpp)
+  PassVariants variants_;  // blur.comp's PN_BLUR_PASS_* switches
 };
 
 }  // namespace pn

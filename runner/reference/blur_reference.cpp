@@ -48,17 +48,19 @@ std::vector<double> normalised_gaussian(int radius, double sigma) {
 Image blur_reference(const Image& source, const BlurParams& params) {
   const int r = params.radius;
   const std::vector<double> w = normalised_gaussian(r, params.sigma);
-  Image out(source.width, source.height);
-  for (int y = 0; y < source.height; ++y) {
-    for (int x = 0; x < source.width; ++x) {
-      double sum = 0.0;
-      for (int j = -r; j <= r; ++j) {
-        for (int i = -r; i <= r; ++i) {
-          const float v = source.at(clamp_index(x + i, source.width), clamp_index(y + j, source.height));
-          sum += w[static_cast<size_t>(i + r)] * w[static_cast<size_t>(j + r)] * finite_or(v, kBlurNonfiniteValue);
+  Image out(source.width, source.height, source.channels);
+  for (int c = 0; c < source.channels; ++c) {
+    for (int y = 0; y < source.height; ++y) {
+      for (int x = 0; x < source.width; ++x) {
+        double sum = 0.0;
+        for (int j = -r; j <= r; ++j) {
+          for (int i = -r; i <= r; ++i) {
+            const float v = source.at(clamp_index(x + i, source.width), clamp_index(y + j, source.height), c);
+            sum += w[static_cast<size_t>(i + r)] * w[static_cast<size_t>(j + r)] * finite_or(v, kBlurNonfiniteValue);
+          }
         }
+        out.at(x, y, c) = static_cast<float>(sum);
       }
-      out.at(x, y) = static_cast<float>(sum);
     }
   }
   return out;
@@ -81,19 +83,21 @@ bool same_surface(float centre, float tap, float tol) {
 template <class Radius, class Kept>
 Image two_pass_blur(const Image& source, double sigma, Radius radius_at, Kept kept) {
   auto pass = [&](const Image& in, int dx, int dy) {
-    Image out(in.width, in.height);
-    for (int y = 0; y < in.height; ++y) {
-      for (int x = 0; x < in.width; ++x) {
-        const int r = radius_at(x, y);
-        double sum = 0.0, weight_sum = 0.0;
-        for (int i = -r; i <= r; ++i) {
-          const int qx = clamp_index(x + i * dx, in.width), qy = clamp_index(y + i * dy, in.height);
-          if (i != 0 && !kept(x, y, qx, qy)) continue;
-          const double weight = gaussian_weight(i, sigma);
-          sum += weight * finite_or(in.at(qx, qy), kBlurNonfiniteValue);
-          weight_sum += weight;
+    Image out(in.width, in.height, in.channels);
+    for (int c = 0; c < in.channels; ++c) {
+      for (int y = 0; y < in.height; ++y) {
+        for (int x = 0; x < in.width; ++x) {
+          const int r = radius_at(x, y);
+          double sum = 0.0, weight_sum = 0.0;
+          for (int i = -r; i <= r; ++i) {
+            const int qx = clamp_index(x + i * dx, in.width), qy = clamp_index(y + i * dy, in.height);
+            if (i != 0 && !kept(x, y, qx, qy)) continue;
+            const double weight = gaussian_weight(i, sigma);
+            sum += weight * finite_or(in.at(qx, qy, c), kBlurNonfiniteValue);
+            weight_sum += weight;
+          }
+          out.at(x, y, c) = static_cast<float>(sum / weight_sum);
         }
-        out.at(x, y) = static_cast<float>(sum / weight_sum);
       }
     }
     return out;

@@ -3,6 +3,8 @@
 // kernel w_i w_j (never separated); the depth-aware blur is defined as two 1-D
 // passes and is computed that way, each tap by its own rule; so is the
 // adaptive blur (each output pixel its own radius, from its filter side).
+// Every channel of the source is blurred alike, each on its own (moments:
+// glsl/vsm.glsl); depth and filter maps are read as one image for all.
 #pragma once
 
 #include <vector>

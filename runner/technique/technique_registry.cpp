@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "pipeline/pcss_technique.h"
+#include "technique/vsm_technique.h"
 
 namespace pn {
 
@@ -36,6 +37,10 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return pcss_ablation("fast-branch", "skip", "branch"); }},
       {"fast-blur", "Fast PCSS with Step 6's depth-aware blur, its radius following the filter size",
        []() -> Made { return pcss_ablation("fast-blur", "blur", "on"); }},
+      {"vsm", "variance shadow map (seed 003): blurred moments, Chebyshev bound, linstep(0.2) reduction, depth-range bound (vsm.glsl)",
+       []() -> Made { return vsm_config(VsmKind::vsm, "vsm"); }},
+      {"evsm", "exponential VSM, 4 components (c+ 40, c- 5) over the light's near..far, same blur and bounds (vsm.glsl)",
+       []() -> Made { return vsm_config(VsmKind::evsm4, "evsm"); }},
       {"fast-all-off", "Fast PCSS with every improvement off: must equal exact PCSS (the wiring check)",
        []() -> Made { return pcss_config(fast_pcss_all_off()); }, false},
   };

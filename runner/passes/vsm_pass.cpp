@@ -1,0 +1,113 @@
+#include "passes/vsm_pass.h"
+
+#include <string>
+
+#include "core/error.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
+#include "gl/texture.h"
+
+namespace pn::glsl {
+#include "passes/vsm_moments.h"
+#include "passes/vsm_query.h"
+#include "passes/vsm_shade.h"
+PN_STD140_SIZE(PnVsmMomentsParams, 16);
+PN_STD140_OFFSET(PnVsmMomentsParams, exponents, 8);
+PN_STD140_SIZE(PnVsmQueryParams, 32);
+PN_STD140_OFFSET(PnVsmQueryParams, kind, 16);
+PN_STD140_OFFSET(PnVsmQueryParams, radius, 20);
+PN_STD140_OFFSET(PnVsmQueryParams, minVariance, 24);
+PN_STD140_OFFSET(PnVsmQueryParams, bleedingReduction, 28);
+PN_STD140_SIZE(PnVsmShadeParams, 32);
+PN_STD140_OFFSET(PnVsmShadeParams, radius, 16);
+PN_STD140_OFFSET(PnVsmShadeParams, bias, 20);
+PN_STD140_OFFSET(PnVsmShadeParams, bleedingReduction, 28);
+}  // namespace pn::glsl
+
+namespace pn {
+
+VsmMomentsPass::VsmMomentsPass(const Context& context, const SourceTree& tree)
+    : context_(&context), variants_(context, tree, "passes/vsm_moments.comp"), blur_(context, tree) {}
+
+VsmMoments VsmMomentsPass::moments(const GlObject& depth_map, int width, int height, const VsmParams& params) const {
+  params.validate();
+  validate_shadow_map_size(width, height);
+  const ComputeProgram& program = variants_.get({{"PN_VSM_MOMENTS_KIND", std::to_string(static_cast<int>(params.kind))}});
+  const int channels = vsm_moment_channels(params.kind);
+  // The shader writes rgba32f for EVSM-4 and, on ES, for every kind (no rg32f image format there).
+  const int stored = channels == 4 || context_->is_es() ? 4 : 2;
+  VsmMoments out{make_float_texture(*context_, width, height, stored), width, channels, stored};
+  const glsl::PnVsmMomentsParams block{{params.near_depth, params.far_depth},
+                                       {params.positive_exponent, params.negative_exponent}};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_VSM_MOMENTS_MAP_BINDING, depth_map);
+  bind.image(PN_VSM_MOMENTS_TARGET_BINDING, out.texture, GL_WRITE_ONLY, float_format(stored));
+  program.dispatch(width, height);
+  return out;
+}
+
+VsmMoments VsmMomentsPass::blurred(const VsmMoments& moments, const VsmParams& params) const {
+  GlObject texture = blur_.run(moments.texture, nullptr, moments.size, moments.size, params.blur, nullptr,
+                               moments.channels);
+  return {std::move(texture), moments.size, moments.channels, image_channels(*context_, moments.channels)};
+}
+
+VsmQueryPass::VsmQueryPass(const Context& context, const SourceTree& tree)
+    : context_(&context), program_(compile_pass(context, tree, "passes/vsm_query.comp")) {}
+
+std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyramid& pyramid,
+                                     const std::vector<VsmQuery>& queries, const VsmParams& params) const {
+  params.validate();
+  if (queries.empty()) return {};
+  std::vector<Query> q;
+  for (const VsmQuery& v : queries) q.push_back({float(v.x), float(v.y), v.receiver_depth, v.bias});
+  const Image image = query_image(q);
+  const GlObject texture = upload_float_texture(*context_, image);
+  const GlObject results = make_float_texture(*context_, image.width, image.height, 4);
+  const glsl::PnVsmQueryParams block{{params.near_depth, params.far_depth},
+                                     {params.positive_exponent, params.negative_exponent},
+                                     static_cast<int>(params.kind),
+                                     params.blur.radius,
+                                     params.min_variance,
+                                     params.bleeding_reduction};
+  {
+    PassBindings bind(*context_);
+    bind.uniform(block);
+    bind.texture(PN_VSM_QUERY_MOMENTS_BINDING, moments.texture);
+    bind.texture(PN_VSM_QUERY_PYRAMID_BINDING, pyramid.texture);
+    bind.texture(PN_VSM_QUERY_QUERIES_BINDING, texture);
+    bind.image(PN_VSM_QUERY_RESULTS_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
+    program_.dispatch(image.width, image.height);
+  }
+  const Image r = read_float_texture(*context_, results, image.width, image.height, 4);
+  std::vector<Query> out;
+  for (size_t k = 0; k < queries.size(); ++k) out.push_back(query_result(r, k));
+  return out;
+}
+
+VsmShadePass::VsmShadePass(const Context& context, const SourceTree& tree)
+    : context_(&context), variants_(context, tree, "passes/vsm_shade.comp") {}
+
+GlObject VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer,
+                           int screen_size, const VsmParams& params, float bias) const {
+  params.validate();
+  const ComputeProgram& program = variants_.get({{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}});
+  GlObject visibility = make_float_texture(*context_, screen_size, screen_size, 1);
+  const glsl::PnVsmShadeParams block{{params.near_depth, params.far_depth},
+                                     {params.positive_exponent, params.negative_exponent},
+                                     params.blur.radius,
+                                     bias,
+                                     params.min_variance,
+                                     params.bleeding_reduction};
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_VSM_SHADE_MOMENTS_BINDING, moments.texture);
+  bind.texture(PN_VSM_SHADE_PYRAMID_BINDING, pyramid.texture);
+  bind.texture(PN_VSM_SHADE_GBUFFER_BINDING, gbuffer);
+  bind.image(PN_VSM_SHADE_VISIBILITY_IMAGE, visibility, GL_WRITE_ONLY, GL_R32F);
+  program.dispatch(screen_size, screen_size);
+  return visibility;
+}
+
+}  // namespace pn

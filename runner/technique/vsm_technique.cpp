@@ -1,0 +1,126 @@
+#include "technique/vsm_technique.h"
+
+#include <cmath>
+#include <exception>
+
+#include "core/error.h"
+#include "core/format.h"
+#include "gl/gpu_timer.h"
+
+namespace pn {
+namespace {
+
+class VsmConfig : public TechniqueConfig {
+ public:
+  explicit VsmConfig(VsmTechniqueSettings settings) : settings_(std::move(settings)) {}
+  std::string name() const override { return settings_.name; }
+  void rename(const std::string& name) override { settings_.name = name; }
+  std::vector<std::string> keys() const override { return vsm_setting_keys(); }
+  void set(const std::string& key, const std::string& value) override { set_vsm_setting(settings_, key, value); }
+  void validate() const override { settings_.validate(); }
+  std::unique_ptr<Technique> create(TechniqueResources& resources) const override {
+    return std::make_unique<VsmTechnique>(resources.context(), resources.shared<VsmPasses>(), settings_);
+  }
+  std::unique_ptr<TechniqueConfig> clone() const override { return std::make_unique<VsmConfig>(settings_); }
+
+ private:
+  VsmTechniqueSettings settings_;
+};
+
+// The pyramid levels the depth-range bound reads: its square's side 2r + 1 at level floor(log2(2r + 1)).
+int bound_levels(int radius) {
+  int level = 0;
+  while ((2 << level) <= 2 * radius + 1) ++level;
+  return level;
+}
+
+}  // namespace
+
+void VsmTechniqueSettings::validate() const {
+  if (!std::isfinite(bias) || bias < 0.0f)
+    throw Error("method '" + name + "': bias " + format_number("%g", bias) + ": expected a finite number >= 0");
+  try {
+    params.validate();
+  } catch (const Error& e) {
+    throw Error("method '" + name + "': " + e.what());
+  }
+}
+
+std::vector<std::string> vsm_setting_keys() {
+  return {"radius", "sigma", "bias", "min-variance", "bleeding", "exponent", "negative-exponent"};
+}
+
+void set_vsm_setting(VsmTechniqueSettings& s, const std::string& key, const std::string& value) {
+  const auto bad = [&](const char* expected) {
+    return Error("method '" + s.name + "': " + key + "=" + value + ": expected " + expected);
+  };
+  const auto integer = [&] {
+    try {
+      size_t used = 0;
+      const int v = std::stoi(value, &used);
+      if (used == value.size()) return v;
+    } catch (const std::exception&) {
+    }
+    throw bad("an integer");
+  };
+  const auto real = [&] {
+    try {
+      size_t used = 0;
+      const float v = std::stof(value, &used);
+      if (used == value.size()) return v;
+    } catch (const std::exception&) {
+    }
+    throw bad("a number");
+  };
+  if (key == "radius") s.params.blur.radius = integer();
+  else if (key == "sigma") s.params.blur.sigma = real();
+  else if (key == "bias") s.bias = real();
+  else if (key == "min-variance") s.params.min_variance = real();
+  else if (key == "bleeding") s.params.bleeding_reduction = real();
+  else if (key == "exponent") s.params.positive_exponent = real();
+  else if (key == "negative-exponent") s.params.negative_exponent = real();
+  else {
+    std::string known;
+    for (const std::string& k : vsm_setting_keys()) known += (known.empty() ? "" : ", ") + k;
+    throw Error("method '" + s.name + "': unknown setting '" + key + "': expected " + known);
+  }
+}
+
+std::unique_ptr<TechniqueConfig> vsm_config(VsmKind kind, const char* name) {
+  VsmTechniqueSettings s;
+  s.name = name;
+  s.params.kind = kind;
+  return std::make_unique<VsmConfig>(s);
+}
+
+VsmPasses::VsmPasses(const Context& context, const SourceTree& tree)
+    : moments(context, tree), shade(context, tree), pyramid(context, tree) {}
+
+TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool) const {
+  if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
+    throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
+  const int n = inputs.light.map_size;
+  VsmParams params = settings_.params;
+  params.near_depth = static_cast<float>(inputs.light.near_plane);
+  params.far_depth = static_cast<float>(inputs.light.far_plane);
+  StageClock clock(*context_);
+  clock.start();
+  const VsmMoments moments = passes_->moments.moments(*inputs.shadow_map, n, n, params);
+  clock.stage("moments");
+  const VsmMoments blurred = passes_->moments.blurred(moments, params);
+  clock.stage("blur");
+  DepthPyramid own;
+  const DepthPyramid* pyramid = inputs.pyramid;
+  if (pyramid == nullptr) {
+    own = passes_->pyramid.build(*inputs.shadow_map, n, n, bound_levels(params.blur.radius));
+    pyramid = &own;
+    clock.stage("pyramid");
+  }
+  TechniqueFrame out;
+  out.visibility = passes_->shade.run(blurred, *pyramid, *inputs.gbuffer, inputs.screen_size, params, settings_.bias);
+  clock.stage("shade");
+  out.stages = clock.read();
+  return out;
+}
+
+}  // namespace pn
