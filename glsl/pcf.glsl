@@ -34,6 +34,11 @@
 //   PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias,
 //                      int firstRow, int rowCount, PnPcf sums)      sums + the band's rows (map rows)
 //   PnPcf pnPcfZero()
+//   float pnPcfBilinearVisibility(sampler2D depthMap, vec2 position, float receiverDepth, float bias)
+//         hard shadow with 2×2 bilinear PCF (what a hardware shadow sampler does; seed 003's
+//         "PCF 2×2" baseline): the shadow test at the four texels whose centres surround
+//         `position` (continuous texels, texel i's centre at i + 0.5; clamped to the map),
+//         weighted bilinearly; 1 lit, 0 in shadow. A NaN or infinite position is lit.
 //   float pnPcfBlockerMean(PnPcf s)         depthSum / occluders, 0 without occluders
 //   float pnPcfOccludedFraction(PnPcf s)    occluders / texels, 0 without texels
 //   bool  pnPcfOccludes(float depth, float threshold)   depth < threshold and finite
@@ -112,6 +117,24 @@ PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverD
 PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias) {
   // Every row of the map: the clipped window's rows lie in [0, map height).
   return pnPcfAddRows(depthMap, origin, size, receiverDepth, bias, 0, textureSize(depthMap, 0).y, pnPcfZero());
+}
+
+// The texel at p, clamped to the map: lit (1) unless it occludes the threshold.
+float pnPcfLitAt(sampler2D depthMap, ivec2 p, float threshold) {
+  ivec2 last = textureSize(depthMap, 0) - ivec2(1);
+  return pnPcfOccludes(texelFetch(depthMap, clamp(p, ivec2(0), last), 0).r, threshold) ? 0.0 : 1.0;
+}
+
+float pnPcfBilinearVisibility(sampler2D depthMap, vec2 position, float receiverDepth, float bias) {
+  vec2 p = position - vec2(0.5);  // texel i's centre is i + 0.5
+  vec2 cell = floor(p);
+  vec2 f = p - cell;
+  if (any(isnan(f)) || any(isinf(position))) return 1.0;  // no position: nothing can be tested
+  ivec2 i = ivec2(clamp(cell, vec2(-2.0), vec2(textureSize(depthMap, 0))));
+  float t = receiverDepth - bias;
+  float top = mix(pnPcfLitAt(depthMap, i, t), pnPcfLitAt(depthMap, i + ivec2(1, 0), t), f.x);
+  float bottom = mix(pnPcfLitAt(depthMap, i + ivec2(0, 1), t), pnPcfLitAt(depthMap, i + ivec2(1, 1), t), f.x);
+  return mix(top, bottom, f.y);
 }
 
 #endif  // PENUMBRA_PCF_GLSL

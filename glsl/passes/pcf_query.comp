@@ -5,6 +5,8 @@
 //   row 0 of the map to its last, added up with pnPcfAddRows (what
 //   pcss_scan.comp does across dispatches, here in one invocation).
 // Result k: (occluders, depth sum, texels, 0).
+// B.w = 1 instead: pnPcfBilinearVisibility at position A.xy for receiver B.x, bias B.y; result
+//   (visibility, 0, 0, 0).
 //   bindings: pcf_query.h
 // The check also compiles it with a small PN_PCF_MAX_SIDE to exercise the bound.
 
@@ -25,6 +27,10 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   ivec2 origin = ivec2(a.xy), size = ivec2(a.zw);
+  if (b.w == 1.0) {
+    imageStore(pnResult, p, vec4(pnPcfBilinearVisibility(pnDepthMap, a.xy, b.x, b.y), 0.0, 0.0, 0.0));
+    return;
+  }
   int rows = int(b.z);
   PnPcf s;
   if (rows <= 0) {

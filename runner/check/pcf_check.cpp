@@ -6,7 +6,8 @@
 // dP - bias must not occlude), below, above, between (bias 0.01), NaN and +Inf.
 // Three ways per fixture: one pnPcfWindow call; bands of 1, 7 or 128 rows added
 // up with pnPcfAddRows (the pipeline's banded scan); and the pass compiled with
-// PN_PCF_MAX_SIDE 64, so that windows beyond the bound are cut to it.
+// PN_PCF_MAX_SIDE 64, so that windows beyond the bound are cut to it. And per fixture,
+// pnPcfBilinearVisibility (2×2 bilinear PCF, the hard shadow) against its definition.
 // Occluder and texel counts must be exact. The depth sum is a float sum of n
 // non-negative terms (every fixture depth is >= 0) in some order: its relative
 // error is at most (n - 1) u / (1 - (n - 1) u), u = 2^-24, plus u for rounding
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "check/module_check.h"
@@ -98,6 +100,39 @@ OcclusionSums sums(const PcfSums& s) {
 
 OcclusionSums sums(const PcfQueryResult& s) { return {s.occluders, s.depth_sum, s.texels}; }
 
+// 2×2 bilinear PCF at positions inside, on texel centres, across the edges and outside the map,
+// and NaN / Inf; receivers at the nearest texel's depth (bias 0: a texel equal to the threshold
+// does not occlude), just before and behind it, with a bias, NaN and +Inf. The threshold is
+// the same float subtraction on both sides (correctly rounded in GLSL), so only the bilinear
+// weights round: a few float operations on values <= 1, absolute 1e-6.
+CaseResult bilinear_case(const PcfQueryPass& pass, const GlObject& texture, const Image& map, const std::string& label) {
+  std::mt19937 random(0xb111);
+  std::uniform_real_distribution<float> position(-3.0f, kMapSize + 3.0f);
+  std::vector<std::pair<float, float>> positions{{0.5f, 0.5f}, {kMapSize - 0.5f, kMapSize - 0.5f}, {0.0f, 150.25f},
+                                                 {kMapSize + 0.0f, 3.75f}, {-40.0f, -40.0f}, {1e30f, 5.0f},
+                                                 {NAN, 3.0f}, {3.0f, INFINITY}};
+  for (int k = 0; k < 600; ++k) positions.push_back({position(random), position(random)});
+  for (int k = 0; k < 100; ++k) positions.push_back({std::floor(position(random)) + 0.5f, std::floor(position(random)) + 0.5f});
+  std::vector<PcfBilinearQuery> queries;
+  std::vector<float> expected;
+  for (const auto& [x, y] : positions) {
+    const int tx = std::clamp(std::isfinite(x) ? static_cast<int>(std::floor(x)) : 0, 0, kMapSize - 1);
+    const int ty = std::clamp(std::isfinite(y) ? static_cast<int>(std::floor(y)) : 0, 0, kMapSize - 1);
+    const float d = std::isfinite(map.at(tx, ty)) ? map.at(tx, ty) : 0.5f;
+    for (const auto& [receiver, bias] : {std::pair{d, 0.0f}, {d + 0.02f, 0.0f}, {d - 0.02f, 0.0f}, {d + 0.05f, 0.01f},
+                                         {NAN, 0.0f}, {INFINITY, 0.0f}}) {
+      queries.push_back({x, y, receiver, bias});
+      expected.push_back(static_cast<float>(pcf_bilinear_reference(map, x, y, receiver - bias)));
+    }
+  }
+  const std::vector<float> observed = pass.bilinear(texture, queries);
+  Image want(static_cast<int>(expected.size()), 1, 1), got(static_cast<int>(expected.size()), 1, 1);
+  for (size_t k = 0; k < expected.size(); ++k) want.texels[k] = expected[k], got.texels[k] = observed[k];
+  const Tolerance tolerance = Tolerance::absolute(1e-6);
+  return {label + " 2x2 bilinear PCF (hard shadow) vs the definition in double", tolerance,
+          compare(want, got, tolerance)};
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
@@ -155,6 +190,7 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
       add_occlusion_cases(results, label + " " + v.name + ", sides <= 16", groups[0], "texels", "dP - bias ties a texel");
       add_occlusion_cases(results, label + " " + v.name + ", sides > 16", groups[1], "texels", "dP - bias ties a texel");
     }
+    results.push_back(bilinear_case(pass, texture, map, label));
   }
   const bool few = left_out_total * 100 <= queries_total;
   const Image want(1, 1, 1, 1.0f), got(1, 1, 1, few ? 1.0f : 0.0f);

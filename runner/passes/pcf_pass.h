@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "core/query_grid.h"
 #include "gl/compute_program.h"
 #include "shader/source_tree.h"
 
@@ -19,6 +20,11 @@ struct PcfQueryResult {
   float occluders = 0.0f, depth_sum = 0.0f, texels = 0.0f;
 };
 
+// pnPcfBilinearVisibility's inputs: a map position (continuous texels), a receiver depth, a bias.
+struct PcfBilinearQuery {
+  float x = 0.0f, y = 0.0f, receiver_depth = 0.0f, bias = 0.0f;
+};
+
 class PcfQueryPass {
  public:
   // max_side > 0 compiles the pass with that PN_PCF_MAX_SIDE; 0 keeps the module's default.
@@ -26,8 +32,11 @@ class PcfQueryPass {
 
   // `depth_map` is a single-channel float texture; one result per query.
   std::vector<PcfQueryResult> run(const GlObject& depth_map, const std::vector<PcfQuery>& queries) const;
+  // The 2×2 bilinear PCF visibility of each query.
+  std::vector<float> bilinear(const GlObject& depth_map, const std::vector<PcfBilinearQuery>& queries) const;
 
  private:
+  Image dispatch(const GlObject& depth_map, const std::vector<Query>& a, const std::vector<Query>& b) const;
   const Context* context_;
   ComputeProgram program_;
 };

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "core/error.h"
+#include "technique/setting_value.h"
 #include "core/format.h"
 
 namespace pn {
@@ -104,27 +105,9 @@ const std::vector<std::string>& pcss_setting_keys() {
 }
 
 void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string& value) {
-  const auto bad = [&](const char* expected) {
-    return Error("method '" + s.name + "': " + key + "=" + value + ": expected " + expected);
-  };
-  const auto integer = [&] {
-    try {
-      size_t used = 0;
-      const int v = std::stoi(value, &used);
-      if (used == value.size()) return v;
-    } catch (const std::exception&) {
-    }
-    throw bad("an integer");
-  };
-  const auto real = [&] {
-    try {
-      size_t used = 0;
-      const float v = std::stof(value, &used);
-      if (used == value.size()) return v;
-    } catch (const std::exception&) {
-    }
-    throw bad("a number");
-  };
+  const auto bad = [&](const char* expected) { return bad_setting_value(s.name, key, value, expected); };
+  const auto integer = [&] { return setting_integer(s.name, key, value); };
+  const auto real = [&] { return setting_real(s.name, key, value); };
   const auto on_off = [&] {
     if (value == "on") return true;
     if (value == "off") return false;

@@ -32,3 +32,23 @@ PcfSums pcf_reference(const Image& depth, const PcfWindow& window, double receiv
 }
 
 }  // namespace pn
+
+namespace pn {
+
+double pcf_bilinear_reference(const Image& depth, double x, double y, float threshold) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return 1.0;
+  const double px = x - 0.5, py = y - 0.5;
+  const double cx = std::floor(px), cy = std::floor(py);
+  const double fx = px - cx, fy = py - cy;
+  double visibility = 0.0;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const double tx = std::clamp(cx + i, 0.0, depth.width - 1.0), ty = std::clamp(cy + j, 0.0, depth.height - 1.0);
+      const float d = depth.at(static_cast<int>(tx), static_cast<int>(ty));
+      const bool occludes = std::isfinite(d) && d < threshold;
+      visibility += (occludes ? 0.0 : 1.0) * (i ? fx : 1.0 - fx) * (j ? fy : 1.0 - fy);
+    }
+  return visibility;
+}
+
+}  // namespace pn

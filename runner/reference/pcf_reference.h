@@ -39,3 +39,14 @@ PcfSums pcf_reference(const Image& depth, const PcfWindow& window, double receiv
                       int max_side = kPcfMaxSide);
 
 }  // namespace pn
+
+namespace pn {
+
+// 2×2 bilinear PCF (pnPcfBilinearVisibility) from its definition: the four texels whose
+// centres (i + 0.5) surround (x, y), clamped to the map, each lit unless its depth d is
+// finite and d < threshold (the float dP − bias the caller computed), weighted by the
+// bilinear weights of (x − 0.5, y − 0.5)'s fractional part, in double. A NaN or infinite
+// position is lit.
+double pcf_bilinear_reference(const Image& depth, double x, double y, float threshold);
+
+}  // namespace pn

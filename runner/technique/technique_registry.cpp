@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "pipeline/pcss_technique.h"
+#include "technique/pcf_technique.h"
 #include "technique/vsm_technique.h"
 
 namespace pn {
@@ -37,6 +38,8 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return pcss_ablation("fast-branch", "skip", "branch"); }},
       {"fast-blur", "Fast PCSS with Step 6's depth-aware blur, its radius following the filter size",
        []() -> Made { return pcss_ablation("fast-blur", "blur", "on"); }},
+      {"pcf", "hard shadow, 2x2 bilinear PCF (pcf.glsl): what a hardware shadow sampler gives, seed 003's baseline",
+       []() -> Made { return pcf_config("pcf"); }},
       {"vsm", "variance shadow map (seed 003): blurred moments, Chebyshev bound, linstep(0.2) reduction, depth-range bound (vsm.glsl)",
        []() -> Made { return vsm_config(VsmKind::vsm, "vsm"); }},
       {"evsm", "exponential VSM, 4 components (c+ 40, c- 5) over the light's near..far, same blur and bounds (vsm.glsl)",

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "core/error.h"
+#include "technique/setting_value.h"
 #include "core/format.h"
 #include "gl/gpu_timer.h"
 
@@ -51,27 +52,8 @@ std::vector<std::string> vsm_setting_keys() {
 }
 
 void set_vsm_setting(VsmTechniqueSettings& s, const std::string& key, const std::string& value) {
-  const auto bad = [&](const char* expected) {
-    return Error("method '" + s.name + "': " + key + "=" + value + ": expected " + expected);
-  };
-  const auto integer = [&] {
-    try {
-      size_t used = 0;
-      const int v = std::stoi(value, &used);
-      if (used == value.size()) return v;
-    } catch (const std::exception&) {
-    }
-    throw bad("an integer");
-  };
-  const auto real = [&] {
-    try {
-      size_t used = 0;
-      const float v = std::stof(value, &used);
-      if (used == value.size()) return v;
-    } catch (const std::exception&) {
-    }
-    throw bad("a number");
-  };
+  const auto integer = [&] { return setting_integer(s.name, key, value); };
+  const auto real = [&] { return setting_real(s.name, key, value); };
   if (key == "radius") s.params.blur.radius = integer();
   else if (key == "sigma") s.params.blur.sigma = real();
   else if (key == "bias") s.bias = real();

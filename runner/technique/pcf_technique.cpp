@@ -1,0 +1,87 @@
+#include "technique/pcf_technique.h"
+
+#include <cmath>
+
+#include "core/format.h"
+#include "gl/gpu_timer.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
+#include "gl/texture.h"
+#include "technique/setting_value.h"
+
+namespace pn::glsl {
+#include "passes/pcf_shade.h"
+PN_STD140_SIZE(PnPcfShadeParams, 16);
+}  // namespace pn::glsl
+
+namespace pn {
+namespace {
+
+class PcfTechnique : public Technique {
+ public:
+  PcfTechnique(const Context& context, const PcfShadePass& pass, std::string name, float bias)
+      : context_(&context), pass_(&pass), name_(std::move(name)), bias_(bias) {}
+
+  TechniqueFrame run(const TechniqueInputs& inputs, bool) const override {
+    if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
+      throw Error("method '" + name_ + "': needs a shadow map and a G-buffer");
+    const int size = inputs.screen_size;
+    StageClock clock(*context_);
+    clock.start();
+    TechniqueFrame out;
+    out.visibility = make_float_texture(*context_, size, size, 1);
+    {
+      glsl::PnPcfShadeParams block{};
+      block.bias = bias_;
+      PassBindings bind(*context_);
+      bind.uniform(block);
+      bind.texture(PN_PCF_SHADE_MAP_BINDING, *inputs.shadow_map);
+      bind.texture(PN_PCF_SHADE_GBUFFER_BINDING, *inputs.gbuffer);
+      bind.image(PN_PCF_SHADE_VISIBILITY_IMAGE, out.visibility, GL_WRITE_ONLY, GL_R32F);
+      pass_->program.dispatch(size, size);
+    }
+    context_->throw_if_gl_error("pcf shade");
+    clock.stage("shade");
+    out.stages = clock.read();
+    return out;
+  }
+
+ private:
+  const Context* context_;
+  const PcfShadePass* pass_;
+  std::string name_;
+  float bias_;
+};
+
+class PcfConfig : public TechniqueConfig {
+ public:
+  explicit PcfConfig(std::string name) : name_(std::move(name)) {}
+  std::string name() const override { return name_; }
+  void rename(const std::string& name) override { name_ = name; }
+  std::vector<std::string> keys() const override { return {"bias"}; }
+  void set(const std::string& key, const std::string& value) override {
+    if (key != "bias") throw Error("method '" + name_ + "': unknown setting '" + key + "': expected bias");
+    bias_ = setting_real(name_, key, value);
+  }
+  void validate() const override {
+    if (!std::isfinite(bias_) || bias_ < 0.0f)
+      throw Error("method '" + name_ + "': bias " + format_number("%g", bias_) + ": expected a finite number >= 0");
+  }
+  std::unique_ptr<Technique> create(TechniqueResources& resources) const override {
+    return std::make_unique<PcfTechnique>(resources.context(), resources.shared<PcfShadePass>(), name_, bias_);
+  }
+  std::unique_ptr<TechniqueConfig> clone() const override { return std::make_unique<PcfConfig>(*this); }
+
+ private:
+  std::string name_;
+  float bias_ = 0.02f;
+};
+
+}  // namespace
+
+PcfShadePass::PcfShadePass(const Context& context, const SourceTree& tree)
+    : program(compile_pass(context, tree, "passes/pcf_shade.comp")) {}
+
+std::unique_ptr<TechniqueConfig> pcf_config(const char* name) { return std::make_unique<PcfConfig>(name); }
+
+}  // namespace pn

@@ -1,0 +1,24 @@
+// The hard shadow behind the technique seam (registry entry `pcf`): 2×2
+// bilinear PCF per screen pixel (pcf.glsl's pnPcfBilinearVisibility through
+// passes/pcf_shade.comp), what a hardware shadow sampler gives and the
+// baseline of seed 003's tables ("PCF 2×2"). One stage, no stats.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "gl/compute_program.h"
+#include "technique/technique.h"
+
+namespace pn {
+
+// The registry's entry; override key: bias (light-depth units, >= 0; default 0.02 as the PCSS family's).
+std::unique_ptr<TechniqueConfig> pcf_config(const char* name);
+
+// The pass the pcf techniques of one context share (TechniqueResources::shared).
+struct PcfShadePass {
+  PcfShadePass(const Context& context, const SourceTree& tree);
+  ComputeProgram program;
+};
+
+}  // namespace pn

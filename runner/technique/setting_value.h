@@ -1,0 +1,38 @@
+// A technique's override value (`name:key=value`) read as a number, with the one
+// error every technique gives for a value that is not one: "method 'NAME': KEY=VALUE:
+// expected an integer" (or "a number").
+#pragma once
+
+#include <exception>
+#include <string>
+
+#include "core/error.h"
+
+namespace pn {
+
+inline Error bad_setting_value(const std::string& method, const std::string& key, const std::string& value,
+                               const char* expected) {
+  return Error("method '" + method + "': " + key + "=" + value + ": expected " + expected);
+}
+
+inline int setting_integer(const std::string& method, const std::string& key, const std::string& value) {
+  try {
+    size_t used = 0;
+    const int v = std::stoi(value, &used);
+    if (used == value.size()) return v;
+  } catch (const std::exception&) {
+  }
+  throw bad_setting_value(method, key, value, "an integer");
+}
+
+inline float setting_real(const std::string& method, const std::string& key, const std::string& value) {
+  try {
+    size_t used = 0;
+    const float v = std::stof(value, &used);
+    if (used == value.size()) return v;
+  } catch (const std::exception&) {
+  }
+  throw bad_setting_value(method, key, value, "a number");
+}
+
+}  // namespace pn
