@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "core/error.h"
 #include "gl/gpu_timer.h"
 #include "scenes.h"
@@ -32,16 +34,18 @@ MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_
 
 std::unique_ptr<CascadedFrame> render_cascaded_frame(const Context& context, const ShadowMapRenderer& maps,
                                                      const GBufferRenderer& gbuffer, const Scene& scene,
-                                                     const CascadeSettings& settings, int screen_size) {
+                                                     const CascadeSettings& settings, int screen_size,
+                                                     const SceneCamera* fit_camera) {
   if (!scene.sun) throw Error("scene '" + scene.name + "': cascades need a scene lit by the sun");
   if (screen_size < 1 || screen_size > 8192)
     throw Error("screen size " + std::to_string(screen_size) + ": expected 1..8192");
+  const SceneCamera& fitted = fit_camera ? *fit_camera : scene.camera;
   CascadeCamera camera;
-  camera.view = scene.camera_view();
-  camera.fov_y_radians = scene.camera.fov_degrees * 3.14159265358979 / 180.0;
+  camera.view = glm::lookAt(fitted.eye, fitted.target, glm::vec3(0, 1, 0));  // as Scene::camera_view
+  camera.fov_y_radians = fitted.fov_degrees * 3.14159265358979 / 180.0;
   camera.aspect = 1.0;
-  camera.near_plane = scene.camera.near_plane;
-  camera.far_plane = scene.camera.far_plane;
+  camera.near_plane = fitted.near_plane;
+  camera.far_plane = fitted.far_plane;
   const auto [lo, hi] = scene.bounds();
   auto frame = std::make_unique<CascadedFrame>();
   frame->screen_size = screen_size;

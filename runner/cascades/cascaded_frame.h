@@ -39,8 +39,11 @@ struct CascadedFrame {
 MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_size);
 
 // Throws Error for a scene without a sun, bad settings or a screen size outside 1..8192.
+// `fit_camera`: the camera the cascades are fitted to, when it is not the scene's (which the
+// G-buffers still see through): how bench cascades watches cascades move under a still view.
 std::unique_ptr<CascadedFrame> render_cascaded_frame(const Context& context, const ShadowMapRenderer& maps,
                                                      const GBufferRenderer& gbuffer, const Scene& scene,
-                                                     const CascadeSettings& settings, int screen_size);
+                                                     const CascadeSettings& settings, int screen_size,
+                                                     const SceneCamera* fit_camera = nullptr);
 
 }  // namespace pn

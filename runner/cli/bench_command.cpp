@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "bench/cache_bench.h"
+#include "bench/cascades_bench.h"
 #include "bench/pipeline_bench.h"
 #include "bench/pyramid_bench.h"
 #include "bench/sweep_bench.h"
@@ -23,6 +24,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     PipelineBenchSetup pipeline;
     SweepBenchSetup sweep;
     CacheBenchSetup cache;
+    CascadesBenchSetup cascades;
     std::vector<std::string> methods;
     int max_level = 31;
     std::string json;
@@ -30,7 +32,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
-  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | cache")->required();
+  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | cache | cascades")->required();
   auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
   auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline, 3 for sweep)");
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
@@ -48,16 +50,22 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--sources", opt->cache.sources, "cache: shadow-map sources (default full,two-map,dirty-rect)")->delimiter(',');
   cmd->add_option("--frames", opt->cache.frames, "cache: timed frames per K (default 20, after --warmup untimed ones)");
   cmd->add_option("--warmup", opt->cache.warmup, "cache: untimed frames first (default 3)");
-  cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512)");
+  auto* screen = cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512); cascades: the screen (default 256)");
   cmd->add_option("--animated-scene", opt->cache.scene, "cache: moving_city | moving (default moving_city)");
+  cmd->add_option("--counts", opt->cascades.counts, "cascades: split counts at --size (default 0,1,2,3,4; 0: one map over the scene)")->delimiter(',');
+  cmd->add_option("--enlargements", opt->cascades.ks, "cascades: first-split enlargements k at --count, --size (default 1,2,4)")->delimiter(',');
+  cmd->add_option("--count", opt->cascades.count, "cascades: the split count of the size and k sweeps and the path (default 3)");
+  cmd->add_option("--size", opt->cascades.size, "cascades: the map size of the count and k sweeps and the path (default 1024)");
+  cmd->add_option("--path-frames", opt->cascades.path_frames, "cascades: frames along the camera path (default 12)");
+  cmd->add_option("--path-methods", opt->cascades.path_methods, "cascades: techniques along the camera path (default pcf,fast)")->delimiter(',');
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG");
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->callback([opt, repeats, sizes, truth_samples, &global, &exit_code] {
+  cmd->callback([opt, repeats, sizes, truth_samples, screen, &global, &exit_code] {
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep" &&
-        opt->what != "cache")
-      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, cache");
+        opt->what != "cache" && opt->what != "cascades")
+      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, cache, cascades");
     if (!opt->methods.empty()) require_list_length("methods", opt->methods.size());
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
@@ -66,6 +74,13 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
       if (truth_samples->count() > 0) opt->sweep.truth_samples = opt->pipeline.truth_samples;
       validate_sweep_setup(opt->sweep);
+    } else if (opt->what == "cascades") {
+      if (sizes->count() > 0) opt->cascades.sizes = opt->sizes;
+      if (repeats->count() > 0) opt->cascades.repeats = opt->repeats;
+      if (truth_samples->count() > 0) opt->cascades.truth_samples = opt->pipeline.truth_samples;
+      if (!opt->methods.empty()) opt->cascades.methods = opt->methods;
+      if (screen->count() > 0) opt->cascades.screen = opt->cache.screen;
+      validate_cascades_bench_setup(opt->cascades);
     } else if (opt->what == "cache") {
       if (sizes->count() > 0) opt->cache.sizes = opt->sizes;
       if (!opt->pipeline.model.empty()) opt->cache.model = opt->pipeline.model;
@@ -81,7 +96,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       validate_traversal_bench_setup(opt->traversal);
     }
     if (!opt->json.empty()) validate_output_path(opt->json);  // before the bench's minutes of work
-    if (!opt->plot.empty() && opt->what != "cache") throw Error("--plot: only bench cache draws its plot (sweep: scripts/plot_sweep.py)");
+    if (!opt->plot.empty() && opt->what != "cache" && opt->what != "cascades")
+      throw Error("--plot: only bench cache and cascades draw their plots (sweep: scripts/plot_sweep.py)");
     if (!opt->plot.empty()) validate_output_path(opt->plot);
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
@@ -96,6 +112,16 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const SweepBench bench = bench_sweep(*context, tree, opt->sweep);
       print_sweep_bench(std::cout, bench);
       results = sweep_bench_json(opt->sweep, bench);
+    } else if (opt->what == "cascades") {
+      const CascadesBench bench = bench_cascades(*context, tree, opt->cascades);
+      print_cascades_bench(std::cout, bench);
+      results = cascades_bench_json(opt->cascades, bench);
+      if (!opt->plot.empty()) {
+        cascades_bench_chart(bench, "penumbra bench cascades: '" + bench.scene + "', " + std::to_string(bench.triangles) +
+                                        " triangles, screen " + std::to_string(opt->cascades.screen) + "², " +
+                                        context->renderer()).write_png(opt->plot);
+        std::cout << "wrote " << opt->plot << "\n";
+      }
     } else if (opt->what == "cache") {
       const CacheBench bench = bench_cache(*context, tree, opt->cache);
       print_cache_bench(std::cout, bench);
