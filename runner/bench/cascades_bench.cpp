@@ -242,12 +242,10 @@ Canvas cascades_bench_chart(const CascadesBench& bench, const std::string& title
     by_count.series.push_back(count_series);
     by_size.series.push_back(size_series);
   }
-  ChartPanel path{"change between frames along the path", "frame", "mean |change|", {}};
-  std::vector<std::string> path_methods;  // a colour per method, dashed where unstable
-  for (const CascadesPathRow& r : bench.path)
-    if (std::find(path_methods.begin(), path_methods.end(), r.method) == path_methods.end()) path_methods.push_back(r.method);
-  for (const CascadesPathRow& r : bench.path) {
-    const size_t colour = static_cast<size_t>(std::find(path_methods.begin(), path_methods.end(), r.method) - path_methods.begin());
+  ChartPanel path{"change between frames along the path (dashed: unstable)", "frame", "mean |change|", {}};
+  for (const CascadesPathRow& r : bench.path) {  // each method in its colour of the other panels
+    if (std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
+    const size_t colour = static_cast<size_t>(std::find(methods.begin(), methods.end(), r.method) - methods.begin());
     ChartSeries s{r.method + (r.stable ? ", stable" : ", unstable"), colours[colour % 6], !r.stable, {}};
     for (size_t f = 0; f < r.changes.size(); ++f) s.points.push_back({static_cast<double>(f + 1), r.changes[f]});
     path.series.push_back(s);

@@ -23,4 +23,7 @@ Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree);
 // Light bleeding on the two-occluder map, without and with the reduction (vsm_figure.cpp).
 Canvas vsm_bleeding_figure(const Context& context, const SourceTree& tree);
 
+// The city camera's frustum from above with its cascades' splits and spheres (cascades_figure.cpp).
+Canvas cascades_splits_figure();
+
 }  // namespace pn
