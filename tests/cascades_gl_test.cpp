@@ -73,3 +73,17 @@ TEST_CASE("negative: a sphere centred without the field of view's term fails the
   REQUIRE(copy.found());
   fails_only(pn::test::run_check(cascades(), copy.root()), "slice sphere");
 }
+
+TEST_CASE("negative: a blend pass that reads cascade 0 for cascade 1 fails the blend pass, the city's hard shadow and its seams") {
+  const pn::test::BrokenCopy copy("passes/cascade_blend.comp", "if (c == 1) return texelFetch(pnVisibility1, p, 0).r;",
+                                  "if (c == 1) return texelFetch(pnVisibility0, p, 0).r;");
+  REQUIRE(copy.found());
+  const auto results = pn::test::run_check(cascades(), copy.root());
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    if (!pn::test::named(r, "blend pass") && !pn::test::named(r, "city") && !pn::test::named(r, "seams"))
+      CHECK(r.comparison.pass);
+  }
+  CHECK(failing_named(results, "blend pass") > 0);
+  CHECK(failing_named(results, "no seams: Fast PCSS") == 1);
+}
