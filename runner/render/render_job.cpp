@@ -184,7 +184,8 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
     if (c.cascade_index) write(stem + "_cascades", write_rgb, cascade_overlay(compose_lit_image(c.surface, r.visibility), *c.cascade_index));
   }
   const std::string light = setup.light_scale == 1.0 ? "" : ", light width ×" + format_number("%g", setup.light_scale);
-  const std::string title = "scene " + scene.name + light + ", shadow map " + std::to_string(setup.map_size) + "², screen " +
+  const std::string maps = c.cascades.empty() ? "shadow map " : std::to_string(c.cascades.size()) + " cascades of ";
+  const std::string title = "scene " + scene.name + light + ", " + maps + std::to_string(setup.map_size) + "², screen " +
                             std::to_string(setup.screen_size) + "², truth " + std::to_string(setup.truth_samples) +
                             "×" + std::to_string(setup.truth_samples) +
                             " light samples; scores on light-facing pixels: SSIM / MAE";
