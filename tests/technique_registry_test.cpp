@@ -44,6 +44,7 @@ TEST_CASE("technique registry: vsm and evsm take their own keys and refuse value
   const auto config = pn::parse_technique("vsm:radius=5:sigma=1.5:bleeding=0.3:min-variance=1e-5:bias=0.05");
   CHECK(config->name() == "vsm:radius=5:sigma=1.5:bleeding=0.3:min-variance=1e-5:bias=0.05");
   CHECK(pn::parse_technique("evsm:exponent=30:negative-exponent=10")->name() == "evsm:exponent=30:negative-exponent=10");
+  CHECK(pn::parse_technique("evsm2:exponent=20")->name() == "evsm2:exponent=20");
   CHECK_THROWS_WITH(pn::parse_technique("vsm:bleeding=1"),
                     "method 'vsm:bleeding=1': vsm bleeding reduction 1: expected 0 to 0.99");
   CHECK_THROWS_WITH(pn::parse_technique("evsm:exponent=50"),

@@ -44,6 +44,8 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return vsm_config(VsmKind::vsm, "vsm"); }},
       {"evsm", "exponential VSM, 4 components (c+ 40, c- 5) over the light's near..far, same blur and bounds (vsm.glsl)",
        []() -> Made { return vsm_config(VsmKind::evsm4, "evsm"); }},
+      {"evsm2", "exponential VSM, 2 components (c+ 40): the positive warp only, half the memory of evsm (vsm.glsl)",
+       []() -> Made { return vsm_config(VsmKind::evsm2, "evsm2"); }},
       {"fast-all-off", "Fast PCSS with every improvement off: must equal exact PCSS (the wiring check)",
        []() -> Made { return pcss_config(fast_pcss_all_off()); }, false},
   };
