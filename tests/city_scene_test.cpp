@@ -70,3 +70,15 @@ TEST_CASE("city: the camera path steps 0.05 units and turns 0.05 degrees a frame
   CHECK_THROWS_WITH(pn::light_by_sun(s, {0, 0, 0}, 0.01), Catch::Contains("light direction (0, 0, 0)"));
   CHECK(pn::find_city_scene_fixture_or_null("village") == nullptr);
 }
+
+TEST_CASE("city: a scene resized to another map size is the scene made at that size") {
+  const pn::Scene resized = pn::with_shadow_map_size(city(), 512);
+  const pn::Scene made = pn::make_city_scene(pn::fixtures::kCityScenes[0], 512);
+  CHECK(resized.light.map_size == 512);
+  CHECK(resized.light.texel_world == made.light.texel_world);
+  CHECK(resized.light.near_plane == made.light.near_plane);
+  CHECK(resized.light.far_plane == made.light.far_plane);
+  CHECK(resized.light_projection() == made.light_projection());
+  CHECK(resized.triangles() == made.triangles());
+  CHECK_THROWS_WITH(pn::with_shadow_map_size(city(), 1), Catch::Contains("shadow map size 1: expected N >= 2"));
+}

@@ -115,13 +115,14 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
   std::vector<const TechniqueConfig*> chosen;
   for (const std::string& m : setup.methods) methods.push_back(parse_technique(m)), chosen.push_back(methods.back().get());
   const std::vector<Config> all = configs(setup);
+  const Scene city = make_city_scene(fixture, setup.size);  // its models read once
+  bench.triangles = static_cast<int>(city.triangles().size() / 3);
   Progress progress("bench cascades", all.size() + 2);
   for (const Config& c : all) {
     progress.step(c.count == 0 ? "one map " + std::to_string(c.size) + "²"
                                : std::to_string(c.count) + " cascades of " + std::to_string(c.size) + "², k " +
                                      format_number("%g", c.k));
-    const Scene scene = make_city_scene(fixture, c.size);
-    bench.triangles = static_cast<int>(scene.triangles().size() / 3);
+    const Scene scene = with_shadow_map_size(city, c.size);
     ComparisonSetup cs;
     cs.screen_size = setup.screen, cs.repeats = setup.repeats, cs.truth_samples = setup.truth_samples;
     cs.techniques = chosen;
@@ -149,7 +150,7 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
   const CascadeBlendPass& blend = resources.shared<CascadeBlendPass>();
   const ShadowMapRenderer maps(context, tree);
   const GBufferRenderer gbuffer(context, tree);
-  const Scene scene = make_city_scene(fixture, setup.size);
+  const Scene& scene = city;
   TruthSettings truth_settings;
   truth_settings.samples_per_side = setup.truth_samples;
   truth_settings.progress = false;

@@ -16,12 +16,6 @@ Error bad_setting(const std::string& what, double value, const std::string& expe
   return Error(what + " " + format_number("%g", value) + ": expected " + expected);
 }
 
-std::vector<glm::dvec3> scene_corners(const glm::vec3& lo, const glm::vec3& hi) {
-  std::vector<glm::dvec3> out;
-  for (int c = 0; c < 8; ++c) out.push_back({(c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z});
-  return out;
-}
-
 }  // namespace
 
 void CascadeSettings::validate() const {
@@ -63,6 +57,12 @@ std::vector<glm::dvec3> CascadeCamera::corners_at(double z) const {
   return out;
 }
 
+std::vector<glm::dvec3> box_corners(const glm::vec3& lo, const glm::vec3& hi) {
+  std::vector<glm::dvec3> out;
+  for (int c = 0; c < 8; ++c) out.push_back({(c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z});
+  return out;
+}
+
 glm::dvec3 Cascade::map_position(const glm::dvec3& world, int map_size) const {
   const glm::dvec4 view = glm::dmat4(light_view) * glm::dvec4(world, 1.0);
   const glm::dvec4 clip = glm::dmat4(light_projection) * view;
@@ -76,7 +76,7 @@ glm::mat4 directional_light_view(const glm::vec3& direction, const glm::vec3& sc
                 format_number("%g", direction.z) + "): expected a finite, non-zero vector");
   const glm::dvec3 d = glm::dvec3(direction) / length;
   double nearest = INFINITY;
-  for (const glm::dvec3& c : scene_corners(scene_lo, scene_hi)) nearest = std::min(nearest, glm::dot(c, d));
+  for (const glm::dvec3& c : box_corners(scene_lo, scene_hi)) nearest = std::min(nearest, glm::dot(c, d));
   const glm::dvec3 eye = d * (nearest - 1.0);
   const glm::dvec3 up = std::fabs(d.y) < 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
   return glm::mat4(glm::lookAt(eye, eye + d, up));
@@ -100,7 +100,7 @@ std::vector<Cascade> fit_cascades(const CascadeSettings& settings, const Cascade
   const glm::mat4 light_view = directional_light_view(light_direction, scene_lo, scene_hi);
   const glm::dmat4 to_light(light_view);
   double scene_depth_lo = INFINITY;  // where every cascade's depth range starts: casters outside its slice still cast
-  for (const glm::dvec3& c : scene_corners(scene_lo, scene_hi))
+  for (const glm::dvec3& c : box_corners(scene_lo, scene_hi))
     scene_depth_lo = std::min(scene_depth_lo, -(to_light * glm::dvec4(c, 1.0)).z);
   const std::vector<float> split_far = cascade_split_far(settings, camera.near_plane, camera.far_plane);
   const glm::dmat4 to_world = glm::inverse(glm::dmat4(camera.view));

@@ -58,6 +58,9 @@ struct Cascade {
   glm::dvec3 map_position(const glm::dvec3& world, int map_size) const;
 };
 
+// The eight corners of the box [lo, hi].
+std::vector<glm::dvec3> box_corners(const glm::vec3& lo, const glm::vec3& hi);
+
 // The light's view: looking along `direction` (normalised inside) from a point that is
 // fixed in the world — on the line through the origin, one unit before the nearest corner of
 // the scene's bounds — so that every point of the scene has a linear light depth >= 1 and

@@ -2,8 +2,6 @@
 
 #include <string>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "core/error.h"
 #include "gl/gpu_timer.h"
 #include "scenes.h"
@@ -16,6 +14,16 @@ TechniqueInputs CascadedFrame::inputs(const LightModel& scene_light) const {
   in.screen_size = screen_size;
   in.cascades = &layers;
   return in;
+}
+
+CascadeCamera cascade_camera(const SceneCamera& camera) {
+  CascadeCamera out;
+  out.view = camera.view();
+  out.fov_y_radians = camera.fov_degrees * 3.14159265358979 / 180.0;
+  out.aspect = 1.0;
+  out.near_plane = camera.near_plane;
+  out.far_plane = camera.far_plane;
+  return out;
 }
 
 MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_size) {
@@ -39,13 +47,7 @@ std::unique_ptr<CascadedFrame> render_cascaded_frame(const Context& context, con
   if (!scene.sun) throw Error("scene '" + scene.name + "': cascades need a scene lit by the sun");
   if (screen_size < 1 || screen_size > 8192)
     throw Error("screen size " + std::to_string(screen_size) + ": expected 1..8192");
-  const SceneCamera& fitted = fit_camera ? *fit_camera : scene.camera;
-  CascadeCamera camera;
-  camera.view = glm::lookAt(fitted.eye, fitted.target, glm::vec3(0, 1, 0));  // as Scene::camera_view
-  camera.fov_y_radians = fitted.fov_degrees * 3.14159265358979 / 180.0;
-  camera.aspect = 1.0;
-  camera.near_plane = fitted.near_plane;
-  camera.far_plane = fitted.far_plane;
+  const CascadeCamera camera = cascade_camera(fit_camera ? *fit_camera : scene.camera);
   const auto [lo, hi] = scene.bounds();
   auto frame = std::make_unique<CascadedFrame>();
   frame->screen_size = screen_size;

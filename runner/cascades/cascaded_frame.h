@@ -34,6 +34,9 @@ struct CascadedFrame {
   TechniqueInputs inputs(const LightModel& scene_light) const;
 };
 
+// The frustum a scene camera's cascades cover (square screen).
+CascadeCamera cascade_camera(const SceneCamera& camera);
+
 // A cascade's map light: its view and orthographic projection, and a light model with the
 // sun's spread, the cascade's texel width and depth range, N = settings.map_size.
 MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_size);

@@ -398,34 +398,48 @@ double hard_shadow_mismatch(const Image& visibility, const Truth& truth) {
   return facing > 0 ? static_cast<double>(wrong) / static_cast<double>(facing) : 0.0;
 }
 
+// What the city's cases share: the scene (its models read once) at 512² maps, and the passes
+// that draw and blend its cascades.
+struct CityRig {
+  static constexpr int kMap = 512;
+  explicit CityRig(const CheckEnvironment& env)
+      : city(make_city_scene(fixtures::kCityScenes[0], kMap)),
+        resources(env.context, env.tree),
+        gbuffer(env.context, env.tree),
+        maps(env.context, env.tree),
+        blend(env.context, env.tree) {}
+  const Scene city;
+  TechniqueResources resources;
+  const GBufferRenderer gbuffer;
+  const ShadowMapRenderer maps;
+  const CascadeBlendPass blend;
+};
+
 // The city under a point-like sun (1e-5 rad: penumbrae of 1e-5 of the blocker distance), 128²
 // screen, 512² maps: the hard shadow of one map over the whole scene and of 1 to 4 cascades
 // against the ray-traced truth (one sample a pixel). Cascades must alias less than the whole-
 // scene map from two on (a single stable cascade is the whole frustum's sphere, wider than the
 // scene's own box: measured 0.098 against 0.048), and 3 cascades less than 1.
-void city_hard_shadow_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  constexpr int kScreen = 128, kMap = 512;
-  Scene city = make_city_scene(fixtures::kCityScenes[0], kMap);
+void city_hard_shadow_cases(const CheckEnvironment& env, CityRig& rig, std::vector<CaseResult>& results) {
+  constexpr int kScreen = 128, kMap = CityRig::kMap;
+  Scene city = rig.city;
   light_by_sun(city, city.sun->direction, 1e-5);
   TruthSettings truth_settings;
   truth_settings.samples_per_side = 1;
   truth_settings.progress = false;
   const Truth truth = trace_truth(city, kScreen, truth_settings);
-  TechniqueResources resources(env.context, env.tree);
-  const auto pcf = parse_technique("pcf")->create(resources);
-  const GBufferRenderer gbuffer(env.context, env.tree);
-  const ShadowMapRenderer maps(env.context, env.tree);
+  const auto pcf = parse_technique("pcf")->create(rig.resources);
+  const GBufferRenderer& gbuffer = rig.gbuffer;
   const auto full = find_shadow_map_source("full").make(env.context, env.tree, {});
   const SceneFrame whole = render_scene_frame(env.context, *full, gbuffer, city, kScreen);
   const double whole_error = hard_shadow_mismatch(
       read_float_texture(env.context, pcf->run(whole.inputs(), false).visibility, kScreen, kScreen, 1), truth);
   std::vector<double> errors;
-  const CascadeBlendPass blend(env.context, env.tree);
   for (int count = 1; count <= PN_CASCADES_MAX; ++count) {
     CascadeSettings settings;
     settings.count = count, settings.map_size = kMap;
-    const auto frame = render_cascaded_frame(env.context, maps, gbuffer, city, settings, kScreen);
-    const CascadedTechnique on_cascades(*pcf, blend, env.context);
+    const auto frame = render_cascaded_frame(env.context, rig.maps, gbuffer, city, settings, kScreen);
+    const CascadedTechnique on_cascades(*pcf, rig.blend, env.context);
     errors.push_back(hard_shadow_mismatch(
         read_float_texture(env.context, on_cascades.run(frame->inputs(city.light), false).visibility, kScreen, kScreen, 1),
         truth));
@@ -481,17 +495,14 @@ SeamMeasure seam_measure(const Image& out, const std::vector<Image>& layers, con
 // visible seam is the difference between two cascades' estimates, tenths — (measured 0.0054;
 // the same without the band: on this view the cascades agree at their borders, and it is the
 // blend-pass cases that prove the band continuous where they do not).
-void seam_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  constexpr int kScreen = 192, kMap = 512;
-  const Scene city = make_city_scene(fixtures::kCityScenes[0], kMap);
-  TechniqueResources resources(env.context, env.tree);
-  const auto fast = parse_technique("fast")->create(resources);
-  const GBufferRenderer gbuffer(env.context, env.tree);
-  const ShadowMapRenderer maps(env.context, env.tree);
-  const CascadeBlendPass blend(env.context, env.tree);
+void seam_cases(const CheckEnvironment& env, CityRig& rig, std::vector<CaseResult>& results) {
+  constexpr int kScreen = 192;
+  const Scene& city = rig.city;
+  const auto fast = parse_technique("fast")->create(rig.resources);
+  const CascadeBlendPass& blend = rig.blend;
   CascadeSettings settings;
-  settings.count = 3, settings.map_size = kMap;
-  const auto frame = render_cascaded_frame(env.context, maps, gbuffer, city, settings, kScreen);
+  settings.count = 3, settings.map_size = CityRig::kMap;
+  const auto frame = render_cascaded_frame(env.context, rig.maps, rig.gbuffer, city, settings, kScreen);
   std::vector<TechniqueFrame> runs;
   for (const TechniqueInputs& layer : frame->layers.layers) runs.push_back(fast->run(layer, false));
   std::vector<const GlObject*> visibilities;
@@ -609,8 +620,9 @@ std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env) {
   selection_cases(gpu, results);
   sphere_cases(gpu, results);
   blend_pass_cases(env, results);
-  city_hard_shadow_cases(env, results);
-  seam_cases(env, results);
+  CityRig rig(env);
+  city_hard_shadow_cases(env, rig, results);
+  seam_cases(env, rig, results);
   stability_cases(results);
   return results;
 }

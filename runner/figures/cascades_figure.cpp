@@ -5,11 +5,11 @@
 // Drawn from the runner's fit (cascades/cascade_fit.h: glsl/cascades.h's text in C++).
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
 #include "cascades/cascade_fit.h"
 #include "cascades/cascade_math.h"
+#include "cascades/cascaded_frame.h"
 #include "core/format.h"
 #include "figures/figures.h"
 #include "figures/font.h"
@@ -85,10 +85,7 @@ Canvas cascades_splits_figure() {
   const Font font;
   const Scene scene = make_city_scene(fixtures::kCityScenes[0], 1024);
   const SceneCamera& city = scene.camera;
-  CascadeCamera camera;
-  camera.view = glm::lookAt(city.eye, city.target, glm::vec3(0, 1, 0));
-  camera.fov_y_radians = city.fov_degrees * 3.14159265358979 / 180.0;
-  camera.near_plane = city.near_plane, camera.far_plane = city.far_plane;
+  const CascadeCamera camera = cascade_camera(city);
   const auto [lo, hi] = scene.bounds();
   const int panel = 360, gap = 40, top = 56;
   Canvas canvas(4 * panel + 5 * gap, panel + top + 70, {255, 255, 255});

@@ -24,7 +24,9 @@ glm::mat4 Scene::light_projection() const {
                           static_cast<float>(light.far_plane));
 }
 
-glm::mat4 Scene::camera_view() const { return glm::lookAt(camera.eye, camera.target, glm::vec3(0, 1, 0)); }
+glm::mat4 SceneCamera::view() const { return glm::lookAt(eye, target, glm::vec3(0, 1, 0)); }
+
+glm::mat4 Scene::camera_view() const { return camera.view(); }
 
 glm::mat4 Scene::camera_projection() const {
   return glm::perspective(glm::radians(camera.fov_degrees), 1.0f, camera.near_plane, camera.far_plane);
@@ -35,6 +37,13 @@ std::pair<glm::vec3, glm::vec3> Scene::bounds() const {
   for (const Box& b : boxes) lo = glm::min(lo, b.lo), hi = glm::max(hi, b.hi);
   for (const glm::vec3& v : mesh) lo = glm::min(lo, v), hi = glm::max(hi, v);
   return {lo, hi};
+}
+
+Scene with_shadow_map_size(Scene scene, int shadow_map_size) {
+  scene.light.map_size = shadow_map_size;
+  if (scene.sun) light_by_sun(scene, scene.sun->direction, scene.sun->angular_diameter_radians);  // its texel width
+  scene.light.validate();
+  return scene;
 }
 
 void light_by_sun(Scene& scene, const glm::vec3& direction, double angular_diameter_radians) {
@@ -49,8 +58,7 @@ void light_by_sun(Scene& scene, const glm::vec3& direction, double angular_diame
   sun.view = directional_light_view(direction, lo, hi);  // throws for a zero or non-finite direction
   // The light-space box of the scene's eight corners: a square map over it, depths from its near face.
   glm::dvec3 box_lo(INFINITY), box_hi(-INFINITY);
-  for (int c = 0; c < 8; ++c) {
-    const glm::dvec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+  for (const glm::dvec3& corner : box_corners(lo, hi)) {
     const glm::dvec3 p(glm::dmat4(sun.view) * glm::dvec4(corner, 1.0));
     box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
   }

@@ -41,6 +41,8 @@ struct SceneCamera {
   float fov_degrees = fixtures::kCameraFovDegrees;
   float near_plane = fixtures::kCameraNear;
   float far_plane = fixtures::kCameraFar;
+
+  glm::mat4 view() const;  // looking from eye at target, +y up
 };
 
 // A directional light (issue 14, seed 003's sun): the direction its light travels and its
@@ -97,6 +99,10 @@ const fixtures::SceneFixture& find_scene_fixture(const std::string& name);
 
 // Throws Error for N < 2 or a light that does not validate.
 Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size);
+
+// The scene with N×N shadow maps: the light's map size, and the sun's whole-scene map fitted
+// again (light_by_sun) when it has one. Throws Error for N < 2.
+Scene with_shadow_map_size(Scene scene, int shadow_map_size);
 
 // Gives a scene the sun along `direction` with angular diameter `angular_diameter_radians`,
 // and one orthographic N×N map over its whole bounds (light: spread, texel width, the depth
