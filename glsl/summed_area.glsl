@@ -73,7 +73,13 @@
 #ifndef PENUMBRA_SUMMED_AREA_GLSL
 #define PENUMBRA_SUMMED_AREA_GLSL
 
-#include "summed_area.h"  // PN_SUMMED_AREA_FRACTION_BITS, _MAGNITUDE_BITS, _MAX_SIDE
+#include "summed_area.h"  // PN_SUMMED_AREA_FRACTION_BITS, _MAGNITUDE_BITS, _MAX_SIDE, _MOMENT_BITS, _KIND_*
+
+// Called once per table fetch of a rectangle query: empty, unless a caller
+// counts fetches (the savsm check's constant-cost case defines it first).
+#ifndef PN_ON_TEXEL_FETCH
+#define PN_ON_TEXEL_FETCH()
+#endif
 
 struct PnSummedArea {
   uvec2 fixedSum;  // sum of q over the finite texels, two's complement mod 2^64: (low word, high word)
@@ -108,15 +114,24 @@ uvec4 pnSummedAreaTexel(float depth) {
   return uvec4(lo, hi, 1u, 0u);
 }
 
-uvec4 pnSummedAreaAdd(uvec4 a, uvec4 b) {
+// 64-bit two's complement numbers as (low word, high word), modulo 2^64.
+uvec2 pnSummedAreaAdd64(uvec2 a, uvec2 b) {
   uint lo = a.x + b.x;  // uint arithmetic wraps modulo 2^32
   uint carry = lo < a.x ? 1u : 0u;
-  return uvec4(lo, a.y + b.y + carry, a.z + b.z, a.w + b.w);
+  return uvec2(lo, a.y + b.y + carry);
+}
+
+uvec2 pnSummedAreaSub64(uvec2 a, uvec2 b) {
+  uint borrow = a.x < b.x ? 1u : 0u;
+  return uvec2(a.x - b.x, a.y - b.y - borrow);
+}
+
+uvec4 pnSummedAreaAdd(uvec4 a, uvec4 b) {
+  return uvec4(pnSummedAreaAdd64(a.xy, b.xy), a.zw + b.zw);
 }
 
 uvec4 pnSummedAreaSub(uvec4 a, uvec4 b) {
-  uint borrow = a.x < b.x ? 1u : 0u;
-  return uvec4(a.x - b.x, a.y - b.y - borrow, a.z - b.z, a.w - b.w);
+  return uvec4(pnSummedAreaSub64(a.xy, b.xy), a.zw - b.zw);
 }
 
 float pnSummedAreaFixedToFloat(uvec2 q) {
@@ -144,14 +159,25 @@ uvec4 pnSummedAreaColumnStep(usampler2D rowPrefix, int column, int y, uvec4 abov
   return pnSummedAreaAdd(above, texelFetch(rowPrefix, ivec2(column, y), 0));
 }
 
-PnSummedArea pnSummedAreaRectSum(usampler2D table, ivec2 origin, ivec2 size) {
-  ivec2 n = textureSize(table, 0) - ivec2(1);  // the map's size
+// The rectangle [origin, origin + size) clipped to an n-texel map: corners (lo, hi) of the table.
+ivec4 pnSummedAreaClip(ivec2 n, ivec2 origin, ivec2 size) {
   ivec2 lo = clamp(origin, ivec2(0), n);
   ivec2 hi = clamp(origin + max(size, ivec2(0)), lo, n);
-  uvec4 topLeft = texelFetch(table, lo, 0);
-  uvec4 topRight = texelFetch(table, ivec2(hi.x, lo.y), 0);
-  uvec4 bottomLeft = texelFetch(table, ivec2(lo.x, hi.y), 0);
-  uvec4 bottomRight = texelFetch(table, hi, 0);
+  return ivec4(lo, hi);
+}
+
+uvec4 pnSummedAreaFetch(usampler2D table, ivec2 corner) {
+  PN_ON_TEXEL_FETCH();
+  return texelFetch(table, corner, 0);
+}
+
+PnSummedArea pnSummedAreaRectSum(usampler2D table, ivec2 origin, ivec2 size) {
+  ivec4 c = pnSummedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
+  ivec2 lo = c.xy, hi = c.zw;
+  uvec4 topLeft = pnSummedAreaFetch(table, lo);
+  uvec4 topRight = pnSummedAreaFetch(table, ivec2(hi.x, lo.y));
+  uvec4 bottomLeft = pnSummedAreaFetch(table, ivec2(lo.x, hi.y));
+  uvec4 bottomRight = pnSummedAreaFetch(table, hi);
   uvec4 s = pnSummedAreaSub(pnSummedAreaAdd(bottomRight, topLeft), pnSummedAreaAdd(topRight, bottomLeft));
   PnSummedArea r;
   r.fixedSum = s.xy;
@@ -163,6 +189,145 @@ PnSummedArea pnSummedAreaRectSum(usampler2D table, ivec2 origin, ivec2 size) {
 
 float pnSummedAreaMean(PnSummedArea s) {
   return s.count > 0.0 ? s.sum / s.count : 0.0;
+}
+
+// ---- Moments tables (seed 004's summed-area variance shadow maps) ----------
+
+struct PnSummedAreaMoments {
+  float mean;      // E[x] over the rectangle, x the unit depth (pnSummedAreaUnitDepth)
+  float variance;  // E[x^2] - E[x]^2, >= 0
+  float texels;    // texels covered (every texel counts: a non-finite one is x = 1)
+};
+
+float pnSummedAreaUnitDepth(float depth, vec2 unitRange) {
+  if (!pnSummedAreaFinite(depth)) return 1.0;
+  // A subtraction and a multiplication, each correctly rounded (no division, whose GLSL
+  // precision is 2.5 ulp): the CPU reference reproduces x bit for bit.
+  return clamp((depth - unitRange.x) * unitRange.y, 0.0, 1.0);
+}
+
+uint pnSummedAreaMomentQ(float depth, vec2 unitRange) {
+  return uint(roundEven(pnSummedAreaUnitDepth(depth, unitRange) * pnSummedAreaPow2(PN_SUMMED_AREA_MOMENT_BITS)));
+}
+
+uvec4 pnSummedAreaMomentsTexel(float depth, vec2 unitRange) {
+  uint q = pnSummedAreaMomentQ(depth, unitRange);
+  uvec2 square;  // q^2 < 2^(2B + 1): exact in 64 bits
+  umulExtended(q, q, square.y, square.x);
+  return uvec4(q, 0u, square);
+}
+
+vec4 pnSummedAreaFloatMomentsTexel(float depth, vec2 unitRange) {
+  float v = pnSummedAreaUnitDepth(depth, unitRange) - 0.5;  // centred: Lauritzen's fp32 advice
+  return vec4(v, v * v, 0.0, 0.0);
+}
+
+uvec4 pnSummedAreaMomentsAdd(uvec4 a, uvec4 b) {
+  return uvec4(pnSummedAreaAdd64(a.xy, b.xy), pnSummedAreaAdd64(a.zw, b.zw));
+}
+
+uvec4 pnSummedAreaMomentsSub(uvec4 a, uvec4 b) {
+  return uvec4(pnSummedAreaSub64(a.xy, b.xy), pnSummedAreaSub64(a.zw, b.zw));
+}
+
+uvec4 pnSummedAreaMomentsRowStep(sampler2D depthMap, vec2 unitRange, int row, int x, uvec4 left) {
+  if (row <= 0 || x <= 0) return uvec4(0u);
+  return pnSummedAreaMomentsAdd(left, pnSummedAreaMomentsTexel(texelFetch(depthMap, ivec2(x - 1, row - 1), 0).r,
+                                                               unitRange));
+}
+
+uvec4 pnSummedAreaMomentsColumnStep(usampler2D rowPrefix, int column, int y, uvec4 above) {
+  return pnSummedAreaMomentsAdd(above, texelFetch(rowPrefix, ivec2(column, y), 0));
+}
+
+vec4 pnSummedAreaFloatMomentsRowStep(sampler2D depthMap, vec2 unitRange, int row, int x, vec4 left) {
+  if (row <= 0 || x <= 0) return vec4(0.0);
+  return left + pnSummedAreaFloatMomentsTexel(texelFetch(depthMap, ivec2(x - 1, row - 1), 0).r, unitRange);
+}
+
+vec4 pnSummedAreaFloatMomentsColumnStep(sampler2D rowPrefix, int column, int y, vec4 above) {
+  return above + texelFetch(rowPrefix, ivec2(column, y), 0);
+}
+
+// (low, high) times a 32-bit m, modulo 2^64.
+uvec2 pnSummedAreaMul64(uvec2 a, uint m) {
+  uvec2 r;
+  umulExtended(a.x, m, r.y, r.x);
+  r.y += a.y * m;
+  return r;
+}
+
+// A non-negative 64-bit number (< 2^64, read unsigned) as a float: relative error <= 2u + u^2.
+float pnSummedAreaUnsignedToFloat(uvec2 q) {
+  return float(q.y) * pnSummedAreaPow2(32) + float(q.x);
+}
+
+float pnSummedAreaSignedToFloat(uvec2 q) {
+  bool negative = q.y >= 0x80000000u;
+  if (negative) q = pnSummedAreaSub64(uvec2(0u), q);
+  float magnitude = pnSummedAreaUnsignedToFloat(q);
+  return negative ? -magnitude : magnitude;
+}
+
+// Mean and variance of x over a rectangle from the fixed-point table: S1 = sum q, S2 = sum q^2
+// (exact modulo 2^64), n texels. c = the rounded mean of q (an integer <= 2^B), then exactly,
+// modulo 2^64,
+//   C = S2 - 2 c S1 + n c^2 = sum (q - c)^2        (in [0, 2^63): summed_area.h)
+//   D = S1 - n c            = sum (q - c)          (|D| <= 2 n)
+// and in float var(q) = C / n - (D / n)^2, with no cancellation beyond (D / n)^2 <= 4.
+uvec4 pnSummedAreaRectMomentSums(usampler2D table, ivec2 origin, ivec2 size, out uint texels) {
+  ivec4 c = pnSummedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
+  texels = uint((c.z - c.x) * (c.w - c.y));
+  return pnSummedAreaMomentsSub(
+      pnSummedAreaMomentsAdd(pnSummedAreaFetch(table, c.zw), pnSummedAreaFetch(table, c.xy)),
+      pnSummedAreaMomentsAdd(pnSummedAreaFetch(table, c.zy), pnSummedAreaFetch(table, c.xw)));
+}
+
+PnSummedAreaMoments pnSummedAreaRectMoments(usampler2D table, ivec2 origin, ivec2 size) {
+  uint n;
+  uvec4 s = pnSummedAreaRectMomentSums(table, origin, size, n);
+  PnSummedAreaMoments m;
+  m.texels = float(n);
+  if (n == 0u) {
+    m.mean = 0.0;
+    m.variance = 0.0;
+    return m;
+  }
+  float scale = pnSummedAreaPow2(-PN_SUMMED_AREA_MOMENT_BITS);
+  float qMax = pnSummedAreaPow2(PN_SUMMED_AREA_MOMENT_BITS);
+  uint centre = uint(clamp(roundEven(pnSummedAreaSignedToFloat(s.xy) / m.texels), 0.0, qMax));
+  uvec2 nc = pnSummedAreaMul64(uvec2(centre, 0u), n);                  // n c
+  uvec2 deviation = pnSummedAreaSub64(s.xy, nc);                         // D
+  uvec2 centred = pnSummedAreaSub64(s.zw, pnSummedAreaMul64(s.xy, 2u * centre));  // S2 - 2 c S1
+  centred = pnSummedAreaAdd64(centred, pnSummedAreaMul64(nc, centre));             // + n c^2
+  float d = pnSummedAreaSignedToFloat(deviation) / m.texels;
+  m.mean = (float(centre) + d) * scale;
+  m.variance = max(pnSummedAreaUnsignedToFloat(centred) / m.texels - d * d, 0.0) * (scale * scale);
+  return m;
+}
+
+vec4 pnSummedAreaFloatFetch(sampler2D table, ivec2 corner) {
+  PN_ON_TEXEL_FETCH();
+  return texelFetch(table, corner, 0);
+}
+
+// The same from the float table of centred values v = x - 1/2: four float differences, then
+// E[v^2] - E[v]^2 (the cancellation the fixed-point table avoids).
+PnSummedAreaMoments pnSummedAreaRectFloatMoments(sampler2D table, ivec2 origin, ivec2 size) {
+  ivec4 c = pnSummedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
+  vec2 s = (pnSummedAreaFloatFetch(table, c.zw).xy - pnSummedAreaFloatFetch(table, c.zy).xy) -
+           (pnSummedAreaFloatFetch(table, c.xw).xy - pnSummedAreaFloatFetch(table, c.xy).xy);
+  PnSummedAreaMoments m;
+  m.texels = float((c.z - c.x) * (c.w - c.y));
+  if (m.texels == 0.0) {
+    m.mean = 0.0;
+    m.variance = 0.0;
+    return m;
+  }
+  vec2 e = s / m.texels;
+  m.mean = e.x + 0.5;
+  m.variance = max(e.y - e.x * e.x, 0.0);
+  return m;
 }
 
 #endif  // PENUMBRA_SUMMED_AREA_GLSL

@@ -43,6 +43,8 @@
 //   vec2  pnEvsmMoments2(float depth, vec2 depthRange, float exponent)
 //   vec4  pnEvsmMoments4(float depth, vec2 depthRange, vec2 exponents)   (c+, c-)
 //   float pnVsmChebyshev(vec2 moments, float t, float minVariance)   p_max
+//   float pnVsmChebyshevMeanVariance(float mu, float variance, float t, float minVariance)
+//         the same from a mean and a variance computed elsewhere (savsm.glsl's tables)
 //   float pnVsmReduceBleeding(float p, float amount)                 linstep(a, 1, p)
 //   vec2  pnVsmWindowMinMax(sampler2DArray pyramid, ivec2 texel, int radius)
 //   float pnVsmDepthRangeBound(vec2 minMax, float t)                 PN_VSM_BOUND_*
@@ -109,13 +111,16 @@ vec4 pnEvsmMoments4(float depth, vec2 depthRange, vec2 exponents) {
   return vec4(w.x, w.x * w.x, w.y, w.y * w.y);
 }
 
-float pnVsmChebyshev(vec2 moments, float t, float minVariance) {
-  float mu = moments.x;
+float pnVsmChebyshevMeanVariance(float mu, float variance, float t, float minVariance) {
   if (!(t > mu)) return 1.0;  // t <= mu, or NaN
   float varianceFloor = max(max(minVariance, 0.0) * (mu * mu), float(PN_VSM_VARIANCE_FLOOR));
-  float variance = max(moments.y - mu * mu, varianceFloor);
+  float v = max(variance, varianceFloor);
   float delta = t - mu;
-  return variance / (variance + delta * delta);
+  return v / (v + delta * delta);
+}
+
+float pnVsmChebyshev(vec2 moments, float t, float minVariance) {
+  return pnVsmChebyshevMeanVariance(moments.x, moments.y - moments.x * moments.x, t, minVariance);
 }
 
 float pnVsmReduceBleeding(float p, float amount) {

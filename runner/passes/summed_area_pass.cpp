@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/query_grid.h"
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
@@ -14,6 +15,7 @@ namespace pn::glsl {
 #include "passes/summed_area_build.h"
 PN_STD140_SIZE(PnSummedAreaBuildParams, 16);
 PN_STD140_OFFSET(PnSummedAreaBuildParams, direction, 0);
+PN_STD140_OFFSET(PnSummedAreaBuildParams, unitRange, 8);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -51,6 +53,14 @@ void texture_size(const Context& context, const GlObject& texture, int& width, i
   width = w, height = h;
 }
 
+// The depth map's size, refused unless 1 to kSummedAreaMaxSide texels a side.
+void table_map_size(const Context& context, const GlObject& depth_map, int& width, int& height) {
+  texture_size(context, depth_map, width, height);
+  if (width < 1 || height < 1 || width > kSummedAreaMaxSide || height > kSummedAreaMaxSide)
+    throw Error("summed-area table of a " + std::to_string(width) + "x" + std::to_string(height) +
+                " map: expected 1 to " + std::to_string(kSummedAreaMaxSide) + " texels a side");
+}
+
 }  // namespace
 
 std::size_t SummedAreaPass::memory_bytes(int width, int height) {
@@ -65,23 +75,20 @@ SummedAreaPass::SummedAreaPass(const Context& context, const SourceTree& tree, i
 
 SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
   SummedAreaTable table;
-  texture_size(*context_, depth_map, table.width, table.height);
-  if (table.width < 1 || table.height < 1 || table.width > kSummedAreaMaxSide || table.height > kSummedAreaMaxSide)
-    throw Error("summed-area table of a " + std::to_string(table.width) + "x" + std::to_string(table.height) +
-                " map: expected 1 to " + std::to_string(kSummedAreaMaxSide) + " texels a side");
+  table_map_size(*context_, depth_map, table.width, table.height);
   const int tw = table.width + 1, th = table.height + 1;
   const GlObject row_prefix = make_uint4_texture(*context_, tw, th);
   table.texture = make_uint4_texture(*context_, tw, th);
   {
     PassBindings bind(*context_);
-    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS});
+    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS, 0, {0.0f, 1.0f}});
     bind.texture(PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map);
     bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix, GL_WRITE_ONLY, GL_RGBA32UI);
     build_.dispatch(th, 1);  // one invocation per row of the table
   }
   {
     PassBindings bind(*context_);
-    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS});
+    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS, 0, {0.0f, 1.0f}});
     bind.texture(PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix);
     bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table.texture, GL_WRITE_ONLY, GL_RGBA32UI);
     build_.dispatch(tw, 1);  // one invocation per column
@@ -125,6 +132,124 @@ std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& 
     r.sum = q[0];
     r.mean = q[1];
     out.push_back(r);
+  }
+  return out;
+}
+
+const char* moments_table_kind_name(MomentsTableKind kind) {
+  return kind == MomentsTableKind::fixed ? "fixed" : "float";
+}
+
+UnitRange unit_range(double near_depth, double far_depth) {
+  if (!std::isfinite(near_depth) || !std::isfinite(far_depth) || near_depth < 0 || !(far_depth > near_depth))
+    throw Error("moments table depth range [" + format_number("%g", near_depth) + ", " +
+                format_number("%g", far_depth) + "]: expected finite 0 <= near < far");
+  const float scale = static_cast<float>(1.0 / (far_depth - near_depth));
+  if (!std::isfinite(scale) || !(scale > 0.0f))
+    throw Error("moments table depth range [" + format_number("%g", near_depth) + ", " +
+                format_number("%g", far_depth) + "]: its scale 1 / (far - near) is not a finite float > 0");
+  return {static_cast<float>(near_depth), scale};
+}
+
+SummedAreaMomentsPass::SummedAreaMomentsPass(const Context& context, const SourceTree& tree, int moment_bits)
+    : context_(&context),
+      moment_bits_(moment_bits),
+      build_(context, tree, "passes/summed_area_build.comp"),
+      query_(context, tree, "passes/summed_area_moments_query.comp") {
+  if (moment_bits < 0 || moment_bits > kSummedAreaMaxMomentBits)
+    throw Error("summed-area moment bits " + std::to_string(moment_bits) + ": expected 0 to " +
+                std::to_string(kSummedAreaMaxMomentBits));
+}
+
+std::vector<Define> SummedAreaMomentsPass::defines(MomentsTableKind kind, const char* kind_macro) const {
+  std::vector<Define> d{{kind_macro, std::to_string(static_cast<int>(kind))}};
+  if (moment_bits_ != kSummedAreaMomentBits) d.push_back({"PN_SUMMED_AREA_MOMENT_BITS", std::to_string(moment_bits_)});
+  return d;
+}
+
+std::size_t SummedAreaMomentsPass::memory_bytes(const Context& context, int width, int height, MomentsTableKind kind) {
+  const std::size_t texel = kind == MomentsTableKind::fixed ? 16 : 4 * static_cast<std::size_t>(image_channels(context, 2));
+  return texel * static_cast<std::size_t>(width + 1) * static_cast<std::size_t>(height + 1);
+}
+
+MomentsTable SummedAreaMomentsPass::build(const GlObject& depth_map, MomentsTableKind kind, UnitRange range) const {
+  MomentsTable table;
+  table_map_size(*context_, depth_map, table.width, table.height);
+  table.kind = kind;
+  table.range = range;
+  const int tw = table.width + 1, th = table.height + 1;
+  const bool fixed = kind == MomentsTableKind::fixed;
+  const int channels = image_channels(*context_, 2);
+  const auto make = [&] {
+    if (fixed) return make_uint4_texture(*context_, tw, th);
+    GLint max_size = 0;
+    context_->gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (tw > max_size || th > max_size)
+      throw Error("summed-area table " + std::to_string(tw) + "x" + std::to_string(th) +
+                  ": expected at most GL_MAX_TEXTURE_SIZE (" + std::to_string(max_size) + ") on each side");
+    return make_float_texture(*context_, tw, th, channels);
+  };
+  const GLenum format = fixed ? GL_RGBA32UI : float_format(channels);
+  const ComputeProgram& program = build_.get(defines(kind, "PN_SUMMED_AREA_BUILD_KIND"));
+  const GlObject row_prefix = make();
+  table.texture = make();
+  const glsl::vec2 unit{range.offset, range.scale};
+  {
+    PassBindings bind(*context_);
+    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS, 0, unit});
+    bind.texture(PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map);
+    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix, GL_WRITE_ONLY, format);
+    program.dispatch(th, 1);
+  }
+  {
+    PassBindings bind(*context_);
+    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS, 0, unit});
+    bind.texture(PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix);
+    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table.texture, GL_WRITE_ONLY, format);
+    program.dispatch(tw, 1);
+  }
+  return table;
+}
+
+std::vector<MomentsQueryResult> SummedAreaMomentsPass::query(const MomentsTable& table,
+                                                             const std::vector<SummedAreaRect>& rects) const {
+  if (rects.empty()) return {};
+  std::vector<Query> q;
+  for (const SummedAreaRect& r : rects) {
+    for (int v : {r.x, r.y, r.width, r.height})
+      if (std::abs(v) > (1 << 24))
+        throw Error("summed-area query rectangle coordinate " + std::to_string(v) + ": expected within ±2^24");
+    q.push_back({float(r.x), float(r.y), float(r.width), float(r.height)});
+  }
+  const bool fixed = table.kind == MomentsTableKind::fixed;
+  const Image rect_image = query_image(q);
+  const int w = rect_image.width, h = rect_image.height;
+  const GlObject rect_texture = upload_float_texture(*context_, rect_image);
+  const GlObject sums = fixed ? make_uint4_texture(*context_, w, h) : GlObject();
+  const GlObject moments = make_float_texture(*context_, w, h, 4);
+  {
+    PassBindings bind(*context_);
+    bind.texture(PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture);
+    bind.texture(PN_SUMMED_AREA_QUERY_RECTS_BINDING, rect_texture);
+    if (fixed) bind.image(PN_SUMMED_AREA_QUERY_FIXED_IMAGE, sums, GL_WRITE_ONLY, GL_RGBA32UI);
+    bind.image(PN_SUMMED_AREA_QUERY_FLOAT_IMAGE, moments, GL_WRITE_ONLY, GL_RGBA32F);
+    query_.get(defines(table.kind, "PN_SUMMED_AREA_QUERY_KIND")).dispatch(w, h);
+  }
+  const std::vector<std::uint32_t> u = fixed ? read_uint4_texture(*context_, sums, w, h) : std::vector<std::uint32_t>();
+  const Image m = read_float_texture(*context_, moments, w, h, 4);
+  std::vector<MomentsQueryResult> out;
+  for (size_t k = 0; k < rects.size(); ++k) {
+    const Query r = query_result(m, k);
+    MomentsQueryResult result;
+    if (fixed) {
+      const std::uint32_t* t = &u[k * 4];
+      result.sum_q = (static_cast<std::uint64_t>(t[1]) << 32) | t[0];
+      result.sum_q2 = (static_cast<std::uint64_t>(t[3]) << 32) | t[2];
+    }
+    result.mean = r[0];
+    result.variance = r[1];
+    result.texels = static_cast<std::uint32_t>(r[2]);
+    out.push_back(result);
   }
   return out;
 }

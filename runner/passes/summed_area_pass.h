@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl/compute_program.h"
+#include "gl/pass_variants.h"
 #include "reference/summed_area_reference.h"
 #include "shader/source_tree.h"
 
@@ -52,6 +53,59 @@ class SummedAreaPass {
   int fraction_bits_;
   ComputeProgram build_;
   ComputeProgram query_;
+};
+
+// ---- Moments tables (seed 004's summed-area variance shadow maps) ----------
+
+enum class MomentsTableKind {
+  fixed = PN_SUMMED_AREA_KIND_MOMENTS,             // RGBA32UI (Σq, Σq²) modulo 2^64: exact box sums
+  floating = PN_SUMMED_AREA_KIND_FLOAT_MOMENTS,    // RG32F (RGBA32F on ES) (Σ(x − ½), Σ(x − ½)²)
+};
+const char* moments_table_kind_name(MomentsTableKind kind);  // "fixed", "float"
+
+// The table's unit depth x = clamp((d − offset) · scale, 0, 1) (pnSummedAreaUnitDepth).
+struct UnitRange {
+  float offset = 0.0f;  // the light's near plane
+  float scale = 1.0f;   // 1 / (far − near), rounded to float once
+};
+// Throws Error unless 0 <= near < far, both finite, and the scale is a finite float > 0.
+UnitRange unit_range(double near_depth, double far_depth);
+
+struct MomentsTable {
+  GlObject texture;
+  int width = 0, height = 0;  // the map's size; the table is one larger each way
+  MomentsTableKind kind = MomentsTableKind::fixed;
+  UnitRange range;
+};
+
+struct MomentsQueryResult {
+  std::uint64_t sum_q = 0, sum_q2 = 0;  // fixed tables only: Σq and Σq² modulo 2^64
+  float mean = 0.0f, variance = 0.0f;   // of x, from pnSummedAreaRectMoments / …FloatMoments
+  std::uint32_t texels = 0;             // texels covered
+};
+
+class SummedAreaMomentsPass {
+ public:
+  // Compiles the build pass per kind and the moments query pass per kind (on first use), with
+  // PN_SUMMED_AREA_MOMENT_BITS `moment_bits` (the module's default unless given; throws Error
+  // outside 0..PN_SUMMED_AREA_MAX_MOMENT_BITS).
+  SummedAreaMomentsPass(const Context& context, const SourceTree& tree, int moment_bits = kSummedAreaMomentBits);
+
+  // The moments table of a single-channel float depth texture, N × M with 1 <= N, M <=
+  // kSummedAreaMaxSide; throws Error otherwise.
+  MomentsTable build(const GlObject& depth_map, MomentsTableKind kind, UnitRange range) const;
+  std::vector<MomentsQueryResult> query(const MomentsTable& table, const std::vector<SummedAreaRect>& rects) const;
+
+  int moment_bits() const { return moment_bits_; }
+  // GPU memory of a width × height map's table (the row-prefix table, as large, lives only while building).
+  static std::size_t memory_bytes(const Context& context, int width, int height, MomentsTableKind kind);
+
+ private:
+  std::vector<Define> defines(MomentsTableKind kind, const char* kind_macro) const;
+  const Context* context_;
+  int moment_bits_;
+  PassVariants build_;
+  PassVariants query_;
 };
 
 }  // namespace pn

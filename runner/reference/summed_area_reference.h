@@ -18,6 +18,8 @@ namespace pn {
 inline constexpr int kSummedAreaFractionBits = PN_SUMMED_AREA_FRACTION_BITS;
 inline constexpr int kSummedAreaMagnitudeBits = PN_SUMMED_AREA_MAGNITUDE_BITS;
 inline constexpr int kSummedAreaMaxSide = PN_SUMMED_AREA_MAX_SIDE;
+inline constexpr int kSummedAreaMomentBits = PN_SUMMED_AREA_MOMENT_BITS;
+inline constexpr int kSummedAreaMaxMomentBits = PN_SUMMED_AREA_MAX_MOMENT_BITS;
 
 struct SummedAreaRect {
   int x = 0, y = 0;           // origin, texels (may lie outside the map)
