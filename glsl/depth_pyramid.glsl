@@ -42,12 +42,6 @@
 #ifndef PENUMBRA_DEPTH_PYRAMID_GLSL
 #define PENUMBRA_DEPTH_PYRAMID_GLSL
 
-// Called once per pyramid fetch: empty, unless a caller counts fetches (the
-// savsm check's constant-cost case defines it before the include).
-#ifndef PN_ON_TEXEL_FETCH
-#define PN_ON_TEXEL_FETCH()
-#endif
-
 // +Inf: the depth of "no occluder".
 float pnPyramidFar() {
   return uintBitsToFloat(0x7f800000u);
@@ -84,7 +78,6 @@ vec4 pnPyramidLevel0(sampler2D shadowMap, ivec2 p) {
 vec4 pnPyramidFetch(sampler2DArray pyramid, int level, ivec2 origin) {
   int l = clamp(level, 0, pnPyramidMaxLevel(pyramid));
   int last = pnPyramidLevelSize(pnPyramidMapSize(pyramid), l) - 1;
-  PN_ON_TEXEL_FETCH();
   return texelFetch(pyramid, ivec3(clamp(origin, ivec2(0), ivec2(last)), l), 0);
 }
 

@@ -48,6 +48,12 @@
 #ifndef PENUMBRA_MINMAX_MIP_GLSL
 #define PENUMBRA_MINMAX_MIP_GLSL
 
+// Called once per texel fetch of the chain: empty, unless a caller counts
+// fetches (the savsm check's constant-cost case defines it before the include).
+#ifndef PN_ON_TEXEL_FETCH
+#define PN_ON_TEXEL_FETCH()
+#endif
+
 // +Inf: the depth of "no occluder"; (+Inf, -Inf) the pair of no texel.
 float pnMipFar() {
   return uintBitsToFloat(0x7f800000u);
@@ -69,6 +75,7 @@ vec4 pnMipTexel(sampler2D mip, int level, ivec2 texel) {
   int rows = textureSize(mip, 0).y >> l;
   ivec2 size = ivec2(max(rows >> 1, 1), rows);
   if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return vec4(pnMipEmpty(), pnMipEmpty());
+  PN_ON_TEXEL_FETCH();
   return texelFetch(mip, texel, l);
 }
 

@@ -20,26 +20,26 @@
 //   TABLE: the average blocker depth from the square's mean and variance by
 //     Chebyshev's bound (Lauritzen's SAVSM / Yang et al.'s VSSM): the
 //     unoccluded share p is at depth t, so z = (mu - p t) / (1 - p);
-//   PYRAMID: the square's minimum depth from the depth pyramid (the nearest
+//   MIN: the square's minimum depth from the min/max mip chain (the nearest
 //     blocker: the widest penumbra the square allows).
 #define PN_SAVSM_BLOCKER_TABLE 0
-#define PN_SAVSM_BLOCKER_PYRAMID 1
+#define PN_SAVSM_BLOCKER_MIN 1
 
 // c: filter side = c · penumbra (as the PCSS family's filter scale).
 #ifndef PN_SAVSM_FILTER_SCALE
 #define PN_SAVSM_FILTER_SCALE 1.0
 #endif
 
-// Below this unoccluded share the TABLE estimate's 1 - p is taken as 1 - p (no
-// clamp); at or above 1 - PN_SAVSM_MIN_OCCLUDED the square is read as lit
-// (z would divide by ~0).
+// The TABLE estimate reads a search square whose Chebyshev bound leaves an
+// occluded share 1 - p below this as lit: no blocker (its depth would rest on
+// a vanishing share of the square).
 #define PN_SAVSM_MIN_OCCLUDED 1.0e-4
 
 // Texel fetches of one receiver, whatever its widths: a moments rectangle is
-// 4 table fetches, a square's min/max 4 pyramid fetches (depth_pyramid.glsl,
-// a full pyramid). Search: moments (TABLE) or min/max (PYRAMID), plus the
-// pyramid's lit test when the bound is on; filter: moments, plus the bound.
+// 4 table fetches, a square's min/max at most 9 mip-chain fetches (the
+// aligned nodes covering it, minmax_mip.glsl). At most 4 + 9 for the search
+// and 4 + 9 for the filter.
 #define PN_SAVSM_RECT_FETCHES 4
-#define PN_SAVSM_SQUARE_FETCHES 4
+#define PN_SAVSM_MAX_SQUARE_FETCHES 9
 
 #endif  // PENUMBRA_SAVSM_H

@@ -45,6 +45,7 @@
 //   float pnVsmChebyshev(vec2 moments, float t, float minVariance)   p_max
 //   float pnVsmChebyshevMeanVariance(float mu, float variance, float t, float minVariance)
 //         the same from a mean and a variance computed elsewhere (savsm.glsl's tables)
+//   float pnVsmFlooredVariance(float mu, float variance, float minVariance)   the variance the bound uses
 //   float pnVsmReduceBleeding(float p, float amount)                 linstep(a, 1, p)
 //   vec2  pnVsmWindowMinMax(sampler2DArray pyramid, ivec2 texel, int radius)
 //   float pnVsmDepthRangeBound(vec2 minMax, float t)                 PN_VSM_BOUND_*
@@ -111,10 +112,14 @@ vec4 pnEvsmMoments4(float depth, vec2 depthRange, vec2 exponents) {
   return vec4(w.x, w.x * w.x, w.y, w.y * w.y);
 }
 
+float pnVsmFlooredVariance(float mu, float variance, float minVariance) {
+  float varianceFloor = max(max(minVariance, 0.0) * (mu * mu), float(PN_VSM_VARIANCE_FLOOR));
+  return max(variance, varianceFloor);
+}
+
 float pnVsmChebyshevMeanVariance(float mu, float variance, float t, float minVariance) {
   if (!(t > mu)) return 1.0;  // t <= mu, or NaN
-  float varianceFloor = max(max(minVariance, 0.0) * (mu * mu), float(PN_VSM_VARIANCE_FLOOR));
-  float v = max(variance, varianceFloor);
+  float v = pnVsmFlooredVariance(mu, variance, minVariance);
   float delta = t - mu;
   return v / (v + delta * delta);
 }

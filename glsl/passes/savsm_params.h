@@ -12,7 +12,7 @@
 // The table kind is the pass's PN_SAVSM_TABLE (one program per kind).
 // Distinct across resource kinds, so the passes are valid Vulkan GLSL as well.
 #define PN_SAVSM_TABLE_BINDING 0        // usampler2D RGBA32UI (fixed) or sampler2D RG32F (float): the moments table
-#define PN_SAVSM_PYRAMID_BINDING 1      // sampler2DArray RGBA32F: the depth pyramid (every level)
+#define PN_SAVSM_MIP_BINDING 1          // sampler2D RGBA32F: the aligned min/max mip chain (minmax_mip.glsl)
 #define PN_SAVSM_INPUT_BINDING 2        // sampler2D RGBA32F: shade, the G-buffer (u, v, depth, valid);
                                         // query, the receivers (u, v, depth, -)
 #define PN_SAVSM_VISIBILITY_IMAGE 3     // shade: image2D r32f, 1 lit, 0 in shadow

@@ -1,6 +1,6 @@
 // savsm_query.comp — savsm.glsl's estimate for a batch of receivers, every
 // step's value and the number of texel fetches each took (the check's
-// constant-cost case): PN_ON_TEXEL_FETCH counts the table's and the pyramid's
+// constant-cost case): PN_ON_TEXEL_FETCH counts the table's and the mip chain's
 // fetches. Query k: texel k of the input = (u, v, light depth, -); result k:
 // texel k of the four images (savsm_params.h).
 //
@@ -15,7 +15,7 @@ int pnFetches = 0;
 #include "savsm.glsl"
 
 layout(binding = PN_SAVSM_TABLE_BINDING) uniform PN_SAVSM_TABLE_SAMPLER pnTable;
-layout(binding = PN_SAVSM_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+layout(binding = PN_SAVSM_MIP_BINDING) uniform sampler2D pnMip;
 layout(binding = PN_SAVSM_INPUT_BINDING) uniform sampler2D pnReceivers;
 layout(rgba32f, binding = PN_SAVSM_SEARCH_IMAGE) writeonly uniform image2D pnSearch;
 layout(rgba32f, binding = PN_SAVSM_FILTER_IMAGE) writeonly uniform image2D pnFilter;
@@ -29,7 +29,7 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnResult)))) return;
   pnFetches = 0;
   vec4 q = texelFetch(pnReceivers, p, 0);
-  PnSavsm s = pnSavsmEstimate(pnTable, pnPyramid, pnSavsmParamsLight(), q.xyz, pnParams.unitRange,
+  PnSavsm s = pnSavsmEstimate(pnTable, pnMip, pnSavsmParamsLight(), q.xyz, pnParams.unitRange,
                               pnSavsmParamsSettings());
   imageStore(pnSearch, p, vec4(vec2(s.searchRect.origin), vec2(s.searchRect.size)));
   imageStore(pnFilter, p, vec4(vec2(s.filterRect.origin), vec2(s.filterRect.size)));

@@ -80,8 +80,11 @@ Rect search_min_square(const RegionEntry& entry, int n) {
 }
 
 Rect mip_search_cover(const RegionEntry& entry, int n) {
-  const Rect r = pcss_square(entry.x, entry.y, entry.side, n, nullptr);
-  if (r.width == 0 || r.height == 0) return Rect{};
+  return mip_square_cover(pcss_square(entry.x, entry.y, entry.side, n, nullptr), n);
+}
+
+Rect mip_square_cover(const Rect& r, int n) {
+  if (r.width <= 0 || r.height <= 0) return Rect{};
   const int side = std::max(r.width, r.height);
   const int x1 = std::min(r.x + side, n), y1 = std::min(r.y + side, n);
   int level = 0;

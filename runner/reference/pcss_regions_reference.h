@@ -67,6 +67,9 @@ Rect search_min_square(const RegionEntry& entry, int n);
 // to the map), themselves clipped to the map — a superset of search_min_square's
 // texels when both lie in the map; empty when the region is.
 Rect mip_search_cover(const RegionEntry& entry, int n);
+// The same for a rectangle inside the map (pnMipSquareMinMax of its origin and side max(w, h)):
+// the aligned nodes that cover that square, clipped to the map; empty for an empty rectangle.
+Rect mip_square_cover(const Rect& rect, int n);
 
 // Min sanitized depth over rectangles of one map, by scanning every texel of each
 // (remembered per rectangle: refinement and the check's cases read the same ones often).

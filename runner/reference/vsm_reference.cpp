@@ -82,12 +82,20 @@ Image vsm_window_moments_reference(const Image& depth, const VsmParams& params) 
   return blur_reference(vsm_moments_reference(depth, params), params.blur);
 }
 
+double floored_variance(double mean, double variance, double min_variance) {
+  const double floor = std::max(std::max(min_variance, 0.0) * mean * mean, static_cast<double>(kVsmVarianceFloor));
+  return std::max(variance, floor);
+}
+
+double chebyshev_bound_variance(double mean, double variance, double t, double min_variance) {
+  if (!(t > mean)) return 1.0;
+  const double v = floored_variance(mean, variance, min_variance);
+  const double delta = t - mean;
+  return v / (v + delta * delta);
+}
+
 double chebyshev_bound(double m1, double m2, double t, double min_variance) {
-  if (!(t > m1)) return 1.0;
-  const double floor = std::max(std::max(min_variance, 0.0) * m1 * m1, static_cast<double>(kVsmVarianceFloor));
-  const double variance = std::max(m2 - m1 * m1, floor);
-  const double delta = t - m1;
-  return variance / (variance + delta * delta);
+  return chebyshev_bound_variance(m1, m2 - m1 * m1, t, min_variance);
 }
 
 double reduce_bleeding(double p, double amount) {

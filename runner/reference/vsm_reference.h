@@ -50,6 +50,9 @@ Image vsm_window_moments_reference(const Image& depth, const VsmParams& params);
 
 // p_max(t) = s2 / (s2 + (t - mu)^2) for t > mu, else 1 (NaN t: 1); s2 = max(m2 - m1^2, mv m1^2, FLT_MIN).
 double chebyshev_bound(double m1, double m2, double t, double min_variance);
+// The same from a mean and a variance; and the variance it uses, max(variance, mv mu^2, FLT_MIN).
+double chebyshev_bound_variance(double mean, double variance, double t, double min_variance);
+double floored_variance(double mean, double variance, double min_variance);
 // linstep(a, 1, p), a clamped to [0, kVsmMaxBleedingReduction].
 double reduce_bleeding(double p, double amount);
 // The kind's bound at t = dP - bias (the float t the module forms) from a texel's window moments

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "pipeline/pcss_technique.h"
 #include "technique/pcf_technique.h"
+#include "technique/savsm_technique.h"
 #include "technique/vsm_technique.h"
 
 namespace pn {
@@ -46,6 +47,14 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return vsm_config(VsmKind::evsm4, "evsm"); }},
       {"evsm2", "exponential VSM, 2 components (c+ 40): the positive warp only, half the memory of evsm (vsm.glsl)",
        []() -> Made { return vsm_config(VsmKind::evsm2, "evsm2"); }},
+      {"savsm", "summed-area variance soft shadows (seed 004): fixed-point moments table, Chebyshev blocker estimate, linstep(0.2), depth-range bound (savsm.glsl)",
+       []() -> Made { return savsm_config("savsm", {}); }},
+      {"savsm-float", "savsm on a float moments table of centred depths (Lauritzen's fp32 table): the precision ablation",
+       []() -> Made { return savsm_config("savsm-float", {{"table", "float"}}); }},
+      {"savsm-raw", "savsm without light-bleeding reduction (bleeding=0)",
+       []() -> Made { return savsm_config("savsm-raw", {{"bleeding", "0"}}); }},
+      {"savsm-min", "savsm with the search square's min depth (min/max mip chain) as the blocker depth",
+       []() -> Made { return savsm_config("savsm-min", {{"blocker", "min"}}); }},
       {"fast-all-off", "Fast PCSS with every improvement off: must equal exact PCSS (the wiring check)",
        []() -> Made { return pcss_config(fast_pcss_all_off()); }, false},
   };
@@ -86,7 +95,7 @@ std::vector<const TechniqueConfig*> chosen_or_default_techniques(
   return out;
 }
 
-std::vector<std::string> render_techniques() { return {"exact", "poisson", "hqepcss", "fast-paper", "fast"}; }
+std::vector<std::string> render_techniques() { return {"exact", "poisson", "hqepcss", "fast-paper", "fast", "savsm"}; }
 
 std::vector<std::string> bench_techniques() {
   std::vector<std::string> out;

@@ -1,0 +1,127 @@
+#include "passes/savsm_pass.h"
+
+#include <string>
+
+#include "core/error.h"
+#include "core/query_grid.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
+#include "gl/texture.h"
+
+namespace pn::glsl {
+#include "passes/savsm_params.h"
+PN_STD140_SIZE(PnSavsmParams, 64);
+PN_STD140_OFFSET(PnSavsmParams, unitRange, 24);
+PN_STD140_OFFSET(PnSavsmParams, bias, 32);
+PN_STD140_OFFSET(PnSavsmParams, blockerMode, 48);
+PN_STD140_OFFSET(PnSavsmParams, bound, 52);
+}  // namespace pn::glsl
+
+namespace pn {
+namespace {
+
+glsl::PnSavsmParams make_block(const MomentsTable& table, const LightModel& light, const SavsmSettings& s) {
+  s.validate();
+  glsl::PnSavsmParams b{};
+  b.lightWidth = static_cast<float>(light.width);
+  b.lightNear = static_cast<float>(light.near_plane);
+  b.lightNearPlaneWidth = static_cast<float>(light.near_plane_width());
+  b.mapSize = static_cast<float>(light.map_size);
+  b.lightSpread = static_cast<float>(light.spread);
+  b.lightTexelWorld = static_cast<float>(light.texel_world);
+  b.unitRange = {table.range.offset, table.range.scale};
+  b.bias = s.bias;
+  b.filterScale = s.filter_scale;
+  b.minVariance = s.min_variance;
+  b.bleedingReduction = s.bleeding_reduction;
+  b.blockerMode = static_cast<int>(s.blocker);
+  b.bound = s.bound ? 1 : 0;
+  return b;
+}
+
+std::vector<Define> table_define(const MomentsTable& table) {
+  const int kind = table.kind == MomentsTableKind::fixed ? PN_SAVSM_TABLE_FIXED : PN_SAVSM_TABLE_FLOAT;
+  return {{"PN_SAVSM_TABLE", std::to_string(kind)}};
+}
+
+void check_sizes(const MomentsTable& table, const LightModel& light) {
+  if (table.width != table.height || table.width != light.map_size)
+    throw Error("savsm: a moments table of a " + std::to_string(table.width) + "x" + std::to_string(table.height) +
+                " map for a light of map size " + std::to_string(light.map_size) + ": expected the light's N×N map");
+}
+
+Rect rect_of(const Query& q) {
+  return {static_cast<int>(q[0]), static_cast<int>(q[1]), static_cast<int>(q[2]), static_cast<int>(q[3])};
+}
+
+}  // namespace
+
+SavsmPass::SavsmPass(const Context& context, const SourceTree& tree)
+    : context_(&context), shade_(context, tree, "passes/savsm_shade.comp"), query_(context, tree, "passes/savsm_query.comp") {}
+
+GlObject SavsmPass::shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer,
+                          int screen_size, const LightModel& light, const SavsmSettings& settings) const {
+  check_sizes(table, light);
+  const glsl::PnSavsmParams block = make_block(table, light, settings);
+  GlObject visibility = make_float_texture(*context_, screen_size, screen_size, 1);
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_SAVSM_TABLE_BINDING, table.texture);
+  bind.texture(PN_SAVSM_MIP_BINDING, mip);
+  bind.texture(PN_SAVSM_INPUT_BINDING, gbuffer);
+  bind.image(PN_SAVSM_VISIBILITY_IMAGE, visibility, GL_WRITE_ONLY, GL_R32F);
+  shade_.get(table_define(table)).dispatch(screen_size, screen_size);
+  return visibility;
+}
+
+std::vector<SavsmQueryResult> SavsmPass::query(const MomentsTable& table, const GlObject& mip,
+                                               const std::vector<SavsmReceiver>& receivers, const LightModel& light,
+                                               const SavsmSettings& settings) const {
+  check_sizes(table, light);
+  if (receivers.empty()) return {};
+  const glsl::PnSavsmParams block = make_block(table, light, settings);
+  std::vector<Query> q;
+  for (const SavsmReceiver& r : receivers) q.push_back({r.u, r.v, r.depth, 0.0f});
+  const Image image = query_image(q);
+  const int w = image.width, h = image.height;
+  const GlObject input = upload_float_texture(*context_, image);
+  const GlObject search = make_float_texture(*context_, w, h, 4);
+  const GlObject filter = make_float_texture(*context_, w, h, 4);
+  const GlObject blocker = make_float_texture(*context_, w, h, 4);
+  const GlObject result = make_float_texture(*context_, w, h, 4);
+  {
+    PassBindings bind(*context_);
+    bind.uniform(block);
+    bind.texture(PN_SAVSM_TABLE_BINDING, table.texture);
+    bind.texture(PN_SAVSM_MIP_BINDING, mip);
+    bind.texture(PN_SAVSM_INPUT_BINDING, input);
+    bind.image(PN_SAVSM_SEARCH_IMAGE, search, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.image(PN_SAVSM_FILTER_IMAGE, filter, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.image(PN_SAVSM_BLOCKER_IMAGE, blocker, GL_WRITE_ONLY, GL_RGBA32F);
+    bind.image(PN_SAVSM_RESULT_IMAGE, result, GL_WRITE_ONLY, GL_RGBA32F);
+    query_.get(table_define(table)).dispatch(w, h);
+  }
+  const Image s = read_float_texture(*context_, search, w, h, 4);
+  const Image f = read_float_texture(*context_, filter, w, h, 4);
+  const Image b = read_float_texture(*context_, blocker, w, h, 4);
+  const Image r = read_float_texture(*context_, result, w, h, 4);
+  std::vector<SavsmQueryResult> out;
+  for (size_t k = 0; k < receivers.size(); ++k) {
+    SavsmQueryResult o;
+    o.search = rect_of(query_result(s, k));
+    o.filter = rect_of(query_result(f, k));
+    const Query bk = query_result(b, k), rk = query_result(r, k);
+    o.blocker = bk[0];
+    o.has_blocker = bk[1] != 0.0f;
+    o.filter_side = bk[2];
+    o.fetches = bk[3];
+    o.mean = rk[0];
+    o.variance = rk[1];
+    o.chebyshev = rk[2];
+    o.visibility = rk[3];
+    out.push_back(o);
+  }
+  return out;
+}
+
+}  // namespace pn

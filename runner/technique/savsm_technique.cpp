@@ -1,0 +1,110 @@
+#include "technique/savsm_technique.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "gl/gpu_timer.h"
+#include "gl/texture.h"
+#include "technique/setting_value.h"
+
+namespace pn {
+namespace {
+
+class SavsmConfig : public TechniqueConfig {
+ public:
+  explicit SavsmConfig(SavsmTechniqueSettings settings) : settings_(std::move(settings)) {}
+  std::string name() const override { return settings_.name; }
+  void rename(const std::string& name) override { settings_.name = name; }
+  std::vector<std::string> keys() const override { return savsm_setting_keys(); }
+  void set(const std::string& key, const std::string& value) override { set_savsm_setting(settings_, key, value); }
+  void validate() const override { settings_.validate(); }
+  std::unique_ptr<Technique> create(TechniqueResources& resources) const override {
+    return std::make_unique<SavsmTechnique>(resources.context(), resources.shared<SavsmPasses>(), settings_);
+  }
+  std::unique_ptr<TechniqueConfig> clone() const override { return std::make_unique<SavsmConfig>(settings_); }
+
+ private:
+  SavsmTechniqueSettings settings_;
+};
+
+bool reads_mip(const SavsmSettings& s) { return s.bound || s.blocker == SavsmBlocker::min; }
+
+}  // namespace
+
+void SavsmTechniqueSettings::validate() const {
+  try {
+    savsm.validate();
+  } catch (const Error& e) {
+    throw Error("method '" + name + "': " + e.what());
+  }
+}
+
+std::vector<std::string> savsm_setting_keys() {
+  return {"bias", "scale", "min-variance", "bleeding", "blocker", "bound", "table"};
+}
+
+void set_savsm_setting(SavsmTechniqueSettings& s, const std::string& key, const std::string& value) {
+  const auto real = [&] { return setting_real(s.name, key, value); };
+  const auto choice = [&](const char* a, const char* b) {
+    if (value == a) return true;
+    if (value == b) return false;
+    throw bad_setting_value(s.name, key, value, (std::string(a) + " or " + b).c_str());
+  };
+  if (key == "bias") s.savsm.bias = real();
+  else if (key == "scale") s.savsm.filter_scale = real();
+  else if (key == "min-variance") s.savsm.min_variance = real();
+  else if (key == "bleeding") s.savsm.bleeding_reduction = real();
+  else if (key == "blocker") s.savsm.blocker = choice("table", "min") ? SavsmBlocker::table : SavsmBlocker::min;
+  else if (key == "bound") s.savsm.bound = choice("on", "off");
+  else if (key == "table") s.table = choice("fixed", "float") ? MomentsTableKind::fixed : MomentsTableKind::floating;
+  else {
+    std::string known;
+    for (const std::string& k : savsm_setting_keys()) known += (known.empty() ? "" : ", ") + k;
+    throw Error("method '" + s.name + "': unknown setting '" + key + "': expected " + known);
+  }
+}
+
+std::unique_ptr<TechniqueConfig> savsm_config(const char* name,
+                                              const std::vector<std::pair<std::string, std::string>>& overrides) {
+  SavsmTechniqueSettings s;
+  s.name = name;
+  for (const auto& [key, value] : overrides) set_savsm_setting(s, key, value);
+  return std::make_unique<SavsmConfig>(s);
+}
+
+SavsmPasses::SavsmPasses(const Context& context, const SourceTree& tree)
+    : table(context, tree),
+      shade(context, tree),
+      mip(context, tree),
+      no_mip(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)) {}
+
+TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool) const {
+  if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
+    throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
+  const int n = inputs.light.map_size;
+  StageClock clock(*context_);
+  clock.start();
+  const MomentsTable table = passes_->table.build(*inputs.shadow_map, settings_.table,
+                                                  unit_range(inputs.light.near_plane, inputs.light.far_plane));
+  clock.stage("table");
+  MinMaxMipChain own;
+  const GlObject* mip = &passes_->no_mip;
+  if (reads_mip(settings_.savsm)) {
+    if (inputs.mip != nullptr && inputs.mip->map_size == n) {
+      mip = &inputs.mip->texture;
+    } else {
+      own = passes_->mip.build(*inputs.shadow_map, n);
+      mip = &own.texture;
+      clock.stage("mip chain");
+    }
+  }
+  TechniqueFrame out;
+  out.visibility = passes_->shade.shade(table, *mip, *inputs.gbuffer, inputs.screen_size, inputs.light,
+                                        settings_.savsm);
+  context_->throw_if_gl_error("savsm shade");
+  clock.stage("shade");
+  out.stages = clock.read();
+  return out;
+}
+
+}  // namespace pn

@@ -1,0 +1,59 @@
+// Summed-area variance soft shadows behind the technique seam (registry
+// entries `savsm`, `savsm-float`, `savsm-raw`, `savsm-min`): on the
+// ordinary shadow map, the moments table (summed_area.glsl, fixed point or
+// float), the min/max mip chain when the bound or the min blocker reads it,
+// and per screen pixel savsm.glsl's estimate (passes/savsm_shade.comp). The
+// table's unit depth spans the light's near and far planes.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "passes/minmax_mip_pass.h"
+#include "passes/savsm_pass.h"
+#include "passes/summed_area_pass.h"
+#include "technique/technique.h"
+
+namespace pn {
+
+struct SavsmTechniqueSettings {
+  std::string name;
+  SavsmSettings savsm;
+  MomentsTableKind table = MomentsTableKind::fixed;
+
+  void validate() const;  // throws Error naming the method, the setting and its range
+};
+
+// The override keys: bias, scale, min-variance, bleeding, blocker (table|min), bound (on|off),
+// table (fixed|float).
+std::vector<std::string> savsm_setting_keys();
+void set_savsm_setting(SavsmTechniqueSettings& s, const std::string& key, const std::string& value);
+
+// A registry entry: `savsm` with the given overrides applied ({} for the defaults).
+std::unique_ptr<TechniqueConfig> savsm_config(const char* name,
+                                              const std::vector<std::pair<std::string, std::string>>& overrides);
+
+// The GL passes the savsm techniques of one context share (TechniqueResources::shared).
+struct SavsmPasses {
+  SavsmPasses(const Context& context, const SourceTree& tree);
+  SummedAreaMomentsPass table;
+  SavsmPass shade;
+  MinMaxMipBuilder mip;
+  GlObject no_mip;  // bound where the settings read no chain
+};
+
+class SavsmTechnique : public Technique {
+ public:
+  SavsmTechnique(const Context& context, const SavsmPasses& passes, SavsmTechniqueSettings settings)
+      : context_(&context), passes_(&passes), settings_(std::move(settings)) {}
+  // Stages: table, mip chain (when read and the source keeps none), shade. No stats.
+  TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override;
+
+ private:
+  const Context* context_;
+  const SavsmPasses* passes_;
+  SavsmTechniqueSettings settings_;
+};
+
+}  // namespace pn
