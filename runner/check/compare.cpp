@@ -45,8 +45,13 @@ std::string Comparison::where(const Tolerance& tolerance) const {
   std::string out = "at (" + std::to_string(x) + ", " + std::to_string(y) + ")";
   if (channel != 0) out += "[" + std::to_string(channel) + "]";
   const char* measure = tolerance.kind == Tolerance::Kind::relative ? "rel" : "abs";
+  // The error as the comparison measured it (in double where the expected value was a double, which
+  // `expected` only shows rounded to float), except under an RMSE bound, where worst_error is the RMSE.
+  const double error = tolerance.kind == Tolerance::Kind::rmse
+                           ? element_error(expected, observed, element_kind(tolerance))
+                           : worst_error;
   out += ": expected " + number(expected) + ", observed " + number(observed) + " (" + measure + " error " +
-         short_number(element_error(expected, observed, element_kind(tolerance))) +
+         short_number(error) +
          (pass ? ", within " : ", not within ") + tolerance.describe() + ")";
   if (tolerance.kind == Tolerance::Kind::rmse) out += ", rmse " + short_number(rmse);
   return out;
@@ -81,6 +86,39 @@ Comparison compare(const Image& expected, const Image& observed, const Tolerance
   c.rmse = count > 0 ? std::sqrt(square_sum / count) : 0.0;
   c.worst_error = tolerance.kind == Tolerance::Kind::rmse ? c.rmse : std::max(worst, 0.0);
   c.pass = c.worst_error <= tolerance.bound;
+  return c;
+}
+
+void BoundedElements::add(double e, float o, double bound, int x, int y, int channel) {
+  expected.push_back(e);
+  observed.push_back(o);
+  bounds.push_back(bound);
+  where.push_back({x, y, channel});
+}
+
+void BoundedElements::add_interval(double lo, double hi, float o, int x, int y, int channel) {
+  add(0.5 * (lo + hi), o, 0.5 * (hi - lo), x, y, channel);
+}
+
+Comparison compare_bounded(const BoundedElements& elements, Tolerance& tolerance) {
+  Comparison c;
+  c.pass = true;
+  double worst_ratio = -1.0, worst_bound = 0.0, square_sum = 0.0;
+  for (size_t i = 0; i < elements.expected.size(); ++i) {
+    const double e = elements.expected[i], o = elements.observed[i], b = elements.bounds[i];
+    const double err = std::isfinite(o) ? std::fabs(o - e) : std::numeric_limits<double>::infinity();
+    const double ratio = b > 0.0 ? err / b : (err > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+    c.pass = c.pass && err <= b;
+    if (std::isfinite(err)) square_sum += err * err;
+    if (ratio > worst_ratio) {
+      worst_ratio = ratio, worst_bound = b;
+      c.x = elements.where[i][0], c.y = elements.where[i][1], c.channel = elements.where[i][2];
+      c.expected = static_cast<float>(e), c.observed = static_cast<float>(o), c.worst_error = err;
+    }
+  }
+  const size_t n = elements.expected.size();
+  c.rmse = n == 0 ? 0.0 : std::sqrt(square_sum / static_cast<double>(n));
+  tolerance = Tolerance::absolute(worst_bound);
   return c;
 }
 

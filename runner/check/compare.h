@@ -2,7 +2,9 @@
 // reporting the worst element as where / expected / observed (piglit style).
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 
@@ -37,5 +39,20 @@ struct Comparison {
 // the same infinity); infinite when only one is non-finite. Relative errors
 // divide by max(|expected|, FLT_MIN).
 Comparison compare(const Image& expected, const Image& observed, const Tolerance& tolerance);
+
+// Elements that each carry their own bound: |observed − expected| <= bound (an interval [lo, hi]
+// is its midpoint and half-width). A non-finite observed value fails. `where` places each element
+// (x, y, channel) for the report.
+struct BoundedElements {
+  std::vector<double> expected, bounds;
+  std::vector<float> observed;
+  std::vector<std::array<int, 3>> where;
+  void add(double e, float o, double bound, int x, int y, int channel = 0);
+  void add_interval(double lo, double hi, float o, int x, int y, int channel = 0);
+};
+
+// The worst element is the one closest to (or furthest beyond) its bound; the tolerance returned
+// is that element's bound.
+Comparison compare_bounded(const BoundedElements& elements, Tolerance& tolerance);
 
 }  // namespace pn

@@ -46,6 +46,9 @@ const std::vector<ModuleCheck>& module_checks() {
       {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
               "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
        &run_vsm_check},
+      {"savsm", "summed-area variance soft shadows: squares, blocker, filter side, moments and visibility vs the "
+                "estimate in double from brute-force moments over the same rectangles; fetches per receiver (constant)",
+       &run_savsm_check},
   };
   return checks;
 }

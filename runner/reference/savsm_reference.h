@@ -28,7 +28,7 @@ struct SavsmSettings {
   float filter_scale = static_cast<float>(PN_SAVSM_FILTER_SCALE);             // c
   float min_variance = static_cast<float>(PN_VSM_MIN_VARIANCE);               // relative to mu^2
   float bleeding_reduction = static_cast<float>(PN_VSM_BLEEDING_REDUCTION);  // linstep's a
-  SavsmBlocker blocker = SavsmBlocker::table;
+  SavsmBlocker blocker = SavsmBlocker::min;  // the truth favours it (docs/modules/savsm.md)
   bool bound = true;  // the mip chain's lit test over the search square and depth-range bound over the filter
 
   // Throws Error naming the setting and its range: bias, scale finite >= 0, min variance finite

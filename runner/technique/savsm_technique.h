@@ -1,5 +1,5 @@
 // Summed-area variance soft shadows behind the technique seam (registry
-// entries `savsm`, `savsm-float`, `savsm-raw`, `savsm-min`): on the
+// entries `savsm`, `savsm-table`, `savsm-float`, `savsm-raw`): on the
 // ordinary shadow map, the moments table (summed_area.glsl, fixed point or
 // float), the min/max mip chain when the bound or the min blocker reads it,
 // and per screen pixel savsm.glsl's estimate (passes/savsm_shade.comp). The
