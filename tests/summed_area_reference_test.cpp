@@ -133,3 +133,161 @@ TEST_CASE("summed_area motivation: a float prefix-sum table of depths near 1000 
   }
   CHECK(worst > 1.0);
 }
+
+// ---- Moments tables ----------------------------------------------------------
+
+namespace {
+
+constexpr double kU = 0x1p-24;
+
+// Depths 1, 3 / NaN, 2 in the range [0, 4] (offset 0, scale 1/4: every x exact): x = 0.25, 0.75, 1, 0.5.
+pn::Image moments_hand_map() {
+  pn::Image m(2, 2, 1);
+  m.at(0, 0) = 1.0f, m.at(1, 0) = 3.0f, m.at(0, 1) = NAN, m.at(1, 1) = 2.0f;
+  return m;
+}
+
+constexpr pn::MomentsDepthRange kQuarter{0.0, 4.0, 0.0f, 0.25f};
+
+}  // namespace
+
+TEST_CASE("summed_area moments reference: x is clamp((d - offset) * scale) in float, 1 for NaN and ±Inf; q rounds x 2^B half to even") {
+  CHECK(pn::summed_area_unit_depth(1.0f, 0.0f, 0.25f) == 0.25f);
+  CHECK(pn::summed_area_unit_depth(-3.0f, 0.0f, 0.25f) == 0.0f);  // before near: 0
+  CHECK(pn::summed_area_unit_depth(9.0f, 0.0f, 0.25f) == 1.0f);   // past far: 1
+  for (float d : {NAN, INFINITY, -INFINITY}) CHECK(pn::summed_area_unit_depth(d, 0.0f, 0.25f) == 1.0f);
+  // Two roundings, not a division: 19 * float(1/99) in float.
+  const float scale = static_cast<float>(1.0 / 99.0);
+  CHECK(pn::summed_area_unit_depth(20.0f, 1.0f, scale) == 19.0f * scale);
+  CHECK(pn::summed_area_true_unit_depth(20.0, 1.0, 100.0) == 19.0 / 99.0);
+  CHECK(pn::summed_area_true_unit_depth(-INFINITY, 1.0, 100.0) == 1.0);  // the module's definition, not the clamp's 0
+  CHECK(pn::kSummedAreaMomentBits == 18);
+  CHECK(pn::summed_area_moment_q(0.25f) == 1u << 16);
+  CHECK(pn::summed_area_moment_q(1.0f) == 1u << 18);
+  CHECK(pn::summed_area_moment_q(0x1p-19f) == 0u);      // half a step: to even, 0
+  CHECK(pn::summed_area_moment_q(3 * 0x1p-19f) == 2u);  // 1.5 steps: 2
+  CHECK(pn::summed_area_moment_q(0.3f, 0) == 0u);
+  CHECK(pn::summed_area_moment_q(0.5f, 0) == 0u);  // 0.5: to even
+  CHECK(pn::summed_area_moment_q(1.0f, 0) == 1u);
+  CHECK_THROWS(pn::summed_area_moment_q(0.5f, 19));
+  CHECK_THROWS(pn::summed_area_moment_q(0.5f, -1));
+}
+
+TEST_CASE("summed_area moments reference: the 2x2 hand map's sums, mean 0.625 and variance 0.078125; NaN counts as x = 1") {
+  const pn::SummedAreaMomentsReference reference(moments_hand_map(), kQuarter);
+  const auto s = reference.sums({0, 0, 2, 2});
+  CHECK(s.texels == 4);
+  CHECK(s.sum_q == 10u << 16);                       // (1 + 3 + 4 + 2) 2^16
+  CHECK(s.sum_q2 == std::uint64_t{30} << 32);        // (1 + 9 + 16 + 4) 2^32
+  CHECK(s.mean == 0.625);                            // (0.25 + 0.75 + 1 + 0.5) / 4
+  CHECK(s.variance == 0.078125);                     // 1.875 / 4 − 0.625²
+  CHECK(s.quantised_mean == 0.625);
+  CHECK(s.quantised_variance == 0.078125);
+  const auto right = reference.sums({1, -1, 5, 2});  // column 1, row 0 only: x = 0.75
+  CHECK(right.texels == 1);
+  CHECK(right.sum_q == 3u << 16);
+  CHECK(right.sum_q2 == std::uint64_t{9} << 32);
+  CHECK(right.mean == 0.75);
+  CHECK(right.variance == 0.0);
+  for (const pn::SummedAreaRect r : {pn::SummedAreaRect{2, 0, 1, 1}, {0, 0, 0, 2}, {2, 2, -2, -2}}) {
+    const auto e = reference.sums(r);
+    CHECK(e.texels == 0);
+    CHECK(e.sum_q == 0);
+    CHECK(e.mean == 0.0);
+    CHECK(reference.fixed_bound(e).mean == 0.0);
+    CHECK(reference.float_bound(e).variance == 0.0);
+  }
+}
+
+TEST_CASE("summed_area moments reference: sums of q and q^2 are taken modulo 2^64, the moments from the true sums") {
+  // At B = 18 no map of up to 2^28 texels reaches 2^64; B = 0 with x = 1 gives q = 1, q^2 = 1:
+  // small numbers, exact. What wraps is only the 64-bit words, so: a large constant map at B = 18.
+  const pn::Image ones(300, 300, 1, INFINITY);  // x = 1: q = 2^18, q^2 = 2^36
+  const pn::SummedAreaMomentsReference reference(ones, kQuarter);
+  const auto s = reference.sums({0, 0, 300, 300});
+  CHECK(s.sum_q == std::uint64_t{90000} << 18);
+  CHECK(s.sum_q2 == std::uint64_t{90000} << 36);  // 2^52.5: still below 2^64
+  CHECK(s.mean == 1.0);
+  CHECK(s.variance == 0.0);
+  CHECK(s.quantised_variance == 0.0);
+}
+
+TEST_CASE("summed_area moments reference: per texel |x~ - x| <= eps_x = gamma (1 + delta_o) + delta_o and |q 2^-B - x| <= e = 2^-(B+1) + eps_x") {
+  // Exact scale and offset: the subtraction's relative u (of x <= 1) and the product's half ulp (of
+  // x < 1), eps_x = 1.5u.
+  CHECK(pn::summed_area_unit_depth_bound(kQuarter) == Approx(1.5 * kU).epsilon(1e-6));
+  CHECK(pn::summed_area_moment_texel_bound(kQuarter) == Approx(0x1p-19 + 1.5 * kU).epsilon(1e-7));
+  // [1, 100]: the scale float(1/99) adds its own relative error, below u.
+  const float scale = static_cast<float>(1.0 / 99.0);
+  const pn::MomentsDepthRange hundred{1.0, 100.0, 1.0f, scale};
+  const double delta_s = std::fabs(static_cast<double>(scale) * 99.0 - 1.0);
+  CHECK(delta_s <= kU);
+  CHECK(pn::summed_area_unit_depth_bound(hundred) == Approx(1.5 * kU + delta_s).epsilon(1e-6));
+  // A near plane that is no float: delta_o = |0.1 − float(0.1)| / 9.9 adds on.
+  const pn::MomentsDepthRange tenth{0.1, 10.0, static_cast<float>(0.1), static_cast<float>(1.0 / 9.9)};
+  const double delta_o = std::fabs(0.1 - static_cast<double>(static_cast<float>(0.1))) / 9.9;
+  CHECK(pn::summed_area_unit_depth_bound(tenth) > delta_o + 1.5 * kU);
+  CHECK(pn::summed_area_unit_depth_bound(tenth) < delta_o + 2.6 * kU);
+  CHECK_THROWS(pn::summed_area_unit_depth_bound({5.0, 5.0, 5.0f, 1.0f}));
+  CHECK_THROWS(pn::summed_area_unit_depth_bound({-1.0, 5.0, -1.0f, 1.0f}));
+  CHECK_THROWS(pn::summed_area_unit_depth_bound({0.0, 1.0, 0.0f, 0.0f}));
+  // The bound holds on 2^16 depths from near − 1 to far + 1 (every texel of a 256² ramp), and is
+  // not loose: the worst texel comes within a factor 4 of it.
+  for (const pn::MomentsDepthRange& r : {hundred, tenth}) {
+    pn::Image ramp(256, 256, 1);
+    for (int i = 0; i < 256 * 256; ++i)
+      ramp.texels[static_cast<size_t>(i)] =
+          static_cast<float>(r.near_depth - 1.0 + i * (r.far_depth - r.near_depth + 2.0) / 65536.0);
+    const pn::SummedAreaMomentsReference reference(ramp, r);
+    INFO("range [" << r.near_depth << ", " << r.far_depth << "]: worst |x~ - x| " << reference.worst_unit_depth_error()
+                   << ", bound " << reference.unit_depth_bound());
+    CHECK(reference.worst_unit_depth_error() <= reference.unit_depth_bound());
+    CHECK(reference.worst_unit_depth_error() > reference.unit_depth_bound() / 4);
+    CHECK(reference.worst_texel_error() <= reference.texel_bound());
+    CHECK(reference.worst_texel_error() > 0x1p-19 * 0.9);  // some texel lands near half a step
+  }
+}
+
+TEST_CASE("summed_area moments reference: the fixed table's bounds, worked for the 2x2 hand map") {
+  const pn::SummedAreaMomentsReference reference(moments_hand_map(), kQuarter);
+  const auto s = reference.sums({0, 0, 2, 2});
+  const double rho = 0.5 + 7 * kU * 0x1p18;  // |mean of q − c| <= 1/2 + 7u · 2^18 = 0.609375 (+ u² terms)
+  const double step = 0x1p-18;
+  const auto a = reference.fixed_arithmetic_bound(s);
+  CHECK(a.mean == Approx(kU * 0.625 + 6 * kU * rho * step).epsilon(1e-5));
+  CHECK(a.variance == Approx(8 * kU * 0.078125 + 20 * kU * rho * rho * step * step).epsilon(1e-5));
+  const double e = 0x1p-19 + 1.5 * kU, sigma = std::sqrt(0.078125);
+  const auto b = reference.fixed_bound(s);
+  CHECK(b.mean == Approx(a.mean + e).epsilon(1e-5));
+  CHECK(b.variance == Approx(a.variance + 2 * sigma * e + e * e).epsilon(1e-5));
+  CHECK(b.variance == Approx(1.15e-6).epsilon(0.01));  // 2 σ e dominates: 2 · 0.2795 · 2.00e-6, then 8u · 0.078
+}
+
+TEST_CASE("summed_area moments reference: the float table's bound grows with the prefix sums at the corners") {
+  // One row of three texels x = 0.25, 0.75, 0.5 (v = −0.25, 0.25, 0): the prefix at the corner
+  // (3, 1) went through X + Y − 2 = 2 roundings of A = 0.5; the other corners are 0.
+  pn::Image row(3, 1, 1);
+  row.at(0, 0) = 1.0f, row.at(1, 0) = 3.0f, row.at(2, 0) = 2.0f;
+  const pn::SummedAreaMomentsReference reference(row, kQuarter);
+  const auto all = reference.sums({0, 0, 3, 1});
+  const double gamma2 = 2 * kU / (1 - 2 * kU);
+  CHECK(all.float_corner_abs1 == Approx(0.5).epsilon(1e-8));
+  CHECK(all.float_prefix_error1 == Approx(gamma2 * 0.5).epsilon(1e-8));
+  CHECK(all.float_corner_abs2 == Approx(0.125).epsilon(1e-8));  // Σ v²
+  const auto first = reference.sums({0, 0, 1, 1});               // corner (1, 1): no rounding
+  CHECK(first.float_prefix_error1 == 0.0);
+  CHECK(first.float_corner_abs1 == Approx(0.25).epsilon(1e-8));
+  // The mean's bound for the whole row, by hand: E1 = 3 ε_v + γ2 A + (2u + u²)(A + γ2 A), then over n with
+  // the division's 5u and the addition of 1/2.
+  const double eps_v = 1.5 * kU + kU / 2, corner = 2 * kU + kU * kU;
+  const double e1 = 3 * eps_v + gamma2 * 0.5 + corner * (0.5 + gamma2 * 0.5);
+  const double mu1 = 0.0;  // mean x = 0.5
+  const double f1 = e1 / 3 + 5 * kU * (mu1 + e1 / 3);
+  CHECK(reference.float_bound(all).mean == Approx(f1 + kU * (0.5 + f1)).epsilon(1e-5));
+  // Every bound positive where texels are covered, and the float one far larger than the fixed
+  // one's arithmetic on a big map's corner (prefix sums of ~10^5 values).
+  const pn::Image big(512, 512, 1, 1.0f);
+  const pn::SummedAreaMomentsReference large(big, kQuarter);
+  const auto corner_texel = large.sums({511, 511, 1, 1});
+  CHECK(large.float_bound(corner_texel).mean > 1000 * large.fixed_arithmetic_bound(corner_texel).mean);
+}
