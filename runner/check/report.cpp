@@ -67,6 +67,10 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
                   r.pass() ? "pass" : "FAIL");
     out << line;
   }
+  if (!every_case)  // every_case lists them below with the rest
+    for (const ModuleReport& r : reports)
+      for (const CaseResult& c : r.cases)
+        if (c.headline && c.comparison.pass) out << r.module << ": " << c.name << "\n";
   if (every_case)
     for (const ModuleReport& r : reports)
       for (const CaseResult& c : r.cases)

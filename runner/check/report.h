@@ -24,7 +24,8 @@ struct ModuleReport {
 // dispatch times out) is reported as failing with that error, and the next check still runs.
 std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, const CheckEnvironment& env);
 
-// Table: module, cases, worst error, verdict; then, for each failing module,
+// Table: module, cases, worst error, verdict; the passing headline cases' names (measurements
+// a check prints beside its verdict); then, for each failing module,
 // its failing cases with where / expected / observed (at most `max_failures`
 // each). `every_case` lists every case, passing ones too, with its worst element.
 void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, size_t max_failures = 10,

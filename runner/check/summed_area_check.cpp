@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-#include "check/module_check.h"
+#include "check/summed_area_check.h"
 #include "core/error.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
@@ -48,7 +48,6 @@ namespace pn {
 namespace {
 
 constexpr fixtures::FixtureSize kSizes[] = {{1, 1}, {3, 5}, {17, 9}, {100, 37}, {257, 257}, {1024, 1024}};
-constexpr int kGridWidth = 1024;  // query k at (k mod 1024, k / 1024), as query_image lays them out
 constexpr int kWrapFractionBits = 40;
 
 struct Range {
@@ -110,17 +109,15 @@ std::vector<SummedAreaRect> rects_for(int w, int h) {
   return out;
 }
 
-// 24, 24 and 16 bits of a 64-bit sum: each exact as a float.
-float digit(std::uint64_t v, int which) {
+}  // namespace
+
+float summed_area_digit(std::uint64_t v, int which) {
   return static_cast<float>((v >> (24 * which)) & (which < 2 ? 0xffffffu : 0xffffu));
 }
 
-// Each element within its own bound; the worst is the one closest to (or furthest beyond) its
-// bound, and the case's tolerance is that element's bound. Element i is channel i mod `channels`
-// of query queries[i / channels], reported at that query's place in the grid.
-CaseResult bounded_case(const std::string& name, const std::vector<double>& expected,
-                        const std::vector<float>& observed, const std::vector<double>& bounds, int channels,
-                        const std::vector<int>& queries) {
+CaseResult summed_area_bounded_case(const std::string& name, const std::vector<double>& expected,
+                                    const std::vector<float>& observed, const std::vector<double>& bounds, int channels,
+                                    const std::vector<int>& queries) {
   Comparison c;
   c.pass = true;
   double worst_ratio = -1.0, worst_bound = 0.0, square_sum = 0.0;
@@ -133,7 +130,7 @@ CaseResult bounded_case(const std::string& name, const std::vector<double>& expe
     if (ratio > worst_ratio) {
       worst_ratio = ratio, worst_bound = b;
       const int k = queries[i / static_cast<size_t>(channels)];
-      c.x = k % kGridWidth, c.y = k / kGridWidth, c.channel = static_cast<int>(i) % channels;
+      c.x = k % kSummedAreaGridWidth, c.y = k / kSummedAreaGridWidth, c.channel = static_cast<int>(i) % channels;
       c.expected = static_cast<float>(e), c.observed = static_cast<float>(o), c.worst_error = err;
     }
   }
@@ -141,17 +138,14 @@ CaseResult bounded_case(const std::string& name, const std::vector<double>& expe
   return {name, Tolerance::absolute(worst_bound), c};
 }
 
-// A failing case names the rectangle of its worst element.
-void name_worst_rect(CaseResult& r, const std::vector<SummedAreaRect>& rects) {
+void name_summed_area_worst_rect(CaseResult& r, const std::vector<SummedAreaRect>& rects) {
   if (r.comparison.pass || r.comparison.x < 0) return;
-  const size_t k = static_cast<size_t>(r.comparison.y) * kGridWidth + static_cast<size_t>(r.comparison.x);
+  const size_t k = static_cast<size_t>(r.comparison.y) * kSummedAreaGridWidth + static_cast<size_t>(r.comparison.x);
   if (k >= rects.size()) return;
   const SummedAreaRect& q = rects[k];
   r.name += "; worst: rectangle from (" + std::to_string(q.x) + ", " + std::to_string(q.y) + "), " +
             std::to_string(q.width) + "x" + std::to_string(q.height);
 }
-
-}  // namespace
 
 std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env) {
   const SummedAreaPass pass(env.context, env.tree);
@@ -170,7 +164,7 @@ std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env) {
         const SummedAreaReference reference(map, range.fraction_bits);
 
         const int n = static_cast<int>(rects.size());
-        const int gw = std::min(n, kGridWidth), gh = (n + kGridWidth - 1) / kGridWidth;
+        const int gw = std::min(n, kSummedAreaGridWidth), gh = (n + kSummedAreaGridWidth - 1) / kSummedAreaGridWidth;
         Image want(gw, gh, 5, 0.0f), got(gw, gh, 5, 0.0f);
         std::vector<double> e_float, bounds;
         std::vector<float> o_float;
@@ -179,8 +173,8 @@ std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env) {
         for (int k = 0; k < n; ++k) {
           const SummedAreaSums s = reference.sums(rects[static_cast<size_t>(k)]);
           const SummedAreaQueryResult& r = observed[static_cast<size_t>(k)];
-          const int x = k % kGridWidth, y = k / kGridWidth;
-          for (int d = 0; d < 3; ++d) want.at(x, y, d) = digit(s.fixed_sum, d), got.at(x, y, d) = digit(r.fixed_sum, d);
+          const int x = k % kSummedAreaGridWidth, y = k / kSummedAreaGridWidth;
+          for (int d = 0; d < 3; ++d) want.at(x, y, d) = summed_area_digit(s.fixed_sum, d), got.at(x, y, d) = summed_area_digit(r.fixed_sum, d);
           want.at(x, y, 3) = static_cast<float>(s.count), got.at(x, y, 3) = static_cast<float>(r.count);
           want.at(x, y, 4) = static_cast<float>(s.texels), got.at(x, y, 4) = static_cast<float>(r.texels);
           if (!s.fixed_sum_fits()) {
@@ -198,15 +192,16 @@ std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env) {
         results.push_back({label + ": fixed-point sum mod 2^64 ([0..2] 24/24/16-bit digits), [3] finite texels, "
                                    "[4] texels covered",
                            Tolerance::exact(), compare(want, got, Tolerance::exact())});
-        name_worst_rect(results.back(), rects);
+        name_summed_area_worst_rect(results.back(), rects);
         if (e_float.empty()) continue;
         std::string name = label + ": [0] depth sum, [1] mean vs double, each within its derived bound";
         if (left_out > 0) name += " (" + std::to_string(left_out) + " whose sum exceeds 63 bits left out)";
-        results.push_back(bounded_case(name, e_float, o_float, bounds, 2, in_float));
-        name_worst_rect(results.back(), rects);
+        results.push_back(summed_area_bounded_case(name, e_float, o_float, bounds, 2, in_float));
+        name_summed_area_worst_rect(results.back(), rects);
       }
     }
   }
+  add_summed_area_moments_cases(env, results);
   return results;
 }
 
