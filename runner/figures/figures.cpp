@@ -221,14 +221,14 @@ std::vector<fs::path> write_figures(const Context& context, const SourceTree& tr
   const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png",
                                     out / "sample_table.png", out / "traversal_nodes.png", out / "reuse_groups.png",
                                     out / "pipeline_stages.png", out / "vsm_bleeding.png",
-                                    out / "cascades_splits.png"};
+                                    out / "savsm_bleeding.png", out / "cascades_splits.png"};
   // Every picture is drawn before the first is written: a module that fails leaves the
   // directory as it was (not made, if it was missing), not five new pictures beside two old ones.
   const std::vector<Canvas> canvases{blur_figure(context, tree),      pyramid_figure(context, tree),
                                      region_figure(context, tree),    sample_table_figure(),
                                      traversal_figure(context, tree), reuse_figure(context, tree),
                                      pipeline_stages_figure(context, tree), vsm_bleeding_figure(context, tree),
-                                     cascades_splits_figure()};
+                                     savsm_bleeding_figure(context, tree), cascades_splits_figure()};
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");

@@ -12,7 +12,7 @@
 namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
-// traversal_nodes.png, reuse_groups.png, pipeline_stages.png and vsm_bleeding.png into `out`
+// traversal_nodes.png, reuse_groups.png, pipeline_stages.png, vsm_bleeding.png and savsm_bleeding.png into `out`
 // (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
@@ -22,6 +22,7 @@ Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree);
 
 // Light bleeding on the two-occluder map, without and with the reduction (vsm_figure.cpp).
 Canvas vsm_bleeding_figure(const Context& context, const SourceTree& tree);
+Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree);
 
 // The city camera's frustum from above with its cascades' splits and spheres (cascades_figure.cpp).
 Canvas cascades_splits_figure();

@@ -1,0 +1,97 @@
+// Light bleeding of summed-area variance soft shadows on the two-occluder map
+// (docs/modules/savsm.md): the map, the exact PCF visibility over the filter
+// square savsm.glsl chose for every receiver on the plane behind both
+// occluders (CPU brute force), and what the module computes on the GPU over
+// the same squares — Chebyshev's bound alone, with the bleeding reduction,
+// and with the reduction and the depth-range bound — above their signed error
+// against the exact PCF (red: light that bleeds), with the mean excess light.
+#include <string>
+#include <vector>
+
+#include "core/format.h"
+#include "figures/canvas.h"
+#include "figures/figures.h"
+#include "figures/font.h"
+#include "fixture/texture_fixture.h"
+#include "gl/texture.h"
+#include "passes/minmax_mip_pass.h"
+#include "passes/savsm_pass.h"
+#include "passes/summed_area_pass.h"
+#include "reference/savsm_reference.h"
+
+namespace pn {
+namespace {
+
+// The light over the fixture's depths 0.3 / 0.6 / 0.9: a search square that covers the map and
+// penumbrae of about 20 texels behind the near occluder.
+LightModel two_occluder_light(int n) {
+  LightModel light;
+  light.width = 0.15;
+  light.near_plane = 0.1;
+  light.far_plane = 1.2;
+  light.fov_radians = 1.0;
+  light.map_size = n;
+  return light;
+}
+
+}  // namespace
+
+Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
+  const auto& f = fixtures::kTwoOccluders;
+  const int n = f.size, scale = 3, gap = 10, label = 18, panel = n * scale;
+  const Image map = generate_two_occluders(f);
+  const LightModel light = two_occluder_light(n);
+  const GlObject texture = upload_float_texture(context, map);
+  const MomentsTable table = SummedAreaMomentsPass(context, tree).build(texture, MomentsTableKind::fixed,
+                                                                        unit_range(light.near_plane, light.far_plane));
+  const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(texture, n);
+  const SavsmPass pass(context, tree);
+  std::vector<SavsmReceiver> receivers;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) receivers.push_back({x + 0.5f, y + 0.5f, f.plane_depth});
+  SavsmSettings raw, reduced, bounded;
+  raw.bias = reduced.bias = bounded.bias = f.bias;
+  raw.bleeding_reduction = 0.0f;
+  raw.bound = reduced.bound = false;
+  constexpr int kShown = 3;
+  const SavsmSettings settings[kShown] = {raw, reduced, bounded};
+  Image shown[kShown] = {Image(n, n), Image(n, n), Image(n, n)};
+  Image exact(n, n);
+  double excess[kShown] = {0, 0, 0};
+  for (int i = 0; i < kShown; ++i) {
+    const std::vector<SavsmQueryResult> r = pass.query(table, mip.texture, receivers, light, settings[i]);
+    for (size_t k = 0; k < r.size(); ++k) {
+      shown[i].texels[k] = r[k].visibility;
+      if (i == 0) {  // the same squares in every setting (the min blocker): exact PCF over them
+        const Rect& s = r[k].filter;
+        long lit = 0;
+        for (int y = s.y; y < s.y + s.height; ++y)
+          for (int x = s.x; x < s.x + s.width; ++x) lit += map.at(x, y) < f.plane_depth - f.bias ? 0 : 1;
+        exact.texels[k] = s.width > 0 ? static_cast<float>(lit) / static_cast<float>(s.width * s.height) : 1.0f;
+      }
+      excess[i] += std::max(0.0f, shown[i].texels[k] - exact.texels[k]) / static_cast<double>(r.size());
+    }
+  }
+  const char* names[kShown] = {"SAVSM: Chebyshev alone", "+ linstep(0.2, 1, p)", "+ depth-range bound"};
+  const Font font;
+  const Rgb ink{40, 40, 40};
+  Canvas canvas((2 + kShown) * panel + (3 + kShown) * gap + 60, 2 * (panel + label) + 3 * gap + label, {255, 255, 255});
+  canvas.text(font, gap, gap, "depth map", 13, ink);
+  canvas.grey(map, 0, gap, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
+  canvas.text(font, 2 * gap + panel, gap, "exact PCF, same squares", 13, ink);
+  canvas.grey(exact, 0, 2 * gap + panel, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
+  for (int i = 0; i < kShown; ++i) {
+    const int x = (3 + i) * gap + (2 + i) * panel;
+    canvas.text(font, x, gap, names[i], 13, ink);
+    canvas.grey(shown[i], 0, x, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
+    Image error(n, n);
+    for (size_t k = 0; k < error.texels.size(); ++k) error.texels[k] = shown[i].texels[k] - exact.texels[k];
+    canvas.signed_map(error, 0, x, 2 * gap + panel + 2 * label, scale, 0.25f);
+    canvas.text(font, x, 3 * gap + 2 * panel + 2 * label, "mean excess " + format_number("%.4f", excess[i]), 13, ink);
+  }
+  canvas.text(font, 2 * gap + panel, 2 * gap + panel + label, "error vs exact PCF (red: bleeding)", 13, ink);
+  canvas.colour_bar(font, (2 + kShown) * panel + (3 + kShown) * gap, 2 * gap + panel + 2 * label, 12, panel, 0.25f, 11, ink);
+  return canvas;
+}
+
+}  // namespace pn
