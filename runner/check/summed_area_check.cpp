@@ -35,6 +35,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "check/summed_area_check.h"
@@ -147,7 +148,7 @@ void name_summed_area_worst_rect(CaseResult& r, const std::vector<SummedAreaRect
             std::to_string(q.width) + "x" + std::to_string(q.height);
 }
 
-std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env) {
+std::vector<CaseResult> summed_area_depth_cases(const CheckEnvironment& env) {
   const SummedAreaPass pass(env.context, env.tree);
   const SummedAreaPass wrapping(env.context, env.tree, kWrapFractionBits);
   std::vector<CaseResult> results;
@@ -201,7 +202,12 @@ std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env) {
       }
     }
   }
-  add_summed_area_moments_cases(env, results);
+  return results;
+}
+
+std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env) {
+  std::vector<CaseResult> results = summed_area_depth_cases(env);
+  for (CaseResult& r : summed_area_moments_cases(env)) results.push_back(std::move(r));
   return results;
 }
 

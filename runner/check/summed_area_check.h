@@ -28,7 +28,10 @@ CaseResult summed_area_bounded_case(const std::string& name, const std::vector<d
 // A failing case names the rectangle of its worst element.
 void name_summed_area_worst_rect(CaseResult& r, const std::vector<SummedAreaRect>& rects);
 
-// The moments tables' cases (summed_area_moments_check.cpp), appended to `results`.
-void add_summed_area_moments_cases(const CheckEnvironment& env, std::vector<CaseResult>& results);
+// The check's two halves, callable on their own (the GL tests run each on its broken copies):
+// the depth-sum table's cases (summed_area_check.cpp) and the moments tables'
+// (summed_area_moments_check.cpp). run_summed_area_check runs both.
+std::vector<CaseResult> summed_area_depth_cases(const CheckEnvironment& env);
+std::vector<CaseResult> summed_area_moments_cases(const CheckEnvironment& env);
 
 }  // namespace pn

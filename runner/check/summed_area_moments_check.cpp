@@ -202,7 +202,8 @@ CaseResult refusals_case(const std::string& name, const std::vector<void (*)(con
 
 }  // namespace
 
-void add_summed_area_moments_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
+std::vector<CaseResult> summed_area_moments_cases(const CheckEnvironment& env) {
+  std::vector<CaseResult> results;
   const SummedAreaMomentsPass pass(env.context, env.tree);
   const SummedAreaMomentsPass coarse(env.context, env.tree, kSmallBits);
   const std::string depths = "light depth 20 + 20 v in [1, 100], +Inf where v >= 0.95";
@@ -253,6 +254,7 @@ void add_summed_area_moments_cases(const CheckEnvironment& env, std::vector<Case
        [](const CheckEnvironment&) { SummedAreaMomentsReference(Image(1, 1, 1), {0, 1, 0, 1}, -1); },
        [](const CheckEnvironment&) { SummedAreaMomentsReference(Image(1, 1, 1), {0, 1, 0, 1}, 19); }},
       env));
+  return results;
 }
 
 }  // namespace pn
