@@ -6,6 +6,7 @@
 #include "bench/pipeline_bench.h"
 #include "bench/pyramid_bench.h"
 #include "bench/sweep_bench.h"
+#include "bench/tables_bench.h"
 #include "bench/traversal_bench.h"
 #include "cli/commands.h"
 #include "core/bounds.h"
@@ -32,9 +33,9 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
-  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | cache | cascades")->required();
-  auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
-  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal and pipeline, 3 for sweep)");
+  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | cache | cascades | tables")->required();
+  auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); tables: default 256 512 1024 2048 4096; pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
+  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal, pipeline and tables, 3 for sweep)");
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
   cmd->add_option("--model", opt->pipeline.model, "pipeline: a mesh file (any format Assimp reads) on the ground instead of --scene");
   cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes)")->delimiter(',');
@@ -64,8 +65,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([opt, repeats, sizes, truth_samples, screen, &global, &exit_code] {
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep" &&
-        opt->what != "cache" && opt->what != "cascades")
-      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, cache, cascades");
+        opt->what != "cache" && opt->what != "cascades" && opt->what != "tables")
+      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, cache, cascades, tables");
     if (!opt->methods.empty()) require_list_length("methods", opt->methods.size());
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
@@ -91,6 +92,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       validate_pipeline_bench_setup(opt->pipeline);
     } else if (opt->what == "pyramid") {
       validate_pyramid_bench(opt->sizes, opt->repeats, opt->max_level);
+    } else if (opt->what == "tables") {
+      if (sizes->count() == 0) opt->sizes = {256, 512, 1024, 2048, 4096};
+      if (repeats->count() == 0) opt->repeats = 5;
+      validate_tables_bench(opt->sizes, opt->repeats);
     } else {
       if (repeats->count() > 0) opt->traversal.repeats = opt->repeats;
       validate_traversal_bench_setup(opt->traversal);
@@ -108,6 +113,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const auto rows = bench_pyramid(*context, tree, opt->sizes, opt->repeats, opt->max_level);
       print_pyramid_bench(std::cout, rows);
       results = pyramid_bench_json(rows);
+    } else if (opt->what == "tables") {
+      const auto rows = bench_tables(*context, tree, opt->sizes, opt->repeats);
+      print_tables_bench(std::cout, rows);
+      results = tables_bench_json(rows);
     } else if (opt->what == "sweep") {
       const SweepBench bench = bench_sweep(*context, tree, opt->sweep);
       print_sweep_bench(std::cout, bench);
