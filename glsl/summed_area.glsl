@@ -1,6 +1,7 @@
 // summed_area.glsl — summed-area table of a depth map in 64-bit fixed point
 // with wrap-around arithmetic, and the sum over any texel rectangle from
-// four fetches.
+// four fetches; moments tables (sums of x and x² of the unit depth, fixed
+// point or float) and a rectangle's mean and variance from them.
 //
 // description:
 //   SPEC §5 (summed-area tables for seed 004's variance soft shadows; the
@@ -32,6 +33,18 @@
 //   count, and a node that does not is descended, never summed here.
 //   Rectangles are clipped to the map (origin may lie outside; sizes <= 0
 //   give an empty rectangle); every fetch is inside the table.
+//   Moments tables (seed 004's summed-area VSM): the first two moments of
+//   the unit depth x = clamp((d - near) / (far - near), 0, 1), every texel
+//   counted (a non-finite one is x = 1, the far plane). Fixed point: q =
+//   roundEven(x * 2^B), the table holds sum q and sum q^2 modulo 2^64, so a
+//   rectangle's sums are exact; its variance is taken centred on the
+//   rounded mean c, sum (q - c)^2 exactly in 64 bits, then one division in
+//   float — no cancellation. Error against the true x: the quantisation,
+//   2^-(B+1) a texel (1.9e-6 at B = 18: (far - near) * 1.9e-6 in depth), a
+//   few u of float rounding, and 2 sigma e + e^2 on the variance. Float
+//   (for comparison; Lauritzen's centred fp32 table): sums of x - 1/2 and
+//   (x - 1/2)^2, whose prefixes grow with the map: at 2048^2 a texel's mean
+//   comes back in steps of 1/16.
 //   Build, in two passes of one invocation per line: a row-prefix table R
 //   (R(x+1, y+1) = R(x, y+1) + texel (x, y) of the map; row 0 and column 0
 //   zero), each row r a loop over x of left = pnSummedAreaRowStep(map, r, x,
@@ -53,6 +66,23 @@
 //   uvec4 pnSummedAreaSub(uvec4 a, uvec4 b)      modular: 64-bit difference with borrow
 //   float pnSummedAreaFixedToFloat(uvec2 q)      signed 64-bit q (low, high) times 2^-F
 //   struct PnSummedArea { uvec2 fixedSum; float sum; float count; float texels; }
+//   Moments tables (x the unit depth; unitRange = (offset, scale) = (near, 1 / (far - near))):
+//   float pnSummedAreaUnitDepth(float depth, vec2 unitRange)   x = clamp((d - offset) * scale, 0, 1), 1 if not finite
+//   uint pnSummedAreaMomentQ(float depth, vec2 unitRange)      q = roundEven(x * 2^B)
+//   uvec4 pnSummedAreaMomentsTexel(float depth, vec2 unitRange)       (q, 0, q^2 low, high)
+//   vec4 pnSummedAreaFloatMomentsTexel(float depth, vec2 unitRange)   (x - 1/2, (x - 1/2)^2, 0, 0)
+//   uvec4 pnSummedAreaMomentsRowStep(sampler2D depthMap, vec2 unitRange, int row, int x, uvec4 left)
+//   uvec4 pnSummedAreaMomentsColumnStep(usampler2D rowPrefix, int column, int y, uvec4 above)
+//   vec4 pnSummedAreaFloatMomentsRowStep(sampler2D depthMap, vec2 unitRange, int row, int x, vec4 left)
+//   vec4 pnSummedAreaFloatMomentsColumnStep(sampler2D rowPrefix, int column, int y, vec4 above)
+//   uvec4 pnSummedAreaMomentsAdd(uvec4 a, uvec4 b), pnSummedAreaMomentsSub   two 64-bit words each, modular
+//   uvec4 pnSummedAreaRectMomentSums(usampler2D table, ivec2 origin, ivec2 size, out uint texels)
+//                                                 (sum q low, high, sum q^2 low, high), exact mod 2^64
+//   PnSummedAreaMoments pnSummedAreaRectMoments(usampler2D table, ivec2 origin, ivec2 size)   fixed point
+//   PnSummedAreaMoments pnSummedAreaRectFloatMoments(sampler2D table, ivec2 origin, ivec2 size)   float
+//   struct PnSummedAreaMoments { float mean; float variance; float texels; }   of x; 0, 0, 0 when empty
+//   Moments tables: RGBA32UI (fixed) or RG32F (float; RGBA32F on ES), (N+1)×(M+1), built like the
+//   depth-sum table by passes/summed_area_build.comp (PN_SUMMED_AREA_BUILD_KIND).
 //   depthMap: linear light depth in .r (R32F), N×M texels, 1 <= N, M <=
 //   PN_SUMMED_AREA_MAX_SIDE. rowPrefix and table: RGBA32UI, (N+1)×(M+1) —
 //   written through a writeonly rgba32ui image, read through a usampler2D
@@ -63,7 +93,9 @@
 // options:
 //   PN_SUMMED_AREA_FRACTION_BITS   F, the fixed-point step 2^-F (20)
 //   PN_SUMMED_AREA_MAX_SIDE        loop bound: largest map side (16384)
-//   (both in summed_area.h, shared with the runner)
+//   PN_SUMMED_AREA_MOMENT_BITS     B, the moments' step 2^-B of x (18, at most 18)
+//   (in summed_area.h, shared with the runner)
+//   PN_ON_TEXEL_FETCH()            called at each table fetch of a query (empty; a check counts fetches)
 //
 // cost: build 2 passes, one fetch, a 64-bit add and a store per table texel
 //   (16 bytes a texel: 16 MiB at 1024², plus as much for the row-prefix
@@ -270,11 +302,14 @@ float pnSummedAreaSignedToFloat(uvec2 q) {
 }
 
 // Mean and variance of x over a rectangle from the fixed-point table: S1 = sum q, S2 = sum q^2
-// (exact modulo 2^64), n texels. c = the rounded mean of q (an integer <= 2^B), then exactly,
-// modulo 2^64,
+// (exact modulo 2^64), n texels. c = the rounded mean of q (an integer <= 2^B, within
+// rho = 1/2 + 7u 2^B of the mean: float(S1) / n is off by 2u + 5u, GLSL's division 2.5 ulp),
+// then exactly, modulo 2^64,
 //   C = S2 - 2 c S1 + n c^2 = sum (q - c)^2        (in [0, 2^63): summed_area.h)
-//   D = S1 - n c            = sum (q - c)          (|D| <= 2 n)
-// and in float var(q) = C / n - (D / n)^2, with no cancellation beyond (D / n)^2 <= 4.
+//   D = S1 - n c            = sum (q - c)          (|D| <= rho n, 0.61 n at B = 18)
+// and in float var(q) = C / n - (D / n)^2, with no cancellation beyond (D / n)^2 <= 0.38:
+// within 8u var(q) + 20u rho^2 (u = 2^-24), the mean within u mean(q) + 6u rho
+// (docs/modules/summed_area.md, "Moments tables").
 uvec4 pnSummedAreaRectMomentSums(usampler2D table, ivec2 origin, ivec2 size, out uint texels) {
   ivec4 c = pnSummedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
   texels = uint((c.z - c.x) * (c.w - c.y));
