@@ -9,9 +9,8 @@
 #include <vector>
 
 #include "core/format.h"
-#include "figures/canvas.h"
+#include "figures/bleeding_panels.h"
 #include "figures/figures.h"
-#include "figures/font.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
 #include "passes/minmax_mip_pass.h"
@@ -38,7 +37,7 @@ LightModel two_occluder_light(int n) {
 
 Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   const auto& f = fixtures::kTwoOccluders;
-  const int n = f.size, scale = 3, gap = 10, label = 18, panel = n * scale;
+  const int n = f.size;
   const Image map = generate_two_occluders(f);
   const LightModel light = two_occluder_light(n);
   const GlObject texture = upload_float_texture(context, map);
@@ -73,25 +72,10 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
     }
   }
   const char* names[kShown] = {"SAVSM: Chebyshev alone", "+ linstep(0.2, 1, p)", "+ depth-range bound"};
-  const Font font;
-  const Rgb ink{40, 40, 40};
-  Canvas canvas((2 + kShown) * panel + (3 + kShown) * gap + 60, 2 * (panel + label) + 3 * gap + label, {255, 255, 255});
-  canvas.text(font, gap, gap, "depth map", 13, ink);
-  canvas.grey(map, 0, gap, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
-  canvas.text(font, 2 * gap + panel, gap, "exact PCF, same squares", 13, ink);
-  canvas.grey(exact, 0, 2 * gap + panel, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
-  for (int i = 0; i < kShown; ++i) {
-    const int x = (3 + i) * gap + (2 + i) * panel;
-    canvas.text(font, x, gap, names[i], 13, ink);
-    canvas.grey(shown[i], 0, x, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
-    Image error(n, n);
-    for (size_t k = 0; k < error.texels.size(); ++k) error.texels[k] = shown[i].texels[k] - exact.texels[k];
-    canvas.signed_map(error, 0, x, 2 * gap + panel + 2 * label, scale, 0.25f);
-    canvas.text(font, x, 3 * gap + 2 * panel + 2 * label, "mean excess " + format_number("%.4f", excess[i]), 13, ink);
-  }
-  canvas.text(font, 2 * gap + panel, 2 * gap + panel + label, "error vs exact PCF (red: bleeding)", 13, ink);
-  canvas.colour_bar(font, (2 + kShown) * panel + (3 + kShown) * gap, 2 * gap + panel + 2 * label, 12, panel, 0.25f, 11, ink);
-  return canvas;
+  std::vector<BleedingPanel> panels;
+  for (int i = 0; i < kShown; ++i)
+    panels.push_back({names[i], shown[i], "mean excess " + format_number("%.4f", excess[i])});
+  return bleeding_panels(map, exact, "exact PCF, same squares", panels);
 }
 
 }  // namespace pn

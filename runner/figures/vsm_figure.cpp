@@ -7,9 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "figures/canvas.h"
+#include "figures/bleeding_panels.h"
 #include "figures/figures.h"
-#include "figures/font.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
@@ -41,7 +40,7 @@ Image plane_visibility(const Context& context, const SourceTree& tree, const Ima
 
 Canvas vsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   const auto& f = fixtures::kTwoOccluders;
-  const int n = f.size, scale = 3, gap = 10, label = 18, panel = n * scale;
+  const int n = f.size;
   const Image map = generate_two_occluders(f);
   VsmParams vsm;
   vsm.near_depth = 0.0f;
@@ -51,29 +50,11 @@ Canvas vsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   Image exact(n, n);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) exact.at(x, y) = static_cast<float>(gaussian_pcf_visibility(map, x, y, f.plane_depth - f.bias, vsm.blur));
-  constexpr int kShown = 4;
-  const Image shown[kShown] = {plane_visibility(context, tree, map, vsm, 1), plane_visibility(context, tree, map, vsm, 2),
-                               plane_visibility(context, tree, map, vsm, 0), plane_visibility(context, tree, map, evsm, 0)};
-  const char* names[kShown] = {"VSM: Chebyshev alone", "+ linstep(0.2, 1, p)", "+ depth-range bound",
-                               "EVSM-4 (40, 5), both"};
-  const Font font;
-  const Rgb ink{40, 40, 40};
-  Canvas canvas((2 + kShown) * panel + (3 + kShown) * gap + 60, 2 * (panel + label) + 3 * gap, {255, 255, 255});
-  canvas.text(font, gap, gap, "depth map", 13, ink);
-  canvas.grey(map, 0, gap, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
-  canvas.text(font, 2 * gap + panel, gap, "exact PCF", 13, ink);
-  canvas.grey(exact, 0, 2 * gap + panel, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
-  for (int i = 0; i < kShown; ++i) {
-    const int x = (3 + i) * gap + (2 + i) * panel;
-    canvas.text(font, x, gap, names[i], 13, ink);
-    canvas.grey(shown[i], 0, x, gap + label, scale, 0.0f, 1.0f, {220, 0, 180});
-    Image error(n, n);
-    for (size_t k = 0; k < error.texels.size(); ++k) error.texels[k] = shown[i].texels[k] - exact.texels[k];
-    canvas.signed_map(error, 0, x, 2 * gap + panel + 2 * label, scale, 0.25f);
-  }
-  canvas.text(font, 2 * gap + panel, 2 * gap + panel + label, "error vs exact PCF (red: bleeding)", 13, ink);
-  canvas.colour_bar(font, (2 + kShown) * panel + (3 + kShown) * gap, 2 * gap + panel + 2 * label, 12, panel, 0.25f, 11, ink);
-  return canvas;
+  return bleeding_panels(map, exact, "exact PCF",
+                         {{"VSM: Chebyshev alone", plane_visibility(context, tree, map, vsm, 1), ""},
+                          {"+ linstep(0.2, 1, p)", plane_visibility(context, tree, map, vsm, 2), ""},
+                          {"+ depth-range bound", plane_visibility(context, tree, map, vsm, 0), ""},
+                          {"EVSM-4 (40, 5), both", plane_visibility(context, tree, map, evsm, 0), ""}});
 }
 
 }  // namespace pn

@@ -7,6 +7,7 @@
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
 #include "gl/texture.h"
+#include "scene/light_block.h"
 
 namespace pn::glsl {
 #include "passes/pcss_regions_query.h"
@@ -56,10 +57,8 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
   const GlObject entries = make_float_texture(*context_, w, h, 4), rects = make_float_texture(*context_, w, h, 4);
   const GlObject windows = make_float_texture(*context_, w, h, 4), keys = make_float_texture(*context_, w, h, 4);
   {
-    const glsl::PnPcssRegionsQueryParams block{static_cast<float>(light.width), static_cast<float>(light.near_plane),
-                                               static_cast<float>(light.near_plane_width()),
-                                               static_cast<float>(light.map_size), static_cast<float>(light.spread),
-                                               static_cast<float>(light.texel_world)};
+    glsl::PnPcssRegionsQueryParams block{};
+    set_light_fields(block, light);
     PassBindings bind(*context_);
     bind.uniform(block);
     bind.texture(PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING, pyramid.texture);

@@ -7,6 +7,7 @@
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
 #include "gl/texture.h"
+#include "scene/light_block.h"
 
 namespace pn::glsl {
 #include "passes/savsm_params.h"
@@ -23,12 +24,7 @@ namespace {
 glsl::PnSavsmParams make_block(const MomentsTable& table, const LightModel& light, const SavsmSettings& s) {
   s.validate();
   glsl::PnSavsmParams b{};
-  b.lightWidth = static_cast<float>(light.width);
-  b.lightNear = static_cast<float>(light.near_plane);
-  b.lightNearPlaneWidth = static_cast<float>(light.near_plane_width());
-  b.mapSize = static_cast<float>(light.map_size);
-  b.lightSpread = static_cast<float>(light.spread);
-  b.lightTexelWorld = static_cast<float>(light.texel_world);
+  set_light_fields(b, light);
   b.unitRange = {table.range.offset, table.range.scale};
   b.bias = s.bias;
   b.filterScale = s.filter_scale;

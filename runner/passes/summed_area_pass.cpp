@@ -53,6 +53,39 @@ void texture_size(const Context& context, const GlObject& texture, int& width, i
   width = w, height = h;
 }
 
+// The two build dispatches (summed_area_build.comp): one invocation per row of the table into
+// the row-prefix table, then one per column into the table.
+// The table is tw × th texels.
+void build_lines(const Context& context, const ComputeProgram& program, const GlObject& depth_map,
+                 const GlObject& row_prefix, const GlObject& table, int tw, int th, GLenum format,
+                 glsl::vec2 unit_range) {
+  {
+    PassBindings bind(context);
+    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS, 0, unit_range});
+    bind.texture(PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map);
+    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix, GL_WRITE_ONLY, format);
+    program.dispatch(th, 1);
+  }
+  PassBindings bind(context);
+  bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS, 0, unit_range});
+  bind.texture(PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix);
+  bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table, GL_WRITE_ONLY, format);
+  program.dispatch(tw, 1);
+}
+
+// The rectangles as a query image (origin x, y, width, height), each coordinate within ±2^24
+// (they travel as floats); throws Error otherwise.
+Image rect_query_image(const std::vector<SummedAreaRect>& rects) {
+  std::vector<Query> q;
+  for (const SummedAreaRect& r : rects) {
+    for (int v : {r.x, r.y, r.width, r.height})
+      if (std::abs(v) > (1 << 24))
+        throw Error("summed-area query rectangle coordinate " + std::to_string(v) + ": expected within ±2^24");
+    q.push_back({float(r.x), float(r.y), float(r.width), float(r.height)});
+  }
+  return query_image(q);
+}
+
 // The depth map's size, refused unless 1 to kSummedAreaMaxSide texels a side.
 void table_map_size(const Context& context, const GlObject& depth_map, int& width, int& height) {
   texture_size(context, depth_map, width, height);
@@ -79,34 +112,14 @@ SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
   const int tw = table.width + 1, th = table.height + 1;
   const GlObject row_prefix = make_uint4_texture(*context_, tw, th);
   table.texture = make_uint4_texture(*context_, tw, th);
-  {
-    PassBindings bind(*context_);
-    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS, 0, {0.0f, 1.0f}});
-    bind.texture(PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map);
-    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix, GL_WRITE_ONLY, GL_RGBA32UI);
-    build_.dispatch(th, 1);  // one invocation per row of the table
-  }
-  {
-    PassBindings bind(*context_);
-    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS, 0, {0.0f, 1.0f}});
-    bind.texture(PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix);
-    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table.texture, GL_WRITE_ONLY, GL_RGBA32UI);
-    build_.dispatch(tw, 1);  // one invocation per column
-  }
+  build_lines(*context_, build_, depth_map, row_prefix, table.texture, tw, th, GL_RGBA32UI, {0.0f, 1.0f});
   return table;
 }
 
 std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& table,
                                                          const std::vector<SummedAreaRect>& rects) const {
   if (rects.empty()) return {};
-  std::vector<Query> q;
-  for (const SummedAreaRect& r : rects) {
-    for (int v : {r.x, r.y, r.width, r.height})
-      if (std::abs(v) > (1 << 24))
-        throw Error("summed-area query rectangle coordinate " + std::to_string(v) + ": expected within ±2^24");
-    q.push_back({float(r.x), float(r.y), float(r.width), float(r.height)});
-  }
-  const Image rect_image = query_image(q);
+  const Image rect_image = rect_query_image(rects);
   const int w = rect_image.width, h = rect_image.height;
   const GlObject rect_texture = upload_float_texture(*context_, rect_image);
   const GlObject fixed = make_uint4_texture(*context_, w, h);
@@ -193,36 +206,15 @@ MomentsTable SummedAreaMomentsPass::build(const GlObject& depth_map, MomentsTabl
   const ComputeProgram& program = build_.get(defines(kind, "PN_SUMMED_AREA_BUILD_KIND"));
   const GlObject row_prefix = make();
   table.texture = make();
-  const glsl::vec2 unit{range.offset, range.scale};
-  {
-    PassBindings bind(*context_);
-    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS, 0, unit});
-    bind.texture(PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map);
-    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix, GL_WRITE_ONLY, format);
-    program.dispatch(th, 1);
-  }
-  {
-    PassBindings bind(*context_);
-    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS, 0, unit});
-    bind.texture(PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix);
-    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table.texture, GL_WRITE_ONLY, format);
-    program.dispatch(tw, 1);
-  }
+  build_lines(*context_, program, depth_map, row_prefix, table.texture, tw, th, format, {range.offset, range.scale});
   return table;
 }
 
 std::vector<MomentsQueryResult> SummedAreaMomentsPass::query(const MomentsTable& table,
                                                              const std::vector<SummedAreaRect>& rects) const {
   if (rects.empty()) return {};
-  std::vector<Query> q;
-  for (const SummedAreaRect& r : rects) {
-    for (int v : {r.x, r.y, r.width, r.height})
-      if (std::abs(v) > (1 << 24))
-        throw Error("summed-area query rectangle coordinate " + std::to_string(v) + ": expected within ±2^24");
-    q.push_back({float(r.x), float(r.y), float(r.width), float(r.height)});
-  }
   const bool fixed = table.kind == MomentsTableKind::fixed;
-  const Image rect_image = query_image(q);
+  const Image rect_image = rect_query_image(rects);
   const int w = rect_image.width, h = rect_image.height;
   const GlObject rect_texture = upload_float_texture(*context_, rect_image);
   const GlObject sums = fixed ? make_uint4_texture(*context_, w, h) : GlObject();

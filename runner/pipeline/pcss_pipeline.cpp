@@ -11,6 +11,7 @@
 #include "reference/depth_pyramid_reference.h"
 #include "sampling/poisson_disk.h"
 #include "sampling/sample_table.h"
+#include "scene/light_block.h"
 
 namespace pn::glsl {
 #include "passes/pcss_params.h"
@@ -35,12 +36,7 @@ constexpr int kScanBandRows = 128;  // pcss_scan.comp: 128 × ceil(8192 / 16) < 
 
 PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   PcssBlock b{};
-  b.lightWidth = static_cast<float>(light.width);
-  b.lightNear = static_cast<float>(light.near_plane);
-  b.lightNearPlaneWidth = static_cast<float>(light.near_plane_width());
-  b.mapSize = static_cast<float>(light.map_size);
-  b.lightSpread = static_cast<float>(light.spread);
-  b.lightTexelWorld = static_cast<float>(light.texel_world);
+  set_light_fields(b, light);
   b.bias = s.bias;
   b.filterScale = s.filter_scale;
   b.refineIterations = s.refine_iterations;
