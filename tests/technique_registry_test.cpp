@@ -55,3 +55,19 @@ TEST_CASE("technique registry: vsm and evsm take their own keys and refuse value
   CHECK_THROWS_WITH(pn::parse_technique("vsm:colour=red"),
                     Catch::StartsWith("method 'vsm:colour=red': unknown setting 'colour': expected radius, sigma"));
 }
+
+TEST_CASE("technique registry: savsm and its ablations take their own keys and refuse bad values (negative)") {
+  for (const char* name : {"savsm", "savsm-table", "savsm-float", "savsm-raw"}) CHECK(pn::parse_technique(name)->name() == name);
+  const char* spec = "savsm:bias=0.05:scale=2:min-variance=1e-5:bleeding=0.3:blocker=table:bound=off:table=float";
+  CHECK(pn::parse_technique(spec)->name() == spec);
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:table=half"), "method 'savsm:table=half': table=half: expected fixed or float");
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:blocker=mean"),
+                    "method 'savsm:blocker=mean': blocker=mean: expected table or min");
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:bound=1"), "method 'savsm:bound=1': bound=1: expected on or off");
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:bleeding=1"),
+                    Catch::StartsWith("method 'savsm:bleeding=1': savsm bleeding reduction 1: expected"));
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:scale=-1"),
+                    "method 'savsm:scale=-1': savsm filter scale -1: expected a finite number >= 0");
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:radius=3"),
+                    Catch::StartsWith("method 'savsm:radius=3': unknown setting 'radius': expected bias, scale"));
+}
