@@ -27,7 +27,7 @@ struct CascadesBenchSetup {
   std::vector<int> sizes{256, 512, 1024, 2048};      // map sizes at `count`
   std::vector<double> ks{1.0, 2.0, 4.0};             // first-split enlargements at `count`, `size`
   int count = 3, size = 1024;                        // where the other sweeps hold still
-  std::vector<std::string> methods{"pcf", "vsm", "vsm:radius=0", "fast"};
+  std::vector<std::string> methods{"pcf", "vsm", "vsm:radius=0", "fast", "savsm"};
   std::vector<std::string> path_methods{"pcf", "fast"};  // along the camera path
   int path_frames = 12;
   int screen = 256;
