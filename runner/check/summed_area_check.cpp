@@ -1,4 +1,5 @@
-// Cases of the summed_area check: glsl/summed_area.glsl's table, built by
+// Cases of the summed_area check (the depth-sum table's half; the moments
+// tables' cases: summed_area_moments_check.cpp): glsl/summed_area.glsl's table, built by
 // passes/summed_area_build.comp and read by passes/summed_area_query.comp,
 // against summed_area_reference (every rectangle summed texel by texel — the
 // raw depths in double, the fixed-point values in 64-bit integers; never a
