@@ -33,7 +33,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_poisson_pcss_check},
       {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
        &run_truth_check},
-      {"summed_area", "64-bit fixed-point summed-area table: rectangle sums vs direct box sums (exact), float sums in bound",
+      {"summed_area", "64-bit fixed-point summed-area tables: depth and moment sums vs direct box sums (exact), float "
+                      "sums, means and variances in bound; the float moments table's errors beside the fixed one's",
        &run_summed_area_check},
       {"minmax_mip", "aligned min/max mip chain levels (padded to a power of two) vs node scans (exact)",
        &run_minmax_mip_check},
