@@ -120,24 +120,15 @@ float summed_area_digit(std::uint64_t v, int which) {
 CaseResult summed_area_bounded_case(const std::string& name, const std::vector<double>& expected,
                                     const std::vector<float>& observed, const std::vector<double>& bounds, int channels,
                                     const std::vector<int>& queries) {
-  Comparison c;
-  c.pass = true;
-  double worst_ratio = -1.0, worst_bound = 0.0, square_sum = 0.0;
+  BoundedElements elements;
   for (size_t i = 0; i < expected.size(); ++i) {
-    const double e = expected[i], o = observed[i], b = bounds[i];
-    const double err = std::isfinite(o) ? std::fabs(o - e) : std::numeric_limits<double>::infinity();
-    const double ratio = b > 0.0 ? err / b : (err > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
-    c.pass = c.pass && err <= b;
-    square_sum += err * err;
-    if (ratio > worst_ratio) {
-      worst_ratio = ratio, worst_bound = b;
-      const int k = queries[i / static_cast<size_t>(channels)];
-      c.x = k % kSummedAreaGridWidth, c.y = k / kSummedAreaGridWidth, c.channel = static_cast<int>(i) % channels;
-      c.expected = static_cast<float>(e), c.observed = static_cast<float>(o), c.worst_error = err;
-    }
+    const int k = queries[i / static_cast<size_t>(channels)];
+    elements.add(expected[i], observed[i], bounds[i], k % kSummedAreaGridWidth, k / kSummedAreaGridWidth,
+                 static_cast<int>(i) % channels);
   }
-  c.rmse = expected.empty() ? 0.0 : std::sqrt(square_sum / static_cast<double>(expected.size()));
-  return {name, Tolerance::absolute(worst_bound), c};
+  CaseResult r{name, {}, {}};
+  r.comparison = compare_bounded(elements, r.tolerance);
+  return r;
 }
 
 void name_summed_area_worst_rect(CaseResult& r, const std::vector<SummedAreaRect>& rects) {
