@@ -191,15 +191,6 @@ class MomentsCache {
   std::map<std::tuple<int, int, int, int>, SavsmMoments> cache_;
 };
 
-// The exact PCF visibility over a rectangle: the share of its texels that do not occlude t.
-double pcf_visibility(const Image& map, const Rect& r, float t) {
-  long lit = 0, all = 0;
-  for (int y = r.y; y < r.y + r.height; ++y)
-    for (int x = r.x; x < r.x + r.width; ++x, ++all)
-      if (!(map.at(x, y) < t)) ++lit;
-  return all > 0 ? static_cast<double>(lit) / static_cast<double>(all) : 1.0;
-}
-
 struct Cases {
   BoundedElements search, blocker, side, filter, mean, variance, visibility, fetches, upper;
   long search_ties = 0, filter_ties = 0, ambiguous = 0, with_filter = 0;
@@ -289,7 +280,7 @@ void receiver_cases(const Image& map, MomentsCache& moments, const LightModel& l
   // as the far plane: for receivers before it.
   if (!s.bound && s.bleeding_reduction == 0.0f && r.depth < kFar) {
     const double slack = (p_hi - p_lo) + 32 * kU;  // the table's error may lower it by this much
-    c.upper.add(0.0, static_cast<float>(std::min(0.0, g.visibility - pcf_visibility(map, filter, t) + slack)), 0.0, x, y);
+    c.upper.add(0.0, static_cast<float>(std::min(0.0, g.visibility - savsm_pcf_visibility(map, filter, t) + slack)), 0.0, x, y);
   }
 }
 

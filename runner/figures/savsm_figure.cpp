@@ -62,11 +62,7 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
     for (size_t k = 0; k < r.size(); ++k) {
       shown[i].texels[k] = r[k].visibility;
       if (i == 0) {  // the same squares in every setting (the min blocker): exact PCF over them
-        const Rect& s = r[k].filter;
-        long lit = 0;
-        for (int y = s.y; y < s.y + s.height; ++y)
-          for (int x = s.x; x < s.x + s.width; ++x) lit += map.at(x, y) < f.plane_depth - f.bias ? 0 : 1;
-        exact.texels[k] = s.width > 0 ? static_cast<float>(lit) / static_cast<float>(s.width * s.height) : 1.0f;
+        exact.texels[k] = static_cast<float>(savsm_pcf_visibility(map, r[k].filter, f.plane_depth - f.bias));
       }
       excess[i] += std::max(0.0f, shown[i].texels[k] - exact.texels[k]) / static_cast<double>(r.size());
     }

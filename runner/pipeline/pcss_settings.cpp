@@ -169,11 +169,7 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   else if (key == "occlusion") s.occlusion = estimator();
   else if (key == "blocker-samples") s.blocker_samples = integer();
   else if (key == "filter-samples") s.filter_samples = integer();
-  else {
-    std::string known;
-    for (const std::string& k : pcss_setting_keys()) known += (known.empty() ? "" : ", ") + k;
-    throw Error("method '" + s.name + "': unknown setting '" + key + "': expected " + known);
-  }
+  else throw unknown_setting(s.name, key, pcss_setting_keys());
 }
 
 }  // namespace pn

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/format.h"
+#include "reference/pcf_reference.h"
 #include "reference/pcss_regions_reference.h"  // pcss_square
 
 namespace pn {
@@ -114,6 +115,10 @@ SavsmEstimate savsm_reference(const Image& depth, const LightModel& light, const
   return e;
 }
 
+double savsm_pcf_visibility(const Image& depth, const Rect& rect, float t) {
+  return 1.0 - pcf_reference(depth, {rect.x, rect.y, rect.width, rect.height}, t, 0.0).occluded_fraction();
+}
+
 int savsm_square_fetches(const Rect& rect, int n) {
   const Rect c = mip_square_cover(rect, n);
   if (c.width <= 0 || c.height <= 0) return 0;
@@ -129,8 +134,7 @@ int savsm_square_fetches(const Rect& rect, int n) {
 
 int savsm_fetches(const SavsmEstimate& e, const SavsmSettings& settings, int n) {
   if (!e.surface) return 0;
-  const bool mip_search = settings.bound || settings.blocker == SavsmBlocker::min;
-  int fetches = mip_search ? savsm_square_fetches(e.search, n) : 0;
+  int fetches = settings.reads_mip() ? savsm_square_fetches(e.search, n) : 0;
   if (e.lit_by_bound) return fetches;
   if (settings.blocker == SavsmBlocker::table) fetches += kSavsmRectFetches;
   if (!e.has_blocker || empty(e.filter)) return fetches;

@@ -31,6 +31,9 @@ struct SavsmSettings {
   SavsmBlocker blocker = SavsmBlocker::min;  // the truth favours it (docs/modules/savsm.md)
   bool bound = true;  // the mip chain's lit test over the search square and depth-range bound over the filter
 
+  // Whether the module reads the min/max mip chain: for the bound, or for the min blocker.
+  bool reads_mip() const { return bound || blocker == SavsmBlocker::min; }
+
   // Throws Error naming the setting and its range: bias, scale finite >= 0, min variance finite
   // >= 0, bleeding in [0, PN_VSM_MAX_BLEEDING_REDUCTION].
   void validate() const;
@@ -78,6 +81,10 @@ struct SavsmEstimate {
 SavsmEstimate savsm_reference(const Image& depth, const LightModel& light, const SavsmReceiver& receiver,
                               const SavsmSettings& settings, const Rect* search = nullptr,
                               const Rect* filter = nullptr);
+
+// The exact PCF visibility over a rectangle for the float threshold t: 1 − pcf_reference's
+// occluded fraction (a texel occludes when finite and below t); 1 for an empty rectangle.
+double savsm_pcf_visibility(const Image& depth, const Rect& rect, float t);
 
 // The texel fetches the module makes for a receiver whose path the estimate describes, on an
 // n×n map: 4 a table rectangle, one a mip node covering a square (mip_square_cover's nodes, at

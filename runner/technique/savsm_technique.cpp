@@ -27,8 +27,6 @@ class SavsmConfig : public TechniqueConfig {
   SavsmTechniqueSettings settings_;
 };
 
-bool reads_mip(const SavsmSettings& s) { return s.bound || s.blocker == SavsmBlocker::min; }
-
 }  // namespace
 
 void SavsmTechniqueSettings::validate() const {
@@ -57,11 +55,7 @@ void set_savsm_setting(SavsmTechniqueSettings& s, const std::string& key, const 
   else if (key == "blocker") s.savsm.blocker = choice("table", "min") ? SavsmBlocker::table : SavsmBlocker::min;
   else if (key == "bound") s.savsm.bound = choice("on", "off");
   else if (key == "table") s.table = choice("fixed", "float") ? MomentsTableKind::fixed : MomentsTableKind::floating;
-  else {
-    std::string known;
-    for (const std::string& k : savsm_setting_keys()) known += (known.empty() ? "" : ", ") + k;
-    throw Error("method '" + s.name + "': unknown setting '" + key + "': expected " + known);
-  }
+  else throw unknown_setting(s.name, key, savsm_setting_keys());
 }
 
 std::unique_ptr<TechniqueConfig> savsm_config(const char* name,
@@ -89,7 +83,7 @@ TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool) const {
   clock.stage("table");
   MinMaxMipChain own;
   const GlObject* mip = &passes_->no_mip;
-  if (reads_mip(settings_.savsm)) {
+  if (settings_.savsm.reads_mip()) {
     if (inputs.mip != nullptr && inputs.mip->map_size == n) {
       mip = &inputs.mip->texture;
     } else {

@@ -1,10 +1,11 @@
 // A technique's override value (`name:key=value`) read as a number, with the one
 // error every technique gives for a value that is not one: "method 'NAME': KEY=VALUE:
-// expected an integer" (or "a number").
+// expected an integer" (or "a number"); and the one error for a key it does not own.
 #pragma once
 
 #include <exception>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 
@@ -33,6 +34,13 @@ inline float setting_real(const std::string& method, const std::string& key, con
   } catch (const std::exception&) {
   }
   throw bad_setting_value(method, key, value, "a number");
+}
+
+// "method 'NAME': unknown setting 'KEY': expected k1, k2, …" (`keys`: the technique's own).
+inline Error unknown_setting(const std::string& method, const std::string& key, const std::vector<std::string>& keys) {
+  std::string known;
+  for (const std::string& k : keys) known += (known.empty() ? "" : ", ") + k;
+  return Error("method '" + method + "': unknown setting '" + key + "': expected " + known);
 }
 
 }  // namespace pn

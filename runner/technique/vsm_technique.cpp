@@ -61,11 +61,7 @@ void set_vsm_setting(VsmTechniqueSettings& s, const std::string& key, const std:
   else if (key == "bleeding") s.params.bleeding_reduction = real();
   else if (key == "exponent") s.params.positive_exponent = real();
   else if (key == "negative-exponent") s.params.negative_exponent = real();
-  else {
-    std::string known;
-    for (const std::string& k : vsm_setting_keys()) known += (known.empty() ? "" : ", ") + k;
-    throw Error("method '" + s.name + "': unknown setting '" + key + "': expected " + known);
-  }
+  else throw unknown_setting(s.name, key, vsm_setting_keys());
 }
 
 std::unique_ptr<TechniqueConfig> vsm_config(VsmKind kind, const char* name) {
