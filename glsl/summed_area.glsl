@@ -166,16 +166,23 @@ uvec4 pnSummedAreaSub(uvec4 a, uvec4 b) {
   return uvec4(pnSummedAreaSub64(a.xy, b.xy), a.zw - b.zw);
 }
 
-float pnSummedAreaFixedToFloat(uvec2 q) {
+// A non-negative 64-bit number (< 2^64, read unsigned) as a float: two conversions and one
+// addition of non-negative terms, relative error <= 2u + u^2, u = 2^-24.
+float pnSummedAreaUnsignedToFloat(uvec2 q) {
+  return float(q.y) * pnSummedAreaPow2(32) + float(q.x);
+}
+
+// A two's complement 64-bit number as a float: its magnitude (-2^63 stays 2^63, read unsigned)
+// converted, the sign put back; the same relative error.
+float pnSummedAreaSignedToFloat(uvec2 q) {
   bool negative = q.y >= 0x80000000u;
-  if (negative) {  // magnitude of a two's complement number (-2^63 stays 2^63, read unsigned)
-    q.x = ~q.x + 1u;
-    q.y = ~q.y + (q.x == 0u ? 1u : 0u);
-  }
-  // Two conversions and one addition of non-negative terms: relative error <= 2u + u^2, u = 2^-24.
-  float magnitude = float(q.y) * pnSummedAreaPow2(32) + float(q.x);
-  float value = magnitude * pnSummedAreaPow2(-PN_SUMMED_AREA_FRACTION_BITS);
-  return negative ? -value : value;
+  if (negative) q = pnSummedAreaSub64(uvec2(0u), q);
+  float magnitude = pnSummedAreaUnsignedToFloat(q);
+  return negative ? -magnitude : magnitude;
+}
+
+float pnSummedAreaFixedToFloat(uvec2 q) {
+  return pnSummedAreaSignedToFloat(q) * pnSummedAreaPow2(-PN_SUMMED_AREA_FRACTION_BITS);  // exact scaling
 }
 
 ivec2 pnSummedAreaTableSize(ivec2 mapSize) {
@@ -287,18 +294,6 @@ uvec2 pnSummedAreaMul64(uvec2 a, uint m) {
   umulExtended(a.x, m, r.y, r.x);
   r.y += a.y * m;
   return r;
-}
-
-// A non-negative 64-bit number (< 2^64, read unsigned) as a float: relative error <= 2u + u^2.
-float pnSummedAreaUnsignedToFloat(uvec2 q) {
-  return float(q.y) * pnSummedAreaPow2(32) + float(q.x);
-}
-
-float pnSummedAreaSignedToFloat(uvec2 q) {
-  bool negative = q.y >= 0x80000000u;
-  if (negative) q = pnSummedAreaSub64(uvec2(0u), q);
-  float magnitude = pnSummedAreaUnsignedToFloat(q);
-  return negative ? -magnitude : magnitude;
 }
 
 // Mean and variance of x over a rectangle from the fixed-point table: S1 = sum q, S2 = sum q^2
