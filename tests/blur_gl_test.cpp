@@ -20,12 +20,12 @@ namespace {
 
 std::vector<pn::CaseResult> blur_cases(const fs::path& root, const pn::CheckOptions& options = {}) {
   const pn::SourceTree tree(root);
-  return pn::run_blur_check({pn::test::gl_context(), tree, options});
+  return pn::find_module_check("blur").run({pn::test::gl_context(), tree, options});
 }
 
 }  // namespace
 
-TEST_CASE("blur pass equals its reference on every fixture, size and parameter set, adaptive radius included") {
+TEST_CASE("blur pass equals its reference on every fixture, size and parameter set, adaptive radius included", "[backend]") {
   const auto results = blur_cases(PENUMBRA_GLSL_DIR);
   // 6 fixed-radius sets, 5 adaptive ones with a radius-0 case each; 2 sets on 2 and 4 channels, a case a channel.
   REQUIRE(results.size() == (6 + 2 * 5 + 2 * (2 + 4)) * std::size(pn::fixtures::kTextureFixtures) *
@@ -107,14 +107,14 @@ TEST_CASE("negative: a copy of blur.glsl that sanitises only the first channel f
   CHECK(later_nonfinite >= 4);  // 64x64 and 100x37 at least, 2 and 4 channels
 }
 
-TEST_CASE("the bundle of blur.glsl, #line markers and all, compiles with the GL driver") {
+TEST_CASE("the bundle of blur.glsl, #line markers and all, compiles with the GL driver", "[backend]") {
   for (const char* module : {"blur.glsl", "passes/blur.comp"}) {
     INFO(module);
     CHECK(pn::test::driver_compiles_bundle(module));
   }
 }
 
-TEST_CASE("negative: GL errors surface as pn::Error naming the operation") {
+TEST_CASE("negative: GL errors surface as pn::Error naming the operation", "[backend]") {
   const auto& context = pn::test::gl_context();
   context.gl().BindTexture(0x1234, 0);  // not a texture target: GL_INVALID_ENUM
   CHECK_THROWS_WITH(context.throw_if_gl_error("binding a bogus target"),
@@ -122,7 +122,7 @@ TEST_CASE("negative: GL errors surface as pn::Error naming the operation") {
   CHECK_NOTHROW(context.throw_if_gl_error("nothing pending"));
 }
 
-TEST_CASE("negative: a texture beyond GL_MAX_TEXTURE_SIZE or of zero size is refused before GL sees it") {
+TEST_CASE("negative: a texture beyond GL_MAX_TEXTURE_SIZE or of zero size is refused before GL sees it", "[backend]") {
   const auto& context = pn::test::gl_context();
   GLint max_size = 0;
   context.gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "figures/canvas.h"
-#include "figures/font.h"
+#include "draw/canvas.h"
+#include "draw/font.h"
 #include "temp_tree.h"
 
 namespace {

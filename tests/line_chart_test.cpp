@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "figures/line_chart.h"
+#include "draw/line_chart.h"
 
 TEST_CASE("line charts: tick steps of 1, 2 or 5 times a power of ten, about the asked count") {
   CHECK(pn::nice_tick_step(10.0, 5) == 2.0);

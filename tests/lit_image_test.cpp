@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/error.h"
-#include "figures/lit_image.h"
+#include "metrics/lit_image.h"
 
 TEST_CASE("lit image: sky where the surface is all 0; albedo x (ambient + 0.75 cos vis) elsewhere, by hand") {
   pn::Image surface(4, 1, 4, 0.0f), visibility(4, 1, 1, 1.0f);

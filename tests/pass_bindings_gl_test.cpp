@@ -10,7 +10,7 @@
 
 using pn::test::gl_context;
 
-TEST_CASE("pass bindings: a texture, an image and a uniform block are bound while they live and unbound after") {
+TEST_CASE("pass bindings: a texture, an image and a uniform block are bound while they live and unbound after", "[backend]") {
   const pn::Context& context = gl_context();
   REQUIRE(pn::bound_resources(context).empty());
   const pn::GlObject texture = pn::make_float_texture(context, 4, 4, 1);
@@ -27,7 +27,7 @@ TEST_CASE("pass bindings: a texture, an image and a uniform block are bound whil
   CHECK(pn::bound_resources(context).empty());
 }
 
-TEST_CASE("negative: a pass cannot start while an earlier one left a texture bound") {
+TEST_CASE("negative: a pass cannot start while an earlier one left a texture bound", "[backend]") {
   const pn::Context& context = gl_context();
   const pn::GlObject texture = pn::make_float_texture(context, 4, 4, 1);
   context.gl().ActiveTexture(GL_TEXTURE5);  // a pass that bound by hand and left it

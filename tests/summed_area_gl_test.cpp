@@ -190,7 +190,7 @@ TEST_CASE("the float moments table at 2048^2 loses the 1x1 means at its far corn
   for (float& d : depth.texels) d = 20.0f + 20.0f * d;  // x in [0.19, 0.40]
   const pn::UnitRange unit = pn::unit_range(1.0, 100.0);
   const pn::SummedAreaMomentsReference reference(depth, {1.0, 100.0, unit.offset, unit.scale});
-  std::vector<pn::SummedAreaRect> rects;
+  std::vector<pn::Rect> rects;
   for (int k = 0; k < 64; ++k) rects.push_back({n - 1 - k, n - 1, 1, 1}), rects.push_back({n - 1, n - 2 - k, 1, 1});
   const pn::SummedAreaMomentsPass pass(context, tree);
   const pn::GlObject texture = pn::upload_float_texture(context, depth);

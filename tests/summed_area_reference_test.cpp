@@ -78,7 +78,7 @@ TEST_CASE("summed_area reference: rectangles are clipped to the map; outside, em
   CHECK(middle.texels == 3);
   CHECK(middle.count == 1);
   CHECK(middle.sum == 10.0);
-  for (const pn::SummedAreaRect r : {pn::SummedAreaRect{3, 0, 2, 2}, {0, -2, 3, 2}, {0, 0, 0, 3}, {0, 0, 3, -1},
+  for (const pn::Rect r : {pn::Rect{3, 0, 2, 2}, {0, -2, 3, 2}, {0, 0, 0, 3}, {0, 0, 3, -1},
                                      {3, 3, -3, -3}, {-(1 << 30), -(1 << 30), 1 << 30, 1 << 30}}) {
     const auto s = pn::summed_area_reference(m, r);
     CHECK(s.texels == 0);
@@ -189,7 +189,7 @@ TEST_CASE("summed_area moments reference: the 2x2 hand map's sums, mean 0.625 an
   CHECK(right.sum_q2 == std::uint64_t{9} << 32);
   CHECK(right.mean == 0.75);
   CHECK(right.variance == 0.0);
-  for (const pn::SummedAreaRect r : {pn::SummedAreaRect{2, 0, 1, 1}, {0, 0, 0, 2}, {2, 2, -2, -2}}) {
+  for (const pn::Rect r : {pn::Rect{2, 0, 1, 1}, {0, 0, 0, 2}, {2, 2, -2, -2}}) {
     const auto e = reference.sums(r);
     CHECK(e.texels == 0);
     CHECK(e.sum_q == 0);

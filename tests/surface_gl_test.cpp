@@ -33,7 +33,7 @@ int face_of(const pn::Scene& scene, const pn::SurfacePoint& s, glm::dvec3& norma
 
 }  // namespace
 
-TEST_CASE("surface pass: albedo by box, cos to the light's centre from the face normal, 0 on sky; vs ray casts") {
+TEST_CASE("surface pass: albedo by box, cos to the light's centre from the face normal, 0 on sky; vs ray casts", "[backend]") {
   const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
   const pn::SurfaceRenderer renderer(gl_context(), tree);
   const pn::Scene scene = pn::make_scene(pn::fixtures::kScenes[0], 128);

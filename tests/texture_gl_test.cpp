@@ -40,7 +40,7 @@ bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
 }  // namespace
 
 TEST_CASE("texture readback: R32F, RG32F and RGBA32F 13x7 read back bit for bit, NaN and infinities included",
-          "[fallback]") {
+          "[backend][fallback]") {
   const pn::Context& context = gl_context();
   for (int channels : {1, 2, 4}) {
     CAPTURE(channels);
@@ -58,7 +58,7 @@ TEST_CASE("texture readback: R32F, RG32F and RGBA32F 13x7 read back bit for bit,
 }
 
 TEST_CASE("texture readback: an RGBA32UI texture reads back its uints, an array layer and a mip level their texels",
-          "[fallback]") {
+          "[backend][fallback]") {
   const pn::Context& context = gl_context();
   const pn::GlObject uints = pn::make_texture(context, GL_TEXTURE_2D, GL_RGBA32UI, 5, 3);
   std::vector<std::uint32_t> want(5 * 3 * 4);
@@ -88,7 +88,7 @@ TEST_CASE("texture readback: an RGBA32UI texture reads back its uints, an array 
 }
 
 TEST_CASE("texture layers: a copied layer equals the layer and its view; a framebuffer clear zeroes 9x5 RGBA32F",
-          "[fallback]") {
+          "[backend][fallback]") {
   const pn::Context& context = gl_context();
   const pn::Image layer = special_values(9, 9, 4);
   const pn::GlObject array = pn::make_float_texture_array(context, 9, 9, 2, 4);

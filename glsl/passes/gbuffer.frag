@@ -25,8 +25,7 @@ void main() {
     vec3 n = normalize(cross(dFdx(pnWorld), dFdy(pnWorld)));
     if (dot(n, pnParams.cameraPosition.xyz - pnWorld) < 0.0) n = -n;
     float depth = -(pnParams.lightView * vec4(pnWorld, 1.0)).z;
-    PnLight light = PnLight(0.0, pnParams.lightNear, pnParams.lightNearPlaneWidth, pnParams.mapSize, 0.0,
-                            pnParams.lightTexelWorld);
+    PnLight light = PN_LIGHT_FROM_FIELDS(pnParams);
     world += n * (pnParams.normalOffset * pnLightTexelWorld(light, depth));
   }
   pnReceiver = vec4(pnLightProject(pnParams.lightView, pnParams.lightProjection, pnParams.mapSize, world), 1.0);

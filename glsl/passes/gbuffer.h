@@ -6,6 +6,7 @@
 #define PENUMBRA_PASSES_GBUFFER_H
 
 #include "scene_raster.h"
+#include "light_fields.h"
 #include "uniform_block.h"
 
 #define PN_GBUFFER_PARAMS_BINDING 0
@@ -16,11 +17,8 @@ PN_UNIFORM_BLOCK(PnGBufferParams, PN_GBUFFER_PARAMS_BINDING)
   mat4 lightView;
   mat4 lightProjection;
   vec4 cameraPosition;  // xyz
-  float mapSize;
+  PN_LIGHT_FIELDS       // PnLight: a texel's world width at a depth (pnLightTexelWorld, light_model.glsl)
   float normalOffset;   // texels
-  float lightNear;            // PnLight's near, nearPlaneWidth and texelWorld: a texel's world width at a depth
-  float lightNearPlaneWidth;  // (pnLightTexelWorld, light_model.glsl)
-  float lightTexelWorld;
   float viewDepthLo;      // the surfaces kept: camera view depth in [lo, hi) (0, +Inf: all)
   float viewDepthHi;
   vec4 viewDepthPlane;    // view depth = dot(plane, (world, 1))

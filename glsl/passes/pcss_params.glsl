@@ -32,8 +32,7 @@
 #endif
 
 PnLight pnPcssLight() {
-  return PnLight(pnPcss.lightWidth, pnPcss.lightNear, pnPcss.lightNearPlaneWidth, pnPcss.mapSize, pnPcss.lightSpread,
-                 pnPcss.lightTexelWorld);
+  return PN_LIGHT_FROM_FIELDS(pnPcss);
 }
 
 #endif  // PENUMBRA_PCSS_PARAMS_GLSL

@@ -6,6 +6,7 @@
 #ifndef PENUMBRA_PASSES_PCSS_PARAMS_H
 #define PENUMBRA_PASSES_PCSS_PARAMS_H
 
+#include "light_fields.h"
 #include "uniform_block.h"
 #include "../poisson_pcss.h"
 #include "../traversal.h"
@@ -42,10 +43,7 @@
 #define PN_WORK_LIST 2    // only the compacted representatives are dispatched
 
 PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
-  float lightWidth;
-  float lightNear;
-  float lightNearPlaneWidth;
-  float mapSize;
+  PN_LIGHT_FIELDS       // PnLight (light_model.glsl)
   float bias;
   float filterScale;    // c: filter side = c · penumbra
   int refineIterations; // 0: PCSS's search width as is
@@ -66,8 +64,6 @@ PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
   int leafDivisor;      // pcss_traverse: > 0: the leaf side is at least the region's side / leafDivisor
   int writeKeys;        // pcss_search, pcss_filter: 0 when the reuse keys are not needed or are the entries
                         // themselves (no reuse, or the exact region mode: pnEntryLinkKey returns the entry)
-  float lightSpread;      // PnLight.spread: a directional light's width per unit of distance (0: area light)
-  float lightTexelWorld;  // PnLight.texelWorld: an orthographic map's texel width (0: perspective)
 PN_END_UNIFORM_BLOCK(pnPcss)
 
 // Points in the unit disk (Bridson's, runner/sampling/poisson_disk.h), count = sampleCount.

@@ -32,8 +32,7 @@ void main() {
   vec4 c = texelFetch(pnQueryC, p, 0);
   int kind = int(b.x), mode = int(b.y);
   int n = int(pnParams.mapSize);
-  PnLight light = PnLight(pnParams.lightWidth, pnParams.lightNear, pnParams.lightNearPlaneWidth, pnParams.mapSize,
-                          pnParams.lightSpread, pnParams.lightTexelWorld);
+  PnLight light = PN_LIGHT_FROM_FIELDS(pnParams);
   vec4 entry = a;
   if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP) entry = pnSearchEntryMip(pnMip, n, light, a, c.x, int(b.z));

@@ -5,6 +5,7 @@
 #ifndef PENUMBRA_PASSES_PCSS_REGIONS_QUERY_H
 #define PENUMBRA_PASSES_PCSS_REGIONS_QUERY_H
 
+#include "light_fields.h"
 #include "uniform_block.h"
 
 // Distinct across resource kinds, so the pass is valid Vulkan GLSL as well;
@@ -27,12 +28,7 @@
 #define PN_PCSS_REGIONS_QUERY_SEARCH_MIP 3  // pnSearchEntryMip(mip, N, light, A, C.x, int(B.z))
 
 PN_UNIFORM_BLOCK(PnPcssRegionsQueryParams, PN_PCSS_REGIONS_QUERY_PARAMS_BINDING)
-  float lightWidth;           // PnLight (light_model.glsl)
-  float lightNear;
-  float lightNearPlaneWidth;
-  float mapSize;              // N, the pyramid's size
-  float lightSpread;
-  float lightTexelWorld;
+  PN_LIGHT_FIELDS  // PnLight (light_model.glsl); mapSize is N, the pyramid's size
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_PCSS_REGIONS_QUERY_H

@@ -9,8 +9,7 @@
 #include "savsm.glsl"
 
 PnLight pnSavsmParamsLight() {
-  return PnLight(pnParams.lightWidth, pnParams.lightNear, pnParams.lightNearPlaneWidth, pnParams.mapSize,
-                 pnParams.lightSpread, pnParams.lightTexelWorld);
+  return PN_LIGHT_FROM_FIELDS(pnParams);
 }
 
 PnSavsmSettings pnSavsmParamsSettings() {

@@ -6,6 +6,7 @@
 #ifndef PENUMBRA_PASSES_SAVSM_PARAMS_H
 #define PENUMBRA_PASSES_SAVSM_PARAMS_H
 
+#include "light_fields.h"
 #include "uniform_block.h"
 #include "savsm.h"  // glsl/savsm.h: PN_SAVSM_TABLE_*, PN_SAVSM_BLOCKER_*
 
@@ -23,12 +24,7 @@
 #define PN_SAVSM_PARAMS_BINDING 7
 
 PN_UNIFORM_BLOCK(PnSavsmParams, PN_SAVSM_PARAMS_BINDING)
-  float lightWidth;           // PnLight (light_model.glsl)
-  float lightNear;
-  float lightNearPlaneWidth;
-  float mapSize;
-  float lightSpread;
-  float lightTexelWorld;
+  PN_LIGHT_FIELDS             // PnLight (light_model.glsl)
   vec2 unitRange;             // (near, 1 / (far - near)): the table's unit depth
   float bias;                 // PnSavsmSettings (savsm.glsl)
   float filterScale;

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "metrics/scores.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

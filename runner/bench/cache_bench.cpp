@@ -10,11 +10,11 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/progress.h"
-#include "figures/line_chart.h"
+#include "draw/line_chart.h"
 #include "gl/gpu_timer.h"
 #include "passes/gbuffer_pass.h"
 #include "scene/animated_scene.h"
-#include "technique/shadow_map_source.h"
+#include "technique/shadow_map_sources.h"
 #include "technique/technique_registry.h"
 
 namespace pn {

@@ -11,10 +11,12 @@
 #include "core/bounds.h"
 #include "core/error.h"
 #include "core/format.h"
+#include "core/named.h"
 #include "core/progress.h"
-#include "figures/line_chart.h"
+#include "draw/line_chart.h"
 #include "gl/texture.h"
 #include "metrics/scores.h"
+#include "passes/shadow_map_pass.h"
 #include "passes/surface_pass.h"
 #include "scene/city_scene.h"
 #include "technique/cascaded_technique.h"
@@ -27,9 +29,8 @@ namespace {
 
 const fixtures::CitySceneFixture& city_fixture(const std::string& name) {
   if (const auto* f = find_city_scene_fixture_or_null(name)) return *f;
-  std::string known;
-  for (const auto& f : fixtures::kCityScenes) known += std::string(known.empty() ? "" : ", ") + f.name;
-  throw Error("bench cascades scene '" + name + "': expected one of " + known + " (a scene lit by the sun)");
+  throw Error("bench cascades scene '" + name + "': expected one of " + known_names(fixtures::kCityScenes) +
+              " (a scene lit by the sun)");
 }
 
 struct Config {

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "figures/canvas.h"
+#include "draw/canvas.h"
 #include "gl/context.h"
 #include "shader/source_tree.h"
 

@@ -16,7 +16,7 @@
 #include "gl/context.h"
 #include "shader/source_tree.h"
 #include "technique/comparison.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

@@ -18,7 +18,7 @@
 #include "scene/scene.h"
 #include "shader/source_tree.h"
 #include "technique/comparison.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

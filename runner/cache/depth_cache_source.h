@@ -24,10 +24,11 @@
 #include <optional>
 #include <vector>
 
-#include "cache/map_structures.h"
+#include "frame/map_structures.h"
 #include "cache/object_motion.h"
 #include "passes/depth_cache_pass.h"
-#include "technique/shadow_map_source.h"
+#include "frame/shadow_map_source.h"
+#include "passes/shadow_map_pass.h"
 
 namespace pn {
 

@@ -11,6 +11,8 @@
 #include <optional>
 #include <vector>
 
+#include "scene/light_view.h"  // box_corners, directional_light_view
+
 namespace pn {
 
 struct CascadeSettings {
@@ -57,15 +59,6 @@ struct Cascade {
   // linear light depth (distance along the light's direction from the light view's origin), in double.
   glm::dvec3 map_position(const glm::dvec3& world, int map_size) const;
 };
-
-// The eight corners of the box [lo, hi].
-std::vector<glm::dvec3> box_corners(const glm::vec3& lo, const glm::vec3& hi);
-
-// The light's view: looking along `direction` (normalised inside) from a point that is
-// fixed in the world — on the line through the origin, one unit before the nearest corner of
-// the scene's bounds — so that every point of the scene has a linear light depth >= 1 and
-// a world point's light-space (x, y) never depends on the camera.
-glm::mat4 directional_light_view(const glm::vec3& direction, const glm::vec3& scene_lo, const glm::vec3& scene_hi);
 
 // m cascades over the camera's frustum for a light along `light_direction`;
 // each cascade's depth range reaches back towards the light to `scene_lo`/`scene_hi`

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "gl/gpu_timer.h"
+#include "passes/shadow_map_pass.h"
 #include "scenes.h"
 
 namespace pn {

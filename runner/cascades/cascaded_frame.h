@@ -12,7 +12,7 @@
 #include "passes/gbuffer_pass.h"
 #include "passes/shadow_map_pass.h"
 #include "scene/scene.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

@@ -22,6 +22,7 @@
 #include "gl/texture.h"
 #include "passes/blur_pass.h"
 #include "pcss_regions.h"  // PN_REGION_LIT
+#include "reference/blur_reference.h"
 
 namespace pn {
 namespace {

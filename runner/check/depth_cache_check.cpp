@@ -23,10 +23,12 @@
 #include "gl/texel_list.h"
 #include "passes/depth_cache_pass.h"
 #include "passes/gbuffer_pass.h"
+#include "passes/shadow_map_pass.h"
 #include "pipeline/pcss_pipeline.h"
 #include "reference/depth_cache_reference.h"
 #include "scene/animated_scene.h"
-#include "technique/shadow_map_source.h"
+#include "frame/shadow_map_source.h"
+#include "technique/shadow_map_sources.h"
 
 namespace pn {
 namespace {

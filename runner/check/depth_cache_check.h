@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cache/map_structures.h"
+#include "frame/map_structures.h"
 #include "check/module_check.h"
 
 namespace pn {

@@ -1,8 +1,29 @@
 #include "check/module_check.h"
 
-#include "core/error.h"
+#include "core/named.h"
 
 namespace pn {
+
+// Each defined in its check/<module>_check.cpp.
+std::vector<CaseResult> run_blur_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_region_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_truth_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_depth_cache_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env);
 
 const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
@@ -55,12 +76,7 @@ const std::vector<ModuleCheck>& module_checks() {
 }
 
 const ModuleCheck& find_module_check(const std::string& module) {
-  std::string names;
-  for (const ModuleCheck& check : module_checks()) {
-    if (module == check.module) return check;
-    names += std::string(names.empty() ? "" : ", ") + check.module;
-  }
-  throw Error("module '" + module + "': no check registered; expected one of " + names);
+  return find_named(module_checks(), module, "module '" + module + "': no check registered");
 }
 
 }  // namespace pn

@@ -38,7 +38,7 @@ constexpr int kMapSize = 300;
 constexpr int kSmallMaxSide = 64;  // the bounded variant's PN_PCF_MAX_SIDE
 
 struct Window {
-  PcfWindow w;
+  Rect w;
   const char* where;
 };
 
@@ -163,7 +163,7 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
       std::vector<PcfSums> expected;
       std::vector<bool> small, tie;
       for (size_t i = 0; i < all_windows.size(); ++i) {
-        const PcfWindow& w = all_windows[i].w;
+        const Rect& w = all_windows[i].w;
         const PcfCover c = pcf_cover(w, map.width, map.height, v.max_side);
         for (const Receiver& r : receivers_for(map, c, i)) {
           static constexpr int kBands[3] = {1, 7, 128};

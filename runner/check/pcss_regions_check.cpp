@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "cache/full_render_source.h"
 #include "core/error.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
@@ -57,8 +58,8 @@
 #include "reference/pcss_regions_reference.h"
 #include "reference/region_reference.h"
 #include "scene/scene.h"
-#include "technique/scene_frame.h"
-#include "technique/shadow_map_source.h"
+#include "frame/scene_frame.h"
+#include "frame/shadow_map_source.h"
 
 namespace pn {
 namespace {

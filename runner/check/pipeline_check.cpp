@@ -9,18 +9,20 @@
 #include <cstdio>
 #include <string>
 
+#include "cache/full_render_source.h"
 #include "check/blur_tolerance.h"
 #include "check/module_check.h"
-#include "figures/lit_image.h"
+#include "metrics/lit_image.h"
 #include "gl/texture.h"
 #include "passes/surface_pass.h"
 #include "metrics/ssim.h"
 #include "passes/gbuffer_pass.h"
 #include "pipeline/pcss_pipeline.h"
+#include "reference/blur_reference.h"
 #include "reference/pcss_reference.h"
 #include "reference/depth_pyramid_reference.h"
 #include "reference/reuse_reference.h"
-#include "technique/scene_frame.h"
+#include "frame/scene_frame.h"
 #include "technique/technique_registry.h"
 
 namespace pn {

@@ -41,7 +41,7 @@ std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, co
   for (const std::string& name : modules) selected.push_back(&find_module_check(name));
   std::vector<ModuleReport> reports;
   for (const ModuleCheck* check : selected) {
-    ModuleReport report{check->module, {}, {}};
+    ModuleReport report{check->name, {}, {}};
     try {
       report.cases = check->run(env);
     } catch (const Error& e) {

@@ -73,8 +73,8 @@ Image in_range(const Image& fixture, const Range& range) {
   return out;
 }
 
-std::vector<SummedAreaRect> rects_for(int w, int h) {
-  std::vector<SummedAreaRect> out;
+std::vector<Rect> rects_for(int w, int h) {
+  std::vector<Rect> out;
   const auto add = [&out](int x, int y, int rw, int rh) { out.push_back({x, y, rw, rh}); };
   if (w * h <= 200) {  // every rectangle with corners in [-1, w+1] x [-1, h+1]
     for (int y0 = -1; y0 <= h + 1; ++y0)
@@ -131,11 +131,11 @@ CaseResult summed_area_bounded_case(const std::string& name, const std::vector<d
   return r;
 }
 
-void name_summed_area_worst_rect(CaseResult& r, const std::vector<SummedAreaRect>& rects) {
+void name_summed_area_worst_rect(CaseResult& r, const std::vector<Rect>& rects) {
   if (r.comparison.pass || r.comparison.x < 0) return;
   const size_t k = static_cast<size_t>(r.comparison.y) * kSummedAreaGridWidth + static_cast<size_t>(r.comparison.x);
   if (k >= rects.size()) return;
-  const SummedAreaRect& q = rects[k];
+  const Rect& q = rects[k];
   r.name += "; worst: rectangle from (" + std::to_string(q.x) + ", " + std::to_string(q.y) + "), " +
             std::to_string(q.width) + "x" + std::to_string(q.height);
 }
@@ -147,7 +147,7 @@ std::vector<CaseResult> summed_area_depth_cases(const CheckEnvironment& env) {
   for (const auto& fixture : fixtures::kTextureFixtures) {
     for (const auto& size : kSizes) {
       const Image raw = generate_fixture(fixture, size.width, size.height);
-      const std::vector<SummedAreaRect> rects = rects_for(size.width, size.height);
+      const std::vector<Rect> rects = rects_for(size.width, size.height);
       for (const Range& range : kRanges) {
         const Image map = in_range(raw, range);
         const SummedAreaPass& p = range.fraction_bits == kSummedAreaFractionBits ? pass : wrapping;

@@ -26,7 +26,7 @@ CaseResult summed_area_bounded_case(const std::string& name, const std::vector<d
                                     const std::vector<int>& queries);
 
 // A failing case names the rectangle of its worst element.
-void name_summed_area_worst_rect(CaseResult& r, const std::vector<SummedAreaRect>& rects);
+void name_summed_area_worst_rect(CaseResult& r, const std::vector<Rect>& rects);
 
 // The check's two halves, callable on their own (the GL tests run each on its broken copies):
 // the depth-sum table's cases (summed_area_check.cpp) and the moments tables'

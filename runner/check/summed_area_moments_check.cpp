@@ -59,8 +59,8 @@ Image light_depths(const Image& fixture) {
 }
 
 // Every rectangle with corners in [−1, w+1] × [−1, h+1].
-std::vector<SummedAreaRect> every_rect(int w, int h) {
-  std::vector<SummedAreaRect> out;
+std::vector<Rect> every_rect(int w, int h) {
+  std::vector<Rect> out;
   for (int y0 = -1; y0 <= h + 1; ++y0)
     for (int y1 = y0; y1 <= h + 1; ++y1)
       for (int x0 = -1; x0 <= w + 1; ++x0)
@@ -69,8 +69,8 @@ std::vector<SummedAreaRect> every_rect(int w, int h) {
 }
 
 // Sides in every class [2^k, 2^(k+1) − 1] up to n (the last class ends at n).
-std::vector<SummedAreaRect> size_class_rects(int n) {
-  std::vector<SummedAreaRect> out;
+std::vector<Rect> size_class_rects(int n) {
+  std::vector<Rect> out;
   std::mt19937 rng(static_cast<std::uint32_t>(n) * 104729u + 17u);
   const auto between = [&rng](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint32_t>(hi - lo + 1)); };
   // An origin whose rectangle of side s crosses the low or the high edge (for s = 1: just outside).
@@ -105,7 +105,7 @@ struct MomentsMap {
   std::string name;
   Image depth;
   int bits = kSummedAreaMomentBits;
-  std::vector<SummedAreaRect> rects;
+  std::vector<Rect> rects;
 };
 
 // Worst absolute errors of a map's queries against the true x.
@@ -220,7 +220,7 @@ std::vector<CaseResult> summed_area_moments_cases(const CheckEnvironment& env) {
     }
   for (int n : kLargeSizes) {
     WorstErrors worst;
-    const std::vector<SummedAreaRect> rects = size_class_rects(n);
+    const std::vector<Rect> rects = size_class_rects(n);
     for (const char* fixture : kLargeFixtures) {
       const std::string name = std::string(fixture) + " " + std::to_string(n) + "x" + std::to_string(n) + ", " + depths;
       worst.add(map_cases(env, pass, {name, light_depths(generate_fixture(find_fixture(fixture), n, n)),

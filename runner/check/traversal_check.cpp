@@ -22,6 +22,7 @@
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
 #include "reference/depth_pyramid_reference.h"
+#include "reference/traversal_reference.h"
 
 namespace pn {
 namespace {

@@ -6,7 +6,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "gl/context.h"
-#include "reference/blur_reference.h"
+#include "modules/blur.h"
 
 namespace pn::cli {
 

@@ -1,11 +1,20 @@
-// A rectangle of texels, [x0, x1) × [y0, y1), rows counted as the map's (from
-// its first row): what a shadow-map cache redraws, composes and updates.
+// Rectangles of texels, rows counted as the map's (from its first row), in
+// the two forms the runner uses: TexelRect by its corners, [x0, x1) × [y0, y1)
+// (what a shadow-map cache redraws, composes and updates), and Rect by its
+// origin and size (a module's region, window or query rectangle).
 #pragma once
 
 #include <algorithm>
 #include <vector>
 
 namespace pn {
+
+// Origin and size: a region, a PCF window, a summed-area query. It may lie
+// partly or wholly outside the map; a width or height <= 0 is empty.
+struct Rect {
+  int x = 0, y = 0;
+  int width = 0, height = 0;
+};
 
 struct TexelRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;

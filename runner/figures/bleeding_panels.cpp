@@ -1,6 +1,6 @@
 #include "figures/bleeding_panels.h"
 
-#include "figures/font.h"
+#include "draw/font.h"
 
 namespace pn {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "figures/canvas.h"
+#include "draw/canvas.h"
 
 namespace pn {
 

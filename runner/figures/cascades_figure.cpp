@@ -12,7 +12,7 @@
 #include "cascades/cascaded_frame.h"
 #include "core/format.h"
 #include "figures/figures.h"
-#include "figures/font.h"
+#include "draw/font.h"
 #include "scene/city_scene.h"
 
 namespace pn {

@@ -8,7 +8,7 @@
 #include "core/error.h"
 #include "core/query_grid.h"
 #include "core/write_file.h"
-#include "figures/canvas.h"
+#include "draw/canvas.h"
 #include "fixture/texture_fixture.h"
 #include "gl/texture.h"
 #include "passes/blur_pass.h"
@@ -218,17 +218,28 @@ Canvas reuse_figure(const Context& context, const SourceTree& tree) {
 
 std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
   validate_output_directory(out);
-  const std::vector<fs::path> paths{out / "blur.png", out / "pyramid_levels.png", out / "region_snapping.png",
-                                    out / "sample_table.png", out / "traversal_nodes.png", out / "reuse_groups.png",
-                                    out / "pipeline_stages.png", out / "vsm_bleeding.png",
-                                    out / "savsm_bleeding.png", out / "cascades_splits.png"};
+  // One entry a picture: its file's name and what draws it.
+  using Draw = Canvas (*)(const Context&, const SourceTree&);
+  static const std::vector<std::pair<const char*, Draw>> figures{
+      {"blur", &blur_figure},
+      {"pyramid_levels", &pyramid_figure},
+      {"region_snapping", &region_figure},
+      {"sample_table", [](const Context&, const SourceTree&) { return sample_table_figure(); }},
+      {"traversal_nodes", &traversal_figure},
+      {"reuse_groups", &reuse_figure},
+      {"pipeline_stages", &pipeline_stages_figure},
+      {"vsm_bleeding", &vsm_bleeding_figure},
+      {"savsm_bleeding", &savsm_bleeding_figure},
+      {"cascades_splits", [](const Context&, const SourceTree&) { return cascades_splits_figure(); }},
+  };
   // Every picture is drawn before the first is written: a module that fails leaves the
   // directory as it was (not made, if it was missing), not five new pictures beside two old ones.
-  const std::vector<Canvas> canvases{blur_figure(context, tree),      pyramid_figure(context, tree),
-                                     region_figure(context, tree),    sample_table_figure(),
-                                     traversal_figure(context, tree), reuse_figure(context, tree),
-                                     pipeline_stages_figure(context, tree), vsm_bleeding_figure(context, tree),
-                                     savsm_bleeding_figure(context, tree), cascades_splits_figure()};
+  std::vector<fs::path> paths;
+  std::vector<Canvas> canvases;
+  for (const auto& [name, draw] : figures) {
+    paths.push_back(out / (std::string(name) + ".png"));
+    canvases.push_back(draw(context, tree));
+  }
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw Error("figures directory '" + out.string() + "': cannot be created");

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "figures/canvas.h"
+#include "draw/canvas.h"
 #include "gl/context.h"
 #include "shader/source_tree.h"
 

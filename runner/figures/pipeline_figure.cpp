@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "figures/canvas.h"
+#include "cache/full_render_source.h"
+#include "draw/canvas.h"
 #include "figures/figures.h"
 #include "gl/texture.h"
 #include "pipeline/pcss_pipeline.h"
-#include "technique/scene_frame.h"
+#include "frame/scene_frame.h"
 #include "scene/scene.h"
 
 namespace pn {

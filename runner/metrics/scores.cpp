@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "core/error.h"
-#include "figures/lit_image.h"
+#include "metrics/lit_image.h"
 #include "metrics/ssim.h"
 
 namespace pn {

@@ -2,7 +2,7 @@
 // (SPEC §4.9): SSIM and mean absolute error over the whole soft-shadow map,
 // over the pixels whose surface faces the light (N·L > 0: surfaces facing
 // away are dark from shading, and acne there is no shadow technique's error —
-// the headline), and over the lit image (its luma, figures/lit_image.h).
+// the headline), and over the lit image (its luma, metrics/lit_image.h).
 #pragma once
 
 #include "core/image.h"

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "reference/blur_reference.h"
+#include "modules/blur.h"
 
 namespace pn {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "gl/compute_program.h"
 #include "gl/pass_variants.h"
-#include "reference/blur_reference.h"
+#include "modules/blur.h"
 #include "shader/source_tree.h"
 
 namespace pn {

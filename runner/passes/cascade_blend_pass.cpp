@@ -21,12 +21,12 @@ CascadeBlendPass::CascadeBlendPass(const Context& context, const SourceTree& tre
       program_(compile_pass(context, tree, "passes/cascade_blend.comp")),
       unused_(make_float_texture(context, 1, 1, 1)) {}
 
-GlObject CascadeBlendPass::run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities,
+GlObject CascadeBlendPass::run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities,
                                int screen_size) const {
-  const size_t count = cascades.layers.size();
-  if (count < 1 || count > 4 || visibilities.size() != count || !cascades.view_depth)
-    throw Error("cascade blend: " + std::to_string(visibilities.size()) + " visibilities for " + std::to_string(count) +
-                " cascades: expected one a cascade, 1 ... 4, and the camera's view depth");
+  const size_t count = visibilities.size();
+  if (count < 1 || count > 4 || !cascades.view_depth)
+    throw Error("cascade blend: " + std::to_string(count) +
+                " visibilities: expected one a cascade, 1 ... 4, and the camera's view depth");
   glsl::PnCascadeBlendParams block{};
   block.splitFar = {cascades.split_far[0], cascades.split_far[1], cascades.split_far[2], cascades.split_far[3]};
   block.near = cascades.near;

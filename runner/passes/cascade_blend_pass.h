@@ -6,16 +6,25 @@
 
 #include "gl/compute_program.h"
 #include "shader/source_tree.h"
-#include "technique/technique.h"
 
 namespace pn {
+
+// What blends the cascades' visibilities (cascades.glsl): the camera's view depth, the splits
+// and the transition band.
+struct CascadeBlend {
+  const GlObject* view_depth = nullptr;  // screen² RGBA32F: z the camera's view depth, w = 1 where a surface is seen
+  float split_far[4] = {0, 0, 0, 0};     // C_1 ... C_m
+  float near = 0;                        // C_0
+  float band = 0;
+  bool fade_last = true;
+};
 
 class CascadeBlendPass {
  public:
   CascadeBlendPass(const Context& context, const SourceTree& tree);
 
-  // One screen² R32F visibility from `visibilities` (one a layer of `cascades`, screen² R32F).
-  GlObject run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities, int screen_size) const;
+  // One screen² R32F visibility from `visibilities` (one a cascade, nearest first, screen² R32F).
+  GlObject run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities, int screen_size) const;
 
  private:
   const Context* context_;

@@ -7,7 +7,7 @@
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
 #include "gl/texture.h"
-#include "reference/depth_pyramid_reference.h"
+#include "modules/depth_pyramid.h"
 
 namespace pn::glsl {
 #include "passes/depth_pyramid.h"

@@ -3,15 +3,17 @@
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
 #include "passes/scene_draw.h"
+#include "scene/light_block.h"
 
 namespace pn::glsl {
 #include "passes/gbuffer.h"
-PN_STD140_SIZE(PnGBufferParams, 256);
-PN_STD140_OFFSET(PnGBufferParams, viewDepthPlane, 240);
+PN_STD140_SIZE(PnGBufferParams, 272);
+PN_STD140_OFFSET(PnGBufferParams, viewDepthPlane, 256);
 PN_STD140_OFFSET(PnGBufferParams, lightView, 64);
 PN_STD140_OFFSET(PnGBufferParams, cameraPosition, 192);
-PN_STD140_OFFSET(PnGBufferParams, mapSize, 208);
-PN_STD140_OFFSET(PnGBufferParams, lightTexelWorld, 224);
+PN_STD140_OFFSET(PnGBufferParams, mapSize, 220);
+PN_STD140_OFFSET(PnGBufferParams, lightTexelWorld, 228);
+PN_STD140_OFFSET(PnGBufferParams, normalOffset, 232);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -27,11 +29,8 @@ GlObject GBufferRenderer::render(const Scene& scene, int screen_size, float norm
   block.lightView = glsl::std140_mat4(light.view);
   block.lightProjection = glsl::std140_mat4(light.projection);
   block.cameraPosition = {scene.camera.eye.x, scene.camera.eye.y, scene.camera.eye.z, 0};
-  block.mapSize = static_cast<float>(light.light.map_size);
+  set_light_fields(block, light.light);
   block.normalOffset = normal_offset_texels;
-  block.lightNear = static_cast<float>(light.light.near_plane);
-  block.lightNearPlaneWidth = static_cast<float>(light.light.near_plane_width());
-  block.lightTexelWorld = static_cast<float>(light.light.texel_world);
   // View depth = -(camera view · p).z: minus the view matrix's third row.
   block.viewDepthPlane = {-camera_view[0][2], -camera_view[1][2], -camera_view[2][2], -camera_view[3][2]};
   block.viewDepthLo = view_depth_lo;

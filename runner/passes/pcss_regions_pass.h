@@ -9,7 +9,7 @@
 #include "gl/compute_program.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
-#include "pipeline/pcss_settings.h"  // RegionMode
+#include "modules/pcss_regions.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "gl/compute_program.h"
-#include "reference/reuse_reference.h"
+#include "modules/reuse.h"
 #include "shader/source_tree.h"
 
 namespace pn {

@@ -9,7 +9,8 @@
 #include "gl/pass_variants.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/summed_area_pass.h"
-#include "reference/savsm_reference.h"
+#include "core/texel_rect.h"
+#include "modules/savsm.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
 

@@ -75,9 +75,9 @@ void build_lines(const Context& context, const ComputeProgram& program, const Gl
 
 // The rectangles as a query image (origin x, y, width, height), each coordinate within ±2^24
 // (they travel as floats); throws Error otherwise.
-Image rect_query_image(const std::vector<SummedAreaRect>& rects) {
+Image rect_query_image(const std::vector<Rect>& rects) {
   std::vector<Query> q;
-  for (const SummedAreaRect& r : rects) {
+  for (const Rect& r : rects) {
     for (int v : {r.x, r.y, r.width, r.height})
       if (std::abs(v) > (1 << 24))
         throw Error("summed-area query rectangle coordinate " + std::to_string(v) + ": expected within ±2^24");
@@ -117,7 +117,7 @@ SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
 }
 
 std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& table,
-                                                         const std::vector<SummedAreaRect>& rects) const {
+                                                         const std::vector<Rect>& rects) const {
   if (rects.empty()) return {};
   const Image rect_image = rect_query_image(rects);
   const int w = rect_image.width, h = rect_image.height;
@@ -211,7 +211,7 @@ MomentsTable SummedAreaMomentsPass::build(const GlObject& depth_map, MomentsTabl
 }
 
 std::vector<MomentsQueryResult> SummedAreaMomentsPass::query(const MomentsTable& table,
-                                                             const std::vector<SummedAreaRect>& rects) const {
+                                                             const std::vector<Rect>& rects) const {
   if (rects.empty()) return {};
   const bool fixed = table.kind == MomentsTableKind::fixed;
   const Image rect_image = rect_query_image(rects);

@@ -8,7 +8,8 @@
 
 #include "gl/compute_program.h"
 #include "gl/pass_variants.h"
-#include "reference/summed_area_reference.h"
+#include "core/texel_rect.h"
+#include "modules/summed_area.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -40,7 +41,7 @@ class SummedAreaPass {
 
   // One result per rectangle (origins and sizes within ±2^24, as they travel as floats).
   std::vector<SummedAreaQueryResult> query(const SummedAreaTable& table,
-                                           const std::vector<SummedAreaRect>& rects) const;
+                                           const std::vector<Rect>& rects) const;
 
   int fraction_bits() const { return fraction_bits_; }
 
@@ -94,7 +95,7 @@ class SummedAreaMomentsPass {
   // The moments table of a single-channel float depth texture, N × M with 1 <= N, M <=
   // kSummedAreaMaxSide; throws Error otherwise.
   MomentsTable build(const GlObject& depth_map, MomentsTableKind kind, UnitRange range) const;
-  std::vector<MomentsQueryResult> query(const MomentsTable& table, const std::vector<SummedAreaRect>& rects) const;
+  std::vector<MomentsQueryResult> query(const MomentsTable& table, const std::vector<Rect>& rects) const;
 
   int moment_bits() const { return moment_bits_; }
   // GPU memory of a width × height map's table (the row-prefix table, as large, lives only while building).

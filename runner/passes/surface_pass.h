@@ -1,6 +1,6 @@
 // Runner side of glsl/passes/surface.vert/.frag: what a lit image needs besides
 // visibility — per pixel the albedo of the surface seen and the cosine of the
-// light's centre on its face (figures/lit_image.h composes them).
+// light's centre on its face (metrics/lit_image.h composes them).
 #pragma once
 
 #include <glm/glm.hpp>

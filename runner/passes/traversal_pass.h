@@ -8,7 +8,8 @@
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/summed_area_pass.h"
-#include "reference/traversal_reference.h"
+#include "core/texel_rect.h"
+#include "modules/traversal.h"
 #include "sampling/sample_table.h"
 #include "shader/source_tree.h"
 

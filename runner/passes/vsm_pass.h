@@ -10,7 +10,7 @@
 #include "gl/pass_variants.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
-#include "reference/vsm_reference.h"
+#include "modules/vsm.h"
 #include "shader/source_tree.h"
 
 namespace pn {

@@ -8,7 +8,7 @@
 #include "gl/std140.h"
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
-#include "reference/depth_pyramid_reference.h"
+#include "modules/depth_pyramid.h"
 #include "sampling/poisson_disk.h"
 #include "sampling/sample_table.h"
 #include "scene/light_block.h"
@@ -16,10 +16,10 @@
 namespace pn::glsl {
 #include "passes/pcss_params.h"
 PN_STD140_SIZE(PnPcssParams, 112);
-PN_STD140_OFFSET(PnPcssParams, lightTexelWorld, 96);
-PN_STD140_OFFSET(PnPcssParams, depthSums, 80);
-PN_STD140_OFFSET(PnPcssParams, refineIterations, 24);
-PN_STD140_OFFSET(PnPcssParams, sigma3, 72);
+PN_STD140_OFFSET(PnPcssParams, lightTexelWorld, 20);
+PN_STD140_OFFSET(PnPcssParams, depthSums, 88);
+PN_STD140_OFFSET(PnPcssParams, refineIterations, 32);
+PN_STD140_OFFSET(PnPcssParams, sigma3, 80);
 PN_STD140_SIZE(PnPoissonDisk, 16 * PN_POISSON_MAX_SAMPLES);
 PN_STD140_OFFSET(PnPoissonDisk, points[1], 16);
 }  // namespace pn::glsl

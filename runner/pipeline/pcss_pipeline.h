@@ -19,7 +19,7 @@
 #include "passes/summed_area_pass.h"
 #include "passes/reuse_pass.h"
 #include "pipeline/pcss_settings.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

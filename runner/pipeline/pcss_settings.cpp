@@ -4,7 +4,7 @@
 #include <exception>
 
 #include "core/error.h"
-#include "technique/setting_value.h"
+#include "frame/setting_value.h"
 #include "core/format.h"
 
 namespace pn {
@@ -26,10 +26,10 @@ void PcssSettings::validate() const {
   if (filter_tile < 0 || filter_tile > kReuseMaxTile) throw bad("filter reuse tile", filter_tile, tiles.c_str());
   for (float s : {sigma1, sigma2, sigma3})
     if (!(s >= 0) || !std::isfinite(s)) throw bad("similarity bound", s, "a finite number >= 0");
-  const std::string samples = "1.." + std::to_string(PN_POISSON_MAX_SAMPLES);  // poisson_pcss.glsl's disk array
-  if (blocker_samples < 1 || blocker_samples > PN_POISSON_MAX_SAMPLES)
+  const std::string samples = "1.." + std::to_string(kPoissonMaxSamples);  // poisson_pcss.glsl's disk array
+  if (blocker_samples < 1 || blocker_samples > kPoissonMaxSamples)
     throw bad("blocker samples", blocker_samples, samples.c_str());
-  if (filter_samples < 1 || filter_samples > PN_POISSON_MAX_SAMPLES)
+  if (filter_samples < 1 || filter_samples > kPoissonMaxSamples)
     throw bad("filter samples", filter_samples, samples.c_str());
   if (blur) blur_params.validate();
 }

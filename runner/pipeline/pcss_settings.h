@@ -7,12 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "poisson_pcss.h"  // PN_POISSON_*: glsl/poisson_pcss.h, shared with the shaders
-#include "pcss_regions.h"
-#include "traversal.h"  // PN_STRUCTURE_*
-#include "reference/blur_reference.h"
-#include "reference/reuse_reference.h"
-#include "reference/traversal_reference.h"
+#include "modules/blur.h"
+#include "modules/pcss_regions.h"
+#include "modules/poisson_pcss.h"
+#include "modules/reuse.h"
+#include "modules/traversal.h"
 
 namespace pn {
 
@@ -21,22 +20,6 @@ enum class Estimator {
   scan,       // every texel (exact PCSS)
   traversal,  // quadtree over the pyramid (traversal.glsl)
   poisson,    // fixed Poisson-disk samples (Poisson PCSS)
-};
-
-// Which texels stand for a region of centre (x, y) and side s (pcss_regions.glsl).
-enum class RegionMode {
-  window = PN_REGION_WINDOW,    // the paper's power-of-two window, Steps 1-7 literally (region.glsl)
-  exact = PN_REGION_EXACT,      // the n×n texels nearest the centre, n = round(s) (no approximation)
-  centred = PN_REGION_CENTRED,  // the window's side, centred on (x, y) (pnRegionApproximateCentred)
-};
-
-// What Steps 3-5 read from the shadow map (traversal.h): the paper's
-// decreased pyramid (depth_pyramid.glsl, N² texels a level), or the aligned
-// min/max mip chain (minmax_mip.glsl, 4/3 N²) with a summed-area table of
-// depth (summed_area.glsl) for the blocker mean's clipped sums.
-enum class Structure {
-  pyramid = PN_STRUCTURE_PYRAMID,
-  mip = PN_STRUCTURE_MIP,
 };
 
 // How the GPU skips the pixels that need not compute in Steps 4 and 5 — lit
@@ -73,8 +56,8 @@ struct PcssSettings {
   int filter_tile = 2;         // reuse k for Step 5; 0 = no reuse
   float sigma1 = 0.0f, sigma2 = 0.1f, sigma3 = 0.1f;  // Eq. 7 (§5.2 defaults)
   WorkSkip skip = WorkSkip::list;
-  int blocker_samples = PN_POISSON_BLOCKER_SAMPLES;  // Poisson PCSS: 36, 1..PN_POISSON_MAX_SAMPLES (64)
-  int filter_samples = PN_POISSON_PCF_SAMPLES;       // 64
+  int blocker_samples = kPoissonBlockerSamples;  // Poisson PCSS: 36, 1..kPoissonMaxSamples (64)
+  int filter_samples = kPoissonPcfSamples;       // 64
   bool blur = true;            // Step 6
   // Radius 3 (§5.3), depth-aware; the adaptive radius (blur.glsl: at most half
   // the pixel's penumbra, 0 on lit pixels and contact shadows) off for now.

@@ -6,18 +6,12 @@
 #include <utility>
 
 #include "core/image.h"
+#include "modules/depth_pyramid.h"
 
 namespace pn {
 
 // SPEC §3: a NaN or ±Inf depth is "no occluder", i.e. +Inf (far).
 float sanitize_depth(float depth);
-
-// floor(log2 n) for n >= 1.
-int floor_log2(int n);
-
-// Number of pyramid levels for an N×N map and a maximum level: min(floor(log2 N), max_level) + 1.
-// Throws Error for N < 2 or max_level < 0.
-int pyramid_level_count(int n, int max_level);
 
 // min, max and mean (double) of the side×side window at (u, v), by scanning every texel.
 struct WindowStats {

@@ -5,7 +5,7 @@
 
 namespace pn {
 
-PcfCover pcf_cover(const PcfWindow& window, int map_width, int map_height, int max_side) {
+PcfCover pcf_cover(const Rect& window, int map_width, int map_height, int max_side) {
   // In 64-bit: no overflow whatever the window.
   const auto axis = [max_side](long origin, long size, long extent, long& lo, long& hi) {
     lo = std::clamp(origin, 0L, extent);
@@ -18,7 +18,7 @@ PcfCover pcf_cover(const PcfWindow& window, int map_width, int map_height, int m
   return c;
 }
 
-PcfSums pcf_reference(const Image& depth, const PcfWindow& window, double receiver_depth, double bias, int max_side) {
+PcfSums pcf_reference(const Image& depth, const Rect& window, double receiver_depth, double bias, int max_side) {
   const PcfCover c = pcf_cover(window, depth.width, depth.height, max_side);
   const double t = receiver_depth - bias;
   PcfSums s;

@@ -6,16 +6,10 @@
 #pragma once
 
 #include "core/image.h"
+#include "core/texel_rect.h"
+#include "modules/pcf.h"
 
 namespace pn {
-
-// glsl/pcf.glsl's default PN_PCF_MAX_SIDE.
-inline constexpr int kPcfMaxSide = 8192;
-
-struct PcfWindow {
-  int x = 0, y = 0;           // origin, texels (may lie outside the map)
-  int width = 0, height = 0;  // <= 0: empty
-};
 
 struct PcfSums {
   long occluders = 0;
@@ -32,10 +26,10 @@ struct PcfSums {
 struct PcfCover {
   long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
-PcfCover pcf_cover(const PcfWindow& window, int map_width, int map_height, int max_side = kPcfMaxSide);
+PcfCover pcf_cover(const Rect& window, int map_width, int map_height, int max_side = kPcfMaxSide);
 
 // `depth` is the raw single-channel map (NaN and ±Inf allowed).
-PcfSums pcf_reference(const Image& depth, const PcfWindow& window, double receiver_depth, double bias,
+PcfSums pcf_reference(const Image& depth, const Rect& window, double receiver_depth, double bias,
                       int max_side = kPcfMaxSide);
 
 }  // namespace pn

@@ -25,18 +25,12 @@
 #include <unordered_map>
 
 #include "core/image.h"
-#include "pipeline/pcss_settings.h"  // RegionMode
-#include "reference/traversal_reference.h"  // Rect
-#include "pcss_regions.h"
+#include "core/texel_rect.h"
+#include "modules/pcss_regions.h"
+#include "modules/traversal.h"
 #include "scene/light_model.h"
 
 namespace pn {
-
-// The module's loop bound (pcss_regions.h): more iterations than this refine no further.
-inline constexpr int kRefineMaxIterations = PN_REFINE_MAX_ITERATIONS;
-
-// The side of an entry known to be lit.
-inline constexpr double kRegionLit = PN_REGION_LIT;
 
 struct RegionEntry {
   double depth = 0.0, x = 0.0, y = 0.0, side = kRegionLit;

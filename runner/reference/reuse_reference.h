@@ -5,21 +5,9 @@
 #include <vector>
 
 #include "core/image.h"
-#include "reuse.h"  // glsl/reuse.h: PN_REUSE_MAX_TILE and the parent codes, shared with the shaders
+#include "modules/reuse.h"
 
 namespace pn {
-
-struct ReuseParams {
-  float sigma1 = 0.0f;  // region side
-  float sigma2 = 0.1f;  // region centre x, y
-  float sigma3 = 0.1f;  // depth
-  int tile = 4;         // k: 4 for Step 4, 2 for Step 5
-
-  // Throws Error for negative or NaN sigmas and tiles outside 1…kReuseMaxTile.
-  void validate() const;
-};
-
-inline constexpr int kReuseMaxTile = PN_REUSE_MAX_TILE;
 
 // Eq. 7 on two entries (d, x, y, s).
 bool reuse_similar(const float a[4], const float b[4], const ReuseParams& params);

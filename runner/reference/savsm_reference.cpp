@@ -18,21 +18,6 @@ bool empty(const Rect& r) { return r.width <= 0 || r.height <= 0; }
 
 }  // namespace
 
-const char* savsm_blocker_name(SavsmBlocker blocker) {
-  return blocker == SavsmBlocker::table ? "table" : "min";
-}
-
-void SavsmSettings::validate() const {
-  const auto bad = [](const char* what, float v, const char* expected) {
-    return Error(std::string("savsm ") + what + " " + format_number("%g", v) + ": expected " + expected);
-  };
-  if (!std::isfinite(bias) || bias < 0.0f) throw bad("bias", bias, "a finite number >= 0");
-  if (!std::isfinite(filter_scale) || filter_scale < 0.0f) throw bad("filter scale", filter_scale, "a finite number >= 0");
-  if (!std::isfinite(min_variance) || min_variance < 0.0f) throw bad("min variance", min_variance, "a finite number >= 0");
-  if (!(bleeding_reduction >= 0.0f && bleeding_reduction <= static_cast<float>(kVsmMaxBleedingReduction)))
-    throw bad("bleeding reduction", bleeding_reduction, "a number from 0 to 0.99 (PN_VSM_MAX_BLEEDING_REDUCTION)");
-}
-
 SavsmMoments savsm_rect_moments(const Image& depth, const Rect& rect, double near_depth, double far_depth) {
   SavsmMoments m;
   const int x0 = std::max(rect.x, 0), y0 = std::max(rect.y, 0);

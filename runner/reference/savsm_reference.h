@@ -4,45 +4,15 @@
 // and every step — the search square, the Chebyshev blocker estimate or the
 // square's min, Eq. (1)'s filter square, the Chebyshev bound, the bleeding
 // reduction and the depth-range bound — follows the module's header in double.
-// The settings the savsm technique and its passes take live here too.
 #pragma once
 
-#include <savsm.h>  // glsl/savsm.h: PN_SAVSM_*, shared with the shader
-
 #include "core/image.h"
-#include "reference/traversal_reference.h"  // Rect
+#include "core/texel_rect.h"
+#include "modules/savsm.h"
 #include "reference/vsm_reference.h"        // DepthRange, chebyshev, reduce_bleeding
 #include "scene/light_model.h"
 
 namespace pn {
-
-inline constexpr double kSavsmMinOccluded = PN_SAVSM_MIN_OCCLUDED;
-inline constexpr int kSavsmRectFetches = PN_SAVSM_RECT_FETCHES;
-inline constexpr int kSavsmMaxSquareFetches = PN_SAVSM_MAX_SQUARE_FETCHES;
-
-enum class SavsmBlocker { table = PN_SAVSM_BLOCKER_TABLE, min = PN_SAVSM_BLOCKER_MIN };
-const char* savsm_blocker_name(SavsmBlocker blocker);  // "table", "min"
-
-struct SavsmSettings {
-  float bias = 0.02f;                                                        // light-depth units
-  float filter_scale = static_cast<float>(PN_SAVSM_FILTER_SCALE);             // c
-  float min_variance = static_cast<float>(PN_VSM_MIN_VARIANCE);               // relative to mu^2
-  float bleeding_reduction = static_cast<float>(PN_VSM_BLEEDING_REDUCTION);  // linstep's a
-  SavsmBlocker blocker = SavsmBlocker::min;  // the truth favours it (docs/modules/savsm.md)
-  bool bound = true;  // the mip chain's lit test over the search square and depth-range bound over the filter
-
-  // Whether the module reads the min/max mip chain: for the bound, or for the min blocker.
-  bool reads_mip() const { return bound || blocker == SavsmBlocker::min; }
-
-  // Throws Error naming the setting and its range: bias, scale finite >= 0, min variance finite
-  // >= 0, bleeding in [0, PN_VSM_MAX_BLEEDING_REDUCTION].
-  void validate() const;
-};
-
-struct SavsmReceiver {
-  float u = 0.0f, v = 0.0f;  // shadow-map texels (texel i spans [i, i + 1))
-  float depth = 0.0f;        // linear light depth
-};
 
 // Mean and variance (depth units) of a rectangle's texels, each clamped to [near, far] and read
 // as far where not finite (the table's unit depth, undone); texels 0: mean and variance 0.

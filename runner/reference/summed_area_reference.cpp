@@ -22,7 +22,7 @@ double magnitude_limit(int fraction_bits) { return std::ldexp(1.0, kSummedAreaMa
 
 }  // namespace
 
-SummedAreaCover summed_area_cover(const SummedAreaRect& rect, int map_width, int map_height) {
+SummedAreaCover summed_area_cover(const Rect& rect, int map_width, int map_height) {
   // In 64-bit: no overflow whatever the rectangle.
   const auto axis = [](long origin, long size, long extent, long& lo, long& hi) {
     lo = std::clamp(origin, 0L, extent);
@@ -75,7 +75,7 @@ SummedAreaReference::SummedAreaReference(const Image& depth, int fraction_bits)
     }
 }
 
-SummedAreaSums SummedAreaReference::sums(const SummedAreaRect& rect) const {
+SummedAreaSums SummedAreaReference::sums(const Rect& rect) const {
   const SummedAreaCover c = summed_area_cover(rect, width_, height_);
   SummedAreaSums s;
   s.texels = c.texels();
@@ -95,7 +95,7 @@ SummedAreaSums SummedAreaReference::sums(const SummedAreaRect& rect) const {
   return s;
 }
 
-SummedAreaSums summed_area_reference(const Image& depth, const SummedAreaRect& rect, int fraction_bits) {
+SummedAreaSums summed_area_reference(const Image& depth, const Rect& rect, int fraction_bits) {
   return SummedAreaReference(depth, fraction_bits).sums(rect);
 }
 
@@ -211,7 +211,7 @@ SummedAreaMomentsReference::SummedAreaMomentsReference(const Image& depth, const
   }
 }
 
-MomentsSums SummedAreaMomentsReference::sums(const SummedAreaRect& rect) const {
+MomentsSums SummedAreaMomentsReference::sums(const Rect& rect) const {
   const SummedAreaCover c = summed_area_cover(rect, width_, height_);
   MomentsSums s;
   s.texels = c.texels();

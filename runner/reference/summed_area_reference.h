@@ -9,29 +9,18 @@
 #include <cstdint>
 #include <vector>
 
-#include <summed_area.h>  // glsl/summed_area.h: PN_SUMMED_AREA_*, shared with the shader
-
 #include "core/image.h"
+#include "core/texel_rect.h"
+#include "modules/summed_area.h"
 
 namespace pn {
-
-inline constexpr int kSummedAreaFractionBits = PN_SUMMED_AREA_FRACTION_BITS;
-inline constexpr int kSummedAreaMagnitudeBits = PN_SUMMED_AREA_MAGNITUDE_BITS;
-inline constexpr int kSummedAreaMaxSide = PN_SUMMED_AREA_MAX_SIDE;
-inline constexpr int kSummedAreaMomentBits = PN_SUMMED_AREA_MOMENT_BITS;
-inline constexpr int kSummedAreaMaxMomentBits = PN_SUMMED_AREA_MAX_MOMENT_BITS;
-
-struct SummedAreaRect {
-  int x = 0, y = 0;           // origin, texels (may lie outside the map)
-  int width = 0, height = 0;  // <= 0: empty
-};
 
 // The covered part of `rect` on a width × height map: [x0, x1) × [y0, y1).
 struct SummedAreaCover {
   long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   long texels() const { return (x1 - x0) * (y1 - y0); }
 };
-SummedAreaCover summed_area_cover(const SummedAreaRect& rect, int map_width, int map_height);
+SummedAreaCover summed_area_cover(const Rect& rect, int map_width, int map_height);
 
 // q(d) for a finite depth: round half to even of the clamped depth times 2^F. Throws Error unless
 // 0 <= fraction_bits <= kSummedAreaMagnitudeBits; `depth` must be finite.
@@ -61,7 +50,7 @@ class SummedAreaReference {
   // `depth` is the raw single-channel map (NaN and ±Inf allowed).
   explicit SummedAreaReference(const Image& depth, int fraction_bits = kSummedAreaFractionBits);
 
-  SummedAreaSums sums(const SummedAreaRect& rect) const;
+  SummedAreaSums sums(const Rect& rect) const;
   int fraction_bits() const { return fraction_bits_; }
 
  private:
@@ -73,7 +62,7 @@ class SummedAreaReference {
 };
 
 // One rectangle of `depth`, summed directly (a SummedAreaReference made for it).
-SummedAreaSums summed_area_reference(const Image& depth, const SummedAreaRect& rect,
+SummedAreaSums summed_area_reference(const Image& depth, const Rect& rect,
                                      int fraction_bits = kSummedAreaFractionBits);
 
 // The bound on |float rectangle sum from the module − Σ d| for these sums: the
@@ -160,7 +149,7 @@ class SummedAreaMomentsReference {
   SummedAreaMomentsReference(const Image& depth, const MomentsDepthRange& range,
                              int moment_bits = kSummedAreaMomentBits);
 
-  MomentsSums sums(const SummedAreaRect& rect) const;
+  MomentsSums sums(const Rect& rect) const;
 
   // GPU mean and variance from the fixed table against the exact moments of q · 2^-B: the
   // arithmetic of pnSummedAreaRectMoments alone.

@@ -10,39 +10,11 @@
 #pragma once
 
 #include "core/image.h"
+#include "core/texel_rect.h"
 #include "sampling/sample_table.h"
-#include "traversal.h"  // glsl/traversal.h: the leaf modes PN_LEAF_*, shared with the shaders
+#include "modules/traversal.h"
 
 namespace pn {
-
-enum class LeafMode { sampled = PN_LEAF_SAMPLED, min = PN_LEAF_MIN, ramp = PN_LEAF_RAMP };
-
-// The depth sums of the mip chain's wholly occluding nodes (glsl/traversal.h).
-enum class DepthSums { none = PN_DEPTH_SUMS_NONE, table = PN_DEPTH_SUMS_TABLE, midpoint = PN_DEPTH_SUMS_MIDPOINT };
-
-struct Rect {
-  int x = 0, y = 0, width = 0, height = 0;
-};
-
-struct TraversalParams {
-  float receiver_depth = 0.0f;
-  float bias = 0.0f;
-  int leaf_side = 1;
-  LeafMode leaf_mode = LeafMode::sampled;
-  int node_budget = 1 << 26;
-  int pixel_x = 0, pixel_y = 0;
-};
-
-struct TraversalResult {
-  double occluders = 0.0;
-  double depth_sum = 0.0;
-  double texels = 0.0;
-  long nodes = 0;
-  long fetches = 0;
-
-  double blocker_mean() const { return occluders > 0 ? depth_sum / occluders : 0.0; }
-  double occluded_fraction() const { return texels > 0 ? occluders / texels : 0.0; }
-};
 
 // `depth` is a sanitized N×N map (sanitized_depths); `region` lies inside it.
 TraversalResult brute_force_occluders(const Image& depth, const Rect& region, float receiver_depth, float bias);

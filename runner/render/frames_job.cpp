@@ -7,15 +7,15 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/write_file.h"
-#include "figures/canvas.h"
-#include "figures/lit_image.h"
+#include "draw/canvas.h"
+#include "metrics/lit_image.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
 #include "passes/gbuffer_pass.h"
 #include "passes/surface_pass.h"
 #include "render/render_job.h"
 #include "scene/animated_scene.h"
-#include "technique/shadow_map_source.h"
+#include "technique/shadow_map_sources.h"
 #include "technique/technique_registry.h"
 
 namespace pn {

@@ -14,7 +14,7 @@
 
 #include "gl/context.h"
 #include "shader/source_tree.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

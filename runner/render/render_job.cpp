@@ -6,13 +6,14 @@
 
 #include "core/error.h"
 #include "core/format.h"
-#include "figures/canvas.h"
-#include "figures/lit_image.h"
+#include "core/named.h"
+#include "draw/canvas.h"
+#include "metrics/lit_image.h"
 #include "cascades/cascade_math.h"
 #include "scene/city_scene.h"
 #include "scene/model.h"
 #include "scene/scene.h"
-#include "technique/shadow_map_source.h"
+#include "technique/shadow_map_sources.h"
 #include "technique/technique_registry.h"
 
 namespace pn {
@@ -93,14 +94,9 @@ Canvas draw_sheet(const std::string& title, const Comparison& c) {
 
 // The scene fixture kinds render knows, by name: throws Error listing every name.
 void validate_scene_name(const std::string& name) {
-  if (find_city_scene_fixture_or_null(name)) return;
-  std::string known;
-  for (const auto& f : fixtures::kScenes) {
-    if (name == f.name) return;
-    known += std::string(known.empty() ? "" : ", ") + f.name;
-  }
-  for (const auto& f : fixtures::kCityScenes) known += std::string(", ") + f.name;
-  throw Error("unknown scene '" + name + "': expected one of " + known);
+  if (find_city_scene_fixture_or_null(name) || find_named_or_null(fixtures::kScenes, name)) return;
+  throw Error("unknown scene '" + name + "': expected one of " + known_names(fixtures::kScenes) + ", " +
+              known_names(fixtures::kCityScenes));
 }
 
 // The lit image with each pixel tinted by its cascade's colour (none: untinted).

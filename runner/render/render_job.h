@@ -15,14 +15,14 @@
 #include "scene/scene.h"
 #include "shader/source_tree.h"
 #include "technique/comparison.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 
 struct RenderSetup {
   std::string scene = "boxes";   // a box scene (fixtures/scenes.h) or the city (fixtures/city_scenes.h)
   std::filesystem::path model;  // non-empty: a model scene from this mesh file (scene/model.h) instead
-  std::string source = "full";  // the shadow-map source (technique/shadow_map_source.h)
+  std::string source = "full";  // the shadow-map source (frame/shadow_map_source.h)
   double light_scale = 1.0;  // multiplies the scene's light width (the penumbrae grow with it)
   int map_size = 512;
   int screen_size = 512;

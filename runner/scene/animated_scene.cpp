@@ -8,18 +8,14 @@
 
 #include "core/error.h"
 #include "core/integer_hash.h"
+#include "core/named.h"
 #include "core/seeded_random.h"
 #include "scene/model.h"
 
 namespace pn {
 
 const fixtures::AnimatedSceneFixture& find_animated_scene_fixture(const std::string& name) {
-  std::string names;
-  for (const auto& f : fixtures::kAnimatedScenes) {
-    if (name == f.name) return f;
-    names += (names.empty() ? "" : ", ") + std::string(f.name);
-  }
-  throw Error("animated scene '" + name + "': expected one of " + names);
+  return find_named(fixtures::kAnimatedScenes, name, "animated scene '" + name + "'");
 }
 
 std::filesystem::path animated_scene_model(const std::filesystem::path& chosen) {

@@ -1,7 +1,6 @@
 // The light as the float fields of light_model.glsl's PnLight that a pass's
-// uniform block carries under one set of names (lightWidth, lightNear,
-// lightNearPlaneWidth, mapSize, lightSpread, lightTexelWorld:
-// passes/pcss_params.h, pcss_regions_query.h, savsm_params.h), set in one place.
+// uniform block carries (PN_LIGHT_FIELDS, glsl/passes/light_fields.h), set in
+// one place.
 #pragma once
 
 #include "scene/light_model.h"

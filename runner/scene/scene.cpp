@@ -6,8 +6,9 @@
 
 #include "core/error.h"
 #include "core/format.h"
-#include "cascades/cascade_fit.h"
+#include "core/named.h"
 #include "core/seeded_random.h"
+#include "scene/light_view.h"
 
 namespace pn {
 
@@ -92,12 +93,7 @@ std::vector<glm::vec3> Scene::triangles() const {
 }
 
 const fixtures::SceneFixture& find_scene_fixture(const std::string& name) {
-  std::string known;
-  for (const auto& fixture : fixtures::kScenes) {
-    if (name == fixture.name) return fixture;
-    known += (known.empty() ? "" : ", ") + std::string(fixture.name);
-  }
-  throw Error("unknown scene '" + name + "': expected one of " + known);
+  return find_named(fixtures::kScenes, name, "unknown scene '" + name + "'");
 }
 
 void validate_light_width_factor(double factor, const char* what) {

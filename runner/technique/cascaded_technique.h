@@ -8,7 +8,7 @@
 #pragma once
 
 #include "passes/cascade_blend_pass.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

@@ -8,8 +8,10 @@
 #include "core/format.h"
 #include "gl/texture.h"
 #include "cascades/cascaded_frame.h"
+#include "passes/shadow_map_pass.h"
 #include "passes/surface_pass.h"
 #include "technique/cascaded_technique.h"
+#include "technique/shadow_map_sources.h"
 #include "technique/technique_registry.h"
 #include "truth/ray_traced_truth.h"
 

@@ -13,8 +13,8 @@
 #include "core/image.h"
 #include "metrics/scores.h"
 #include "scene/scene.h"
-#include "technique/scene_frame.h"
-#include "technique/technique.h"
+#include "frame/scene_frame.h"
+#include "frame/technique.h"
 
 namespace pn {
 

@@ -7,7 +7,7 @@
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
 #include "gl/texture.h"
-#include "technique/setting_value.h"
+#include "frame/setting_value.h"
 
 namespace pn::glsl {
 #include "passes/pcf_shade.h"

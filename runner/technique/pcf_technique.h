@@ -8,7 +8,7 @@
 #include <string>
 
 #include "gl/compute_program.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

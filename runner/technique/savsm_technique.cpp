@@ -3,31 +3,12 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "frame/settings_config.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
-#include "technique/setting_value.h"
+#include "frame/setting_value.h"
 
 namespace pn {
-namespace {
-
-class SavsmConfig : public TechniqueConfig {
- public:
-  explicit SavsmConfig(SavsmTechniqueSettings settings) : settings_(std::move(settings)) {}
-  std::string name() const override { return settings_.name; }
-  void rename(const std::string& name) override { settings_.name = name; }
-  std::vector<std::string> keys() const override { return savsm_setting_keys(); }
-  void set(const std::string& key, const std::string& value) override { set_savsm_setting(settings_, key, value); }
-  void validate() const override { settings_.validate(); }
-  std::unique_ptr<Technique> create(TechniqueResources& resources) const override {
-    return std::make_unique<SavsmTechnique>(resources.context(), resources.shared<SavsmPasses>(), settings_);
-  }
-  std::unique_ptr<TechniqueConfig> clone() const override { return std::make_unique<SavsmConfig>(settings_); }
-
- private:
-  SavsmTechniqueSettings settings_;
-};
-
-}  // namespace
 
 void SavsmTechniqueSettings::validate() const {
   try {
@@ -63,7 +44,11 @@ std::unique_ptr<TechniqueConfig> savsm_config(const char* name,
   SavsmTechniqueSettings s;
   s.name = name;
   for (const auto& [key, value] : overrides) set_savsm_setting(s, key, value);
-  return std::make_unique<SavsmConfig>(s);
+  return settings_config<SavsmTechniqueSettings>(
+      s, {&savsm_setting_keys, &set_savsm_setting,
+          [](TechniqueResources& resources, const SavsmTechniqueSettings& settings) -> std::unique_ptr<Technique> {
+            return std::make_unique<SavsmTechnique>(resources.context(), resources.shared<SavsmPasses>(), settings);
+          }});
 }
 
 SavsmPasses::SavsmPasses(const Context& context, const SourceTree& tree)

@@ -13,7 +13,7 @@
 #include "passes/minmax_mip_pass.h"
 #include "passes/savsm_pass.h"
 #include "passes/summed_area_pass.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

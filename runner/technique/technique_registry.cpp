@@ -1,7 +1,8 @@
 #include "technique/technique_registry.h"
 
 #include "core/error.h"
-#include "pipeline/pcss_technique.h"
+#include "core/named.h"
+#include "technique/pcss_technique.h"
 #include "technique/pcf_technique.h"
 #include "technique/savsm_technique.h"
 #include "technique/vsm_technique.h"
@@ -64,13 +65,8 @@ const std::vector<TechniqueEntry>& technique_registry() {
 std::unique_ptr<TechniqueConfig> parse_technique(const std::string& spec) {
   size_t colon = spec.find(':');
   const std::string name = spec.substr(0, colon);
-  std::unique_ptr<TechniqueConfig> config;
-  std::string known;
-  for (const TechniqueEntry& e : technique_registry()) {
-    if (name == e.name) config = e.make();
-    known += (known.empty() ? "" : ", ") + std::string(e.name);
-  }
-  if (!config) throw Error("unknown method '" + name + "': expected one of " + known);
+  std::unique_ptr<TechniqueConfig> config =
+      find_named(technique_registry(), name, "unknown method '" + name + "'").make();
   config->rename(spec);
   while (colon != std::string::npos) {
     const size_t next = spec.find(':', colon + 1);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

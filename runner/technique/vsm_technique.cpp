@@ -4,29 +4,13 @@
 #include <exception>
 
 #include "core/error.h"
-#include "technique/setting_value.h"
+#include "frame/setting_value.h"
 #include "core/format.h"
+#include "frame/settings_config.h"
 #include "gl/gpu_timer.h"
 
 namespace pn {
 namespace {
-
-class VsmConfig : public TechniqueConfig {
- public:
-  explicit VsmConfig(VsmTechniqueSettings settings) : settings_(std::move(settings)) {}
-  std::string name() const override { return settings_.name; }
-  void rename(const std::string& name) override { settings_.name = name; }
-  std::vector<std::string> keys() const override { return vsm_setting_keys(); }
-  void set(const std::string& key, const std::string& value) override { set_vsm_setting(settings_, key, value); }
-  void validate() const override { settings_.validate(); }
-  std::unique_ptr<Technique> create(TechniqueResources& resources) const override {
-    return std::make_unique<VsmTechnique>(resources.context(), resources.shared<VsmPasses>(), settings_);
-  }
-  std::unique_ptr<TechniqueConfig> clone() const override { return std::make_unique<VsmConfig>(settings_); }
-
- private:
-  VsmTechniqueSettings settings_;
-};
 
 // The pyramid levels the depth-range bound reads: its square's side 2r + 1 at level floor(log2(2r + 1)).
 int bound_levels(int radius) {
@@ -68,7 +52,11 @@ std::unique_ptr<TechniqueConfig> vsm_config(VsmKind kind, const char* name) {
   VsmTechniqueSettings s;
   s.name = name;
   s.params.kind = kind;
-  return std::make_unique<VsmConfig>(s);
+  return settings_config<VsmTechniqueSettings>(
+      s, {&vsm_setting_keys, &set_vsm_setting,
+          [](TechniqueResources& resources, const VsmTechniqueSettings& settings) -> std::unique_ptr<Technique> {
+            return std::make_unique<VsmTechnique>(resources.context(), resources.shared<VsmPasses>(), settings);
+          }});
 }
 
 VsmPasses::VsmPasses(const Context& context, const SourceTree& tree)

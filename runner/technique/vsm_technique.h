@@ -10,7 +10,7 @@
 #include <string>
 
 #include "passes/vsm_pass.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

@@ -1,4 +1,4 @@
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

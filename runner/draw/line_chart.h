@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "figures/canvas.h"
+#include "draw/canvas.h"
 
 namespace pn {
 

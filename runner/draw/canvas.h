@@ -1,6 +1,6 @@
 // A small RGB picture for the docs' figures: filled and outlined rectangles,
 // grey-scale, colour and signed (diverging) images scaled up, text labels
-// (figures/font.h), written as PNG (stb_image_write).
+// (draw/font.h), written as PNG (stb_image_write).
 #pragma once
 
 #include <array>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "figures/font.h"
+#include "draw/font.h"
 
 namespace pn {
 

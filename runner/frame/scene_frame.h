@@ -4,8 +4,8 @@
 #pragma once
 
 #include "passes/gbuffer_pass.h"
-#include "technique/shadow_map_source.h"
-#include "technique/technique.h"
+#include "frame/shadow_map_source.h"
+#include "frame/technique.h"
 
 namespace pn {
 

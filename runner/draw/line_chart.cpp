@@ -1,4 +1,4 @@
-#include "figures/line_chart.h"
+#include "draw/line_chart.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "technique/scene_frame.h"
+#include "frame/scene_frame.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "figures/font.h"
+#include "draw/font.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "figures/canvas.h"
+#include "draw/canvas.h"
 
 #include <algorithm>
 #include <climits>

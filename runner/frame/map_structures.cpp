@@ -1,8 +1,8 @@
-#include "cache/map_structures.h"
+#include "frame/map_structures.h"
 
 #include "core/error.h"
 #include "gl/texture.h"
-#include "reference/depth_pyramid_reference.h"
+#include "modules/depth_pyramid.h"
 
 namespace pn {
 

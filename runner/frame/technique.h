@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "gl/objects.h"
+#include "passes/cascade_blend_pass.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
 
@@ -39,14 +40,9 @@ struct TechniqueInputs {
 };
 
 // A cascaded frame's layers: each cascade's map, G-buffer and light as one TechniqueInputs, and
-// what blends their visibilities (cascades.glsl, passes/cascade_blend.comp).
-struct CascadeInputs {
-  std::vector<TechniqueInputs> layers;   // nearest cascade first, at most PN_CASCADES_MAX
-  const GlObject* view_depth = nullptr;  // screen² RGBA32F: z the camera's view depth, w = 1 where a surface is seen
-  float split_far[4] = {0, 0, 0, 0};     // C_1 ... C_m
-  float near = 0;                        // C_0
-  float band = 0;
-  bool fade_last = true;
+// what blends their visibilities (cascades.glsl, passes/cascade_blend_pass.h).
+struct CascadeInputs : CascadeBlend {
+  std::vector<TechniqueInputs> layers;  // nearest cascade first, at most PN_CASCADES_MAX
 };
 
 // Named values, in the order they are printed.

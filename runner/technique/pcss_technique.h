@@ -7,7 +7,7 @@
 #include <string>
 
 #include "pipeline/pcss_pipeline.h"
-#include "technique/technique.h"
+#include "frame/technique.h"
 
 namespace pn {
 

@@ -1,4 +1,4 @@
-#include "figures/lit_image.h"
+#include "metrics/lit_image.h"
 
 #include <algorithm>
 #include <string>

@@ -1,0 +1,27 @@
+// The simplest shadow-map source: every triangle drawn into the map each frame.
+#pragma once
+
+#include <optional>
+
+#include "frame/shadow_map_source.h"
+#include "passes/shadow_map_pass.h"
+
+namespace pn {
+
+// Draws every triangle of the scene into the map each frame (the map, its depth buffer and the
+// vertex buffer kept between frames, every vertex written again), and rebuilds the structures.
+class FullRenderSource : public ShadowMapSource {
+ public:
+  FullRenderSource(const Context& context, const SourceTree& tree, const SourceOptions& options = {});
+  const SourcedMap& render(const Scene& scene) override;
+
+ private:
+  const Context* context_;
+  ShadowMapRenderer renderer_;
+  MapStructures structures_;
+  std::optional<SceneGeometry> geometry_;
+  std::optional<RasterTarget> target_;
+  SourcedMap out_;
+};
+
+}  // namespace pn

@@ -1,0 +1,10 @@
+// C++ face of glsl/pcf.glsl: the bound on a window's side, shared by the pcf
+// pass and the pcf reference.
+#pragma once
+
+namespace pn {
+
+// glsl/pcf.glsl's default PN_PCF_MAX_SIDE.
+inline constexpr int kPcfMaxSide = 8192;
+
+}  // namespace pn

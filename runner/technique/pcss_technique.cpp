@@ -1,0 +1,33 @@
+#include "technique/pcss_technique.h"
+
+#include "frame/settings_config.h"
+
+namespace pn {
+TechniqueFrame PcssTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
+  PcssFrame frame = pipeline_->run(inputs, settings_);
+  TechniqueFrame out;
+  out.stages = frame.stages;
+  if (with_stats) {
+    const PcssStats stats = pipeline_->stats(frame);
+    out.stats = {{"representatives", stats.representative_fraction()}, {"work/px", stats.work_per_receiver()}};
+  }
+  out.visibility = std::move(settings_.blur ? frame.blurred : frame.visibility);
+  return out;
+}
+
+std::unique_ptr<TechniqueConfig> pcss_config(PcssSettings settings) {
+  return settings_config<PcssSettings>(
+      std::move(settings), {[] { return pcss_setting_keys(); }, &set_pcss_setting,
+                            [](TechniqueResources& resources, const PcssSettings& s) -> std::unique_ptr<Technique> {
+                              return std::make_unique<PcssTechnique>(resources.shared<PcssPipeline>(), s);
+                            }});
+}
+
+std::unique_ptr<TechniqueConfig> pcss_ablation(const char* name, const char* key, const char* value) {
+  PcssSettings s = fast_pcss();  // one switch away from the shipped defaults
+  s.name = name;
+  set_pcss_setting(s, key, value);
+  return pcss_config(s);
+}
+
+}  // namespace pn
