@@ -21,7 +21,7 @@ CascadeBlendPass::CascadeBlendPass(const Context& context, const SourceTree& tre
       program_(compile_pass(context, tree, "passes/cascade_blend.comp")),
       unused_(make_float_texture(context, 1, 1, 1)) {}
 
-GlObject CascadeBlendPass::run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities,
+FloatTexture CascadeBlendPass::run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities,
                                int screen_size) const {
   const size_t count = cascades.layers.size();
   if (count < 1 || count > 4 || visibilities.size() != count || !cascades.view_depth)
@@ -33,7 +33,7 @@ GlObject CascadeBlendPass::run(const CascadeInputs& cascades, const std::vector<
   block.count = static_cast<int>(count);
   block.band = cascades.band;
   block.fadeLast = cascades.fade_last ? 1 : 0;
-  GlObject target = make_float_texture(*context_, screen_size, screen_size, 1);
+  FloatTexture target = make_float_texture(*context_, screen_size, screen_size, 1);
   {
     PassBindings bind(*context_);
     bind.uniform(block);

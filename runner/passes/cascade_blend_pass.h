@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gl/compute_program.h"
+#include "gl/texture.h"
 #include "shader/source_tree.h"
 #include "technique/technique.h"
 
@@ -15,7 +16,7 @@ class CascadeBlendPass {
   CascadeBlendPass(const Context& context, const SourceTree& tree);
 
   // One screen² R32F visibility from `visibilities` (one a layer of `cascades`, screen² R32F).
-  GlObject run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities, int screen_size) const;
+  FloatTexture run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities, int screen_size) const;
 
  private:
   const Context* context_;

@@ -193,7 +193,7 @@ MomentsTable SummedAreaMomentsPass::build(const GlObject& depth_map, MomentsTabl
   const int tw = table.width + 1, th = table.height + 1;
   const bool fixed = kind == MomentsTableKind::fixed;
   const int channels = image_channels(*context_, 2);
-  const auto make = [&] {
+  const auto make = [&]() -> GlObject {
     if (fixed) return make_uint4_texture(*context_, tw, th);
     GLint max_size = 0;
     context_->gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
