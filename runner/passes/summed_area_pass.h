@@ -8,6 +8,7 @@
 
 #include "gl/compute_program.h"
 #include "gl/pass_variants.h"
+#include "passes/query_pass.h"
 #include "reference/summed_area_reference.h"
 #include "shader/source_tree.h"
 
@@ -52,7 +53,7 @@ class SummedAreaPass {
   const Context* context_;
   int fraction_bits_;
   ComputeProgram build_;
-  ComputeProgram query_;
+  QueryPass query_;
 };
 
 // ---- Moments tables (seed 004's summed-area variance shadow maps) ----------
@@ -105,7 +106,7 @@ class SummedAreaMomentsPass {
   const Context* context_;
   int moment_bits_;
   PassVariants build_;
-  PassVariants query_;
+  QueryPass fixed_query_, float_query_;  // by PN_SUMMED_AREA_QUERY_KIND, each compiled on first use
 };
 
 }  // namespace pn

@@ -10,6 +10,7 @@
 #include "gl/pass_variants.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
+#include "passes/query_pass.h"
 #include "reference/vsm_reference.h"
 #include "shader/source_tree.h"
 
@@ -54,8 +55,7 @@ class VsmQueryPass {
                          const VsmParams& params) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
 };
 
 // Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid): the
@@ -64,7 +64,7 @@ class VsmQueryPass {
 class VsmShadePass {
  public:
   VsmShadePass(const Context& context, const SourceTree& tree);
-  GlObject run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
+  FloatTexture run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
                const VsmParams& params, float bias) const;
 
  private:
