@@ -185,8 +185,9 @@ std::vector<CaseResult> run_blur_check(const CheckEnvironment& env) {
           map = filter_sides(size.width, size.height, c.params.pixels_per_texel, c.params.radius);
           map_texture = upload_float_texture(env.context, map);
         }
-        const FloatTexture result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr, size.width,
-                                             size.height, c.params, c.params.adaptive ? &map_texture : nullptr);
+        const FloatTexture result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr,
+                                             size.width, size.height, c.params,
+                                             c.params.adaptive ? &map_texture : nullptr);
         const Image observed = read_float_texture(env.context, result);
         const Image expected =
             c.params.adaptive      ? blur_adaptive_reference(source, map, c.params.depth_aware ? &depth : nullptr, c.params)

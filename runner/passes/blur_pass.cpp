@@ -36,7 +36,7 @@ const ComputeProgram& BlurPass::program(const BlurParams& params, int channels) 
 }
 
 FloatTexture BlurPass::run(const GlObject& source, const GlObject* depth, int width, int height,
-                       const BlurParams& params, const GlObject* filter_map, int channels) const {
+                           const BlurParams& params, const GlObject* filter_map, int channels) const {
   params.validate();
   if (channels != 1 && channels != 2 && channels != 4)
     throw Error("blur: " + std::to_string(channels) + " channels: expected 1, 2 or 4");

@@ -27,7 +27,7 @@ class BlurPass {
   // params.adaptive. Throws Error for invalid params or channel counts, and
   // when adaptive without a filter map.
   FloatTexture run(const GlObject& source, const GlObject* depth, int width, int height, const BlurParams& params,
-               const GlObject* filter_map = nullptr, int channels = 1) const;
+                   const GlObject* filter_map = nullptr, int channels = 1) const;
 
  private:
   const ComputeProgram& program(const BlurParams& params, int channels) const;

@@ -22,7 +22,7 @@ CascadeBlendPass::CascadeBlendPass(const Context& context, const SourceTree& tre
       unused_(make_float_texture(context, 1, 1, 1)) {}
 
 FloatTexture CascadeBlendPass::run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities,
-                               int screen_size) const {
+                                   int screen_size) const {
   const size_t count = cascades.layers.size();
   if (count < 1 || count > 4 || visibilities.size() != count || !cascades.view_depth)
     throw Error("cascade blend: " + std::to_string(visibilities.size()) + " visibilities for " + std::to_string(count) +

@@ -16,7 +16,8 @@ class CascadeBlendPass {
   CascadeBlendPass(const Context& context, const SourceTree& tree);
 
   // One screen² R32F visibility from `visibilities` (one a layer of `cascades`, screen² R32F).
-  FloatTexture run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities, int screen_size) const;
+  FloatTexture run(const CascadeInputs& cascades, const std::vector<const GlObject*>& visibilities,
+                   int screen_size) const;
 
  private:
   const Context* context_;

@@ -23,7 +23,7 @@ class GBufferRenderer {
   // lies in [view_depth_lo, view_depth_hi): a pixel whose nearest surface lies outside is
   // 0, "no surface". The camera's own view and projection as `light` make channel z the view depth.
   FloatTexture render(const Scene& scene, int screen_size, float normal_offset_texels, const MapLight& light,
-                  float view_depth_lo = 0.0f, float view_depth_hi = INFINITY) const;
+                      float view_depth_lo = 0.0f, float view_depth_hi = INFINITY) const;
 
  private:
   const Context* context_;

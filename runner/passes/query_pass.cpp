@@ -32,7 +32,8 @@ QueryBatch::QueryBatch(const Context& context, const std::vector<Image>& inputs,
 QueryResults QueryBatch::read() const {
   QueryResults out;
   for (const FloatTexture& result : results_) out.images.push_back(read_float_texture(*context_, result));
-  for (const GlObject& words : word_results_) out.words.push_back(read_uint4_texture(*context_, words, width_, height_));
+  for (const GlObject& words : word_results_)
+    out.words.push_back(read_uint4_texture(*context_, words, width_, height_));
   return out;
 }
 

@@ -67,7 +67,7 @@ SavsmPass::SavsmPass(const Context& context, const SourceTree& tree)
                    QueryCompile::on_first_use) {}
 
 FloatTexture SavsmPass::shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer,
-                          int screen_size, const LightModel& light, const SavsmSettings& settings) const {
+                              int screen_size, const LightModel& light, const SavsmSettings& settings) const {
   check_sizes(table, light);
   const glsl::PnSavsmParams block = make_block(table, light, settings);
   FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);

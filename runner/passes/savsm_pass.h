@@ -34,7 +34,7 @@ class SavsmPass {
   // screen² R32F texture; pixels without a surface are 1. `mip`: the map's min/max mip chain
   // (read when settings.bound or the min blocker mode; else any 2-D texture).
   FloatTexture shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer, int screen_size,
-                 const LightModel& light, const SavsmSettings& settings) const;
+                     const LightModel& light, const SavsmSettings& settings) const;
 
   // One result per receiver (u, v in texels, linear light depth).
   std::vector<SavsmQueryResult> query(const MomentsTable& table, const GlObject& mip,

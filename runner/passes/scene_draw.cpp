@@ -134,7 +134,7 @@ void RasterTarget::draw(const GlObject& program, const SceneGeometry& geometry, 
 }
 
 FloatTexture draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
-                    const float clear[4]) {
+                        const float clear[4]) {
   const SceneGeometry geometry(context, scene);
   RasterTarget target(context, size, channels);
   target.clear(clear);

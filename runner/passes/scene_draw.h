@@ -66,6 +66,6 @@ class RasterTarget {
 // Renders every triangle of `scene` with `program` into a new size×size float texture of
 // `channels` channels cleared to `clear` (a SceneGeometry and a RasterTarget used once).
 FloatTexture draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
-                    const float clear[4]);
+                        const float clear[4]);
 
 }  // namespace pn

@@ -41,6 +41,13 @@ GlObject make_uint4_texture(const Context& context, int width, int height) {
   return texture;
 }
 
+// The query passes' rectangles and float results, and their exact sums (`words`) where they have them.
+QueryBindings query_bindings(bool words) {
+  QueryBindings b{{PN_SUMMED_AREA_QUERY_RECTS_BINDING}, {PN_SUMMED_AREA_QUERY_FLOAT_IMAGE}, {}};
+  if (words) b.word_results.push_back(PN_SUMMED_AREA_QUERY_FIXED_IMAGE);
+  return b;
+}
+
 void texture_size(const Context& context, const GlObject& texture, int& width, int& height) {
   GLint w = 0, h = 0, previous = 0;
   const auto& gl = context.gl();
@@ -104,9 +111,7 @@ SummedAreaPass::SummedAreaPass(const Context& context, const SourceTree& tree, i
     : context_(&context),
       fraction_bits_(fraction_bits),
       build_(compile_pass(context, tree, "passes/summed_area_build.comp", fraction_define(fraction_bits))),
-      query_(context, tree, "passes/summed_area_query.comp",
-             {{PN_SUMMED_AREA_QUERY_RECTS_BINDING}, {PN_SUMMED_AREA_QUERY_FLOAT_IMAGE}, {PN_SUMMED_AREA_QUERY_FIXED_IMAGE}},
-             fraction_define(fraction_bits)) {}
+      query_(context, tree, "passes/summed_area_query.comp", query_bindings(true), fraction_define(fraction_bits)) {}
 
 SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
   SummedAreaTable table;
@@ -157,11 +162,9 @@ SummedAreaMomentsPass::SummedAreaMomentsPass(const Context& context, const Sourc
     : context_(&context),
       moment_bits_(moment_bits),
       build_(context, tree, "passes/summed_area_build.comp"),
-      fixed_query_(context, tree, "passes/summed_area_moments_query.comp",
-                   {{PN_SUMMED_AREA_QUERY_RECTS_BINDING}, {PN_SUMMED_AREA_QUERY_FLOAT_IMAGE}, {PN_SUMMED_AREA_QUERY_FIXED_IMAGE}},
+      fixed_query_(context, tree, "passes/summed_area_moments_query.comp", query_bindings(true),
                    defines(MomentsTableKind::fixed, "PN_SUMMED_AREA_QUERY_KIND"), QueryCompile::on_first_use),
-      float_query_(context, tree, "passes/summed_area_moments_query.comp",
-                   {{PN_SUMMED_AREA_QUERY_RECTS_BINDING}, {PN_SUMMED_AREA_QUERY_FLOAT_IMAGE}},
+      float_query_(context, tree, "passes/summed_area_moments_query.comp", query_bindings(false),
                    defines(MomentsTableKind::floating, "PN_SUMMED_AREA_QUERY_KIND"), QueryCompile::on_first_use) {
   if (moment_bits < 0 || moment_bits > kSummedAreaMaxMomentBits)
     throw Error("summed-area moment bits " + std::to_string(moment_bits) + ": expected 0 to " +

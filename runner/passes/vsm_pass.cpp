@@ -78,7 +78,7 @@ VsmShadePass::VsmShadePass(const Context& context, const SourceTree& tree)
     : context_(&context), variants_(context, tree, "passes/vsm_shade.comp") {}
 
 FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer,
-                           int screen_size, const VsmParams& params, float bias) const {
+                               int screen_size, const VsmParams& params, float bias) const {
   params.validate();
   const ComputeProgram& program = variants_.get({{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}});
   FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);

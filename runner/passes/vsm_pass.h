@@ -65,7 +65,7 @@ class VsmShadePass {
  public:
   VsmShadePass(const Context& context, const SourceTree& tree);
   FloatTexture run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
-               const VsmParams& params, float bias) const;
+                   const VsmParams& params, float bias) const;
 
  private:
   const Context* context_;
