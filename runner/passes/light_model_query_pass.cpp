@@ -17,9 +17,12 @@ LightModelQueryPass::LightModelQueryPass(const Context& context, const SourceTre
              {{PN_LIGHT_MODEL_QUERY_QUERIES_BINDING}, {PN_LIGHT_MODEL_QUERY_RESULTS_BINDING}}) {}
 
 Image LightModelQueryPass::run(const LightModel& light, const Image& queries) const {
-  const glsl::PnLightParams block{static_cast<float>(light.width),           static_cast<float>(light.near_plane),
-                                  static_cast<float>(light.near_plane_width()), static_cast<float>(light.map_size),
-                                  static_cast<float>(light.spread),          static_cast<float>(light.texel_world)};
+  const glsl::PnLightParams block{static_cast<float>(light.width),
+                                  static_cast<float>(light.near_plane),
+                                  static_cast<float>(light.near_plane_width()),
+                                  static_cast<float>(light.map_size),
+                                  static_cast<float>(light.spread),
+                                  static_cast<float>(light.texel_world)};
   return query_.run(std::vector<Image>{queries}, {}, query_block(block)).images.front();
 }
 
