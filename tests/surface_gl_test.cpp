@@ -38,7 +38,7 @@ TEST_CASE("surface pass: albedo by box, cos to the light's centre from the face 
   const pn::SurfaceRenderer renderer(gl_context(), tree);
   const pn::Scene scene = pn::make_scene(pn::fixtures::kScenes[0], 128);
   const int size = 64;
-  const pn::Image seen = pn::read_float_texture(gl_context(), renderer.render(scene, size), size, size, 4);
+  const pn::Image seen = pn::read_float_texture(gl_context(), renderer.render(scene, size));
   const glm::dvec3 eye(glm::inverse(scene.camera_view())[3]);
   pn::Image expected(size, size, 4), face(size, size, 1, -1.0f);
   for (int y = 0; y < size; ++y)

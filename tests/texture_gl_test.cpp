@@ -45,8 +45,8 @@ TEST_CASE("texture readback: R32F, RG32F and RGBA32F 13x7 read back bit for bit,
   for (int channels : {1, 2, 4}) {
     CAPTURE(channels);
     const pn::Image image = special_values(13, 7, channels);
-    const pn::GlObject texture = pn::upload_float_texture(context, image);
-    CHECK(same_bits(pn::read_float_texture(context, texture, 13, 7, channels).texels, image.texels));
+    const pn::FloatTexture texture = pn::upload_float_texture(context, image);
+    CHECK(same_bits(pn::read_float_texture(context, texture).texels, image.texels));
     // The ES path, on any context: 4 floats a texel through a framebuffer.
     std::vector<float> rgba(13 * 7 * 4);
     pn::read_texels_via_framebuffer(context, texture, 0, 0, 13, 7, false, rgba.data());
@@ -102,9 +102,9 @@ TEST_CASE("texture layers: a copied layer equals the layer and its view; a frame
     CHECK(same_bits(pn::read_float_texture(context, view, 9, 9, 4).texels, layer.texels));
   }
 
-  const pn::GlObject cleared = pn::upload_float_texture(context, special_values(9, 5, 4));
+  const pn::FloatTexture cleared = pn::upload_float_texture(context, special_values(9, 5, 4));
   const float zero[4] = {0, 0, 0, 0};
   pn::clear_float_texture(context, cleared, zero);
-  CHECK(same_bits(pn::read_float_texture(context, cleared, 9, 5, 4).texels, pn::Image(9, 5, 4).texels));
+  CHECK(same_bits(pn::read_float_texture(context, cleared).texels, pn::Image(9, 5, 4).texels));
   CHECK(pn::bound_resources(context).empty());
 }

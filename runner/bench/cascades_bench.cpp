@@ -157,7 +157,7 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
   truth_settings.progress = false;
   const int n = setup.screen;
   const Truth truth = trace_truth(scene, n, truth_settings);
-  const VisibilityScorer scorer(truth.visibility, read_float_texture(context, SurfaceRenderer(context, tree).render(scene, n), n, n, 4));
+  const VisibilityScorer scorer(truth.visibility, read_float_texture(context, SurfaceRenderer(context, tree).render(scene, n)));
   for (bool stable : {true, false}) {
     progress.step(std::string(stable ? "stable" : "unstable") + " cascades along the camera path, " +
                   std::to_string(setup.path_frames) + " frames");

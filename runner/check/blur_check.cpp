@@ -143,11 +143,9 @@ void multi_channel_cases(const CheckEnvironment& env, const BlurPass& pass, std:
             depth = generate_fixture(find_fixture(c.depth_fixture), size.width, size.height);
             depth_texture = upload_float_texture(env.context, depth);
           }
-          const GlObject result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr, size.width,
-                                           size.height, c.params, nullptr, channels);
-          const Image observed = channels_of(
-              read_float_texture(env.context, result, size.width, size.height, image_channels(env.context, channels)),
-              0, channels);
+          const FloatTexture result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr,
+                                               size.width, size.height, c.params, nullptr, channels);
+          const Image observed = channels_of(read_float_texture(env.context, result), 0, channels);
           const Image expected = c.params.depth_aware ? blur_depth_aware_reference(source, depth, c.params)
                                                       : blur_reference(source, c.params);
           for (int ch = 0; ch < channels; ++ch) {
@@ -188,9 +186,10 @@ std::vector<CaseResult> run_blur_check(const CheckEnvironment& env) {
           map = filter_sides(size.width, size.height, c.params.pixels_per_texel, c.params.radius);
           map_texture = upload_float_texture(env.context, map);
         }
-        const GlObject result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr, size.width,
-                                         size.height, c.params, c.params.adaptive ? &map_texture : nullptr);
-        const Image observed = read_float_texture(env.context, result, size.width, size.height, 1);
+        const FloatTexture result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr,
+                                             size.width, size.height, c.params,
+                                             c.params.adaptive ? &map_texture : nullptr);
+        const Image observed = read_float_texture(env.context, result);
         const Image expected =
             c.params.adaptive      ? blur_adaptive_reference(source, map, c.params.depth_aware ? &depth : nullptr, c.params)
             : c.params.depth_aware ? blur_depth_aware_reference(source, depth, c.params)

@@ -101,7 +101,7 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
       const int x = random.uniform_int(-5, n), y = random.uniform_int(-5, n);
       list.push_back({x, y, x + random.uniform_int(1, 25), y + random.uniform_int(1, 25)});
     }
-    const GlObject target = upload_float_texture(env.context, Image(n, n, 1, kUntouched));
+    const FloatTexture target = upload_float_texture(env.context, Image(n, n, 1, kUntouched));
     TexelList texels;
     const TexelRun run = texels.add(list, n, n);  // overlapping rectangles list a texel twice: harmless
     texels.upload(env.context);
@@ -117,7 +117,7 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
     results.push_back({"compose pass " + std::to_string(n) + "x" + std::to_string(n) + ", " +
                            (rects == 0 ? std::string("whole map") : std::to_string(rects) + " seeded rectangles' texels") +
                            ": composed there, untouched elsewhere",
-                       Tolerance::exact(), compare(expected, read_float_texture(env.context, target, n, n, 1), Tolerance::exact())});
+                       Tolerance::exact(), compare(expected, read_float_texture(env.context, target), Tolerance::exact())});
   }
 }
 

@@ -10,24 +10,13 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/query_grid.h"
-#include "gl/compute_program.h"
-#include "gl/pass_bindings.h"
-#include "gl/std140.h"
-#include "gl/texture.h"
+#include "passes/light_model_query_pass.h"
 #include "scene/light_model.h"
-
-namespace pn::glsl {
-#include "passes/light_model_query.h"
-PN_STD140_SIZE(PnLightParams, 32);
-PN_STD140_OFFSET(PnLightParams, texelWorld, 20);
-PN_STD140_OFFSET(PnLightParams, nearPlaneWidth, 8);
-PN_STD140_OFFSET(PnLightParams, mapSize, 12);
-}  // namespace pn::glsl
 
 namespace pn {
 
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
-  const ComputeProgram program = compile_pass(env.context, env.tree, "passes/light_model_query.comp");
+  const LightModelQueryPass gpu(env.context, env.tree);
   std::vector<CaseResult> results;
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   // Area lights (perspective maps), then directional lights on orthographic maps: the sun
@@ -50,20 +39,7 @@ std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
                   {nan, n, 0, 0},       {5 * n, nan, 0, 0},   {inf, 2 * n, 0, 0},          {-3, -4, 0, 0}};
     for (const auto& [queries, is_regular] : {std::pair{regular, true}, std::pair{degenerate, false}}) {
       const Image input = query_image(queries);
-      const GlObject query_texture = upload_float_texture(env.context, input);
-      const GlObject result = make_float_texture(env.context, input.width, input.height, 4);
-      {
-        const glsl::PnLightParams block{static_cast<float>(light.width), n,
-                                        static_cast<float>(light.near_plane_width()),
-                                        static_cast<float>(light.map_size), static_cast<float>(light.spread),
-                                        static_cast<float>(light.texel_world)};
-        PassBindings bind(env.context);
-        bind.uniform(block);
-        bind.texture(PN_LIGHT_MODEL_QUERY_QUERIES_BINDING, query_texture);
-        bind.image(PN_LIGHT_MODEL_QUERY_RESULTS_BINDING, result, GL_WRITE_ONLY, GL_RGBA32F);
-        program.dispatch(input.width, input.height);
-      }
-      const Image observed = read_float_texture(env.context, result, input.width, input.height, 4);
+      const Image observed = gpu.run(light, input);
       Image expected(input.width, input.height, 4);
       for (int y = 0; y < input.height; ++y)
         for (int x = 0; x < input.width; ++x) {

@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "cache/full_render_source.h"
+#include "check/row_image.h"
 #include "core/error.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
@@ -238,13 +239,6 @@ void add_regions(EntryGroup& g, const PcssRegionsResult& o, int n, RegionMode mo
   for (int c = 0; c < 4; ++c) g.o_regions.push_back(o.rect[c]);
   for (int c = 0; c < 4; ++c) g.o_regions.push_back(o.window[c]);
   for (int c = 0; c < 4; ++c) g.o_regions.push_back(o.key[c]);
-}
-
-Image row_image(const std::vector<float>& values, int channels) {
-  const int n = static_cast<int>(values.size()) / channels;
-  Image image(std::max(n, 1), 1, channels);
-  std::copy(values.begin(), values.end(), image.texels.begin());
-  return image;
 }
 
 void push_group(std::vector<CaseResult>& results, const std::string& name, const EntryGroup& g, const char* what) {

@@ -267,7 +267,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const Scene scene = make_scene(fixtures::kScenes[0], 512);
   const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, 512);
   const TechniqueInputs inputs = scene_frame.inputs();
-  const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512), 512, 512, 4);
+  const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512));
   const Image exact = read1(context, pipeline.run(inputs, exact_pcss()).soft_shadow(), 512);
   for (const PcssSettings& s : {fast_pcss(), fast_paper_pcss(), hqepcss()}) {
     const Image shadow = read1(context, pipeline.run(inputs, s).soft_shadow(), 512);

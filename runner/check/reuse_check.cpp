@@ -56,10 +56,10 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
     for (ReuseParams params : {ReuseParams{0.0f, 0.1f, 0.1f, 4}, ReuseParams{0.0f, 0.1f, 0.1f, 2},
                                ReuseParams{0.0f, 0.1f, 0.1f, 8}, ReuseParams{0.0f, 0.0f, 0.0f, 4},
                                ReuseParams{0.5f, 0.3f, 0.3f, 4}}) {
-      const GlObject parents = pass.link(entry_texture, size.w, size.h, params);
-      const GlObject gathered = pass.gather(parents, value_texture, size.w, size.h, params.tile);
-      const Image observed_parents = read_float_texture(env.context, parents, size.w, size.h, 1);
-      const Image observed = read_float_texture(env.context, gathered, size.w, size.h, 4);
+      const FloatTexture parents = pass.link(entry_texture, size.w, size.h, params);
+      const FloatTexture gathered = pass.gather(parents, value_texture, size.w, size.h, params.tile);
+      const Image observed_parents = read_float_texture(env.context, parents);
+      const Image observed = read_float_texture(env.context, gathered);
 
       const std::vector<int> parent = reuse_parents(entries, params);
       const std::vector<int> root = reuse_roots(parent);

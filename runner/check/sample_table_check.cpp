@@ -10,11 +10,7 @@
 
 #include "check/module_check.h"
 #include "core/query_grid.h"
-#include "gl/pass_bindings.h"
-#include "gl/texture.h"
-#include "passes/correlated_multi_jitter_query.h"
-#include "passes/sample_table_query.h"
-#include "passes/traversal_pass.h"
+#include "passes/sample_table_query_pass.h"
 
 namespace pn {
 namespace {
@@ -57,19 +53,7 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
       for (int side = 0; side <= 40; ++side)
         for (int i = 0; i < 16; ++i) queries.push_back({float(px), float(py), float(side), float(i)});
   const Image input = query_image(queries);
-  const GlObject query_texture = upload_float_texture(env.context, input);
-  const GlObject table_texture = upload_sample_table(env.context, table);
-  const GlObject result_a = make_float_texture(env.context, input.width, input.height, 4);
-  const GlObject result_b = make_float_texture(env.context, input.width, input.height, 4);
-  const ComputeProgram program = compile_pass(env.context, env.tree, "passes/sample_table_query.comp");
-  {
-    PassBindings bind(env.context);
-    bind.texture(PN_SAMPLE_TABLE_QUERY_QUERIES_BINDING, query_texture);
-    bind.texture(PN_SAMPLE_TABLE_QUERY_TABLE_BINDING, table_texture);
-    bind.image(PN_SAMPLE_TABLE_QUERY_RESULT_A_BINDING, result_a, GL_WRITE_ONLY, GL_RGBA32F);
-    bind.image(PN_SAMPLE_TABLE_QUERY_RESULT_B_BINDING, result_b, GL_WRITE_ONLY, GL_RGBA32F);
-    program.dispatch(input.width, input.height);
-  }
+  const std::vector<Image> observed = SampleTableQueryPass(env.context, env.tree).run(table, input);
 
   Image expected_a(input.width, input.height, 4), expected_b(input.width, input.height, 4);
   for (int y = 0; y < input.height; ++y)
@@ -87,9 +71,9 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
       for (int c = 0; c < 4; ++c) expected_a.at(x, y, c) = a[c], expected_b.at(x, y, c) = b[c];
     }
   results.push_back({"selection (k, first, last column, set) for every pixel residue and side 0-40", exact,
-                     compare(expected_a, read_float_texture(env.context, result_a, input.width, input.height, 4), exact)});
+                     compare(expected_a, observed[0], exact)});
   results.push_back({"selected sample's column and its texel in a region of that side", exact,
-                     compare(expected_b, read_float_texture(env.context, result_b, input.width, input.height, 4), exact)});
+                     compare(expected_b, observed[1], exact)});
 
   // The stateless generator: every (seed, k, set) group multi-jittered.
   std::vector<Query> cmj;
@@ -98,16 +82,7 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
       for (int set = 0; set < SampleTable::kSets; ++set)
         for (int i = 0; i < (1 << (2 * k)); ++i) cmj.push_back({float(k), float(i), float(set), float(seed)});
   const Image cmj_input = query_image(cmj);
-  const GlObject cmj_queries = upload_float_texture(env.context, cmj_input);
-  const GlObject cmj_result = make_float_texture(env.context, cmj_input.width, cmj_input.height, 4);
-  const ComputeProgram cmj_program = compile_pass(env.context, env.tree, "passes/correlated_multi_jitter_query.comp");
-  {
-    PassBindings bind(env.context);
-    bind.texture(PN_CMJ_QUERY_QUERIES_BINDING, cmj_queries);
-    bind.image(PN_CMJ_QUERY_RESULTS_BINDING, cmj_result, GL_WRITE_ONLY, GL_RGBA32F);
-    cmj_program.dispatch(cmj_input.width, cmj_input.height);
-  }
-  const Image positions = read_float_texture(env.context, cmj_result, cmj_input.width, cmj_input.height, 4);
+  const Image positions = CorrelatedMultiJitterQueryPass(env.context, env.tree).run(cmj_input);
   size_t at = 0;
   for (int seed : {1, 2, 12345})
     for (int k = 0; k <= 3; ++k) {

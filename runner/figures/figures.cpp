@@ -40,8 +40,8 @@ Canvas blur_figure(const Context& context, const SourceTree& tree) {
   const Image depth = generate_fixture(find_fixture("step_edge"), n, n);
   const BlurPass pass(context, tree);
   const GlObject src = upload_float_texture(context, source), dep = upload_float_texture(context, depth);
-  const Image plain = read_float_texture(context, pass.run(src, nullptr, n, n, {3, 1.0, false, 0.0}), n, n, 1);
-  const Image aware = read_float_texture(context, pass.run(src, &dep, n, n, {3, 1.0, true, 0.05}), n, n, 1);
+  const Image plain = read_float_texture(context, pass.run(src, nullptr, n, n, {3, 1.0, false, 0.0}));
+  const Image aware = read_float_texture(context, pass.run(src, &dep, n, n, {3, 1.0, true, 0.05}));
   Canvas canvas(3 * n * scale + 4 * gap, n * scale + 2 * gap, kPaper);
   int x = gap;
   for (const Image* image : {&std::as_const(source), &plain, &aware}) {
@@ -191,8 +191,8 @@ Canvas reuse_figure(const Context& context, const SourceTree& tree) {
   int column = 0;
   for (int tile : {4, 2}) {
     const GlObject parents = pass.link(entry_texture, n, n, {0.0f, 0.1f, 0.1f, tile});
-    const GlObject gathered = pass.gather(parents, values, n, n, tile);
-    const Image groups = read_float_texture(context, gathered, n, n, 4);
+    const FloatTexture gathered = pass.gather(parents, values, n, n, tile);
+    const Image groups = read_float_texture(context, gathered);
     const int x0 = gap + column * (n * scale + gap);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {

@@ -104,9 +104,10 @@ GlObject make_texture(const Context& context, GLenum target, GLenum format, int 
   return texture;
 }
 
-GlObject make_float_texture(const Context& context, int width, int height, int channels) {
+FloatTexture make_float_texture(const Context& context, int width, int height, int channels) {
   check_size(context, width, height);
-  GlObject texture = make_texture(context, GL_TEXTURE_2D, float_format(channels), width, height);
+  FloatTexture texture(make_texture(context, GL_TEXTURE_2D, float_format(channels), width, height), width, height,
+                       channels);
   context.throw_if_gl_error("allocating a float texture");
   return texture;
 }
@@ -155,8 +156,8 @@ GlObject texture_of_layer(const Context& context, const GlObject& array, int lay
   return copy_texture_layer(context, array, layer, width, height, channels);
 }
 
-GlObject upload_float_texture(const Context& context, const Image& image) {
-  GlObject texture = make_float_texture(context, image.width, image.height, image.channels);
+FloatTexture upload_float_texture(const Context& context, const Image& image) {
+  FloatTexture texture = make_float_texture(context, image.width, image.height, image.channels);
   const auto& gl = context.gl();
   {
     const BoundTexture bound(gl, texture);
@@ -178,6 +179,10 @@ void clear_float_texture(const Context& context, const GlObject& texture, const 
     context.gl().ClearBufferfv(GL_COLOR, 0, value);
   }
   context.throw_if_gl_error("clearing a float texture");
+}
+
+Image read_float_texture(const Context& context, const FloatTexture& texture) {
+  return read_float_texture(context, texture, texture.width, texture.height, texture.channels);
 }
 
 Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels) {

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/image.h"
@@ -27,13 +28,24 @@ namespace pn {
 GlObject make_texture(const Context& context, GLenum target, GLenum format, int width, int height, int layers = 1,
                       int levels = 1);
 
+// A 2-D float texture that knows its size and channels, so a readback need not restate them. It is
+// a GlObject, so whatever binds or reads any texture takes it as one.
+struct FloatTexture : GlObject {
+  FloatTexture() = default;
+  FloatTexture(GlObject object, int width, int height, int channels)
+      : GlObject(std::move(object)), width(width), height(height), channels(channels) {}
+  int width = 0, height = 0, channels = 0;
+};
+
 // Immutable-storage 2-D texture of 1–4 float channels (R32F … RGBA32F), nearest filtering.
-GlObject make_float_texture(const Context& context, int width, int height, int channels);
+FloatTexture make_float_texture(const Context& context, int width, int height, int channels);
 
 // A 1×1 (×1 layer) texture of `format` for GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY: bound where a
 // pass declares a sampler that this dispatch does not read.
 GlObject make_placeholder_texture(const Context& context, GLenum target, GLenum format);
-GlObject upload_float_texture(const Context& context, const Image& image);
+FloatTexture upload_float_texture(const Context& context, const Image& image);
+// Level 0 of the whole texture (the second form for a texture kept as a plain GlObject).
+Image read_float_texture(const Context& context, const FloatTexture& texture);
 Image read_float_texture(const Context& context, const GlObject& texture, int width, int height, int channels);
 
 // Sets every texel of level 0 of a 2-D float texture (R32F, RG32F, RGBA32F) to `value` (its

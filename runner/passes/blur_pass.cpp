@@ -35,8 +35,8 @@ const ComputeProgram& BlurPass::program(const BlurParams& params, int channels) 
                         {"PN_BLUR_PASS_CHANNELS", std::to_string(channels)}});
 }
 
-GlObject BlurPass::run(const GlObject& source, const GlObject* depth, int width, int height,
-                       const BlurParams& params, const GlObject* filter_map, int channels) const {
+FloatTexture BlurPass::run(const GlObject& source, const GlObject* depth, int width, int height,
+                           const BlurParams& params, const GlObject* filter_map, int channels) const {
   params.validate();
   if (channels != 1 && channels != 2 && channels != 4)
     throw Error("blur: " + std::to_string(channels) + " channels: expected 1, 2 or 4");
@@ -45,7 +45,7 @@ GlObject BlurPass::run(const GlObject& source, const GlObject* depth, int width,
   const ComputeProgram& pass = program(params, channels);
   const int stored = image_channels(*context_, channels);
   GlObject temporary = make_float_texture(*context_, width, height, stored);
-  GlObject target = make_float_texture(*context_, width, height, stored);
+  FloatTexture target = make_float_texture(*context_, width, height, stored);
 
   auto one_pass = [&](const GlObject& in, const GlObject& out, int ax, int ay) {
     const glsl::PnBlurPassParams block{{ax, ay},

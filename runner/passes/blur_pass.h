@@ -6,6 +6,7 @@
 
 #include "gl/compute_program.h"
 #include "gl/pass_variants.h"
+#include "gl/texture.h"
 #include "modules/blur.h"
 #include "shader/source_tree.h"
 
@@ -25,8 +26,8 @@ class BlurPass {
   // (same size, RGBA32F, the filter-region map: .w = side in texels) only when
   // params.adaptive. Throws Error for invalid params or channel counts, and
   // when adaptive without a filter map.
-  GlObject run(const GlObject& source, const GlObject* depth, int width, int height, const BlurParams& params,
-               const GlObject* filter_map = nullptr, int channels = 1) const;
+  FloatTexture run(const GlObject& source, const GlObject* depth, int width, int height, const BlurParams& params,
+                   const GlObject* filter_map = nullptr, int channels = 1) const;
 
  private:
   const ComputeProgram& program(const BlurParams& params, int channels) const;

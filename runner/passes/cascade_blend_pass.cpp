@@ -21,8 +21,8 @@ CascadeBlendPass::CascadeBlendPass(const Context& context, const SourceTree& tre
       program_(compile_pass(context, tree, "passes/cascade_blend.comp")),
       unused_(make_float_texture(context, 1, 1, 1)) {}
 
-GlObject CascadeBlendPass::run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities,
-                               int screen_size) const {
+FloatTexture CascadeBlendPass::run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities,
+                                   int screen_size) const {
   const size_t count = visibilities.size();
   if (count < 1 || count > 4 || !cascades.view_depth)
     throw Error("cascade blend: " + std::to_string(count) +
@@ -33,7 +33,7 @@ GlObject CascadeBlendPass::run(const CascadeBlend& cascades, const std::vector<c
   block.count = static_cast<int>(count);
   block.band = cascades.band;
   block.fadeLast = cascades.fade_last ? 1 : 0;
-  GlObject target = make_float_texture(*context_, screen_size, screen_size, 1);
+  FloatTexture target = make_float_texture(*context_, screen_size, screen_size, 1);
   {
     PassBindings bind(*context_);
     bind.uniform(block);

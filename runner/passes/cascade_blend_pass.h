@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gl/compute_program.h"
+#include "gl/texture.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -24,7 +25,8 @@ class CascadeBlendPass {
   CascadeBlendPass(const Context& context, const SourceTree& tree);
 
   // One screen² R32F visibility from `visibilities` (one a cascade, nearest first, screen² R32F).
-  GlObject run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities, int screen_size) const;
+  FloatTexture run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities,
+                   int screen_size) const;
 
  private:
   const Context* context_;

@@ -31,28 +31,19 @@ void DepthCacheComposer::compose(const GlObject& static_map, const GlObject& dyn
 }
 
 DepthCacheQueryPass::DepthCacheQueryPass(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/depth_cache_query.comp")) {}
+    : query_(context, tree, "passes/depth_cache_query.comp",
+             {{PN_DEPTH_CACHE_QUERIES_BINDING}, {PN_DEPTH_CACHE_RESULTS_IMAGE}}) {}
 
 std::vector<DepthCacheResult> DepthCacheQueryPass::run(const GlObject& static_map, const GlObject& dynamic_map,
                                                        const std::vector<DepthCacheQuery>& queries) const {
   if (queries.empty()) return {};
   std::vector<Query> q;
   for (const DepthCacheQuery& k : queries) q.push_back({float(k.u), float(k.v), k.receiver_depth, k.bias});
-  const Image image = query_image(q);
-  const GlObject texture = upload_float_texture(*context_, image);
-  const GlObject results = make_float_texture(*context_, image.width, image.height, 4);
-  {
-    PassBindings bind(*context_);
-    bind.texture(PN_DEPTH_CACHE_STATIC_BINDING, static_map);
-    bind.texture(PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map);
-    bind.texture(PN_DEPTH_CACHE_QUERIES_BINDING, texture);
-    bind.image(PN_DEPTH_CACHE_RESULTS_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
-    program_.dispatch(image.width, image.height);
-  }
-  const Image r = read_float_texture(*context_, results, image.width, image.height, 4);
+  const QueryResults r = query_.run(
+      {q}, {{PN_DEPTH_CACHE_STATIC_BINDING, static_map}, {PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map}});
   std::vector<DepthCacheResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
-    const Query v = query_result(r, k);
+    const Query v = r.at(0, k);
     out.push_back({v[0], v[1]});
   }
   return out;

@@ -9,6 +9,7 @@
 #include "core/image.h"
 #include "gl/compute_program.h"
 #include "gl/texel_list.h"
+#include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -43,8 +44,7 @@ class DepthCacheQueryPass {
                                     const std::vector<DepthCacheQuery>& queries) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
 };
 
 }  // namespace pn

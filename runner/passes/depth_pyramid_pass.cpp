@@ -90,19 +90,11 @@ void DepthPyramidBuilder::update_into(const GlObject& shadow_map, DepthPyramid& 
 }
 
 DepthPyramidQuery::DepthPyramidQuery(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/depth_pyramid_query.comp")) {}
+    : query_(context, tree, "passes/depth_pyramid_query.comp",
+             {{PN_PYRAMID_QUERY_QUERIES_BINDING}, {PN_PYRAMID_QUERY_RESULTS_IMAGE}}) {}
 
 Image DepthPyramidQuery::run(const DepthPyramid& pyramid, const Image& queries) const {
-  const GlObject query_texture = upload_float_texture(*context_, queries);
-  const GlObject results = make_float_texture(*context_, queries.width, queries.height, 4);
-  {
-    PassBindings bind(*context_);
-    bind.texture(PN_PYRAMID_QUERY_PYRAMID_BINDING, pyramid.texture);
-    bind.texture(PN_PYRAMID_QUERY_QUERIES_BINDING, query_texture);
-    bind.image(PN_PYRAMID_QUERY_RESULTS_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
-    program_.dispatch(queries.width, queries.height);
-  }
-  return read_float_texture(*context_, results, queries.width, queries.height, 4);
+  return query_.run(std::vector<Image>{queries}, {{PN_PYRAMID_QUERY_PYRAMID_BINDING, pyramid.texture}}).images.front();
 }
 
 }  // namespace pn

@@ -9,6 +9,7 @@
 
 #include "core/image.h"
 #include "gl/compute_program.h"
+#include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -68,8 +69,7 @@ class DepthPyramidQuery {
   Image run(const DepthPyramid& pyramid, const Image& queries) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
 };
 
 // Throws Error naming the map unless it is square with N >= 2.

@@ -21,8 +21,8 @@ namespace pn {
 GBufferRenderer::GBufferRenderer(const Context& context, const SourceTree& tree)
     : context_(&context), program_(link_raster_pass(context, tree, "passes/gbuffer")) {}
 
-GlObject GBufferRenderer::render(const Scene& scene, int screen_size, float normal_offset_texels, const MapLight& light,
-                                 float view_depth_lo, float view_depth_hi) const {
+FloatTexture GBufferRenderer::render(const Scene& scene, int screen_size, float normal_offset_texels,
+                                     const MapLight& light, float view_depth_lo, float view_depth_hi) const {
   glsl::PnGBufferParams block{};
   const glm::mat4 camera_view = scene.camera_view();
   block.cameraViewProjection = glsl::std140_mat4(scene.camera_projection() * camera_view);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gl/compute_program.h"
+#include "gl/texture.h"
 #include "scene/scene.h"
 #include "shader/source_tree.h"
 
@@ -15,14 +16,14 @@ class GBufferRenderer {
   GBufferRenderer(const Context& context, const SourceTree& tree);
   // RGBA32F, rows from the bottom. normal_offset_texels > 0: the point moved
   // off its face by that many shadow-map texels first (gbuffer.frag).
-  GlObject render(const Scene& scene, int screen_size, float normal_offset_texels = 0.0f) const {
+  FloatTexture render(const Scene& scene, int screen_size, float normal_offset_texels = 0.0f) const {
     return render(scene, screen_size, normal_offset_texels, scene.map_light());
   }
   // For another map's light (a cascade's), keeping only the surfaces whose camera view depth
   // lies in [view_depth_lo, view_depth_hi): a pixel whose nearest surface lies outside is
   // 0, "no surface". The camera's own view and projection as `light` make channel z the view depth.
-  GlObject render(const Scene& scene, int screen_size, float normal_offset_texels, const MapLight& light,
-                  float view_depth_lo = 0.0f, float view_depth_hi = INFINITY) const;
+  FloatTexture render(const Scene& scene, int screen_size, float normal_offset_texels, const MapLight& light,
+                      float view_depth_lo = 0.0f, float view_depth_hi = INFINITY) const;
 
  private:
   const Context* context_;

@@ -4,8 +4,14 @@
 
 #include "core/query_grid.h"
 #include "gl/pass_bindings.h"
+#include "gl/std140.h"
 #include "gl/texture.h"
 #include "passes/pcf_query.h"
+
+namespace pn::glsl {
+#include "passes/pcf_shade.h"
+PN_STD140_SIZE(PnPcfShadeParams, 16);
+}  // namespace pn::glsl
 
 namespace pn {
 namespace {
@@ -18,22 +24,13 @@ std::vector<Define> max_side_define(int max_side) {
 }  // namespace
 
 PcfQueryPass::PcfQueryPass(const Context& context, const SourceTree& tree, int max_side)
-    : context_(&context), program_(compile_pass(context, tree, "passes/pcf_query.comp", max_side_define(max_side))) {}
+    : query_(context, tree, "passes/pcf_query.comp",
+             {{PN_PCF_QUERY_A_BINDING, PN_PCF_QUERY_B_BINDING}, {PN_PCF_QUERY_RESULT_IMAGE}},
+             max_side_define(max_side)) {}
 
-Image PcfQueryPass::dispatch(const GlObject& depth_map, const std::vector<Query>& a, const std::vector<Query>& b) const {
-  const Image image_a = query_image(a), image_b = query_image(b);
-  const GlObject texture_a = upload_float_texture(*context_, image_a);
-  const GlObject texture_b = upload_float_texture(*context_, image_b);
-  const GlObject results = make_float_texture(*context_, image_a.width, image_a.height, 4);
-  {
-    PassBindings bind(*context_);
-    bind.texture(PN_PCF_QUERY_MAP_BINDING, depth_map);
-    bind.texture(PN_PCF_QUERY_A_BINDING, texture_a);
-    bind.texture(PN_PCF_QUERY_B_BINDING, texture_b);
-    bind.image(PN_PCF_QUERY_RESULT_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
-    program_.dispatch(image_a.width, image_a.height);
-  }
-  return read_float_texture(*context_, results, image_a.width, image_a.height, 4);
+QueryResults PcfQueryPass::dispatch(const GlObject& depth_map, const std::vector<Query>& a,
+                                    const std::vector<Query>& b) const {
+  return query_.run({a, b}, {{PN_PCF_QUERY_MAP_BINDING, depth_map}});
 }
 
 std::vector<PcfQueryResult> PcfQueryPass::run(const GlObject& depth_map, const std::vector<PcfQuery>& queries) const {
@@ -43,10 +40,10 @@ std::vector<PcfQueryResult> PcfQueryPass::run(const GlObject& depth_map, const s
     a.push_back({float(q.x), float(q.y), float(q.width), float(q.height)});
     b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 0.0f});
   }
-  const Image r = dispatch(depth_map, a, b);
+  const QueryResults r = dispatch(depth_map, a, b);
   std::vector<PcfQueryResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
-    const Query q = query_result(r, k);
+    const Query q = r.at(0, k);
     out.push_back({q[0], q[1], q[2]});
   }
   return out;
@@ -59,10 +56,26 @@ std::vector<float> PcfQueryPass::bilinear(const GlObject& depth_map, const std::
     a.push_back({q.x, q.y, 0.0f, 0.0f});
     b.push_back({q.receiver_depth, q.bias, 0.0f, 1.0f});
   }
-  const Image r = dispatch(depth_map, a, b);
+  const QueryResults r = dispatch(depth_map, a, b);
   std::vector<float> out;
-  for (size_t k = 0; k < queries.size(); ++k) out.push_back(query_result(r, k)[0]);
+  for (size_t k = 0; k < queries.size(); ++k) out.push_back(r.at(0, k)[0]);
   return out;
+}
+
+PcfShadePass::PcfShadePass(const Context& context, const SourceTree& tree)
+    : context_(&context), program_(compile_pass(context, tree, "passes/pcf_shade.comp")) {}
+
+FloatTexture PcfShadePass::run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias) const {
+  FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);
+  glsl::PnPcfShadeParams block{};
+  block.bias = bias;
+  PassBindings bind(*context_);
+  bind.uniform(block);
+  bind.texture(PN_PCF_SHADE_MAP_BINDING, shadow_map);
+  bind.texture(PN_PCF_SHADE_GBUFFER_BINDING, gbuffer);
+  bind.image(PN_PCF_SHADE_VISIBILITY_IMAGE, visibility, GL_WRITE_ONLY, GL_R32F);
+  program_.dispatch(screen_size, screen_size);
+  return visibility;
 }
 
 }  // namespace pn

@@ -1,10 +1,13 @@
-// Runner side of glsl/passes/pcf_query.comp: pcf.glsl over a batch of windows.
+// Runner side of glsl/passes/pcf_query.comp (pcf.glsl over a batch of windows)
+// and of glsl/passes/pcf_shade.comp (the pcf technique's 2×2 bilinear PCF per
+// screen pixel).
 #pragma once
 
 #include <vector>
 
 #include "core/query_grid.h"
 #include "gl/compute_program.h"
+#include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -36,7 +39,19 @@ class PcfQueryPass {
   std::vector<float> bilinear(const GlObject& depth_map, const std::vector<PcfBilinearQuery>& queries) const;
 
  private:
-  Image dispatch(const GlObject& depth_map, const std::vector<Query>& a, const std::vector<Query>& b) const;
+  QueryResults dispatch(const GlObject& depth_map, const std::vector<Query>& a, const std::vector<Query>& b) const;
+  QueryPass query_;
+};
+
+// Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid): the 2×2
+// bilinear PCF visibility of `shadow_map` (pnPcfBilinearVisibility) with `bias`, as a new screen²
+// R32F texture. The pass the pcf techniques of one context share (TechniqueResources::shared).
+class PcfShadePass {
+ public:
+  PcfShadePass(const Context& context, const SourceTree& tree);
+  FloatTexture run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias) const;
+
+ private:
   const Context* context_;
   ComputeProgram program_;
 };

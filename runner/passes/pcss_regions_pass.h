@@ -6,10 +6,10 @@
 #include <array>
 #include <vector>
 
-#include "gl/compute_program.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
 #include "modules/pcss_regions.h"
+#include "passes/query_pass.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
 
@@ -45,8 +45,7 @@ class PcssRegionsQueryPass {
                                      const MinMaxMipChain* mip = nullptr) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
   GlObject no_mip_;
 };
 

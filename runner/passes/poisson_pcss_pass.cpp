@@ -18,11 +18,17 @@ PN_STD140_OFFSET(PnPoissonQueryParams, inPlace, 16 * PN_POISSON_MAX_SAMPLES);
 }  // namespace pn::glsl
 
 namespace pn {
+namespace {
+
+QueryBindings bindings() {
+  return {{PN_POISSON_QUERY_A_BINDING, PN_POISSON_QUERY_B_BINDING}, {PN_POISSON_QUERY_RESULT_IMAGE}};
+}
+
+}  // namespace
 
 PoissonPcssQueryPass::PoissonPcssQueryPass(const Context& context, const SourceTree& tree)
-    : context_(&context),
-      program_(compile_pass(context, tree, "passes/poisson_pcss_query.comp")),
-      block_program_(compile_pass(context, tree, "passes/poisson_pcss_query.comp", {{"PN_QUERY_DISK_IN_BLOCK", "1"}})) {}
+    : query_(context, tree, "passes/poisson_pcss_query.comp", bindings()),
+      block_query_(context, tree, "passes/poisson_pcss_query.comp", bindings(), {{"PN_QUERY_DISK_IN_BLOCK", "1"}}) {}
 
 std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const GlObject& depth_map,
                                                             const std::vector<Sample>& points, PoissonDiskSource source,
@@ -40,23 +46,11 @@ std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const GlObject& dept
     a.push_back({q.centre_x, q.centre_y, q.diameter, q.receiver_depth});
     b.push_back({q.bias, float(q.count), q.rotation_x, q.rotation_y});
   }
-  const Image image_a = query_image(a), image_b = query_image(b);
-  const GlObject texture_a = upload_float_texture(*context_, image_a);
-  const GlObject texture_b = upload_float_texture(*context_, image_b);
-  const GlObject results = make_float_texture(*context_, image_a.width, image_a.height, 4);
-  {
-    PassBindings bind(*context_);
-    bind.uniform(block);
-    bind.texture(PN_POISSON_QUERY_MAP_BINDING, depth_map);
-    bind.texture(PN_POISSON_QUERY_A_BINDING, texture_a);
-    bind.texture(PN_POISSON_QUERY_B_BINDING, texture_b);
-    bind.image(PN_POISSON_QUERY_RESULT_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
-    (source == PoissonDiskSource::block ? block_program_ : program_).dispatch(image_a.width, image_a.height);
-  }
-  const Image r = read_float_texture(*context_, results, image_a.width, image_a.height, 4);
+  const QueryResults r = (source == PoissonDiskSource::block ? block_query_ : query_)
+                             .run({a, b}, {{PN_POISSON_QUERY_MAP_BINDING, depth_map}}, query_block(block));
   std::vector<PoissonPcssGpuResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
-    const Query q = query_result(r, k);
+    const Query q = r.at(0, k);
     out.push_back({q[0], q[1], q[2]});
   }
   return out;

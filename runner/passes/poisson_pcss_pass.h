@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "gl/compute_program.h"
+#include "passes/query_pass.h"
 #include "sampling/sample_table.h"
 #include "shader/source_tree.h"
 
@@ -44,9 +44,8 @@ class PoissonPcssQueryPass {
                                         PoissonDiskSource source, const std::vector<PoissonPcssGpuQuery>& queries) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;        // PN_POISSON_DISK_ARRAY = the pasted constant
-  ComputeProgram block_program_;  // PN_POISSON_DISK_ARRAY = the block's array (PN_QUERY_DISK_IN_BLOCK)
+  QueryPass query_;        // PN_POISSON_DISK_ARRAY = the pasted constant
+  QueryPass block_query_;  // PN_POISSON_DISK_ARRAY = the block's array (PN_QUERY_DISK_IN_BLOCK)
 };
 
 }  // namespace pn

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "core/image.h"
-#include "gl/compute_program.h"
+#include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -16,8 +16,7 @@ class RegionQuery {
   Image run(const Image& queries, int map_size, bool centred) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
 };
 
 }  // namespace pn

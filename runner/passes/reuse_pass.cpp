@@ -20,9 +20,9 @@ ReusePass::ReusePass(const Context& context, const SourceTree& tree)
       link_(compile_pass(context, tree, "passes/reuse_link.comp")),
       gather_(compile_pass(context, tree, "passes/reuse_gather.comp")) {}
 
-GlObject ReusePass::link(const GlObject& entries, int width, int height, const ReuseParams& params) const {
+FloatTexture ReusePass::link(const GlObject& entries, int width, int height, const ReuseParams& params) const {
   params.validate();
-  GlObject parents = make_float_texture(*context_, width, height, 1);
+  FloatTexture parents = make_float_texture(*context_, width, height, 1);
   const glsl::PnReuseParams block{params.sigma1, params.sigma2, params.sigma3, params.tile};
   PassBindings bind(*context_);
   bind.uniform(block);
@@ -32,8 +32,8 @@ GlObject ReusePass::link(const GlObject& entries, int width, int height, const R
   return parents;
 }
 
-GlObject ReusePass::gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const {
-  GlObject gathered = make_float_texture(*context_, width, height, 4);
+FloatTexture ReusePass::gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const {
+  FloatTexture gathered = make_float_texture(*context_, width, height, 4);
   const glsl::PnReuseGatherParams block{tile};
   PassBindings bind(*context_);
   bind.uniform(block);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/compute_program.h"
+#include "gl/texture.h"
 #include "modules/reuse.h"
 #include "shader/source_tree.h"
 
@@ -15,10 +16,10 @@ class ReusePass {
 
   // R32F parent codes (PN_REUSE_NONE, PN_REUSE_LEFT, PN_REUSE_TOP: glsl/reuse.h) of a width × height
   // RGBA32F (d, x, y, s) entry texture.
-  GlObject link(const GlObject& entries, int width, int height, const ReuseParams& params) const;
+  FloatTexture link(const GlObject& entries, int width, int height, const ReuseParams& params) const;
 
   // RGBA32F (representative x, y, value at the representative, 0) for every pixel.
-  GlObject gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const;
+  FloatTexture gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const;
 
  private:
   const Context* context_;

@@ -35,9 +35,15 @@ glsl::PnSavsmParams make_block(const MomentsTable& table, const LightModel& ligh
   return b;
 }
 
+std::vector<Define> table_define(int kind) { return {{"PN_SAVSM_TABLE", std::to_string(kind)}}; }
+
 std::vector<Define> table_define(const MomentsTable& table) {
-  const int kind = table.kind == MomentsTableKind::fixed ? PN_SAVSM_TABLE_FIXED : PN_SAVSM_TABLE_FLOAT;
-  return {{"PN_SAVSM_TABLE", std::to_string(kind)}};
+  return table_define(table.kind == MomentsTableKind::fixed ? PN_SAVSM_TABLE_FIXED : PN_SAVSM_TABLE_FLOAT);
+}
+
+QueryBindings query_bindings() {
+  return {{PN_SAVSM_INPUT_BINDING},
+          {PN_SAVSM_SEARCH_IMAGE, PN_SAVSM_FILTER_IMAGE, PN_SAVSM_BLOCKER_IMAGE, PN_SAVSM_RESULT_IMAGE}};
 }
 
 void check_sizes(const MomentsTable& table, const LightModel& light) {
@@ -53,13 +59,18 @@ Rect rect_of(const Query& q) {
 }  // namespace
 
 SavsmPass::SavsmPass(const Context& context, const SourceTree& tree)
-    : context_(&context), shade_(context, tree, "passes/savsm_shade.comp"), query_(context, tree, "passes/savsm_query.comp") {}
+    : context_(&context),
+      shade_(context, tree, "passes/savsm_shade.comp"),
+      fixed_query_(context, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FIXED),
+                   QueryCompile::on_first_use),
+      float_query_(context, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FLOAT),
+                   QueryCompile::on_first_use) {}
 
-GlObject SavsmPass::shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer,
-                          int screen_size, const LightModel& light, const SavsmSettings& settings) const {
+FloatTexture SavsmPass::shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer,
+                              int screen_size, const LightModel& light, const SavsmSettings& settings) const {
   check_sizes(table, light);
   const glsl::PnSavsmParams block = make_block(table, light, settings);
-  GlObject visibility = make_float_texture(*context_, screen_size, screen_size, 1);
+  FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);
   PassBindings bind(*context_);
   bind.uniform(block);
   bind.texture(PN_SAVSM_TABLE_BINDING, table.texture);
@@ -78,35 +89,15 @@ std::vector<SavsmQueryResult> SavsmPass::query(const MomentsTable& table, const 
   const glsl::PnSavsmParams block = make_block(table, light, settings);
   std::vector<Query> q;
   for (const SavsmReceiver& r : receivers) q.push_back({r.u, r.v, r.depth, 0.0f});
-  const Image image = query_image(q);
-  const int w = image.width, h = image.height;
-  const GlObject input = upload_float_texture(*context_, image);
-  const GlObject search = make_float_texture(*context_, w, h, 4);
-  const GlObject filter = make_float_texture(*context_, w, h, 4);
-  const GlObject blocker = make_float_texture(*context_, w, h, 4);
-  const GlObject result = make_float_texture(*context_, w, h, 4);
-  {
-    PassBindings bind(*context_);
-    bind.uniform(block);
-    bind.texture(PN_SAVSM_TABLE_BINDING, table.texture);
-    bind.texture(PN_SAVSM_MIP_BINDING, mip);
-    bind.texture(PN_SAVSM_INPUT_BINDING, input);
-    bind.image(PN_SAVSM_SEARCH_IMAGE, search, GL_WRITE_ONLY, GL_RGBA32F);
-    bind.image(PN_SAVSM_FILTER_IMAGE, filter, GL_WRITE_ONLY, GL_RGBA32F);
-    bind.image(PN_SAVSM_BLOCKER_IMAGE, blocker, GL_WRITE_ONLY, GL_RGBA32F);
-    bind.image(PN_SAVSM_RESULT_IMAGE, result, GL_WRITE_ONLY, GL_RGBA32F);
-    query_.get(table_define(table)).dispatch(w, h);
-  }
-  const Image s = read_float_texture(*context_, search, w, h, 4);
-  const Image f = read_float_texture(*context_, filter, w, h, 4);
-  const Image b = read_float_texture(*context_, blocker, w, h, 4);
-  const Image r = read_float_texture(*context_, result, w, h, 4);
+  const QueryPass& pass = table.kind == MomentsTableKind::fixed ? fixed_query_ : float_query_;
+  const QueryResults r = pass.run(
+      {q}, {{PN_SAVSM_TABLE_BINDING, table.texture}, {PN_SAVSM_MIP_BINDING, mip}}, query_block(block));
   std::vector<SavsmQueryResult> out;
   for (size_t k = 0; k < receivers.size(); ++k) {
     SavsmQueryResult o;
-    o.search = rect_of(query_result(s, k));
-    o.filter = rect_of(query_result(f, k));
-    const Query bk = query_result(b, k), rk = query_result(r, k);
+    o.search = rect_of(r.at(0, k));
+    o.filter = rect_of(r.at(1, k));
+    const Query bk = r.at(2, k), rk = r.at(3, k);
     o.blocker = bk[0];
     o.has_blocker = bk[1] != 0.0f;
     o.filter_side = bk[2];

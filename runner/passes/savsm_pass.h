@@ -8,6 +8,7 @@
 
 #include "gl/pass_variants.h"
 #include "passes/minmax_mip_pass.h"
+#include "passes/query_pass.h"
 #include "passes/summed_area_pass.h"
 #include "core/texel_rect.h"
 #include "modules/savsm.h"
@@ -33,8 +34,8 @@ class SavsmPass {
   // Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid), as a new
   // screen² R32F texture; pixels without a surface are 1. `mip`: the map's min/max mip chain
   // (read when settings.bound or the min blocker mode; else any 2-D texture).
-  GlObject shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer, int screen_size,
-                 const LightModel& light, const SavsmSettings& settings) const;
+  FloatTexture shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer, int screen_size,
+                     const LightModel& light, const SavsmSettings& settings) const;
 
   // One result per receiver (u, v in texels, linear light depth).
   std::vector<SavsmQueryResult> query(const MomentsTable& table, const GlObject& mip,
@@ -44,7 +45,7 @@ class SavsmPass {
  private:
   const Context* context_;
   PassVariants shade_;  // by PN_SAVSM_TABLE
-  PassVariants query_;
+  QueryPass fixed_query_, float_query_;  // PN_SAVSM_TABLE fixed, float
 };
 
 }  // namespace pn

@@ -133,8 +133,8 @@ void RasterTarget::draw(const GlObject& program, const SceneGeometry& geometry, 
   context_->throw_if_gl_error("drawing into a raster target");
 }
 
-GlObject draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
-                    const float clear[4]) {
+FloatTexture draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
+                        const float clear[4]) {
   const SceneGeometry geometry(context, scene);
   RasterTarget target(context, size, channels);
   target.clear(clear);

@@ -7,6 +7,7 @@
 
 #include "core/texel_rect.h"
 #include "gl/objects.h"
+#include "gl/texture.h"
 #include "scene/scene.h"
 
 namespace pn {
@@ -42,7 +43,7 @@ class RasterTarget {
   RasterTarget(const Context& context, int size, int channels);
   int size() const { return size_; }
   const GlObject& texture() const { return texture_; }
-  GlObject release_texture() { return std::move(texture_); }
+  FloatTexture release_texture() { return std::move(texture_); }
 
   // Colour to `clear`, depth to the far plane, inside each rectangle (the whole target for none given).
   void clear(const float clear[4], const std::vector<TexelRect>& rects = {}) const;
@@ -58,12 +59,13 @@ class RasterTarget {
  private:
   const Context* context_;
   int size_;
-  GlObject texture_, depth_, framebuffer_;
+  FloatTexture texture_;
+  GlObject depth_, framebuffer_;
 };
 
 // Renders every triangle of `scene` with `program` into a new size×size float texture of
 // `channels` channels cleared to `clear` (a SceneGeometry and a RasterTarget used once).
-GlObject draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
-                    const float clear[4]);
+FloatTexture draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
+                        const float clear[4]);
 
 }  // namespace pn

@@ -28,7 +28,7 @@ const float* ShadowMapRenderer::far_clear() {
   return far;
 }
 
-GlObject ShadowMapRenderer::render(const Scene& scene, const MapLight& light) const {
+FloatTexture ShadowMapRenderer::render(const Scene& scene, const MapLight& light) const {
   PassBindings bind(*context_);
   bind.uniform(light_block(light));
   return draw_scene(*context_, program_, scene, light.light.map_size, 1, far_clear());

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/compute_program.h"
+#include "gl/texture.h"
 #include "passes/scene_draw.h"
 #include "scene/scene.h"
 #include "shader/source_tree.h"
@@ -15,9 +16,9 @@ class ShadowMapRenderer {
   ShadowMapRenderer(const Context& context, const SourceTree& tree);
 
   // N×N R32F texture, N = scene.light.map_size; rows from the framebuffer's bottom.
-  GlObject render(const Scene& scene) const { return render(scene, scene.map_light()); }
+  FloatTexture render(const Scene& scene) const { return render(scene, scene.map_light()); }
   // The same with another light's view and projection (a cascade's), N = light.light.map_size.
-  GlObject render(const Scene& scene, const MapLight& light) const;
+  FloatTexture render(const Scene& scene, const MapLight& light) const;
 
   // Into a kept N×N R32F target: `runs` of `geometry` (the scene's vertices) with the scene's
   // light, within `rects` (everywhere for none), over what the target holds. What the caches draw.

@@ -41,6 +41,13 @@ GlObject make_uint4_texture(const Context& context, int width, int height) {
   return texture;
 }
 
+// The query passes' rectangles and float results, and their exact sums (`words`) where they have them.
+QueryBindings query_bindings(bool words) {
+  QueryBindings b{{PN_SUMMED_AREA_QUERY_RECTS_BINDING}, {PN_SUMMED_AREA_QUERY_FLOAT_IMAGE}, {}};
+  if (words) b.word_results.push_back(PN_SUMMED_AREA_QUERY_FIXED_IMAGE);
+  return b;
+}
+
 void texture_size(const Context& context, const GlObject& texture, int& width, int& height) {
   GLint w = 0, h = 0, previous = 0;
   const auto& gl = context.gl();
@@ -104,7 +111,7 @@ SummedAreaPass::SummedAreaPass(const Context& context, const SourceTree& tree, i
     : context_(&context),
       fraction_bits_(fraction_bits),
       build_(compile_pass(context, tree, "passes/summed_area_build.comp", fraction_define(fraction_bits))),
-      query_(compile_pass(context, tree, "passes/summed_area_query.comp", fraction_define(fraction_bits))) {}
+      query_(context, tree, "passes/summed_area_query.comp", query_bindings(true), fraction_define(fraction_bits)) {}
 
 SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
   SummedAreaTable table;
@@ -119,25 +126,12 @@ SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
 std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& table,
                                                          const std::vector<Rect>& rects) const {
   if (rects.empty()) return {};
-  const Image rect_image = rect_query_image(rects);
-  const int w = rect_image.width, h = rect_image.height;
-  const GlObject rect_texture = upload_float_texture(*context_, rect_image);
-  const GlObject fixed = make_uint4_texture(*context_, w, h);
-  const GlObject floats = make_float_texture(*context_, w, h, 4);
-  {
-    PassBindings bind(*context_);
-    bind.texture(PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture);
-    bind.texture(PN_SUMMED_AREA_QUERY_RECTS_BINDING, rect_texture);
-    bind.image(PN_SUMMED_AREA_QUERY_FIXED_IMAGE, fixed, GL_WRITE_ONLY, GL_RGBA32UI);
-    bind.image(PN_SUMMED_AREA_QUERY_FLOAT_IMAGE, floats, GL_WRITE_ONLY, GL_RGBA32F);
-    query_.dispatch(w, h);
-  }
-  const std::vector<std::uint32_t> u = read_uint4_texture(*context_, fixed, w, h);
-  const Image f = read_float_texture(*context_, floats, w, h, 4);
+  const QueryResults r =
+      query_.run(std::vector<Image>{rect_query_image(rects)}, {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture}});
   std::vector<SummedAreaQueryResult> out;
   for (size_t k = 0; k < rects.size(); ++k) {
-    const Query q = query_result(f, k);
-    const std::uint32_t* t = &u[k * 4];
+    const Query q = r.at(0, k);
+    const std::uint32_t* t = &r.words[0][k * 4];
     SummedAreaQueryResult r;
     r.fixed_sum = (static_cast<std::uint64_t>(t[1]) << 32) | t[0];
     r.count = t[2];
@@ -168,7 +162,10 @@ SummedAreaMomentsPass::SummedAreaMomentsPass(const Context& context, const Sourc
     : context_(&context),
       moment_bits_(moment_bits),
       build_(context, tree, "passes/summed_area_build.comp"),
-      query_(context, tree, "passes/summed_area_moments_query.comp") {
+      fixed_query_(context, tree, "passes/summed_area_moments_query.comp", query_bindings(true),
+                   defines(MomentsTableKind::fixed, "PN_SUMMED_AREA_QUERY_KIND"), QueryCompile::on_first_use),
+      float_query_(context, tree, "passes/summed_area_moments_query.comp", query_bindings(false),
+                   defines(MomentsTableKind::floating, "PN_SUMMED_AREA_QUERY_KIND"), QueryCompile::on_first_use) {
   if (moment_bits < 0 || moment_bits > kSummedAreaMaxMomentBits)
     throw Error("summed-area moment bits " + std::to_string(moment_bits) + ": expected 0 to " +
                 std::to_string(kSummedAreaMaxMomentBits));
@@ -193,7 +190,7 @@ MomentsTable SummedAreaMomentsPass::build(const GlObject& depth_map, MomentsTabl
   const int tw = table.width + 1, th = table.height + 1;
   const bool fixed = kind == MomentsTableKind::fixed;
   const int channels = image_channels(*context_, 2);
-  const auto make = [&] {
+  const auto make = [&]() -> GlObject {
     if (fixed) return make_uint4_texture(*context_, tw, th);
     GLint max_size = 0;
     context_->gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
@@ -214,27 +211,15 @@ std::vector<MomentsQueryResult> SummedAreaMomentsPass::query(const MomentsTable&
                                                              const std::vector<Rect>& rects) const {
   if (rects.empty()) return {};
   const bool fixed = table.kind == MomentsTableKind::fixed;
-  const Image rect_image = rect_query_image(rects);
-  const int w = rect_image.width, h = rect_image.height;
-  const GlObject rect_texture = upload_float_texture(*context_, rect_image);
-  const GlObject sums = fixed ? make_uint4_texture(*context_, w, h) : GlObject();
-  const GlObject moments = make_float_texture(*context_, w, h, 4);
-  {
-    PassBindings bind(*context_);
-    bind.texture(PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture);
-    bind.texture(PN_SUMMED_AREA_QUERY_RECTS_BINDING, rect_texture);
-    if (fixed) bind.image(PN_SUMMED_AREA_QUERY_FIXED_IMAGE, sums, GL_WRITE_ONLY, GL_RGBA32UI);
-    bind.image(PN_SUMMED_AREA_QUERY_FLOAT_IMAGE, moments, GL_WRITE_ONLY, GL_RGBA32F);
-    query_.get(defines(table.kind, "PN_SUMMED_AREA_QUERY_KIND")).dispatch(w, h);
-  }
-  const std::vector<std::uint32_t> u = fixed ? read_uint4_texture(*context_, sums, w, h) : std::vector<std::uint32_t>();
-  const Image m = read_float_texture(*context_, moments, w, h, 4);
+  const QueryResults m = (fixed ? fixed_query_ : float_query_)
+                             .run(std::vector<Image>{rect_query_image(rects)},
+                                  {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture}});
   std::vector<MomentsQueryResult> out;
   for (size_t k = 0; k < rects.size(); ++k) {
-    const Query r = query_result(m, k);
+    const Query r = m.at(0, k);
     MomentsQueryResult result;
     if (fixed) {
-      const std::uint32_t* t = &u[k * 4];
+      const std::uint32_t* t = &m.words[0][k * 4];
       result.sum_q = (static_cast<std::uint64_t>(t[1]) << 32) | t[0];
       result.sum_q2 = (static_cast<std::uint64_t>(t[3]) << 32) | t[2];
     }

@@ -10,6 +10,7 @@
 #include "gl/pass_variants.h"
 #include "core/texel_rect.h"
 #include "modules/summed_area.h"
+#include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -53,7 +54,7 @@ class SummedAreaPass {
   const Context* context_;
   int fraction_bits_;
   ComputeProgram build_;
-  ComputeProgram query_;
+  QueryPass query_;
 };
 
 // ---- Moments tables (seed 004's summed-area variance shadow maps) ----------
@@ -106,7 +107,7 @@ class SummedAreaMomentsPass {
   const Context* context_;
   int moment_bits_;
   PassVariants build_;
-  PassVariants query_;
+  QueryPass fixed_query_, float_query_;  // by PN_SUMMED_AREA_QUERY_KIND, each compiled on first use
 };
 
 }  // namespace pn

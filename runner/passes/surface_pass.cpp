@@ -19,7 +19,7 @@ namespace pn {
 SurfaceRenderer::SurfaceRenderer(const Context& context, const SourceTree& tree)
     : context_(&context), program_(link_raster_pass(context, tree, "passes/surface")) {}
 
-GlObject SurfaceRenderer::render(const Scene& scene, int screen_size) const {
+FloatTexture SurfaceRenderer::render(const Scene& scene, int screen_size) const {
   if (screen_size < 1) throw Error("screen size " + std::to_string(screen_size) + ": expected at least 1");
   if (scene.boxes.empty()) throw Error("scene '" + scene.name + "': expected a ground box (boxes[0])");
   const auto point = [](const glm::vec3& v) { return glsl::std140_vec4(glm::vec4(v, 0.0f)); };

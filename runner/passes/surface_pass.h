@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/compute_program.h"
+#include "gl/texture.h"
 #include "scene/scene.h"
 #include "shader/source_tree.h"
 
@@ -22,7 +23,7 @@ class SurfaceRenderer {
   // RGBA32F screen_size x screen_size, rows from the bottom like GBufferRenderer: rgb the albedo,
   // a = max(dot(N, L), 0) with N the face normal turned toward the camera and L the unit direction
   // to the light's centre; (0, 0, 0, 0) where the pixel sees no surface. Throws Error for screen_size < 1.
-  GlObject render(const Scene& scene, int screen_size) const;
+  FloatTexture render(const Scene& scene, int screen_size) const;
 
  private:
   const Context* context_;

@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 #include "core/query_grid.h"
-#include "gl/pass_bindings.h"
 #include "gl/std140.h"
 #include "gl/texture.h"
 
@@ -23,36 +22,36 @@ GlObject upload_sample_table(const Context& context, const SampleTable& table) {
   return upload_float_texture(context, table.image());
 }
 
-TraversalBatch::TraversalBatch(const Context& context, const std::vector<TraversalQuery>& queries)
-    : context_(&context), count_(static_cast<int>(queries.size())) {
+namespace {
+
+std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries) {
   std::vector<Query> a, b;
   for (const TraversalQuery& q : queries) {
     a.push_back({float(q.region.x), float(q.region.y), float(q.region.width), float(q.region.height)});
     b.push_back({q.receiver_depth, float(q.pixel_x), float(q.pixel_y), 0.0f});
   }
-  const Image image_a = query_image(a), image_b = query_image(b);
-  width_ = image_a.width, height_ = image_a.height;
-  query_a_ = upload_float_texture(context, image_a);
-  query_b_ = upload_float_texture(context, image_b);
-  result_c_ = make_float_texture(context, width_, height_, 4);
-  result_d_ = make_float_texture(context, width_, height_, 4);
+  return {query_image(a), query_image(b)};
 }
 
+}  // namespace
+
+TraversalBatch::TraversalBatch(const Context& context, const std::vector<TraversalQuery>& queries)
+    : count_(queries.size()), batch_(context, batch_inputs(queries), 2) {}
+
 std::vector<TraversalResult> TraversalBatch::read() const {
-  const Image c = read_float_texture(*context_, result_c_, width_, height_, 4);
-  const Image d = read_float_texture(*context_, result_d_, width_, height_, 4);
+  const QueryResults r = batch_.read();
   std::vector<TraversalResult> out;
-  for (int k = 0; k < count_; ++k) {
-    const int x = k % width_, y = k / width_;
-    out.push_back({c.at(x, y, 0), c.at(x, y, 1), c.at(x, y, 2), static_cast<long>(d.at(x, y, 0)),
-                   static_cast<long>(d.at(x, y, 1))});
+  for (std::size_t k = 0; k < count_; ++k) {
+    const Query c = r.at(0, k), d = r.at(1, k);
+    out.push_back({c[0], c[1], c[2], static_cast<long>(d[0]), static_cast<long>(d[1])});
   }
   return out;
 }
 
 TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
-    : context_(&context),
-      program_(compile_pass(context, tree, "passes/traversal_query.comp")),
+    : query_(context, tree, "passes/traversal_query.comp",
+             {{PN_TRAVERSAL_QUERY_A_BINDING, PN_TRAVERSAL_QUERY_B_BINDING},
+              {PN_TRAVERSAL_QUERY_RESULT_C_BINDING, PN_TRAVERSAL_QUERY_RESULT_D_BINDING}}),
       empty_array_(make_placeholder_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
       empty_2d_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
       empty_uint_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
@@ -69,33 +68,23 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject
                                            mip ? PN_STRUCTURE_MIP : PN_STRUCTURE_PYRAMID,
                                            static_cast<int>(settings.depth_sums),
                                            mip ? structure.mip->map_size : 0};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? empty_array_ : structure.pyramid->texture);
-  bind.texture(PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? structure.mip->texture : empty_2d_);
-  bind.texture(PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING,
-               mip && structure.depth_sums ? structure.depth_sums->texture : empty_uint_);
-  bind.texture(PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, sample_table);
-  bind.texture(PN_TRAVERSAL_QUERY_A_BINDING, batch.query_a_);
-  bind.texture(PN_TRAVERSAL_QUERY_B_BINDING, batch.query_b_);
-  bind.image(PN_TRAVERSAL_QUERY_RESULT_C_BINDING, batch.result_c_, GL_WRITE_ONLY, GL_RGBA32F);
-  bind.image(PN_TRAVERSAL_QUERY_RESULT_D_BINDING, batch.result_d_, GL_WRITE_ONLY, GL_RGBA32F);
-  program_.dispatch(batch.width_, batch.height_);
+  query_.dispatch(batch.batch_,
+                  {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? empty_array_ : structure.pyramid->texture},
+                   {PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? structure.mip->texture : empty_2d_},
+                   {PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING,
+                    mip && structure.depth_sums ? structure.depth_sums->texture : empty_uint_},
+                   {PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, sample_table}},
+                  query_block(block));
 }
 
 WindowScanPass::WindowScanPass(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/window_scan.comp")) {}
+    : query_(context, tree, "passes/window_scan.comp",
+             {{PN_WINDOW_SCAN_A_BINDING, PN_WINDOW_SCAN_B_BINDING},
+              {PN_WINDOW_SCAN_RESULT_C_BINDING, PN_WINDOW_SCAN_RESULT_D_BINDING}}) {}
 
 void WindowScanPass::dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const {
   const glsl::PnWindowScanParams block{bias};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_WINDOW_SCAN_PYRAMID_BINDING, pyramid.texture);
-  bind.texture(PN_WINDOW_SCAN_A_BINDING, batch.query_a_);
-  bind.texture(PN_WINDOW_SCAN_B_BINDING, batch.query_b_);
-  bind.image(PN_WINDOW_SCAN_RESULT_C_BINDING, batch.result_c_, GL_WRITE_ONLY, GL_RGBA32F);
-  bind.image(PN_WINDOW_SCAN_RESULT_D_BINDING, batch.result_d_, GL_WRITE_ONLY, GL_RGBA32F);
-  program_.dispatch(batch.width_, batch.height_);
+  query_.dispatch(batch.batch_, {{PN_WINDOW_SCAN_PYRAMID_BINDING, pyramid.texture}}, query_block(block));
 }
 
 }  // namespace pn

@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "gl/compute_program.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
+#include "passes/query_pass.h"
 #include "passes/summed_area_pass.h"
 #include "core/texel_rect.h"
 #include "modules/traversal.h"
@@ -49,9 +49,8 @@ class TraversalBatch {
  private:
   friend class TraversalPass;
   friend class WindowScanPass;
-  const Context* context_;
-  int count_, width_, height_;
-  GlObject query_a_, query_b_, result_c_, result_d_;
+  std::size_t count_;
+  QueryBatch batch_;  // inputs A, B; results C, D
 };
 
 class TraversalPass {
@@ -66,8 +65,7 @@ class TraversalPass {
   }
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
   GlObject empty_array_, empty_2d_, empty_uint_;
 };
 
@@ -78,8 +76,7 @@ class WindowScanPass {
   void dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
 };
 
 }  // namespace pn

@@ -54,7 +54,7 @@ VsmMoments VsmMomentsPass::blurred(const VsmMoments& moments, const VsmParams& p
 }
 
 VsmQueryPass::VsmQueryPass(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/vsm_query.comp")) {}
+    : query_(context, tree, "passes/vsm_query.comp", {{PN_VSM_QUERY_QUERIES_BINDING}, {PN_VSM_QUERY_RESULTS_IMAGE}}) {}
 
 std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyramid& pyramid,
                                      const std::vector<VsmQuery>& queries, const VsmParams& params) const {
@@ -62,38 +62,26 @@ std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyram
   if (queries.empty()) return {};
   std::vector<Query> q;
   for (const VsmQuery& v : queries) q.push_back({float(v.x), float(v.y), v.receiver_depth, v.bias});
-  const Image image = query_image(q);
-  const GlObject texture = upload_float_texture(*context_, image);
-  const GlObject results = make_float_texture(*context_, image.width, image.height, 4);
   const glsl::PnVsmQueryParams block{{params.near_depth, params.far_depth},
                                      {params.positive_exponent, params.negative_exponent},
                                      static_cast<int>(params.kind),
                                      params.blur.radius,
                                      params.min_variance,
                                      params.bleeding_reduction};
-  {
-    PassBindings bind(*context_);
-    bind.uniform(block);
-    bind.texture(PN_VSM_QUERY_MOMENTS_BINDING, moments.texture);
-    bind.texture(PN_VSM_QUERY_PYRAMID_BINDING, pyramid.texture);
-    bind.texture(PN_VSM_QUERY_QUERIES_BINDING, texture);
-    bind.image(PN_VSM_QUERY_RESULTS_IMAGE, results, GL_WRITE_ONLY, GL_RGBA32F);
-    program_.dispatch(image.width, image.height);
-  }
-  const Image r = read_float_texture(*context_, results, image.width, image.height, 4);
-  std::vector<Query> out;
-  for (size_t k = 0; k < queries.size(); ++k) out.push_back(query_result(r, k));
-  return out;
+  return query_
+      .run({q}, {{PN_VSM_QUERY_MOMENTS_BINDING, moments.texture}, {PN_VSM_QUERY_PYRAMID_BINDING, pyramid.texture}},
+           query_block(block))
+      .list(0, queries.size());
 }
 
 VsmShadePass::VsmShadePass(const Context& context, const SourceTree& tree)
     : context_(&context), variants_(context, tree, "passes/vsm_shade.comp") {}
 
-GlObject VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer,
-                           int screen_size, const VsmParams& params, float bias) const {
+FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer,
+                               int screen_size, const VsmParams& params, float bias) const {
   params.validate();
   const ComputeProgram& program = variants_.get({{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}});
-  GlObject visibility = make_float_texture(*context_, screen_size, screen_size, 1);
+  FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);
   const glsl::PnVsmShadeParams block{{params.near_depth, params.far_depth},
                                      {params.positive_exponent, params.negative_exponent},
                                      params.blur.radius,

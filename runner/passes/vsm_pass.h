@@ -11,6 +11,7 @@
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
 #include "modules/vsm.h"
+#include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -54,8 +55,7 @@ class VsmQueryPass {
                          const VsmParams& params) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
+  QueryPass query_;
 };
 
 // Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid): the
@@ -64,8 +64,8 @@ class VsmQueryPass {
 class VsmShadePass {
  public:
   VsmShadePass(const Context& context, const SourceTree& tree);
-  GlObject run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
-               const VsmParams& params, float bias) const;
+  FloatTexture run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
+                   const VsmParams& params, float bias) const;
 
  private:
   const Context* context_;

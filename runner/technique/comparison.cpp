@@ -69,7 +69,7 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
     c.cascades = cascades->cascades;
     c.cascade_index = cascade_index_image(read_float_texture(context, cascades->view_depth, size, size, 4), *cascades);
   }
-  c.surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size), size, size, 4);
+  c.surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size));
   TruthSettings truth_settings;
   truth_settings.samples_per_side = setup.truth_samples;
   const auto start = std::chrono::steady_clock::now();

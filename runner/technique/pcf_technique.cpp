@@ -4,15 +4,8 @@
 
 #include "core/format.h"
 #include "gl/gpu_timer.h"
-#include "gl/pass_bindings.h"
-#include "gl/std140.h"
-#include "gl/texture.h"
 #include "frame/setting_value.h"
-
-namespace pn::glsl {
-#include "passes/pcf_shade.h"
-PN_STD140_SIZE(PnPcfShadeParams, 16);
-}  // namespace pn::glsl
+#include "passes/pcf_pass.h"
 
 namespace pn {
 namespace {
@@ -29,17 +22,7 @@ class PcfTechnique : public Technique {
     StageClock clock(*context_);
     clock.start();
     TechniqueFrame out;
-    out.visibility = make_float_texture(*context_, size, size, 1);
-    {
-      glsl::PnPcfShadeParams block{};
-      block.bias = bias_;
-      PassBindings bind(*context_);
-      bind.uniform(block);
-      bind.texture(PN_PCF_SHADE_MAP_BINDING, *inputs.shadow_map);
-      bind.texture(PN_PCF_SHADE_GBUFFER_BINDING, *inputs.gbuffer);
-      bind.image(PN_PCF_SHADE_VISIBILITY_IMAGE, out.visibility, GL_WRITE_ONLY, GL_R32F);
-      pass_->program.dispatch(size, size);
-    }
+    out.visibility = pass_->run(*inputs.shadow_map, *inputs.gbuffer, size, bias_);
     context_->throw_if_gl_error("pcf shade");
     clock.stage("shade");
     out.stages = clock.read();
@@ -78,9 +61,6 @@ class PcfConfig : public TechniqueConfig {
 };
 
 }  // namespace
-
-PcfShadePass::PcfShadePass(const Context& context, const SourceTree& tree)
-    : program(compile_pass(context, tree, "passes/pcf_shade.comp")) {}
 
 std::unique_ptr<TechniqueConfig> pcf_config(const char* name) { return std::make_unique<PcfConfig>(name); }
 

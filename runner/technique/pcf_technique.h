@@ -7,18 +7,11 @@
 #include <memory>
 #include <string>
 
-#include "gl/compute_program.h"
 #include "frame/technique.h"
 
 namespace pn {
 
 // The registry's entry; override key: bias (light-depth units, >= 0; default 0.02 as the PCSS family's).
 std::unique_ptr<TechniqueConfig> pcf_config(const char* name);
-
-// The pass the pcf techniques of one context share (TechniqueResources::shared).
-struct PcfShadePass {
-  PcfShadePass(const Context& context, const SourceTree& tree);
-  ComputeProgram program;
-};
 
 }  // namespace pn
