@@ -15,8 +15,7 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnResults)))) return;
   vec4 q = texelFetch(pnQueries, p, 0);
-  PnLight light = PnLight(pnParams.width, pnParams.near, pnParams.nearPlaneWidth, pnParams.mapSize, pnParams.spread,
-                          pnParams.texelWorld);
+  PnLight light = PN_LIGHT_FROM_FIELDS(pnParams);
   imageStore(pnResults, p, vec4(pnLightBlockerWindowTexels(light, q.x, q.y), pnLightSearchWidthTexels(light, q.x),
                                 pnLightPenumbraWorld(light, q.x, q.y), pnLightPenumbraTexels(light, q.x, q.y)));
 }

@@ -5,6 +5,7 @@
 #ifndef PENUMBRA_PASSES_LIGHT_MODEL_QUERY_H
 #define PENUMBRA_PASSES_LIGHT_MODEL_QUERY_H
 
+#include "light_fields.h"
 #include "uniform_block.h"
 
 // Distinct across resource kinds, so the pass is valid Vulkan GLSL as well.
@@ -14,12 +15,7 @@
 
 // The fields of light_model.glsl's PnLight.
 PN_UNIFORM_BLOCK(PnLightParams, PN_LIGHT_MODEL_QUERY_PARAMS_BINDING)
-  float width;
-  float near;
-  float nearPlaneWidth;
-  float mapSize;
-  float spread;
-  float texelWorld;
+  PN_LIGHT_FIELDS
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_LIGHT_MODEL_QUERY_H

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "check/module_check.h"
-#include "pipeline/pcss_settings.h"
+#include "modules/pcss_regions.h"
 
 namespace pn {
 

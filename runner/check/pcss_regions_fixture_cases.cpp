@@ -1,0 +1,191 @@
+// The pcss_regions check's cases on the texture fixtures: search entries in every
+// region mode and from the mip chain, the lit-coverage property, then filter
+// entries and given entries (pcss_regions_check.cpp states the tolerances).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "check/pcss_regions_cases.h"
+#include "core/seeded_random.h"
+#include "fixture/texture_fixture.h"
+#include "gl/texture.h"
+#include "passes/depth_pyramid_pass.h"
+#include "passes/minmax_mip_pass.h"
+
+namespace pn::pcss_regions_cases {
+namespace {
+
+struct FixtureMap {
+  std::string name;
+  Image map;
+  int max_level;
+};
+
+Image shifted_fixture(const char* name, int n) {
+  Image map = generate_fixture(find_fixture(name), n, n);
+  for (float& d : map.texels) d += kDepthShift;
+  return map;
+}
+
+std::vector<FixtureMap> fixture_maps() {
+  std::vector<FixtureMap> out;
+  const std::string size = " " + std::to_string(kMapSize) + "²";
+  for (const auto& f : fixtures::kTextureFixtures)
+    out.push_back({f.name + size, shifted_fixture(f.name, kMapSize), 31});
+  out.push_back({"boxes" + size + ", pyramid capped at level 2", shifted_fixture("boxes", kMapSize), 2});
+  out.push_back({"noise 3²", shifted_fixture("noise", 3), 31});
+  out.push_back({"step_edge 37²", shifted_fixture("step_edge", 37), 31});
+  return out;
+}
+
+std::vector<RegionReceiver> fixture_receivers(const Image& map, std::uint32_t seed) {
+  const int n = map.width;
+  float lo = kInf, hi = -kInf;
+  for (float d : map.texels)
+    if (std::isfinite(d)) lo = std::min(lo, d), hi = std::max(hi, d);
+  if (!(lo <= hi)) lo = hi = 1.5f;
+  SeededRandom random(seed);
+  std::vector<std::array<float, 2>> places;
+  const float fn = static_cast<float>(n);
+  for (int j = 0; j <= 10; ++j)
+    for (int i = 0; i <= 10; ++i) places.push_back({-0.25f * fn + 0.15f * fn * i + 0.37f, -0.25f * fn + 0.15f * fn * j + 0.61f});
+  for (int k = 0; k < 40; ++k) places.push_back({random.uniform_float(0.0f, fn), random.uniform_float(0.0f, fn)});
+  const float half = static_cast<float>(n / 2);
+  for (const auto& p : std::vector<std::array<float, 2>>{{half, half}, {half + 0.5f, 0.5f}, {0.0f, 0.0f}, {fn, fn}, {-0.5f, half}})
+    places.push_back(p);
+  std::vector<RegionReceiver> out;
+  for (size_t k = 0; k < places.size(); ++k) {
+    const float u = places[k][0], v = places[k][1];
+    float local = 0.5f * (lo + hi);
+    if (u >= 0 && v >= 0 && u < fn && v < fn) {
+      const float d = map.at(static_cast<int>(u), static_cast<int>(v));
+      if (std::isfinite(d)) local = d;
+    }
+    for (float d : {local, lo - 0.05f, hi + 0.05f, random.uniform_float(lo, hi), 0.25f}) out.push_back({u, v, d, 1.0f});
+    if (k % 3 == 0) out.push_back({u, v, kNan, 1.0f});
+    else if (k % 3 == 1) out.push_back({u, v, kInf, 1.0f});
+    else out.push_back({u, v, 1.5f, 0.0f});  // no surface
+  }
+  return out;
+}
+
+// Filter queries from lit and unlit search entries, and given entries with odd sides and centres.
+void synthetic_cases(std::vector<CaseResult>& results, const PcssRegionsQueryPass& pass, const DepthPyramid& pyramid,
+                     int n) {
+  for (const NamedLight& l : fixture_lights(n)) {
+    std::vector<PcssRegionsQuery> queries;
+    std::vector<RegionEntry> expected;
+    int k = 0;
+    for (float d : {0.25f, 0.5f, 0.9f, 1.5f, 2.1f, kInf, kNan})
+      for (const auto& [x, y] : {std::pair{10.3f, 20.6f}, {-5.2f, 70.1f}})
+        for (float s : {-1.0f, 3.7f, 0.0f})
+          for (float mean : {0.25f, 0.5f, 0.5f * d, 0.75f * d, d * (1.0f - 1.0f / 1024.0f), d, 1.25f * d, 0.0f, -1.0f,
+                             kNan, kInf})
+            for (bool has : {true, false})
+              for (float scale : {0.0f, 0.5f, 1.0f, 2.5f, -1.0f, kNan}) {
+                PcssRegionsQuery q;
+                q.kind = PcssRegionsQuery::Kind::filter, q.mode = kModes[k++ % 3], q.input = {d, x, y, s};
+                q.blocker_mean = mean, q.has_blocker = has, q.filter_scale = scale;
+                queries.push_back(q);
+                expected.push_back(filter_entry(l.light, RegionEntry{d, x, y, s}, mean, has, scale));
+              }
+    const std::vector<PcssRegionsResult> observed = pass.run(pyramid, l.light, queries);
+    EntryGroup g;
+    for (size_t i = 0; i < queries.size(); ++i) {
+      add_entry(g, expected[i], false, observed[i]);
+      add_regions(g, observed[i], n, queries[i].mode);
+    }
+    push_group(results, "filter entries, " + l.name + ", N = " + std::to_string(n), g, "filter entries");
+  }
+
+  std::vector<PcssRegionsQuery> queries;
+  const float fn = static_cast<float>(n);
+  int k = 0;
+  for (float s : {-1.0f, -0.0f, 0.0f, 0.3f, 0.5f, 1.0f, 1.5f, 2.5f, 3.49f, 7.3f, 16.0f, fn - 0.3f, fn, 100.0f, 4.0f * fn,
+                  1e30f, kInf, -kInf, kNan})
+    for (float x : {-70.0f, -3.3f, -0.5f, 0.0f, 0.25f, 0.5f, 7.0f, 12.5f, 31.99f, 32.0f, fn - 0.5f, fn, fn + 0.7f,
+                    2.0f * fn + 2.0f, 1e30f, -1e30f, kInf, -kInf, kNan})
+      for (float y : {-3.3f, 0.0f, 12.5f, fn - 0.5f, fn + 0.7f, kNan})
+        for (RegionMode mode : kModes) {
+          // An infinite centre with an infinite side makes region.glsl's Step 1 bound Inf - Inf:
+          // undefined in region.glsl and its reference alike, so not asked here.
+          if ((std::isinf(x) || std::isinf(y)) && s == kInf) continue;
+          PcssRegionsQuery q;
+          q.kind = PcssRegionsQuery::Kind::entry, q.mode = mode, q.input = {(k++ % 2) ? 1.5f : kNan, x, y, s};
+          queries.push_back(q);
+        }
+  const std::vector<PcssRegionsResult> observed = pass.run(pyramid, fixture_lights(n).front().light, queries);
+  EntryGroup g;
+  for (size_t i = 0; i < queries.size(); ++i) add_regions(g, observed[i], n, queries[i].mode);
+  push_group(results, "given entries (odd sides and centres), N = " + std::to_string(n), g, "entries");
+}
+
+}  // namespace
+
+void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass, std::vector<CaseResult>& results,
+                   SearchTally& tally) {
+  const DepthPyramidBuilder builder(env.context, env.tree);
+  const MinMaxMipBuilder mip_builder(env.context, env.tree);
+  std::string counts, refining;  // "0/1/8/100", "1/8/100"
+  for (int i : iteration_counts()) {
+    counts += (counts.empty() ? "" : "/") + std::to_string(i);
+    if (i > 0) refining += (refining.empty() ? "" : "/") + std::to_string(i);
+  }
+  std::uint32_t seed = 0x5eed0010u;
+  bool first = true;
+  for (const FixtureMap& f : fixture_maps()) {
+    const int n = f.map.width;
+    const GlObject texture = upload_float_texture(env.context, f.map);
+    const DepthPyramid pyramid = builder.build(texture, n, n, f.max_level);
+    const MinMaxMipChain mip = mip_builder.build(texture, n);
+    const DepthScan scan(f.map);
+    const std::vector<RegionReceiver> receivers = fixture_receivers(f.map, seed++);
+    EntryGroup groups[4];  // the three region modes over the pyramid, then the mip chain's search
+    LitCoverage coverage;
+    std::vector<float> violations;
+    for (const NamedLight& l : fixture_lights(n)) {
+      std::vector<PcssRegionsQuery> queries;
+      for (RegionMode mode : kModes)
+        for (int iterations : iteration_counts())
+          for (float bias : kBiases) {
+            const std::vector<PcssRegionsQuery> q = search_queries(receivers, mode, iterations, bias);
+            queries.insert(queries.end(), q.begin(), q.end());
+          }
+      for (int iterations : iteration_counts())
+        for (float bias : kBiases) {
+          const std::vector<PcssRegionsQuery> q = search_queries(receivers, RegionMode::exact, iterations, bias, Structure::mip);
+          queries.insert(queries.end(), q.begin(), q.end());
+        }
+      const std::vector<PcssRegionsResult> observed = pass.run(pyramid, l.light, queries, &mip);
+      for (size_t k = 0; k < queries.size(); ++k) {
+        const PcssRegionsQuery& q = queries[k];
+        const RegionReceiver& r = receivers[k % receivers.size()];
+        const bool from_mip = q.kind == PcssRegionsQuery::Kind::search_mip;
+        Rounding rounding{kAmbiguity};
+        const RegionEntry expected = search_entry(scan, l.light, r, q.bias, q.iterations, &rounding,
+                                                  from_mip ? Structure::mip : Structure::pyramid);
+        EntryGroup& g = groups[from_mip ? 3 : static_cast<int>(q.mode)];
+        add_entry(g, expected, rounding.ambiguous, observed[k]);
+        add_regions(g, observed[k], n, q.mode);
+        if (q.iterations > 0)  // the property: every mode, refining count and bias
+          count_receiver(coverage, violations, scan, l.light, r, observed[k], q.bias, false);
+      }
+    }
+    for (RegionMode mode : kModes) {
+      const EntryGroup& g = groups[static_cast<int>(mode)];
+      tally.searched += g.queries, tally.left_out += g.left_out;
+      push_group(results, f.name + ", " + mode_name(mode), g,
+                 ("search entries (3 lights, " + counts + " iterations, bias 0/0.01)").c_str());
+    }
+    tally.searched += groups[3].queries, tally.left_out += groups[3].left_out;
+    push_group(results, f.name + ", from the mip chain (pnSearchEntryMip), exact region", groups[3],
+               ("search entries (3 lights, " + counts + " iterations, bias 0/0.01)").c_str());
+    results.push_back(property_case(f.name + ", every region mode and the mip chain, " + refining + " iterations",
+                                    violations, coverage, ""));
+    if (first) synthetic_cases(results, pass, pyramid, n);
+    first = false;
+  }
+}
+
+}  // namespace pn::pcss_regions_cases

@@ -1,0 +1,122 @@
+// The pcss_regions check's cases on rendered scenes: the tall blocker's own map and
+// G-buffer in every mode, the lit-coverage property there and on the boxes'
+// far field (pcss_regions_check.cpp states the tolerances).
+#include "cache/full_render_source.h"
+#include "check/pcss_regions_cases.h"
+#include "frame/scene_frame.h"
+#include "gl/texture.h"
+#include "passes/depth_pyramid_pass.h"
+#include "passes/gbuffer_pass.h"
+#include "passes/minmax_mip_pass.h"
+#include "pipeline/pcss_settings.h"
+#include "scene/scene.h"
+
+namespace pn {
+namespace {
+
+using namespace pcss_regions_cases;
+
+struct SceneData {
+  std::string name;
+  LightModel light;
+  Image map, gbuffer;
+  DepthPyramid pyramid;
+  MinMaxMipChain mip;
+  std::vector<RegionReceiver> receivers;
+};
+
+SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int map_size = kSceneMap,
+                     int screen_size = kSceneScreen) {
+  const Scene scene = make_scene(find_scene_fixture(scene_name), map_size);
+  FullRenderSource source(env.context, env.tree);
+  const GBufferRenderer gbuffers(env.context, env.tree);
+  const SceneFrame frame = render_scene_frame(env.context, source, gbuffers, scene, screen_size);
+  SceneData s;
+  s.name = std::string(scene_name) + " " + std::to_string(map_size) + "² map, " + std::to_string(screen_size) + "² screen";
+  s.light = scene.light;
+  s.map = read_float_texture(env.context, *frame.shadow_map, map_size, map_size, 1);
+  s.gbuffer = read_float_texture(env.context, frame.gbuffer, screen_size, screen_size, 4);
+  s.pyramid = DepthPyramidBuilder(env.context, env.tree).build(*frame.shadow_map, map_size, map_size, 31);
+  s.mip = MinMaxMipBuilder(env.context, env.tree).build(*frame.shadow_map, map_size);
+  for (int y = 0; y < screen_size; ++y)
+    for (int x = 0; x < screen_size; ++x)
+      s.receivers.push_back({s.gbuffer.at(x, y, 0), s.gbuffer.at(x, y, 1), s.gbuffer.at(x, y, 2), s.gbuffer.at(x, y, 3)});
+  return s;
+}
+
+}  // namespace
+
+LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode, const char* scene_name) {
+  const PcssRegionsQueryPass pass(env.context, env.tree);
+  const bool boxes = std::string(scene_name) == "boxes";
+  const SceneData scene = boxes ? scene_data(env, scene_name, kBoxesMap, kBoxesScreen) : scene_data(env, scene_name);
+  const PcssSettings defaults;
+  const std::vector<PcssRegionsResult> observed =
+      pass.run(scene.pyramid, scene.light, search_queries(scene.receivers, mode, defaults.refine_iterations, defaults.bias));
+  return count_lit_coverage(scene.name + ", " + mode_name(mode) + ", " + std::to_string(defaults.refine_iterations) +
+                                " iterations",
+                            DepthScan(scene.map), scene.light, scene.receivers, observed, defaults.bias);
+}
+
+void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass,
+                                     std::vector<CaseResult>& results, SearchTally& tally) {
+  // The tall-blocker scene's own shadow map and G-buffer, the pipeline's bias.
+  const SceneData scene = scene_data(env, "tall_blocker");
+  const DepthScan scan(scene.map);
+  const PcssSettings defaults;
+  struct SceneSearch {
+    RegionMode mode;
+    Structure structure;
+  };
+  for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid},
+                                    SceneSearch{RegionMode::exact, Structure::pyramid},
+                                    SceneSearch{RegionMode::centred, Structure::pyramid},
+                                    SceneSearch{RegionMode::exact, Structure::mip}}) {
+    const RegionMode mode = search.mode;
+    const std::string what = search.structure == Structure::mip ? "the mip chain's search" : mode_name(mode);
+    EntryGroup g;
+    for (int iterations : {0, defaults.refine_iterations}) {
+      const std::vector<PcssRegionsResult> observed =
+          pass.run(scene.pyramid, scene.light,
+                   search_queries(scene.receivers, mode, iterations, defaults.bias, search.structure), &scene.mip);
+      for (size_t k = 0; k < scene.receivers.size(); ++k) {
+        Rounding rounding{kAmbiguity};
+        const RegionEntry expected = search_entry(scan, scene.light, scene.receivers[k], defaults.bias, iterations,
+                                                  &rounding, search.structure);
+        add_entry(g, expected, rounding.ambiguous, observed[k]);
+        add_regions(g, observed[k], kSceneMap, mode);
+      }
+      if (iterations > 0)
+        results.push_back(count_lit_coverage(scene.name + ", " + what + ", " + std::to_string(iterations) + " iterations",
+                                             scan, scene.light, scene.receivers, observed, defaults.bias)
+                              .result);
+    }
+    tally.searched += g.queries, tally.left_out += g.left_out;
+    push_group(results, scene.name + ", " + what, g,
+               ("search entries (0 and " + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
+  }
+
+  // The property on the boxes scene at render's resolution, on the far field (screen rows 128-319,
+  // where the far boxes' walls are), for the paper's window mode and the shipped search over the mip
+  // chain: those walls are where the paper's lit decision scribbled (issue 11 item 6).
+  {
+    SceneData boxes = scene_data(env, "boxes", kBoxesMap, kBoxesScreen);
+    boxes.receivers.erase(boxes.receivers.begin() + 320 * kBoxesScreen, boxes.receivers.end());
+    boxes.receivers.erase(boxes.receivers.begin(), boxes.receivers.begin() + 128 * kBoxesScreen);
+    const DepthScan boxes_scan(boxes.map);
+    for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid},
+                                      SceneSearch{RegionMode::exact, Structure::mip}}) {
+      const std::string what = search.structure == Structure::mip ? "the mip chain's search" : mode_name(search.mode);
+      const std::vector<PcssRegionsResult> observed = pass.run(
+          boxes.pyramid, boxes.light,
+          search_queries(boxes.receivers, search.mode, defaults.refine_iterations, defaults.bias, search.structure),
+          &boxes.mip);
+      results.push_back(count_lit_coverage(boxes.name + " (rows 128-319: the far field), " + what + ", " +
+                                               std::to_string(defaults.refine_iterations) + " iterations",
+                                           boxes_scan, boxes.light, boxes.receivers, observed, defaults.bias)
+                            .result);
+    }
+  }
+}
+
+}  // namespace pn
