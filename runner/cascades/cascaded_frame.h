@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cascades/cascade_fit.h"
+#include "gl/texture.h"
 #include "passes/gbuffer_pass.h"
 #include "passes/shadow_map_pass.h"
 #include "scene/scene.h"
@@ -19,9 +20,9 @@ namespace pn {
 struct CascadedFrame {
   std::vector<Cascade> cascades;
   std::vector<MapLight> lights;     // each cascade's view, projection and light model
-  std::vector<GlObject> maps;       // N×N R32F linear light depth
-  std::vector<GlObject> gbuffers;   // screen² RGBA32F
-  GlObject view_depth;              // screen² RGBA32F: the camera's own G-buffer (z: view depth)
+  std::vector<FloatTexture> maps;       // N×N R32F linear light depth
+  std::vector<FloatTexture> gbuffers;   // screen² RGBA32F
+  FloatTexture view_depth;              // screen² RGBA32F: the camera's own G-buffer (z: view depth)
   CascadeInputs layers;             // points into the above: the frame is not copied or moved
   double shadow_map_ms = 0.0;       // every cascade's map, GPU time
   int screen_size = 0;

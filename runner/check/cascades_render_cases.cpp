@@ -217,9 +217,9 @@ void seam_cases(const CheckEnvironment& env, CityRig& rig, std::vector<CaseResul
   std::vector<Image> layers;
   for (const TechniqueFrame& run : runs) {
     visibilities.push_back(&run.visibility);
-    layers.push_back(read_float_texture(env.context, run.visibility, kScreen, kScreen, 1));
+    layers.push_back(read_float_texture(env.context, run.visibility));
   }
-  const Image view_depth = read_float_texture(env.context, frame->view_depth, kScreen, kScreen, 4);
+  const Image view_depth = read_float_texture(env.context, frame->view_depth);
   SeamMeasure measures[2];
   for (int b = 0; b < 2; ++b) {
     CascadeInputs inputs = frame->layers;

@@ -35,7 +35,7 @@ SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int ma
   s.name = std::string(scene_name) + " " + std::to_string(map_size) + "² map, " + std::to_string(screen_size) + "² screen";
   s.light = scene.light;
   s.map = read_float_texture(env.context, *frame.shadow_map, map_size, map_size, 1);
-  s.gbuffer = read_float_texture(env.context, frame.gbuffer, screen_size, screen_size, 4);
+  s.gbuffer = read_float_texture(env.context, frame.gbuffer);
   s.pyramid = DepthPyramidBuilder(env.context, env.tree).build(*frame.shadow_map, map_size, map_size, 31);
   s.mip = MinMaxMipBuilder(env.context, env.tree).build(*frame.shadow_map, map_size);
   for (int y = 0; y < screen_size; ++y)

@@ -3,6 +3,7 @@
 // technique over it (a warm-up, then medians of repeated runs).
 #pragma once
 
+#include "gl/texture.h"
 #include "passes/gbuffer_pass.h"
 #include "frame/shadow_map_source.h"
 #include "frame/technique.h"
@@ -16,7 +17,7 @@ struct SceneFrame {
   const GlObject* shadow_map = nullptr;
   const MinMaxMipChain* mip = nullptr;    // when the source keeps them (SourceOptions)
   const DepthPyramid* pyramid = nullptr;
-  GlObject gbuffer;
+  FloatTexture gbuffer;
   double shadow_map_ms = 0.0;  // the source's GPU time for this frame (not part of a technique's total)
 
   TechniqueInputs inputs() const { return {light, screen_size, shadow_map, &gbuffer, mip, pyramid}; }

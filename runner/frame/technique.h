@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "gl/objects.h"
+#include "gl/texture.h"
 #include "passes/cascade_blend_pass.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
@@ -49,7 +50,7 @@ struct CascadeInputs : CascadeBlend {
 using NamedValues = std::vector<std::pair<std::string, double>>;
 
 struct TechniqueFrame {
-  GlObject visibility;  // screen² R32F, rows from the bottom: 1 lit, 0 in shadow
+  FloatTexture visibility;  // screen² R32F, rows from the bottom: 1 lit, 0 in shadow
   NamedValues stages;   // GPU ms per stage, in order (timestamps between them)
   NamedValues stats;    // what the frame did (e.g. "representatives", "work/px"); filled when asked
   double total_ms() const;

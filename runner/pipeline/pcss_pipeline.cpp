@@ -60,8 +60,8 @@ GlObject upload_disk(const Context& context, int count, std::uint32_t seed) {
   return make_buffer(context, sizeof block, &block);
 }
 
-GlObject cleared_texture(const Context& context, int size, int channels) {
-  GlObject t = make_float_texture(context, size, size, channels);
+FloatTexture cleared_texture(const Context& context, int size, int channels) {
+  FloatTexture t = make_float_texture(context, size, size, channels);
   const float zero[4] = {0, 0, 0, 0};
   clear_float_texture(context, t, zero);
   return t;
@@ -347,7 +347,7 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
   const int size = frame.size;
   const auto read4 = [&](const GlObject& t) { return read_float_texture(*context_, t, size, size, 4); };
   const auto read1 = [&](const GlObject& t) { return read_float_texture(*context_, t, size, size, 1); };
-  const Image search = read4(frame.search_map), filter = read4(frame.filter_map);
+  const Image search = read_float_texture(*context_, frame.search_map), filter = read_float_texture(*context_, frame.filter_map);
   const Image blockers = read4(frame.blocker_results), occlusion = read4(frame.occlusion_results);
   const bool search_reuse = frame.settings.search_tile > 0, filter_reuse = frame.settings.filter_tile > 0;
   const Image search_parents = search_reuse ? read1(frame.search_parents) : Image(size, size);

@@ -13,6 +13,7 @@
 #include "gl/gpu_timer.h"
 #include "gl/compute_program.h"
 #include "gl/pass_variants.h"
+#include "gl/texture.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
@@ -37,23 +38,23 @@ struct PcssFrame {
   DepthPyramid built_pyramid;
   MinMaxMipChain built_mip;
   SummedAreaTable depth_sums;  // Structure::mip: summed-area table of depth (Step 4's clipped sums)
-  GlObject receiver_depth;     // R32F light depth of each pixel's receiver, +Inf where it sees no surface
-  GlObject search_map;         // (d, x, y, s), s < 0: lit
-  GlObject search_keys;        // what reuse compares (pnEntryLinkKey) when it is not search_map itself (search_reuse_keys)
+  FloatTexture receiver_depth;  // R32F light depth of each pixel's receiver, +Inf where it sees no surface
+  FloatTexture search_map;     // (d, x, y, s), s < 0: lit
+  FloatTexture search_keys;    // what reuse compares (pnEntryLinkKey) when it is not search_map itself (search_reuse_keys)
   GlObject search_parents;     // reuse codes (k = search_tile), when reuse is on
   GlObject blocker_results;    // (occluders, depth sum, texels, work) per computed pixel
-  GlObject filter_map;         // (d, x, y, s)
-  GlObject blocker_mean;       // R32F, 0 where lit
-  GlObject filter_keys;        // likewise
+  FloatTexture filter_map;     // (d, x, y, s)
+  FloatTexture blocker_mean;   // R32F, 0 where lit
+  FloatTexture filter_keys;    // likewise
   GlObject filter_parents;
   GlObject occlusion_results;
-  GlObject visibility;         // Step 5: 1 - occluded fraction
-  GlObject blurred;            // Step 6, when on: depth-aware over receiver_depth (blur_params.depth_aware)
+  FloatTexture visibility;     // Step 5: 1 - occluded fraction
+  FloatTexture blurred;        // Step 6, when on: depth-aware over receiver_depth (blur_params.depth_aware)
   std::vector<std::pair<std::string, double>> stages;  // GPU ms, in order
 
   bool own_keys = true;        // false: the entries are their own reuse keys (exact regions), or reuse is off
 
-  const GlObject& soft_shadow() const { return settings.blur ? blurred : visibility; }
+  const FloatTexture& soft_shadow() const { return settings.blur ? blurred : visibility; }
   const GlObject& search_reuse_keys() const { return own_keys ? search_keys : search_map; }
   const GlObject& filter_reuse_keys() const { return own_keys ? filter_keys : filter_map; }
 };

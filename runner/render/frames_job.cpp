@@ -83,7 +83,7 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
     table << f << "\t" << format_number("%.4f", row.moving_share) << "\t" << format_ms(row.map_ms) << "\t"
           << format_ms(row.technique_ms) << "\t" << format_number("%.4f", row.changed_share) << "\n";
 
-    const Image visibility = read_float_texture(context, frame.visibility, size, size, 1);
+    const Image visibility = read_float_texture(context, frame.visibility);
     const Image surface = read_float_texture(context, surfaces.render(scene, size));
     const std::filesystem::path lit = setup.out / (frame_stem(scene.name, f) + ".png");
     Canvas picture(size, size, {0, 0, 0});

@@ -91,7 +91,7 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
     TechniqueResult r;
     r.name = setup.techniques[k]->name();
     r.measurement = std::move(measurements[k]);
-    r.visibility = read_float_texture(context, r.measurement.frame.visibility, size, size, 1);
+    r.visibility = read_float_texture(context, r.measurement.frame.visibility);
     r.vs_truth = against_truth.score(r.visibility);
     c.results.push_back(std::move(r));
   }
