@@ -56,7 +56,7 @@ void blend_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& resu
       view_depth.at(x, y, 3) = k % 17 == 5 ? 0.0f : 1.0f;  // some pixels see no surface
       for (Image& v : visibility) v.at(x, y) = static_cast<float>(unit(random));
     }
-    const GlObject view_texture = upload_float_texture(env.context, view_depth);
+    const FloatTexture view_texture = upload_float_texture(env.context, view_depth);
     std::vector<GlObject> textures;
     std::vector<const GlObject*> pointers;
     for (const Image& v : visibility) textures.push_back(upload_float_texture(env.context, v));

@@ -128,7 +128,7 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
     out.push_back({name + ": " + step.what + " every group inside its k x k tile (1 = inside)", Tolerance::exact(),
                    compare(same_tile, tiles, Tolerance::exact())});
     if (step.shades) {
-      const Image visibility = read1(context, frame.visibility, n);
+      const Image visibility = read_float_texture(context, frame.visibility);
       Image of_root(n, n);
       for (int i = 0; i < n * n; ++i) of_root.at(i % n, i / n) = visibility.at(roots[i] % n, roots[i] / n);
       out.push_back({name + ": Step 5 every pixel's visibility equals its representative's", Tolerance::exact(),
@@ -152,13 +152,13 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
                              std::to_string(kScreen) + "² screen";
     const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, kScreen);
     const TechniqueInputs inputs = scene_frame.inputs();
-    const Image map = read1(context, *scene_frame.shadow_map, kMap), gbuffer = read4(context, scene_frame.gbuffer, kScreen);
+    const Image map = read1(context, *scene_frame.shadow_map, kMap), gbuffer = read_float_texture(context, scene_frame.gbuffer);
 
     // Every registry entry through the technique seam: a visibility image, finite and in [0, 1],
     // exactly 1 where the pixel sees no surface (no shadow on the sky).
     for (const TechniqueEntry& entry : technique_registry()) {
       const std::unique_ptr<Technique> technique = entry.make()->create(resources);
-      const Image visibility = read1(context, technique->run(inputs, true).visibility, kScreen);
+      const Image visibility = read_float_texture(context, technique->run(inputs, true).visibility);
       results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]", visibility));
       results.push_back(sky_stays_lit(name + ": technique '" + entry.name + "': pixels that see no surface stay lit",
                                       gbuffer, visibility));
@@ -167,7 +167,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
     const PcssSettings exact = exact_pcss();
     const PcssFrame exact_frame = pipeline.run(inputs, exact);
-    const Image exact_visibility = read1(context, exact_frame.soft_shadow(), kScreen);
+    const Image exact_visibility = read_float_texture(context, exact_frame.soft_shadow());
     const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, exact.bias, exact.filter_scale, kMargin);
     Image observed = exact_visibility;
     const int ambiguous = leave_out_ambiguous(reference, observed);
@@ -180,9 +180,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // where the two blocker means differ (by float rounding, checked) and move
     // a filter square's rounding.
     const PcssFrame off_frame = pipeline.run(inputs, fast_pcss_all_off());
-    const Image off_visibility = read1(context, off_frame.soft_shadow(), kScreen);
-    const Image exact_mean = read1(context, exact_frame.blocker_mean, kScreen);
-    const Image off_mean = read1(context, off_frame.blocker_mean, kScreen);
+    const Image off_visibility = read_float_texture(context, off_frame.soft_shadow());
+    const Image exact_mean = read_float_texture(context, exact_frame.blocker_mean);
+    const Image off_mean = read_float_texture(context, off_frame.blocker_mean);
     results.push_back({name + ": blocker mean, all improvements off vs exact PCSS", Tolerance::relative(1e-5),
                        compare(exact_mean, off_mean, Tolerance::relative(1e-5))});
     Image aligned = off_visibility;
@@ -204,27 +204,27 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // equals the CPU's depth-aware blur of its unblurred map over the G-buffer's receiver depths.
     {
       const BlurParams& blur = fast_frame.settings.blur_params;
-      const Image unblurred = read1(context, fast_frame.visibility, kScreen);
+      const Image unblurred = read_float_texture(context, fast_frame.visibility);
       const Image expected = blur_depth_aware_reference(unblurred, receiver_depths(gbuffer), blur);
       const Tolerance tolerance = blur_tolerance(blur, unblurred);
       results.push_back({name + ": fast-paper's Step 6 vs the depth-aware blur over the G-buffer's receiver depths",
-                         tolerance, compare(expected, read1(context, fast_frame.blurred, kScreen), tolerance)});
+                         tolerance, compare(expected, read_float_texture(context, fast_frame.blurred), tolerance)});
       PcssSettings adaptive = fast_pcss();
       adaptive.blur = true;  // fast-blur
       const PcssFrame adaptive_frame = pipeline.run(inputs, adaptive);
-      const Image adaptive_unblurred = read1(context, adaptive_frame.visibility, kScreen);
+      const Image adaptive_unblurred = read_float_texture(context, adaptive_frame.visibility);
       const Image depths = receiver_depths(gbuffer);
-      const Image adaptive_expected = blur_adaptive_reference(adaptive_unblurred, read4(context, adaptive_frame.filter_map, kScreen),
+      const Image adaptive_expected = blur_adaptive_reference(adaptive_unblurred, read_float_texture(context, adaptive_frame.filter_map),
                                                               &depths, adaptive_frame.settings.blur_params);
       const Tolerance adaptive_tolerance = blur_tolerance(adaptive_frame.settings.blur_params, adaptive_unblurred);
       results.push_back({name + ": fast-blur's Step 6 vs the adaptive depth-aware blur (radius from each filter side)",
                          adaptive_tolerance,
-                         compare(adaptive_expected, read1(context, adaptive_frame.blurred, kScreen), adaptive_tolerance)});
+                         compare(adaptive_expected, read_float_texture(context, adaptive_frame.blurred), adaptive_tolerance)});
     }
-    const Image listed = read1(context, fast_frame.soft_shadow(), kScreen);
+    const Image listed = read_float_texture(context, fast_frame.soft_shadow());
     PcssSettings branch = fast_paper_pcss();
     branch.skip = WorkSkip::branch;
-    const Image branched = read1(context, pipeline.run(inputs, branch).soft_shadow(), kScreen);
+    const Image branched = read_float_texture(context, pipeline.run(inputs, branch).soft_shadow());
     results.push_back({name + ": fast-paper, representatives compacted into a list vs branching in place",
                        Tolerance::exact(), compare(listed, branched, Tolerance::exact())});
 
@@ -240,25 +240,25 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const GlObject damaged_map = upload_float_texture(context, damaged), outside_gbuffer = upload_float_texture(context, outside);
     const TechniqueInputs bad{scene.light, kScreen, &damaged_map, &outside_gbuffer};
     const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kMargin);
-    Image bad_observed = read1(context, pipeline.run(bad, exact).soft_shadow(), kScreen);
+    Image bad_observed = read_float_texture(context, pipeline.run(bad, exact).soft_shadow());
     leave_out_ambiguous(bad_reference, bad_observed);
     results.push_back({name + ": exact PCSS, NaN/+Inf texels (no occluder) and receivers outside the frustum (lit)",
                        Tolerance::absolute(kFractionRounding),
                        compare(bad_reference.visibility, bad_observed, Tolerance::absolute(kFractionRounding))});
     results.push_back(in_unit_range(name + ": Fast PCSS, NaN/+Inf texels and receivers outside the frustum: finite, in [0, 1]",
-                                    read1(context, pipeline.run(bad, fast_pcss()).soft_shadow(), kScreen)));
+                                    read_float_texture(context, pipeline.run(bad, fast_pcss()).soft_shadow())));
 
     // A zero-size light: every region is one texel, a hard shadow.
     Scene point = scene;
     point.light.width = 0.0;
     const SceneFrame point_frame = render_scene_frame(context, source, gbuffers, point, kScreen);
     const TechniqueInputs point_inputs = point_frame.inputs();
-    const Image hard = hard_shadow(read1(context, *point_frame.shadow_map, kMap), read4(context, point_frame.gbuffer, kScreen), exact.bias);
+    const Image hard = hard_shadow(read1(context, *point_frame.shadow_map, kMap), read_float_texture(context, point_frame.gbuffer), exact.bias);
     for (const PcssSettings& s : {exact, fast_pcss()})  // fast: exact regions, no blur
       results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
-                         compare(hard, read1(context, pipeline.run(point_inputs, s).soft_shadow(), kScreen), Tolerance::exact())});
+                         compare(hard, read_float_texture(context, pipeline.run(point_inputs, s).soft_shadow()), Tolerance::exact())});
     results.push_back(in_unit_range(name + ", zero-size light: fast-paper (2x2-texel windows): finite, in [0, 1]",
-                                    read1(context, pipeline.run(point_inputs, fast_paper_pcss()).soft_shadow(), kScreen)));
+                                    read_float_texture(context, pipeline.run(point_inputs, fast_paper_pcss()).soft_shadow())));
   }
 
   // The paper's quality claim (§5.4: SSIM of the rendered pictures) on the default
@@ -268,9 +268,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, 512);
   const TechniqueInputs inputs = scene_frame.inputs();
   const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512));
-  const Image exact = read1(context, pipeline.run(inputs, exact_pcss()).soft_shadow(), 512);
+  const Image exact = read_float_texture(context, pipeline.run(inputs, exact_pcss()).soft_shadow());
   for (const PcssSettings& s : {fast_pcss(), fast_paper_pcss(), hqepcss()}) {
-    const Image shadow = read1(context, pipeline.run(inputs, s).soft_shadow(), 512);
+    const Image shadow = read_float_texture(context, pipeline.run(inputs, s).soft_shadow());
     char map_ssim[32];
     std::snprintf(map_ssim, sizeof map_ssim, "%.4f", ssim(exact, shadow));
     results.push_back(scalar_case(std::string(fixtures::kScenes[0].name) + " 512²: SSIM of " + s.name +

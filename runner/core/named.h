@@ -3,6 +3,7 @@
 // `name` member (const char* or std::string), searched in its order.
 #pragma once
 
+#include <iterator>
 #include <string>
 
 #include "core/error.h"

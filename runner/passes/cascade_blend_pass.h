@@ -13,7 +13,7 @@ namespace pn {
 // What blends the cascades' visibilities (cascades.glsl): the camera's view depth, the splits
 // and the transition band.
 struct CascadeBlend {
-  const GlObject* view_depth = nullptr;  // screen² RGBA32F: z the camera's view depth, w = 1 where a surface is seen
+  const FloatTexture* view_depth = nullptr;  // screen² RGBA32F: z the camera's view depth, w = 1 where a surface is seen
   float split_far[4] = {0, 0, 0, 0};     // C_1 ... C_m
   float near = 0;                        // C_0
   float band = 0;

@@ -67,7 +67,7 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
   c.shadow_map_ms = cascaded ? cascades->shadow_map_ms : frame.shadow_map_ms;
   if (cascaded) {
     c.cascades = cascades->cascades;
-    c.cascade_index = cascade_index_image(read_float_texture(context, cascades->view_depth, size, size, 4), *cascades);
+    c.cascade_index = cascade_index_image(read_float_texture(context, cascades->view_depth), *cascades);
   }
   c.surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size));
   TruthSettings truth_settings;
