@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/named.h"
 #include "core/seeded_random.h"
 #include "scene/model.h"
 
@@ -67,9 +68,7 @@ void add_models(Scene& scene) {
 }  // namespace
 
 const fixtures::CitySceneFixture* find_city_scene_fixture_or_null(const std::string& name) {
-  for (const auto& fixture : fixtures::kCityScenes)
-    if (name == fixture.name) return &fixture;
-  return nullptr;
+  return find_named_or_null(fixtures::kCityScenes, name);
 }
 
 SceneCamera city_camera(int frame) {
