@@ -36,6 +36,8 @@
 //   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
 //   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
+//   PnRect pnEntryRegion(vec4 entry, int mapSize, int regionMode)   the texels Steps 4 and 5 read:
+//                                                  the exact region, or the window as a rectangle
 //   bool  pnEntryLit(vec4 entry)
 //   vec4  pnEntryLinkKey(vec4 entry, int mapSize, int regionMode)   what the reuse scheme compares
 //         (reuse.glsl): in the window modes the side is the window's power of two, as the paper's
@@ -130,6 +132,12 @@ vec4 pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, 
     if (done) break;
   }
   return entry;
+}
+
+PnRect pnEntryRegion(vec4 entry, int mapSize, int regionMode) {
+  if (regionMode == PN_REGION_EXACT) return pnEntryRect(entry, mapSize);
+  PnWindow w = pnEntryWindow(entry, mapSize, regionMode);
+  return PnRect(w.origin, ivec2(w.side));
 }
 
 vec4 pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale) {

@@ -29,7 +29,24 @@
 //     of a vec4 array's xy; `#define PN_POISSON_DISK_ARRAY pnDisk.points`);
 //     the count is then clamped to [0, its length()].
 //
+// The call (PCSS as engines ship it, in one pass): PCSS's search width for
+//   the receiver's depth (light_model.glsl: blockers as near as the near
+//   plane), the blocker search with the blocker disk over it — no blocker:
+//   lit, return 1 at once —, the penumbra of Eq. (1) from the blocker mean
+//   times filterScale as the filter disk's diameter (pnFilterEntry,
+//   pcss_regions.glsl), and PCF with the filter disk over it:
+//     visibility = 1 - occluded fraction.
+//   The disks are read in place from two arrays the engine declares and
+//   names before the include: PN_POISSON_BLOCKER_DISK and
+//   PN_POISSON_FILTER_DISK (`penumbra poisson --count 36 --seed ...`), or
+//   PN_POISSON_DISK_ARRAY for both.
+//
 // use:
+//   float pnPoissonPcss(sampler2D depthMap, PnLight light, vec3 receiver, PnPoissonPcssSettings settings,
+//                       vec2 rotation)            receiver = (u, v, d) as pnLightProject gives;
+//                                                 rotation = (1, 0), or pnPoissonRotation(angle) per pixel
+//   PnPoissonPcssSettings pnPoissonPcssDefaults(float bias)   36 / 64 samples, filterScale 1
+//   PnPoissonPcssResult pnPoissonPcssEstimate(... the same ...)  visibility, the regions, the mean
 //   PnPoisson pnPoissonOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
 //                                float bias, vec2 points[PN_POISSON_MAX_SAMPLES], int count, vec2 rotation)
 //   PnPoisson pnPoissonOcclusionDisk(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
@@ -47,6 +64,7 @@
 //   PN_POISSON_BLOCKER_SAMPLES  default blocker-search count for callers (36; poisson_pcss.h)
 //   PN_POISSON_PCF_SAMPLES      default PCF count for callers (64; poisson_pcss.h)
 //   PN_POISSON_DISK_ARRAY       a vec2 array to read the disk from in place (undefined: none)
+//   PN_POISSON_BLOCKER_DISK, PN_POISSON_FILTER_DISK   the call's two disks (default: PN_POISSON_DISK_ARRAY)
 //
 // cost: per sample one texelFetch, ~8 ALU operations; `count` samples per call,
 //   independent of the disk's size.
@@ -54,6 +72,8 @@
 #ifndef PENUMBRA_POISSON_PCSS_GLSL
 #define PENUMBRA_POISSON_PCSS_GLSL
 
+#include "light_model.glsl"
+#include "pcss_regions.glsl"
 #include "poisson_pcss.h"
 
 struct PnPoisson {
@@ -114,6 +134,73 @@ PnPoisson pnPoissonOcclusionDisk(sampler2D depthMap, vec2 centre, float diameter
     sums = pnPoissonAddSample(depthMap, centre, radius, PN_POISSON_DISK_ARRAY[i], rotation, t, sums);
   }
   return sums;
+}
+#endif
+
+#if defined(PN_POISSON_DISK_ARRAY) && !defined(PN_POISSON_BLOCKER_DISK)
+#define PN_POISSON_BLOCKER_DISK PN_POISSON_DISK_ARRAY
+#endif
+#if defined(PN_POISSON_DISK_ARRAY) && !defined(PN_POISSON_FILTER_DISK)
+#define PN_POISSON_FILTER_DISK PN_POISSON_DISK_ARRAY
+#endif
+
+#if defined(PN_POISSON_BLOCKER_DISK) && defined(PN_POISSON_FILTER_DISK)
+struct PnPoissonPcssSettings {
+  float bias;          // light-depth units: a sample occludes when its depth < d - bias
+  float filterScale;   // c: filter diameter = c · penumbra
+  int blockerSamples;  // first samples of PN_POISSON_BLOCKER_DISK, clamped to its length
+  int filterSamples;   // first samples of PN_POISSON_FILTER_DISK
+};
+
+struct PnPoissonPcssResult {
+  float visibility;   // 1 - occluded fraction; 1 when lit
+  vec4 searchEntry;   // (d, x, y, s): s the search disk's diameter; s < 0: no surface
+  vec4 filterEntry;   // s the filter disk's; s < 0: lit (no blocker)
+  float blockerMean;  // 0 without a blocker
+};
+
+PnPoissonPcssSettings pnPoissonPcssDefaults(float bias) {
+  return PnPoissonPcssSettings(bias, 1.0, PN_POISSON_BLOCKER_SAMPLES, PN_POISSON_PCF_SAMPLES);
+}
+
+PnPoisson pnPoissonBlockerSearch(sampler2D depthMap, vec4 entry, float bias, int count, vec2 rotation) {
+  PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
+  for (int i = 0; i < PN_POISSON_BLOCKER_DISK.length(); ++i) {
+    if (i >= count) break;
+    sums = pnPoissonAddSample(depthMap, entry.yz, 0.5 * entry.w, PN_POISSON_BLOCKER_DISK[i], rotation,
+                              entry.x - bias, sums);
+  }
+  return sums;
+}
+
+PnPoisson pnPoissonFilter(sampler2D depthMap, vec4 entry, float bias, int count, vec2 rotation) {
+  PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
+  for (int i = 0; i < PN_POISSON_FILTER_DISK.length(); ++i) {
+    if (i >= count) break;
+    sums = pnPoissonAddSample(depthMap, entry.yz, 0.5 * entry.w, PN_POISSON_FILTER_DISK[i], rotation,
+                              entry.x - bias, sums);
+  }
+  return sums;
+}
+
+PnPoissonPcssResult pnPoissonPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver,
+                                          PnPoissonPcssSettings s, vec2 rotation) {
+  PnPoissonPcssResult r = PnPoissonPcssResult(1.0, pnSearchStart(light, vec4(receiver, 1.0)), vec4(0.0), 0.0);
+  r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
+  if (pnEntryLit(r.searchEntry)) return r;
+  PnPoisson blockers = pnPoissonBlockerSearch(depthMap, r.searchEntry, s.bias, s.blockerSamples, rotation);
+  bool hasBlocker = blockers.occluders > 0.0;
+  r.blockerMean = pnPoissonBlockerMean(blockers);
+  r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
+  if (pnEntryLit(r.filterEntry)) return r;  // no blocker: lit, no PCF
+  r.visibility = 1.0 - pnPoissonOccludedFraction(pnPoissonFilter(depthMap, r.filterEntry, s.bias,
+                                                                 s.filterSamples, rotation));
+  return r;
+}
+
+float pnPoissonPcss(sampler2D depthMap, PnLight light, vec3 receiver, PnPoissonPcssSettings settings,
+                    vec2 rotation) {
+  return pnPoissonPcssEstimate(depthMap, light, receiver, settings, rotation).visibility;
 }
 #endif
 

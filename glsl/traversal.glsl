@@ -52,17 +52,22 @@
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias,
 //       int leafSide, int leafMode, int nodeBudget, ivec2 pixel)
 //   PnTraversal pnTraverseWindow(... PnWindow window ...)       the region.glsl window
-//   PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sampleTable, int mapSize,
+//   PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize,
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
 //       int nodeBudget, int depthSums, ivec2 pixel)
-//       over minmax_mip.glsl's chain; sumTable: summed_area.glsl's table of the map (read only
-//       for PN_DEPTH_SUMS_TABLE); depthSums: PN_DEPTH_SUMS_NONE / _TABLE / _MIDPOINT (traversal.h)
+//       over minmax_mip.glsl's chain; depthSums: PN_DEPTH_SUMS_NONE / _TABLE / _MIDPOINT (traversal.h).
+//       _TABLE reads summed_area.glsl's table of the map through PN_TRAVERSAL_SUM_TABLE (below);
+//       without that define it counts as _MIDPOINT, so a shader that never asks for exact sums
+//       declares no table.
 //   float pnTraversalBlockerMean(PnTraversal r)        depthSum / occluders (0 if none; Step 4)
 //   float pnTraversalOccludedFraction(PnTraversal r)   occluders / texels (Step 5)
 //   PnTraversal { float occluders; float depthSum; float texels; int nodes; int fetches; }
 //   Counts are floats: sampled leaves add fractional counts (exact: c / m is dyadic).
 //
 // options:
+//   PN_TRAVERSAL_SUM_TABLE      a usampler2D the includer declares (summed_area.glsl's table of the
+//                               map) and names here before the include: PN_DEPTH_SUMS_TABLE's exact
+//                               sums (undefined: none; a parameter would force every caller to bind one)
 //   PN_TRAVERSAL_MAX_LEVEL 13   largest root level (regions up to 8192 texels a side; traversal.h,
 //                               shared with the runner like the leaf modes PN_LEAF_*)
 //
@@ -315,7 +320,7 @@ PnTraversal pnTraverseWindow(sampler2DArray pyramid, sampler2D sampleTable, PnWi
 // level 0 always); else the summed-area table's exact sum over the part
 // (TABLE, 4 fetches) or the node's midpoint (min + max) / 2 times its texels
 // (MIDPOINT, no table); NONE adds no depth (Step 5 only counts).
-void pnTraversalAddOccludingPart(inout PnTraversal r, usampler2D sumTable, vec2 node, ivec2 lo, ivec2 hi,
+void pnTraversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2 hi,
                                  int depthSums) {
   ivec2 size = hi - lo;
   float texels = float(size.x * size.y);
@@ -323,9 +328,11 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, usampler2D sumTable, vec2 
   if (depthSums == PN_DEPTH_SUMS_NONE) return;
   if (node.x == node.y) {
     r.depthSum += node.x * texels;
+#ifdef PN_TRAVERSAL_SUM_TABLE
   } else if (depthSums == PN_DEPTH_SUMS_TABLE) {
-    r.depthSum += pnSummedAreaRectSum(sumTable, lo, size).sum;
+    r.depthSum += pnSummedAreaRectSum(PN_TRAVERSAL_SUM_TABLE, lo, size).sum;
     r.fetches += 4;
+#endif
   } else {
     r.depthSum += 0.5 * (node.x + node.y) * texels;  // PN_DEPTH_SUMS_MIDPOINT: within (max - min) / 2 a texel
   }
@@ -334,14 +341,14 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, usampler2D sumTable, vec2 
 // Reads an aligned node of the chain and counts its clipped part [lo, hi)
 // when its (min, max) decide it; returns true when it is ambiguous, with its
 // (min, max) in `nodeRange`.
-bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, usampler2D sumTable, int level, ivec2 origin,
+bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, int level, ivec2 origin,
                              ivec2 lo, ivec2 hi, float t, int depthSums, out vec2 nodeRange) {
   vec2 node = pnMipFetch(mip, level, origin >> level);
   r.nodes += 1;
   r.fetches += 1;
   nodeRange = node;
   if (node.y < t) {
-    pnTraversalAddOccludingPart(r, sumTable, node, lo, hi, depthSums);
+    pnTraversalAddOccludingPart(r, node, lo, hi, depthSums);
     return false;
   }
   return node.x < t;
@@ -349,11 +356,11 @@ bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, usampler2D sumT
 
 // A node that will not be descended: its clipped part classified, and
 // estimated by the leaf mode when ambiguous (samples spread over the part).
-void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, usampler2D sumTable, sampler2D sampleTable,
+void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, sampler2D sampleTable,
                               int level, ivec2 origin, ivec2 lo, ivec2 hi, float t, int leafMode, int depthSums,
                               ivec2 pixel) {
   vec2 range;
-  if (!pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, range)) return;
+  if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, t, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
     ivec2 size = hi - lo;
     pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), t);
@@ -363,7 +370,7 @@ void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, usampler2D sum
 }
 
 // The four level-0 children (texels) of a level-1 node at `origin`, clipped to the region.
-void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, usampler2D sumTable, ivec2 origin,
+void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, ivec2 origin,
                             ivec2 regionStart, ivec2 regionEnd, float t, int depthSums) {
   vec4 pair0 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y));
   vec4 pair1 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y + 1));
@@ -381,7 +388,7 @@ void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, usampler2D sumTa
   if (depthSums != PN_DEPTH_SUMS_NONE) r.depthSum += dot(occluding, mix(vec4(0.0), depths, greaterThan(occluding, vec4(0.0))));
 }
 
-PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sampleTable, int mapSize,
+PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize,
                                 ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
                                 int nodeBudget, int depthSums, ivec2 pixel) {
   ivec2 regionStart, regionEnd;
@@ -412,10 +419,10 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sa
     if (all(lessThan(lo, hi))) {
       bool spent = r.nodes + 1 >= budget;
       if (side <= leafSide || spent) {
-        pnTraversalVisitLeafPart(r, mip, sumTable, sampleTable, level, origin, lo, hi, t, leafMode, depthSums, pixel);
+        pnTraversalVisitLeafPart(r, mip, sampleTable, level, origin, lo, hi, t, leafMode, depthSums, pixel);
       } else {
         vec2 range;
-        if (pnTraversalClassifyPart(r, mip, sumTable, level, origin, lo, hi, t, depthSums, range)) {
+        if (pnTraversalClassifyPart(r, mip, level, origin, lo, hi, t, depthSums, range)) {
           int h = side >> 1;
           if (h == 1) {
             // Texels: never ambiguous, so classified here, four at a time and
@@ -423,7 +430,7 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, usampler2D sumTable, sampler2D sa
             // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
             // iterations per invocation ended the exact (leaf 1) traversal of
             // a 256² fine checker early; one sampling site a step does not.
-            pnTraversalVisitTexels(r, mip, sumTable, origin, regionStart, regionEnd, t, depthSums);
+            pnTraversalVisitTexels(r, mip, origin, regionStart, regionEnd, t, depthSums);
           } else {
             descend = true;
           }

@@ -21,6 +21,7 @@
 #define PN_PCSS_DEPTH_MAP_BINDING 6     // sampler2D: the pyramid's layer 0, the sanitized map (pcf, poisson_pcss)
 #define PN_PCSS_MIP_BINDING 9           // sampler2D: the aligned min/max mip chain (minmax_mip.glsl)
 #define PN_PCSS_DEPTH_SUMS_BINDING 10   // usampler2D: the summed-area table of depth (summed_area.glsl)
+#define PN_PCSS_SHADE_GBUFFER_BINDING 3  // sampler2D: the G-buffer the one-call passes read (pcss_one_call.glsl)
 
 // Image units (GLSL ES 3.1 guarantees 4: 0..3).
 #define PN_PCSS_FILTER_MAP_IMAGE 0    // pcss_filter: the filter-region map
@@ -30,12 +31,14 @@
 #define PN_PCSS_SEARCH_MAP_IMAGE 2    // pcss_search: the search-region map
 #define PN_PCSS_SEARCH_KEYS_IMAGE 3   // pcss_search: what Step 4's reuse compares
 #define PN_PCSS_RESULT_IMAGE 3        // pcss_traverse, pcss_scan, pcss_poisson: per-pixel result
-#define PN_PCSS_VISIBILITY_IMAGE 3    // pcss_shade: 1 − occluded fraction
+#define PN_PCSS_VISIBILITY_IMAGE 3    // pcss_shade, pcss_one_call: 1 − occluded fraction
+#define PN_PCSS_WORK_IMAGE 2          // pcss_one_call: (visibility, Step 4's work, Step 5's work, flags)
 
 // Buffers.
 #define PN_PCSS_WORK_LIST_BINDING 0     // SSBO: pcss_work.glsl's list
 #define PN_PCSS_PARAMS_BINDING 7
-#define PN_PCSS_POISSON_DISK_BINDING 8
+#define PN_PCSS_POISSON_DISK_BINDING 8          // the staged Poisson passes' disk; the one call's blocker disk
+#define PN_PCSS_POISSON_FILTER_DISK_BINDING 9   // the one call's PCF disk (pcss_one_call.glsl)
 
 // How an estimating pass picks its pixels (pcss_work.glsl).
 #define PN_WORK_ALL 0     // every pixel computes
@@ -64,11 +67,23 @@ PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
   int leafDivisor;      // pcss_traverse: > 0: the leaf side is at least the region's side / leafDivisor
   int writeKeys;        // pcss_search, pcss_filter: 0 when the reuse keys are not needed or are the entries
                         // themselves (no reuse, or the exact region mode: pnEntryLinkKey returns the entry)
+  int blockerSamples;   // pcss_one_call, Poisson: the blocker disk's samples
+  int filterSamples;    // and the PCF disk's
+  int blockerLeafMode;  // pcss_one_call, fast: Step 4's leaves (a PN_LEAF_*, or PN_FAST_PCSS_SAME_LEAF_MODE)
 PN_END_UNIFORM_BLOCK(pnPcss)
 
 // Points in the unit disk (Bridson's, runner/sampling/poisson_disk.h), count = sampleCount.
 PN_UNIFORM_BLOCK(PnPoissonDisk, PN_PCSS_POISSON_DISK_BINDING)
   PN_VEC2_ARRAY(points, PN_POISSON_MAX_SAMPLES)
 PN_END_UNIFORM_BLOCK(pnDisk)
+
+// The one-pass Poisson PCSS's PCF disk (its blocker disk is PnPoissonDisk): the same layout.
+PN_UNIFORM_BLOCK(PnPoissonFilterDisk, PN_PCSS_POISSON_FILTER_DISK_BINDING)
+  PN_VEC2_ARRAY(points, PN_POISSON_MAX_SAMPLES)
+PN_END_UNIFORM_BLOCK(pnFilterDisk)
+
+// Which call pcss_one_call.glsl makes (PN_PCSS_ONE_CALL, a compile-time switch).
+#define PN_ONE_CALL_FAST 0     // pnFastPcss (fast_pcss.glsl)
+#define PN_ONE_CALL_POISSON 1  // pnPoissonPcss (poisson_pcss.glsl)
 
 #endif  // PENUMBRA_PASSES_PCSS_PARAMS_H

@@ -17,7 +17,9 @@ layout(rgba32f, binding = PN_PCSS_RESULT_IMAGE) writeonly uniform image2D pnResu
 #include "pcss_params.glsl"
 #include "pcss_regions.glsl"
 #include "pcss_work.glsl"
+#define PN_TRAVERSAL_SUM_TABLE pnDepthSums  // PN_DEPTH_SUMS_TABLE's exact sums
 #include "traversal.glsl"
+#include "fast_pcss.glsl"  // pnFastPcssLeafSide
 
 void main() {
   ivec2 p;
@@ -28,19 +30,10 @@ void main() {
     return;
   }
   int n = int(pnPcss.mapSize);
-  PnRect rect;
-  if (PN_PCSS_REGION_MODE == PN_REGION_EXACT) {
-    rect = pnEntryRect(entry, n);
-  } else {
-    PnWindow w = pnEntryWindow(entry, n, PN_PCSS_REGION_MODE);
-    rect = PnRect(w.origin, ivec2(w.side));
-  }
-  // A leaf side that grows with the region keeps the leaves along a shadow edge
-  // (and so the work) about constant as the penumbra widens.
-  int leafSide = pnPcss.leafSide;
-  if (pnPcss.leafDivisor > 0) leafSide = max(leafSide, max(rect.size.x, rect.size.y) / pnPcss.leafDivisor);
+  PnRect rect = pnEntryRegion(entry, n, PN_PCSS_REGION_MODE);
+  int leafSide = pnFastPcssLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, rect);
   PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
-      ? pnTraverseRegionMip(pnMip, pnDepthSums, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
+      ? pnTraverseRegionMip(pnMip, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
                             leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
       : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, leafSide,
                          PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, p);

@@ -18,6 +18,7 @@ layout(binding = PN_TRAVERSAL_QUERY_B_BINDING) uniform sampler2D pnQueryB;
 layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_C_BINDING) writeonly uniform image2D pnResultC;
 layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_D_BINDING) writeonly uniform image2D pnResultD;
 
+#define PN_TRAVERSAL_SUM_TABLE pnDepthSums  // PN_DEPTH_SUMS_TABLE's exact sums
 #include "traversal.glsl"
 
 void main() {
@@ -26,7 +27,7 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP)
-      ? pnTraverseRegionMip(pnMip, pnDepthSums, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), b.x,
+      ? pnTraverseRegionMip(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), b.x,
                             pnParams.bias, pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget,
                             pnParams.depthSums, ivec2(b.yz))
       : pnTraverseRegion(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), b.x, pnParams.bias,

@@ -162,10 +162,15 @@ ComputeProgram compile_pass(const Context& context, const SourceTree& tree, cons
 }
 
 GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& stem) {
+  return link_raster_pass(context, tree, stem + ".vert", stem + ".frag", {});
+}
+
+GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& vertex,
+                          const std::string& fragment, const std::vector<Define>& defines) {
   const Target target = driver_target(context);
-  const ShaderSource vertex = standalone_source(flatten(tree, stem + ".vert"), target);
-  const ShaderSource fragment = standalone_source(flatten(tree, stem + ".frag"), target);
-  return link_program(context, stem, {&vertex, &fragment});
+  const ShaderSource vertex_source = standalone_source(flatten(tree, vertex), target, defines);
+  const ShaderSource fragment_source = standalone_source(flatten(tree, fragment), target, defines);
+  return link_program(context, fragment, {&vertex_source, &fragment_source});
 }
 
 }  // namespace pn

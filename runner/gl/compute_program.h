@@ -59,5 +59,8 @@ ComputeProgram compile_pass(const Context& context, const SourceTree& tree, cons
 
 // Links `stem`.vert and `stem`.frag (paths under the glsl root, e.g. "passes/gbuffer").
 GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& stem);
+// Links a vertex and a fragment pass (paths under the glsl root), both wrapped with `defines`.
+GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& vertex,
+                          const std::string& fragment, const std::vector<Define>& defines);
 
 }  // namespace pn

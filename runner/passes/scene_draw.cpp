@@ -133,6 +133,20 @@ void RasterTarget::draw(const GlObject& program, const SceneGeometry& geometry, 
   context_->throw_if_gl_error("drawing into a raster target");
 }
 
+void RasterTarget::draw_full_screen(const GlObject& program) const {
+  const auto& gl = context_->gl();
+  const GlObject no_vertices(*context_, GlKind::vertex_array);  // a core profile draws with a vertex array bound
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  gl.Viewport(0, 0, size_, size_);
+  gl.UseProgram(program.id());
+  gl.BindVertexArray(no_vertices.id());
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl.BindVertexArray(0);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl.MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  context_->throw_if_gl_error("drawing a full-screen triangle");
+}
+
 FloatTexture draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
                         const float clear[4]) {
   const SceneGeometry geometry(context, scene);

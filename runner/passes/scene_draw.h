@@ -55,6 +55,9 @@ class RasterTarget {
   // the caller's PassBindings holds what the program reads.
   void draw(const GlObject& program, const SceneGeometry& geometry, const std::vector<VertexRun>& runs,
             const std::vector<TexelRect>& rects = {}) const;
+  // Draws one triangle covering the target with `program` (passes/full_screen.vert's vertex
+  // stage: no vertex buffer), no depth test: a full-screen fragment pass.
+  void draw_full_screen(const GlObject& program) const;
 
  private:
   const Context* context_;

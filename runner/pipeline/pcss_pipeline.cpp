@@ -9,6 +9,8 @@
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
 #include "modules/depth_pyramid.h"
+#include "modules/fast_pcss.h"
+#include "passes/scene_draw.h"
 #include "sampling/poisson_disk.h"
 #include "sampling/sample_table.h"
 #include "scene/light_block.h"
@@ -16,6 +18,8 @@
 namespace pn::glsl {
 #include "passes/pcss_params.h"
 PN_STD140_SIZE(PnPcssParams, 112);
+PN_STD140_OFFSET(PnPcssParams, blockerLeafMode, 108);
+PN_STD140_SIZE(PnPoissonFilterDisk, 16 * PN_POISSON_MAX_SAMPLES);
 PN_STD140_OFFSET(PnPcssParams, lightTexelWorld, 20);
 PN_STD140_OFFSET(PnPcssParams, depthSums, 88);
 PN_STD140_OFFSET(PnPcssParams, refineIterations, 32);
@@ -49,6 +53,10 @@ PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   b.sigma2 = s.sigma2;
   b.sigma3 = s.sigma3;
   b.structure = static_cast<std::int32_t>(s.structure);
+  b.depthSums = static_cast<std::int32_t>(s.depth_sums);  // Step 4's; estimate() sets each dispatch's
+  b.blockerSamples = s.blocker_samples;
+  b.filterSamples = s.filter_samples;
+  b.blockerLeafMode = s.blocker_leaf_mode ? static_cast<std::int32_t>(*s.blocker_leaf_mode) : kFastPcssSameLeafMode;
   return b;
 }
 
@@ -117,10 +125,12 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       search_(context, tree, "passes/pcss_search.comp"),
       traverse_(context, tree, "passes/pcss_traverse.comp"),
       filter_(context, tree, "passes/pcss_filter.comp"),
+      one_call_(context, tree, "passes/pcss_one_call.comp"),
       scan_(compile_pass(context, tree, "passes/pcss_scan.comp")),
       poisson_(compile_pass(context, tree, "passes/pcss_poisson.comp")),
       compact_(compile_pass(context, tree, "passes/pcss_compact.comp")),
       shade_(compile_pass(context, tree, "passes/pcss_shade.comp")),
+      tree_(tree),
       sample_table_(upload_sample_table(context, generate_sample_table(kSampleTableSeed))),
       blocker_disk_(upload_disk(context, PcssSettings{}.blocker_samples, kBlockerDiskSeed)),
       filter_disk_(upload_disk(context, PcssSettings{}.filter_samples, kFilterDiskSeed)),
@@ -211,15 +221,8 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   PassBindings bind(*context_);
   bind_inputs(bind);
   bind.uniform(block);
-  GlObject other_disk;  // a sample count other than the defaults gets its own disk
-  if (estimator == Estimator::poisson) {
-    if (samples == PN_POISSON_BLOCKER_SAMPLES) bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, blocker_disk_);
-    else if (samples == PN_POISSON_PCF_SAMPLES) bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, filter_disk_);
-    else {
-      other_disk = upload_disk(*context_, samples, kFilterDiskSeed);
-      bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, other_disk);
-    }
-  }
+  GlObject other_disk;
+  if (estimator == Estimator::poisson) bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, disk(samples, other_disk));
   // The work list: its header (groups x, y, z; count), and room for every pixel only when listing.
   const std::size_t header = 4 * sizeof(std::uint32_t);
   const std::size_t room = list ? static_cast<std::size_t>(size) * size * 2 * sizeof(std::uint32_t) : 0;
@@ -234,6 +237,13 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   } else {
     program.dispatch(size * size, 1);
   }
+}
+
+const GlObject& PcssPipeline::disk(int samples, GlObject& other) const {
+  if (samples == PN_POISSON_BLOCKER_SAMPLES) return blocker_disk_;
+  if (samples == PN_POISSON_PCF_SAMPLES) return filter_disk_;
+  other = upload_disk(*context_, samples, kFilterDiskSeed);  // a count other than the defaults gets its own disk
+  return other;
 }
 
 void PcssPipeline::reuse_and_estimate(PcssFrame& frame, const PcssBlock& block, StageClock& clock,
@@ -256,13 +266,79 @@ void PcssPipeline::bind_representatives(PassBindings& bind, PcssBlock block, con
   bind.texture(PN_PCSS_RESULTS_BINDING, results);
 }
 
-PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& settings) const {
+PcssFrame PcssPipeline::begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const {
   settings.validate();
   if (!inputs.shadow_map || !inputs.gbuffer || inputs.screen_size < 1)
     throw Error("PCSS frame '" + settings.name + "': expected a shadow map, a G-buffer and a screen size >= 1");
   PcssFrame frame;
   frame.settings = settings;
   frame.size = inputs.screen_size;
+  frame.one_call = one_call(settings);
+  return frame;
+}
+
+void PcssPipeline::prepare_one_call(PcssFrame& frame, const TechniqueInputs& inputs, PassBindings& bind,
+                                    GlObject& blocker_disk, GlObject& filter_disk) const {
+  const PcssSettings& s = frame.settings;
+  if (!frame.one_call) throw Error("PCSS frame '" + s.name + "': its settings have no one call (reuse, blur, the "
+                                   "pyramid or the scan), or stages=on");
+  // What the call reads: the mip chain (and the sums table when asked) for pnFastPcss; the map itself for
+  // pnPoissonPcss (it skips non-finite texels as the sanitized copy's +Inf would be skipped).
+  if (*frame.one_call == OneCall::fast) build_structure(frame, inputs, inputs.light.map_size);
+  bind.uniform(make_block(inputs.light, s));
+  bind.texture(PN_PCSS_SHADE_GBUFFER_BINDING, *inputs.gbuffer);
+  bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? frame.mip->texture : no_mip_);
+  bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
+  bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
+  bind.texture(PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map);
+  bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, disk(s.blocker_samples, blocker_disk));
+  bind.uniform_buffer(PN_PCSS_POISSON_FILTER_DISK_BINDING, disk(s.filter_samples, filter_disk));
+}
+
+static std::vector<Define> one_call_defines(OneCall call, bool record_work) {
+  return {{"PN_PCSS_ONE_CALL", call == OneCall::fast ? "PN_ONE_CALL_FAST" : "PN_ONE_CALL_POISSON"},
+          {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
+}
+
+PcssFrame PcssPipeline::run_one_call(const TechniqueInputs& inputs, const PcssSettings& settings,
+                                     bool record_work) const {
+  PcssFrame frame = begin_frame(inputs, settings);
+  const int size = frame.size;
+  StageClock clock(*context_);
+  clock.start();
+  PassBindings bind(*context_);
+  GlObject blocker_disk, filter_disk;
+  prepare_one_call(frame, inputs, bind, blocker_disk, filter_disk);
+  clock.stage(*frame.one_call == OneCall::poisson ? "no structure"
+              : frame.depth_sums.texture.id() != 0 ? "mip chain + sums"
+                                                   : "mip chain");
+  frame.visibility = make_float_texture(*context_, size, size, 1);
+  frame.work = record_work ? make_float_texture(*context_, size, size, 4) : cleared_texture(*context_, 1, 4);
+  bind.image(PN_PCSS_VISIBILITY_IMAGE, frame.visibility, GL_WRITE_ONLY, GL_R32F);
+  bind.image(PN_PCSS_WORK_IMAGE, frame.work, GL_WRITE_ONLY, GL_RGBA32F);
+  one_call_.get(one_call_defines(*frame.one_call, record_work)).dispatch(size, size);
+  clock.stage("one call");
+  frame.stages = clock.read();
+  context_->throw_if_gl_error("PCSS frame '" + settings.name + "'");
+  return frame;
+}
+
+FloatTexture PcssPipeline::run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings) const {
+  PcssFrame frame = begin_frame(inputs, settings);
+  PassBindings bind(*context_);
+  GlObject blocker_disk, filter_disk;
+  prepare_one_call(frame, inputs, bind, blocker_disk, filter_disk);
+  const GlObject program = link_raster_pass(*context_, tree_, "passes/full_screen.vert", "passes/pcss_one_call.frag",
+                                            one_call_defines(*frame.one_call, true));
+  RasterTarget target(*context_, frame.size, 4);
+  target.draw_full_screen(program);
+  context_->throw_if_gl_error("PCSS frame '" + settings.name + "' in a fragment shader");
+  return target.release_texture();
+}
+
+PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work) const {
+  PcssFrame frame = begin_frame(inputs, settings);
+  if (frame.one_call) return run_one_call(inputs, settings, record_work);
   const int size = frame.size;
   const int n = inputs.light.map_size;
   StageClock clock(*context_);
@@ -345,6 +421,19 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
 
 PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
   const int size = frame.size;
+  if (frame.one_call) {
+    if (frame.work.width != size) throw Error("PCSS frame '" + frame.settings.name + "': its work was not recorded");
+    const Image work = read_float_texture(*context_, frame.work);
+    PcssStats s;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const int flags = static_cast<int>(work.at(x, y, 3));
+        if (flags & 4) ++s.receivers;
+        if (flags & 1) ++s.searched, ++s.search_computed, s.blocker_work += work.at(x, y, 1);
+        if (flags & 2) ++s.filtered, ++s.filter_computed, s.occlusion_work += work.at(x, y, 2);
+      }
+    return s;
+  }
   const auto read4 = [&](const GlObject& t) { return read_float_texture(*context_, t, size, size, 4); };
   const auto read1 = [&](const GlObject& t) { return read_float_texture(*context_, t, size, size, 1); };
   const Image search = read_float_texture(*context_, frame.search_map), filter = read_float_texture(*context_, frame.filter_map);

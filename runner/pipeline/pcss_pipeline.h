@@ -5,6 +5,7 @@
 // with reuse → soft-shadow map), Step 6 (blur).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,7 +49,9 @@ struct PcssFrame {
   FloatTexture filter_keys;    // likewise
   GlObject filter_parents;
   GlObject occlusion_results;
-  FloatTexture visibility;     // Step 5: 1 - occluded fraction
+  FloatTexture visibility;     // Step 5: 1 - occluded fraction (the one call's result)
+  std::optional<OneCall> one_call;  // set: the frame ran as one pass (settings' one_call), not the steps above
+  FloatTexture work;           // one call, when recorded: (visibility, Step 4's work, Step 5's work, flags)
   FloatTexture blurred;        // Step 6, when on: depth-aware over receiver_depth (blur_params.depth_aware)
   std::vector<std::pair<std::string, double>> stages;  // GPU ms, in order
 
@@ -77,8 +80,18 @@ class PcssPipeline {
   PcssPipeline(const Context& context, const SourceTree& tree);
 
   // One frame of `settings` over `inputs`; timestamps between the stages.
+  // Settings with a one call (one_call()) run as an engine runs them: the
+  // structure it reads, then one compute pass calling it per pixel; the others
+  // run the staged passes. `record_work`: keep the one call's per-pixel work
+  // for stats() (an engine's pass writes the visibility only).
   // Throws Error for invalid settings or inputs.
-  PcssFrame run(const TechniqueInputs& inputs, const PcssSettings& settings) const;
+  PcssFrame run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work = true) const;
+
+  // The one call of `settings` (which must have one) in a fragment shader: a
+  // full-screen triangle over a screen-size RGBA32F target, each fragment
+  // (visibility, Step 4's work, Step 5's work, flags) — what the compute
+  // pass's work image holds. For the fragment-stage check.
+  FloatTexture run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings) const;
 
   PcssStats stats(const PcssFrame& frame) const;
 
@@ -98,6 +111,13 @@ class PcssPipeline {
   // Step 1's structure: the pyramid's levels, or the mip chain and the depth sums, as `settings` reads them.
   // The source's structures (inputs.pyramid, inputs.mip) are used as they are when they fit.
   void build_structure(PcssFrame& frame, const TechniqueInputs& inputs, int map_size) const;
+  // The one-call path's structure and bindings (the compute and the fragment pass alike).
+  void prepare_one_call(PcssFrame& frame, const TechniqueInputs& inputs, PassBindings& bind, GlObject& blocker_disk,
+                        GlObject& filter_disk) const;
+  PcssFrame run_one_call(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work) const;
+  PcssFrame begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const;
+  // The disk of `samples` points: the blocker or PCF default, else one uploaded into `other`.
+  const GlObject& disk(int samples, GlObject& other) const;
   // Their second half's inputs into `bind`: `entries`, parents (tile > 0), results, and the
   // uniform block with the tile.
   void bind_representatives(PassBindings& bind, glsl::PnPcssParams block, const GlObject& entries, int tile,
@@ -109,8 +129,9 @@ class PcssPipeline {
   SummedAreaPass depth_sums_;
   ReusePass reuse_;
   BlurPass blur_;
-  PassVariants search_, traverse_, filter_;  // compiled per switch setting (pcss_params.glsl's PN_PCSS_*)
+  PassVariants search_, traverse_, filter_, one_call_;  // compiled per switch setting (pcss_params.glsl's PN_PCSS_*)
   ComputeProgram scan_, poisson_, compact_, shade_;
+  SourceTree tree_;  // for the fragment pass, linked on demand
   GlObject sample_table_, blocker_disk_, filter_disk_, no_parents_;
   GlObject no_pyramid_, no_mip_, no_depth_sums_;  // bound where a frame has no such structure
 };

@@ -34,6 +34,15 @@ void PcssSettings::validate() const {
   if (blur) blur_params.validate();
 }
 
+std::optional<OneCall> one_call(const PcssSettings& s) {
+  if (s.staged || s.search_tile > 0 || s.filter_tile > 0 || s.blur) return std::nullopt;
+  if (s.structure == Structure::mip && s.blockers == Estimator::traversal && s.occlusion == Estimator::traversal)
+    return OneCall::fast;
+  if (s.blockers == Estimator::poisson && s.occlusion == Estimator::poisson && s.refine_iterations == 0)
+    return OneCall::poisson;
+  return std::nullopt;
+}
+
 PcssSettings exact_pcss() {
   PcssSettings s;
   s.name = "exact";
@@ -76,8 +85,8 @@ PcssSettings fast_pcss() {
   s.structure = Structure::mip;
   s.region = RegionMode::exact;
   s.depth_sums = DepthSums::midpoint;
-  s.refine_iterations = 3;
-  s.leaf_side = 16;
+  s.refine_iterations = kFastPcssRefineIterations;
+  s.leaf_side = kFastPcssLeafSide;
   s.search_tile = s.filter_tile = 0;
   s.blur = false;
   s.blur_params.adaptive = true;  // when switched on (fast-blur): the radius follows the filter size
@@ -100,7 +109,7 @@ const std::vector<std::string>& pcss_setting_keys() {
   static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf-divisor", "blocker-leaf-mode", "leaf", "leaf-mode", "budget", "reuse",
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
                                              "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "blur-adaptive", "bias", "c", "sigma1", "sigma2", "sigma3",
-                                             "blockers", "occlusion", "blocker-samples", "filter-samples"};
+                                             "blockers", "occlusion", "blocker-samples", "filter-samples", "stages"};
   return keys;
 }
 
@@ -169,6 +178,7 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   else if (key == "occlusion") s.occlusion = estimator();
   else if (key == "blocker-samples") s.blocker_samples = integer();
   else if (key == "filter-samples") s.filter_samples = integer();
+  else if (key == "stages") s.staged = on_off();
   else throw unknown_setting(s.name, key, pcss_setting_keys());
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "modules/blur.h"
+#include "modules/fast_pcss.h"
 #include "modules/pcss_regions.h"
 #include "modules/poisson_pcss.h"
 #include "modules/reuse.h"
@@ -51,7 +52,7 @@ struct PcssSettings {
   int leaf_divisor = 0;        // > 0: leaves at least the region's side / leaf_divisor (pcss_traverse.comp); 0 = off
   LeafMode leaf_mode = LeafMode::sampled;
   std::optional<LeafMode> blocker_leaf_mode;  // Step 4's leaves when set (the blocker mean), else leaf_mode
-  int node_budget = 1 << 26;   // per pixel (traversal.glsl): unbounded by default
+  int node_budget = kFastPcssNodeBudget;  // per pixel (traversal.glsl): 2^26, unbounded in effect
   int search_tile = 4;         // reuse k for Step 4; 0 = no reuse
   int filter_tile = 2;         // reuse k for Step 5; 0 = no reuse
   float sigma1 = 0.0f, sigma2 = 0.1f, sigma3 = 0.1f;  // Eq. 7 (§5.2 defaults)
@@ -63,10 +64,23 @@ struct PcssSettings {
   // the pixel's penumbra, 0 on lit pixels and contact shadows) off for now.
   // pixels_per_texel is the frame's (screen size / map size), set by Step 6.
   BlurParams blur_params{PN_BLUR_RADIUS, PN_BLUR_SIGMA, true, kBlurDepthTolerance, false};
+  // Run through the staged passes (a pass a step, per-stage times) even where
+  // the settings are a one-call technique (one_call below).
+  bool staged = false;
 
   // Throws Error naming the setting and its accepted range.
   void validate() const;
 };
+
+// The one call an engine makes that computes `s` in one pass, or none: reuse and blur need
+// neighbours, the pyramid and the scan have no one-call form, and a Poisson
+// search refined from a structure is not what engines ship; `staged` asks for
+// the passes.
+enum class OneCall {
+  fast,     // pnFastPcss (fast_pcss.glsl)
+  poisson,  // pnPoissonPcss (poisson_pcss.glsl)
+};
+std::optional<OneCall> one_call(const PcssSettings& s);
 
 PcssSettings exact_pcss();    // brute force over the whole search and filter regions
 PcssSettings poisson_pcss();  // 36 blocker / 64 PCF Poisson-disk samples

@@ -4,7 +4,7 @@
 
 namespace pn {
 TechniqueFrame PcssTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
-  PcssFrame frame = pipeline_->run(inputs, settings_);
+  PcssFrame frame = pipeline_->run(inputs, settings_, with_stats);
   TechniqueFrame out;
   out.stages = frame.stages;
   if (with_stats) {

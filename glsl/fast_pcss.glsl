@@ -1,0 +1,133 @@
+// fast_pcss.glsl — Fast PCSS (Zhu et al. 2019) in one call from a lighting
+// shader: the visibility of one receiver from the aligned min/max mip chain
+// and the sample table, no pass of its own, no neighbour.
+//
+// description:
+//   Steps 3 to 5 of SPEC §4.7 for one receiver, as the runner's `fast`
+//   technique ships them (the staged passes pcss_search / pcss_traverse /
+//   pcss_filter / pcss_shade compute the same numbers a step at a time):
+//     entry   = search region of the receiver, refined `refineIterations`
+//               times from the chain's min (pcss_regions.glsl); lit -> 1
+//     blockers = traversal of the entry's region with depth sums
+//               (traversal.glsl, pnTraverseRegionMip): mean = sum / count
+//     filter  = pnFilterEntry(light, entry, mean, count > 0, filterScale)
+//               (penumbra of Eq. 1 times c); no blocker -> 1
+//     fraction = traversal of the filter region (counts only): occluders / texels
+//     visibility = 1 - fraction
+//   The region is the exact square (PN_REGION_EXACT, the default) or the
+//   paper's power-of-two window (PN_REGION_WINDOW / _CENTRED). Leaves of side
+//   <= leafSide are estimated from the sample table's set for `pixel`
+//   (sample_table.glsl: neighbouring pixels use different sets, so the noise
+//   is spatially decorrelated — a blur around the call can remove it, the
+//   call itself never reads a neighbour). leafDivisor > 0 grows the leaf with
+//   the region: leaf = max(leafSide, region side / leafDivisor).
+//   Exactness: leafSide 1 with the table's depth sums (PN_TRAVERSAL_SUM_TABLE,
+//   PN_DEPTH_SUMS_TABLE) and refineIterations 0 is exact PCSS (brute force
+//   over the same regions) up to the rounding of the blocker mean's sums.
+//
+// use:
+//   float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
+//                    PnFastPcssSettings settings)
+//         receiver = (u, v, d): shadow-map texels (continuous) and linear light depth, as
+//         pnLightProject gives (light_model.glsl); pixel = the screen pixel (gl_FragCoord.xy
+//         or gl_GlobalInvocationID.xy), which picks the sample set
+//   PnFastPcssSettings pnFastPcssDefaults(float bias)     the shipped settings (fast_pcss.h)
+//   PnFastPcssResult pnFastPcssEstimate(...same parameters...)   visibility and what led to it
+//   mip: minmax_mip.glsl's chain of the map (RGBA32F, built per frame: pnMipLevel0Texel,
+//        pnMipCombineTexel); sampleTable: sample_table.glsl's 21×8 RG32F table
+//        (`penumbra sample-table` prints it), both read with texelFetch only.
+//
+// options:
+//   PN_TRAVERSAL_SUM_TABLE   a usampler2D (summed_area.glsl's table of the map) declared before the
+//                            include: settings.depthSums = PN_DEPTH_SUMS_TABLE then gives exact
+//                            blocker sums (traversal.glsl)
+//   PN_TRAVERSAL_MAX_LEVEL, PN_REFINE_MAX_ITERATIONS   loop bounds (traversal.h, pcss_regions.h)
+//
+// cost: Step 3 <= 9 fetches a refinement; each traversal one fetch a node
+//   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
+//   receiver stops after Step 3.
+
+#ifndef PENUMBRA_FAST_PCSS_GLSL
+#define PENUMBRA_FAST_PCSS_GLSL
+
+#include "fast_pcss.h"
+#include "light_model.glsl"
+#include "pcss_regions.glsl"
+#include "traversal.glsl"
+
+struct PnFastPcssSettings {
+  float bias;            // light-depth units: a texel occludes when its depth < d - bias
+  float filterScale;     // c: filter side = c · penumbra
+  int refineIterations;  // Step 3's refinements, 0..PN_REFINE_MAX_ITERATIONS
+  int regionMode;        // PN_REGION_EXACT, _WINDOW or _CENTRED (pcss_regions.h)
+  int leafSide;          // >= 1
+  int leafDivisor;       // 0: off
+  int leafMode;          // PN_LEAF_SAMPLED, _MIN or _RAMP (traversal.h)
+  int blockerLeafMode;   // Step 4's leaves: a PN_LEAF_*, or PN_FAST_PCSS_SAME_LEAF_MODE
+  int nodeBudget;        // per traversal, >= 1
+  int depthSums;         // Step 4: PN_DEPTH_SUMS_MIDPOINT, or _TABLE with PN_TRAVERSAL_SUM_TABLE
+};
+
+struct PnFastPcssResult {
+  float visibility;    // 1 - occluded fraction; 1 when lit
+  vec4 searchEntry;    // Step 3's (d, x, y, s); s < 0: lit
+  vec4 filterEntry;    // Step 4's (d, x, y, s); s < 0: lit
+  float blockerMean;   // 0 without a blocker
+  int blockerNodes;    // Step 4's traversal nodes (0 when lit after Step 3)
+  int occlusionNodes;  // Step 5's (0 when lit after Step 4)
+};
+
+PnFastPcssSettings pnFastPcssDefaults(float bias) {
+  return PnFastPcssSettings(bias, 1.0, PN_FAST_PCSS_REFINE_ITERATIONS, PN_REGION_EXACT, PN_FAST_PCSS_LEAF_SIDE, 0,
+                            PN_LEAF_SAMPLED, PN_FAST_PCSS_SAME_LEAF_MODE, PN_FAST_PCSS_NODE_BUDGET,
+                            PN_DEPTH_SUMS_MIDPOINT);
+}
+
+// The leaf side for a region: leafDivisor > 0 keeps the leaves along a shadow
+// edge (and so the work) about constant as the penumbra widens.
+int pnFastPcssLeafSide(int leafSide, int leafDivisor, PnRect region) {
+  return leafDivisor > 0 ? max(leafSide, max(region.size.x, region.size.y) / leafDivisor) : leafSide;
+}
+
+// One traversal of an entry's region (Step 4 with depth sums, Step 5 without).
+PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry,
+                               PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
+  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
+  return pnTraverseRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.x, s.bias,
+                             pnFastPcssLeafSide(s.leafSide, s.leafDivisor, region), leafMode, s.nodeBudget,
+                             depthSums, pixel);
+}
+
+PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
+                                    PnFastPcssSettings s) {
+  int n = int(light.mapSize);
+  PnFastPcssResult r = PnFastPcssResult(1.0, vec4(0.0), vec4(0.0), 0.0, 0, 0);
+  r.searchEntry = pnSearchEntryMip(mip, n, light, vec4(receiver, 1.0), s.bias, s.refineIterations);
+  r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
+  if (pnEntryLit(r.searchEntry)) return r;
+
+  int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
+  PnTraversal blockers = pnFastPcssTraverse(mip, sampleTable, n, r.searchEntry, s, blockerLeafMode,
+                                            s.depthSums, pixel);
+  r.blockerNodes = blockers.nodes;
+  bool hasBlocker = blockers.occluders > 0.0;
+  r.blockerMean = hasBlocker ? blockers.depthSum / blockers.occluders : 0.0;
+  r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
+  if (pnEntryLit(r.filterEntry)) {
+    r.blockerMean = 0.0;
+    return r;
+  }
+
+  PnTraversal occlusion = pnFastPcssTraverse(mip, sampleTable, n, r.filterEntry, s, s.leafMode,
+                                             PN_DEPTH_SUMS_NONE, pixel);
+  r.occlusionNodes = occlusion.nodes;
+  r.visibility = 1.0 - (occlusion.texels > 0.0 ? occlusion.occluders / occlusion.texels : 0.0);
+  return r;
+}
+
+float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
+                 PnFastPcssSettings settings) {
+  return pnFastPcssEstimate(mip, sampleTable, light, receiver, pixel, settings).visibility;
+}
+
+#endif  // PENUMBRA_FAST_PCSS_GLSL

@@ -1,0 +1,18 @@
+// fast_pcss.h — Fast PCSS's shipped defaults (fast_pcss.glsl's
+// pnFastPcssDefaults), shared with the runner (runner/modules/fast_pcss.h:
+// the `fast` technique's settings are these). Valid as GLSL and as C++:
+// only comments and guarded #defines.
+
+#ifndef PENUMBRA_FAST_PCSS_H
+#define PENUMBRA_FAST_PCSS_H
+
+// Step 3: refinements of the search region from the mip chain (0: PCSS's search width).
+#define PN_FAST_PCSS_REFINE_ITERATIONS 3
+// Traversal leaves of this side or smaller are estimated from the sample table (1: exact counts).
+#define PN_FAST_PCSS_LEAF_SIDE 16
+// Nodes a traversal may visit before it stops descending: 2^26, in effect unbounded.
+#define PN_FAST_PCSS_NODE_BUDGET 67108864
+// blockerLeafMode's "as leafMode".
+#define PN_FAST_PCSS_SAME_LEAF_MODE -1
+
+#endif  // PENUMBRA_FAST_PCSS_H

@@ -1,0 +1,60 @@
+// pcss_one_call.glsl — a PCSS technique as an engine runs it: per pixel, the
+// G-buffer's receiver handed to the technique's one call (pnFastPcss or
+// pnPoissonPcss, PN_PCSS_ONE_CALL), its settings from the pipeline's block.
+// The compute pass (pcss_one_call.comp) and the fragment pass
+// (pcss_one_call.frag, a full-screen triangle) both return pnOneCallShade.
+// Result per pixel: (visibility, Step 4's work, Step 5's work, flags):
+// work = traversal nodes (fast) or samples (poisson); flags = 1 when the
+// pixel has a search region + 2 when it has a filter region + 4 when it sees
+// a surface in front of the light (the staged passes' counts: PcssStats).
+//   bindings and blocks: pcss_params.h
+
+#ifndef PENUMBRA_PCSS_ONE_CALL_GLSL
+#define PENUMBRA_PCSS_ONE_CALL_GLSL
+
+#include "pcss_params.h"
+
+layout(binding = PN_PCSS_SHADE_GBUFFER_BINDING) uniform sampler2D pnGBuffer;
+layout(binding = PN_PCSS_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_PCSS_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
+layout(binding = PN_PCSS_DEPTH_SUMS_BINDING) uniform usampler2D pnDepthSums;
+layout(binding = PN_PCSS_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
+
+#define PN_TRAVERSAL_SUM_TABLE pnDepthSums     // fast-table-sums
+#define PN_POISSON_BLOCKER_DISK pnDisk.points  // read in place
+#define PN_POISSON_FILTER_DISK pnFilterDisk.points
+#include "pcss_params.glsl"
+#include "fast_pcss.glsl"
+#include "poisson_pcss.glsl"
+
+#ifndef PN_PCSS_ONE_CALL
+#define PN_PCSS_ONE_CALL PN_ONE_CALL_FAST
+#endif
+
+float pnOneCallFlags(vec4 searchEntry, vec4 filterEntry) {
+  return (pnEntryLit(searchEntry) ? 0.0 : 1.0) + (pnEntryLit(filterEntry) ? 0.0 : 2.0) +
+         (searchEntry.x > 0.0 ? 4.0 : 0.0);
+}
+
+vec4 pnOneCallShade(ivec2 p) {
+  vec4 receiver = texelFetch(pnGBuffer, p, 0);
+  if (receiver.w == 0.0) return vec4(1.0, 0.0, 0.0, 0.0);  // no surface: lit
+  PnLight light = pnPcssLight();
+  if (PN_PCSS_ONE_CALL == PN_ONE_CALL_POISSON) {
+    PnPoissonPcssSettings s = PnPoissonPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
+                                                    pnPcss.filterSamples);
+    PnPoissonPcssResult r = pnPoissonPcssEstimate(pnDepthMap, light, receiver.xyz, s, vec2(1.0, 0.0));
+    float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
+    float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
+    return vec4(r.visibility, searched, filtered, pnOneCallFlags(r.searchEntry, r.filterEntry));
+  }
+  PnFastPcssSettings s = PnFastPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.refineIterations,
+                                            pnPcss.regionMode, pnPcss.leafSide, pnPcss.leafDivisor,
+                                            pnPcss.leafMode, pnPcss.blockerLeafMode, pnPcss.nodeBudget,
+                                            pnPcss.depthSums);
+  PnFastPcssResult r = pnFastPcssEstimate(pnMip, pnSampleTable, light, receiver.xyz, p, s);
+  return vec4(r.visibility, float(r.blockerNodes), float(r.occlusionNodes),
+              pnOneCallFlags(r.searchEntry, r.filterEntry));
+}
+
+#endif  // PENUMBRA_PCSS_ONE_CALL_GLSL
