@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   pn::cli::add_bench_command(app, global, exit_code);
   pn::cli::add_figures_command(app, global, exit_code);
   pn::cli::add_poisson_command(app, exit_code);
+  pn::cli::add_sample_table_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "core/seeded_random.h"
@@ -70,6 +71,24 @@ SampleSelection select_samples(int region_side, int pixel_x, int pixel_y) {
   s.first_column = (s.count - 1) / 3;
   s.last_column = 4 * (s.count - 1) / 3;
   return s;
+}
+
+std::string sample_table_text(const SampleTable& table, std::uint32_t seed) {
+  std::string out = "// Fast PCSS's multi-jittered sample table (sample_table.glsl), seed " + std::to_string(seed) + ": a " +
+                    std::to_string(SampleTable::kColumns) + "x" + std::to_string(SampleTable::kSets) +
+                    " RG32F texture,\n// row = set, columns 0 | 1-4 | 5-20 = the 1-, 4- and 16-sample groups; (x, y) "
+                    "per texel.\n";
+  char value[64];
+  for (int set = 0; set < SampleTable::kSets; ++set) {
+    for (int column = 0; column < SampleTable::kColumns; ++column) {
+      const Sample& s = table.at(column, set);
+      std::snprintf(value, sizeof value, "%s%.9gf, %.9gf,", column % 4 == 0 ? (column ? "\n    " : "    ") : " ",
+                    s.x, s.y);
+      out += value;
+    }
+    out += "\n";
+  }
+  return out;
 }
 
 }  // namespace pn

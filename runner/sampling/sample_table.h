@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/image.h"
@@ -41,6 +42,12 @@ struct SampleTable {
 // The table for `seed`: set s, group of n² samples (n = 1, 2, 4) drawn by
 // multi_jittered_set(n, a hash of (seed, s, n)).
 SampleTable generate_sample_table(std::uint32_t seed);
+
+// The table as the body of a C / C++ float array initializer, 2 · 21 · 8
+// values (x, y per column, column-major within a set, sets in order): the
+// RG32F texture's data, row by row, as an engine uploads it. A comment says
+// the layout and the seed (`penumbra sample-table`).
+std::string sample_table_text(const SampleTable& table, std::uint32_t seed);
 
 // §3.2 selection, as the paper writes it, for a region of side s at screen pixel (x, y).
 struct SampleSelection {
