@@ -49,6 +49,14 @@
 //         spans [i, i + 1)) and its linear light depth; depth <= 0: behind the light
 //         (u, v then meaningless). What the G-buffer stores and a hard shadow looks up.
 //         (Perspective or orthographic projection alike.)
+//   float pnLightDepthFromDepthBuffer(mat4 lightProjection, float depth, bool zeroToOneClip)
+//         the linear light depth (the distance along the axis the modules read) of a value of the
+//         light's hardware depth buffer written through lightProjection: NDC z = depth when the clip
+//         range is [0, 1] (Vulkan, D3D, glClipControl's GL_ZERO_TO_ONE), else 2 depth - 1 (OpenGL's
+//         default), then NDC z = clip.z / clip.w solved for the view depth. Perspective or
+//         orthographic, reversed-Z or not, finite or infinite far plane: any projection whose z and
+//         w rows read only the view z. The cleared depth gives the far plane (no occluder nearer).
+//         Precision: docs/integration.md ("From the hardware depth buffer").
 //
 // cost: a few ALU operations.
 
@@ -99,6 +107,13 @@ float pnLightPenumbraTexels(PnLight light, float receiverDepth, float blockerDep
   float texel = pnLightTexelWorld(light, receiverDepth);
   if (!(texel > 0.0)) return 0.0;
   return pnLightPositiveOrZero(pnLightPenumbraWorld(light, receiverDepth, blockerDepth) / texel);
+}
+
+float pnLightDepthFromDepthBuffer(mat4 lightProjection, float depth, bool zeroToOneClip) {
+  float ndcZ = zeroToOneClip ? depth : 2.0 * depth - 1.0;
+  // clip.z = a v + b, clip.w = c v + d for the view z v (column-major: m[column][row]); the light looks down -z.
+  float a = lightProjection[2][2], b = lightProjection[3][2], c = lightProjection[2][3], d = lightProjection[3][3];
+  return (b - ndcZ * d) / (a - ndcZ * c);
 }
 
 vec3 pnLightProject(mat4 lightView, mat4 lightProjection, float mapSize, vec3 world) {

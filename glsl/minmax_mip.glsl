@@ -41,12 +41,25 @@
 //   build: vec4 pnMipLevel0Texel(sampler2D shadowMap, ivec2 texel)          level 0's texel
 //          vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel)   level's texel from level - 1
 //
+// options:
+//   PN_MIP_LEVEL0_DEPTH(value)   how a texel of the map becomes linear light depth in the build
+//                                (default: as it is); below
+//
 // cost: build: per texel of level 0 two fetches of the map, per texel above
 //   four fetches of the level below (log2 P + 1 dispatches); a node read:
 //   1 fetch; a square: <= 9 fetches.
 
 #ifndef PENUMBRA_MINMAX_MIP_GLSL
 #define PENUMBRA_MINMAX_MIP_GLSL
+
+// A texel of the map as linear light depth: the map itself by default; an
+// engine that builds the chain straight from the light's hardware depth buffer
+// defines it before the include, e.g.
+//   #define PN_MIP_LEVEL0_DEPTH(value) pnLightDepthFromDepthBuffer(lightProjection, value, false)
+// (light_model.glsl), so level 0 is the first reduction and no linear copy is made.
+#ifndef PN_MIP_LEVEL0_DEPTH
+#define PN_MIP_LEVEL0_DEPTH(value) (value)
+#endif
 
 // Called once per texel fetch of the chain: empty, unless a caller counts
 // fetches (the savsm check's constant-cost case defines it before the include).
@@ -90,7 +103,7 @@ vec2 pnMipFetch(sampler2D mip, int level, ivec2 node) {
 vec2 pnMipLevel0Node(sampler2D shadowMap, ivec2 p) {
   ivec2 size = textureSize(shadowMap, 0);
   if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) return pnMipEmpty();
-  float d = texelFetch(shadowMap, p, 0).r;
+  float d = PN_MIP_LEVEL0_DEPTH(texelFetch(shadowMap, p, 0).r);
   d = (isnan(d) || isinf(d)) ? pnMipFar() : d;
   return vec2(d, d);
 }

@@ -7,13 +7,104 @@
 #include <limits>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/query_grid.h"
+#include "passes/light_depth_query_pass.h"
 #include "passes/light_model_query_pass.h"
 #include "scene/light_model.h"
 
 namespace pn {
+
+namespace {
+
+constexpr double kFloatEpsilon = 1.1920929e-7;
+
+// NDC z of the view-space depth `depth` (> 0, along -z) through `projection`, in double.
+double ndc_z(const glm::mat4& projection, double depth) {
+  const double z = -depth;
+  return (projection[2][2] * z + projection[3][2]) / (projection[2][3] * z + projection[3][3]);
+}
+
+// The depth in [lo, hi] whose NDC z is `ndc` (NDC z monotonic in depth): bisection in double.
+double depth_of_ndc(const glm::mat4& projection, double ndc, double lo, double hi) {
+  const bool increasing = ndc_z(projection, hi) > ndc_z(projection, lo);
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    ((ndc_z(projection, mid) < ndc) == increasing ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+struct DepthProjection {
+  const char* name;
+  glm::mat4 matrix;
+  double near_plane, far_plane;  // the depths the buffer holds
+};
+
+// A [0, 1]-clip perspective with reversed Z (near -> 1, far -> 0; far = +Inf: infinite).
+glm::mat4 reversed_z(double fov, double near_plane, double far_plane) {
+  glm::mat4 m(0.0f);
+  const double f = 1.0 / std::tan(0.5 * fov);
+  m[0][0] = m[1][1] = static_cast<float>(f);
+  m[2][3] = -1.0f;
+  const bool infinite = std::isinf(far_plane);
+  m[2][2] = infinite ? 0.0f : static_cast<float>(near_plane / (far_plane - near_plane));
+  m[3][2] = infinite ? static_cast<float>(near_plane) : static_cast<float>(far_plane * near_plane / (far_plane - near_plane));
+  return m;
+}
+
+void depth_buffer_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
+  const LightDepthQueryPass gpu(env.context, env.tree);
+  const DepthProjection projections[] = {
+      {"perspective 90 deg, near 1, far 100", glm::perspective(1.5707963f, 1.0f, 1.0f, 100.0f), 1.0, 100.0},
+      {"perspective 60 deg, near 0.1, far 1000", glm::perspective(1.0471976f, 1.0f, 0.1f, 1000.0f), 0.1, 1000.0},
+      {"orthographic, near 1, far 400", glm::ortho(-10.0f, 10.0f, -10.0f, 10.0f, 1.0f, 400.0f), 1.0, 400.0},
+      {"reversed-Z perspective, near 0.5, far 200", reversed_z(1.2, 0.5, 200.0), 0.5, 200.0},
+      {"reversed-Z infinite perspective, near 0.5 (depths to 1e4)", reversed_z(1.2, 0.5, INFINITY), 0.5, 1e4},
+  };
+  for (const DepthProjection& p : projections)
+    for (const bool zero_to_one : {false, true}) {
+      // The values a float32 depth buffer holds for depths spread from near to far.
+      std::vector<Query> queries;
+      std::vector<double> ndc;
+      for (int i = 0; i <= 400; ++i) {
+        const double depth = p.near_plane * std::pow(p.far_plane / p.near_plane, i / 400.0);
+        const double n = ndc_z(p.matrix, depth);
+        const float value = static_cast<float>(zero_to_one ? n : 0.5 * n + 0.5);
+        if (!(value >= 0.0f && value <= 1.0f)) continue;
+        queries.push_back({value, 0, 0, 0});
+        ndc.push_back(zero_to_one ? static_cast<double>(value) : 2.0 * static_cast<double>(value) - 1.0);
+      }
+      const Image input = query_image(queries);
+      const Image observed = gpu.run(p.matrix, input);
+      Image expected(input.width, input.height, 1), got(input.width, input.height, 1);
+      // Float rounding of (b - z d) / (a - z c) with the matrix's float entries: a few ulps of each
+      // operand, amplified where numerator or denominator cancel (the far plane of a [-1, 1] clip range).
+      double condition = 1.0;
+      const glm::mat4& m = p.matrix;
+      for (size_t k = 0; k < queries.size(); ++k) {
+        const double z = ndc[k];
+        const double lo = p.near_plane * 0.5, hi = p.far_plane * 2.0;
+        expected.at(static_cast<int>(k) % input.width, static_cast<int>(k) / input.width) =
+            static_cast<float>(depth_of_ndc(m, z, lo, std::isinf(hi) ? 1e9 : hi));
+        got.at(static_cast<int>(k) % input.width, static_cast<int>(k) / input.width) =
+            observed.at(static_cast<int>(k) % input.width, static_cast<int>(k) / input.width, zero_to_one ? 1 : 0);
+        const double numerator = m[3][2] - z * m[3][3], denominator = m[2][2] - z * m[2][3];
+        condition = std::max(condition, (std::abs(m[3][2]) + std::abs(z * m[3][3])) / std::abs(numerator) +
+                                            (std::abs(m[2][2]) + std::abs(z * m[2][3])) / std::abs(denominator));
+      }
+      const Tolerance tolerance = Tolerance::relative(8.0 * kFloatEpsilon * condition);
+      results.push_back({std::string("depth buffer -> linear depth, ") + p.name +
+                             (zero_to_one ? ", [0, 1] clip" : ", [-1, 1] clip") + ", " +
+                             std::to_string(queries.size()) + " float32 values vs the depth projecting to each",
+                         tolerance, compare(expected, got, tolerance)});
+    }
+}
+
+}  // namespace
 
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
   const LightModelQueryPass gpu(env.context, env.tree);
@@ -64,6 +155,7 @@ std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
                          tolerance, compare(expected, observed, tolerance)});
     }
   }
+  depth_buffer_cases(env, results);
   return results;
 }
 

@@ -24,6 +24,7 @@ std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_depth_cache_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env);
 
 const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
@@ -48,6 +49,9 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_pcss_regions_check},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
        &run_pipeline_check},
+      {"fast_pcss", "pnFastPcss and pnPoissonPcss as one call: compute pass vs the staged passes and fragment shader vs "
+                    "compute pass (exact); every improvement off vs exact PCSS brute force on the CPU",
+       &run_fast_pcss_check},
       {"pcf", "brute-force window scan (whole, banded, bounded side) vs the definition in double; counts exact",
        &run_pcf_check},
       {"poisson_pcss", "Poisson-disk samples (parameter and constant disks, rotation) vs the definition in double",

@@ -179,7 +179,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // the blocker mean is summed in another order, so a pixel may differ only
     // where the two blocker means differ (by float rounding, checked) and move
     // a filter square's rounding.
-    const PcssFrame off_frame = pipeline.run(inputs, fast_pcss_all_off());
+    PcssSettings off = fast_pcss_all_off();
+    off.staged = true;  // its blocker means, Step 4's output (the one call's: the fast_pcss check)
+    const PcssFrame off_frame = pipeline.run(inputs, off);
     const Image off_visibility = read_float_texture(context, off_frame.soft_shadow());
     const Image exact_mean = read_float_texture(context, exact_frame.blocker_mean);
     const Image off_mean = read_float_texture(context, off_frame.blocker_mean);

@@ -19,7 +19,9 @@ Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree) {
   const PcssPipeline pipeline(context, tree);
   FullRenderSource source(context, tree);
   const SceneFrame scene_frame = render_scene_frame(context, source, GBufferRenderer(context, tree), scene, n);
-  const PcssFrame frame = pipeline.run(scene_frame.inputs(), fast_pcss());
+  PcssSettings fast = fast_pcss();
+  fast.staged = true;  // the steps' own maps, drawn one by one
+  const PcssFrame frame = pipeline.run(scene_frame.inputs(), fast);
   const auto read = [&](const GlObject& t, int size, int channels) {
     return flip_rows(read_float_texture(context, t, size, size, channels));
   };

@@ -1,0 +1,21 @@
+// light_depth_query.comp — light_model.glsl's pnLightDepthFromDepthBuffer over a
+// batch of depth-buffer values, for both clip-range conventions.
+// Result k: (linear depth as OpenGL's [-1, 1] clip range wrote it, as a [0, 1] clip range did, 0, 0).
+// Bindings and the projection block: light_depth_query.h.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "light_depth_query.h"
+
+layout(binding = PN_LIGHT_DEPTH_QUERY_QUERIES_BINDING) uniform sampler2D pnQueries;
+layout(rgba32f, binding = PN_LIGHT_DEPTH_QUERY_RESULTS_BINDING) writeonly uniform image2D pnResults;
+
+#include "light_model.glsl"
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(pnResults)))) return;
+  float depth = texelFetch(pnQueries, p, 0).x;
+  imageStore(pnResults, p, vec4(pnLightDepthFromDepthBuffer(pnParams.lightProjection, depth, false),
+                                pnLightDepthFromDepthBuffer(pnParams.lightProjection, depth, true), 0.0, 0.0));
+}

@@ -1,0 +1,110 @@
+// Cases of the fast_pcss check (issue 24): the one calls an engine makes —
+// pnFastPcss (fast_pcss.glsl) and pnPoissonPcss (poisson_pcss.glsl) — on each
+// scene's own shadow map and G-buffer:
+// - in a compute pass (the runner's default path) against the staged passes
+//   of the same settings: the same arithmetic in another order of passes, so
+//   equal bit for bit;
+// - in a fragment shader (a full-screen triangle reading the G-buffer, as a
+//   deferred lighting pass runs it) against the compute pass: the same
+//   arithmetic in another stage, equal bit for bit on Mesa's llvmpipe (a
+//   driver may contract a * b + c into an fma in one stage and not the other:
+//   docs/integration.md says what to expect there);
+// - with every improvement off (refine 0, leaf 1, the table's exact sums) in
+//   both stages against exact PCSS brute force on the CPU (double), the
+//   pixels within rounding of a decision left out and counted.
+#include <string>
+#include <vector>
+
+#include "cache/full_render_source.h"
+#include "check/module_check.h"
+#include "scene/scene.h"
+#include "frame/scene_frame.h"
+#include "gl/texture.h"
+#include "passes/gbuffer_pass.h"
+#include "pipeline/pcss_pipeline.h"
+#include "reference/pcss_reference.h"
+
+namespace pn {
+namespace {
+
+constexpr int kMap = 128, kScreen = 64;     // as the pipeline check: brute force on llvmpipe stays fast
+constexpr double kMargin = 1e-4;            // texels / relative depth: float and double may round apart
+constexpr double kFractionRounding = 1e-6;  // count / texels in float vs double
+
+// Channel `c` of a four-channel image.
+Image channel(const Image& image, int c) {
+  Image out(image.width, image.height);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) out.at(x, y) = image.at(x, y, c);
+  return out;
+}
+
+// The settings the one calls are checked with: the shipped defaults, the
+// paper's windows with a growing leaf and min-estimated blocker leaves (every
+// per-pixel option of pnFastPcss), every improvement off, and Poisson PCSS.
+std::vector<PcssSettings> one_call_settings() {
+  PcssSettings windows = fast_pcss();
+  windows.name = "fast, windows, leaf divisor 8, min blocker leaves";
+  windows.region = RegionMode::window;
+  windows.leaf_side = 4;
+  windows.leaf_divisor = 8;
+  windows.blocker_leaf_mode = LeafMode::min;
+  PcssSettings poisson_fewer = poisson_pcss();
+  poisson_fewer.name = "poisson, 16 / 32 samples, c 0.5";
+  poisson_fewer.blocker_samples = 16;
+  poisson_fewer.filter_samples = 32;
+  poisson_fewer.filter_scale = 0.5f;
+  return {fast_pcss(), windows, fast_pcss_all_off(), poisson_pcss(), poisson_fewer};
+}
+
+}  // namespace
+
+std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
+  const Context& context = env.context;
+  const PcssPipeline pipeline(context, env.tree);
+  FullRenderSource source(context, env.tree);
+  const GBufferRenderer gbuffers(context, env.tree);
+  std::vector<CaseResult> results;
+  for (const auto& fixture : fixtures::kScenes) {
+    const Scene scene = make_scene(fixture, kMap);
+    const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
+                             std::to_string(kScreen) + "² screen";
+    const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, kScreen);
+    const TechniqueInputs inputs = scene_frame.inputs();
+    const Image map = read_float_texture(context, *scene_frame.shadow_map, kMap, kMap, 1);
+    const Image gbuffer = read_float_texture(context, scene_frame.gbuffer);
+
+    for (const PcssSettings& settings : one_call_settings()) {
+      const std::string what = name + ": " + settings.name;
+      const PcssFrame computed = pipeline.run(inputs, settings);
+      const Image compute_work = read_float_texture(context, computed.work);
+      const Image fragment = read_float_texture(context, pipeline.run_fragment(inputs, settings));
+      PcssSettings staged_settings = settings;
+      staged_settings.staged = true;
+      const Image staged = read_float_texture(context, pipeline.run(inputs, staged_settings).soft_shadow());
+      const Image compute_visibility = read_float_texture(context, computed.visibility);
+      results.push_back({what + ": one call in a compute pass vs the staged passes", Tolerance::exact(),
+                         compare(staged, compute_visibility, Tolerance::exact())});
+      results.push_back({what + ": one call in a fragment shader vs the compute pass (visibility, work, flags)",
+                         Tolerance::exact(), compare(compute_work, fragment, Tolerance::exact())});
+      if (settings.name != fast_pcss_all_off().name) continue;
+      const PcssReference reference =
+          exact_pcss_reference(map, gbuffer, scene.light, settings.bias, settings.filter_scale, kMargin);
+      for (const auto& [stage, image] : {std::pair<const char*, Image>{"compute pass", compute_visibility},
+                                         std::pair<const char*, Image>{"fragment shader", channel(fragment, 0)}}) {
+        Image observed = image;
+        int ambiguous = 0;
+        for (int y = 0; y < kScreen; ++y)
+          for (int x = 0; x < kScreen; ++x)
+            if (reference.ambiguous.at(x, y) != 0.0f) observed.at(x, y) = reference.visibility.at(x, y), ++ambiguous;
+        results.push_back({what + ", " + stage + " vs exact PCSS brute force on the CPU (" +
+                               std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
+                           Tolerance::absolute(kFractionRounding),
+                           compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
+      }
+    }
+  }
+  return results;
+}
+
+}  // namespace pn

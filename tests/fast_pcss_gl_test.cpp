@@ -1,0 +1,52 @@
+// The one calls (fast_pcss.glsl's pnFastPcss, poisson_pcss.glsl's
+// pnPoissonPcss) on a real GL context: compute and fragment stage against the
+// staged passes and the CPU's exact PCSS, and copies with one mistake.
+#include <catch2/catch.hpp>
+
+#include "broken_copy.h"
+#include "check/module_check.h"
+#include "gl_test_context.h"
+
+using pn::test::named;
+
+namespace {
+
+const pn::ModuleCheck& fast_pcss() { return pn::find_module_check("fast_pcss"); }
+
+}  // namespace
+
+TEST_CASE("the one calls equal the staged passes in compute and fragment stage, and exact PCSS with everything off") {
+  const auto results = pn::test::run_check(fast_pcss(), PENUMBRA_GLSL_DIR);
+  // 3 scenes × 5 settings × (compute vs staged, fragment vs compute) + 3 scenes × 2 stages vs the CPU.
+  CHECK(results.size() == 3 * 5 * 2 + 3 * 2);
+  pn::test::check_all_pass(results);
+}
+
+TEST_CASE("negative: a copy of fast_pcss.glsl that halves the occluded fraction fails in both stages, Poisson passes") {
+  const pn::test::BrokenCopy copy("fast_pcss.glsl", "? occlusion.occluders / occlusion.texels : 0.0",
+                                  "? 0.5 * occlusion.occluders / occlusion.texels : 0.0");
+  REQUIRE(copy.found());
+  const auto results = pn::test::run_check(fast_pcss(), copy.root());
+  size_t fast_failing = 0;
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    if (named(r, ": poisson")) CHECK(r.comparison.pass);
+    else if (named(r, "vs the staged passes") || named(r, "brute force")) fast_failing += r.comparison.pass ? 0 : 1;
+  }
+  CHECK(fast_failing == 3 * 3 + 3 * 2);  // every scene: three fast settings vs the staged passes, both stages vs the CPU
+  CHECK(pn::test::failing_cases(results) == fast_failing);  // the fragment shader still equals the compute pass
+}
+
+TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fails only against the compute pass") {
+  const pn::test::BrokenCopy copy("passes/pcss_one_call.frag", "pnOneCallShade(ivec2(gl_FragCoord.xy))",
+                                  "pnOneCallShade(ivec2(gl_FragCoord.xy + vec2(0.5, 0.0)))");
+  REQUIRE(copy.found());
+  const auto results = pn::test::run_check(fast_pcss(), copy.root());
+  size_t fragment_failing = 0;
+  for (const auto& r : results) {
+    INFO(r.name << ": " << r.comparison.where(r.tolerance));
+    if (named(r, "vs the staged passes")) CHECK(r.comparison.pass);
+    if (named(r, "fragment shader vs the compute pass")) fragment_failing += r.comparison.pass ? 0 : 1;
+  }
+  CHECK(fragment_failing == 3 * 5);
+}
