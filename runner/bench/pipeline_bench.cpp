@@ -55,9 +55,14 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
     s.comparison = compare_techniques(context, tree, bench_scene(setup, n), cs);
     const TechniqueResult* exact = s.comparison.find(kExactTechnique);
     const TechniqueResult* poisson = s.comparison.find(kPoissonTechnique);
+    const TechniqueResult* staged = s.comparison.find(kStagedPoissonTechnique);
+    const auto ratio = [](const TechniqueResult* base, const TechniqueResult& r) {
+      return base ? base->measurement.total_ms / r.measurement.total_ms : 0.0;
+    };
     for (const TechniqueResult& r : s.comparison.results) {
-      s.speedup_vs_exact.push_back(exact ? exact->measurement.total_ms / r.measurement.total_ms : 0.0);
-      s.speedup_vs_poisson.push_back(poisson ? poisson->measurement.total_ms / r.measurement.total_ms : 0.0);
+      s.speedup_vs_exact.push_back(ratio(exact, r));
+      s.speedup_vs_poisson.push_back(ratio(poisson, r));
+      s.speedup_vs_staged_poisson.push_back(ratio(staged, r));
     }
     out.push_back(std::move(s));
   }
@@ -71,13 +76,16 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
     std::vector<std::string> names;
     for (const TechniqueResult& r : s.comparison.results) names.push_back(r.name);
     const int name = name_column_width(names);
+    const bool staged = s.comparison.find(kStagedPoissonTechnique) != nullptr;
     out << std::left << std::setw(name) << "method" << std::right << std::setw(11) << "total ms" << std::setw(10)
-        << "x exact" << std::setw(10) << "x Poisson" << "   stages (ms)\n";
+        << "x exact" << std::setw(10) << "x Poisson" << (staged ? "  x staged P." : "") << "   stages (ms)\n";
     for (size_t i = 0; i < s.comparison.results.size(); ++i) {
       const TechniqueResult& r = s.comparison.results[i];
       out << std::left << std::setw(name) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(11)
           << r.measurement.total_ms << std::setw(10) << s.speedup_vs_exact[i] << std::setw(10)
-          << s.speedup_vs_poisson[i] << "  ";
+          << s.speedup_vs_poisson[i];
+      if (staged) out << std::setw(13) << s.speedup_vs_staged_poisson[i];
+      out << "  ";
       for (const auto& [name, ms] : r.measurement.stage_ms)
         if (ms > 0.005) out << " " << name << " " << ms << ";";
       out << "\n";
@@ -99,6 +107,7 @@ nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::v
                       {"stats", named_json(r.measurement.frame.stats)},
                       {"speedup_vs_exact", s.speedup_vs_exact[i]},
                       {"speedup_vs_poisson", s.speedup_vs_poisson[i]},
+                      {"speedup_vs_staged_poisson", s.speedup_vs_staged_poisson[i]},
                       {"vs_truth", scores_json(r.vs_truth)},
                       {"vs_exact", r.vs_exact ? scores_json(*r.vs_exact) : nlohmann::json(nullptr)}});
     }

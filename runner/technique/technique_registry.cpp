@@ -14,11 +14,11 @@ const std::vector<TechniqueEntry>& technique_registry() {
   static const std::vector<TechniqueEntry> entries{
       {"exact", "exact PCSS: brute-force blocker search and PCF over the whole regions (pcf.glsl)",
        []() -> Made { return pcss_config(exact_pcss()); }},
-      {"poisson", "Poisson PCSS: 36 blocker / 64 PCF Poisson-disk samples, as engines ship it (poisson_pcss.glsl)",
+      {kPoissonTechnique, "Poisson PCSS: 36 blocker / 64 PCF Poisson-disk samples in one pass, as engines ship it (pnPoissonPcss)",
        []() -> Made { return pcss_config(poisson_pcss()); }},
       {"hqepcss", "HQEPCSS: refined search, min-estimated traversal leaves for blockers, brute-force PCF",
        []() -> Made { return pcss_config(hqepcss()); }},
-      {"fast", "Fast PCSS as shipped: exact regions over the aligned mip chain, refined search, leaf 16, chosen by the bench",
+      {"fast", "Fast PCSS as shipped, one pass (pnFastPcss): exact regions over the aligned mip chain, refined search, leaf 16",
        []() -> Made { return pcss_config(fast_pcss()); }},
       {"fast-paper", "Fast PCSS (seed 000) with the paper's settings: decreased pyramid, power-of-two windows, leaf 8, reuse, blur",
        []() -> Made { return pcss_config(fast_paper_pcss()); }},
@@ -56,6 +56,14 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return savsm_config("savsm-float", {{"table", "float"}}); }},
       {"savsm-raw", "savsm without light-bleeding reduction (bleeding=0)",
        []() -> Made { return savsm_config("savsm-raw", {{"bleeding", "0"}}); }},
+      {kStagedPoissonTechnique, "Poisson PCSS through the staged passes (a map copy, a pass a step): the same output, "
+                                "the bench's baseline before issue 24",
+       []() -> Made {
+         PcssSettings s = poisson_pcss();
+         s.name = kStagedPoissonTechnique;
+         s.staged = true;
+         return pcss_config(s);
+       }},
       {"fast-all-off", "Fast PCSS with every improvement off: must equal exact PCSS (the wiring check)",
        []() -> Made { return pcss_config(fast_pcss_all_off()); }, false},
   };
