@@ -83,18 +83,12 @@ PnFastPcssSettings pnFastPcssDefaults(float bias) {
                             PN_DEPTH_SUMS_MIDPOINT);
 }
 
-// The leaf side for a region: leafDivisor > 0 keeps the leaves along a shadow
-// edge (and so the work) about constant as the penumbra widens.
-int pnFastPcssLeafSide(int leafSide, int leafDivisor, PnRect region) {
-  return leafDivisor > 0 ? max(leafSide, max(region.size.x, region.size.y) / leafDivisor) : leafSide;
-}
-
 // One traversal of an entry's region (Step 4 with depth sums, Step 5 without).
 PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry,
                                PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
   return pnTraverseRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.x, s.bias,
-                             pnFastPcssLeafSide(s.leafSide, s.leafDivisor, region), leafMode, s.nodeBudget,
+                             pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size), leafMode, s.nodeBudget,
                              depthSums, pixel);
 }
 

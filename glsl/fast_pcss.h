@@ -6,12 +6,14 @@
 #ifndef PENUMBRA_FAST_PCSS_H
 #define PENUMBRA_FAST_PCSS_H
 
+#include "traversal.h"  // PN_TRAVERSAL_NO_BUDGET
+
 // Step 3: refinements of the search region from the mip chain (0: PCSS's search width).
 #define PN_FAST_PCSS_REFINE_ITERATIONS 3
 // Traversal leaves of this side or smaller are estimated from the sample table (1: exact counts).
 #define PN_FAST_PCSS_LEAF_SIDE 16
-// Nodes a traversal may visit before it stops descending: 2^26, in effect unbounded.
-#define PN_FAST_PCSS_NODE_BUDGET 67108864
+// Nodes a traversal may visit before it stops descending: no bound.
+#define PN_FAST_PCSS_NODE_BUDGET PN_TRAVERSAL_NO_BUDGET
 // blockerLeafMode's "as leafMode".
 #define PN_FAST_PCSS_SAME_LEAF_MODE -1
 

@@ -29,6 +29,11 @@
 //   band of r rows of a w-wide window costs r * (ceil(w / PN_PCF_ROW_STEP) + 1)
 //   loop iterations.
 //
+// The call (the hard shadow a lighting shader takes, what a hardware shadow sampler with linear
+// filtering gives):
+//   float pnPcf(sampler2D depthMap, vec3 receiver, float bias)   receiver = (u, v, d) as
+//         pnLightProject gives (light_model.glsl): pnPcfBilinearVisibility at (u, v) for depth d
+//
 // use:
 //   PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias)
 //   PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias,
@@ -135,6 +140,10 @@ float pnPcfBilinearVisibility(sampler2D depthMap, vec2 position, float receiverD
   float top = mix(pnPcfLitAt(depthMap, i, t), pnPcfLitAt(depthMap, i + ivec2(1, 0), t), f.x);
   float bottom = mix(pnPcfLitAt(depthMap, i + ivec2(0, 1), t), pnPcfLitAt(depthMap, i + ivec2(1, 1), t), f.x);
   return mix(top, bottom, f.y);
+}
+
+float pnPcf(sampler2D depthMap, vec3 receiver, float bias) {
+  return pnPcfBilinearVisibility(depthMap, receiver.xy, receiver.z, bias);
 }
 
 #endif  // PENUMBRA_PCF_GLSL

@@ -44,6 +44,8 @@
 //   misses the map is lit.
 //
 // use:
+//   float pnSavsm(PN_SAVSM_TABLE_SAMPLER table, sampler2D mip, PnLight light, vec3 receiver,
+//                 vec2 unitRange, PnSavsmSettings settings)     the call: the visibility of one receiver
 //   PnSavsm pnSavsmEstimate(PN_SAVSM_TABLE_SAMPLER table, sampler2D mip, PnLight light,
 //                           vec3 receiver, vec2 unitRange, PnSavsmSettings settings)
 //   PnSavsmStats pnSavsmRectStats(PN_SAVSM_TABLE_SAMPLER table, PnRect rect, vec2 unitRange)
@@ -185,6 +187,11 @@ PnSavsm pnSavsmEstimate(PN_SAVSM_TABLE_SAMPLER table, sampler2D mip, PnLight lig
   r.bound = settings.bound ? pnVsmDepthRangeBound(pnSavsmSquareMinMax(mip, n, r.filterRect), t) : PN_VSM_BOUND_NONE;
   r.visibility = pnVsmApplyBound(r.bound, r.reduced);
   return r;
+}
+
+float pnSavsm(PN_SAVSM_TABLE_SAMPLER table, sampler2D mip, PnLight light, vec3 receiver, vec2 unitRange,
+              PnSavsmSettings settings) {
+  return pnSavsmEstimate(table, mip, light, receiver, unitRange, settings).visibility;
 }
 
 #endif  // PENUMBRA_SAVSM_GLSL

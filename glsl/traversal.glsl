@@ -59,6 +59,10 @@
 //       _TABLE reads summed_area.glsl's table of the map through PN_TRAVERSAL_SUM_TABLE (below);
 //       without that define it counts as _MIDPOINT, so a shader that never asks for exact sums
 //       declares no table.
+//   int   pnTraversalLeafSide(int leafSide, int leafDivisor, ivec2 regionSize)
+//         the leaf side for a region: leafSide, or with leafDivisor > 0 at least the region's
+//         longer side / leafDivisor (the leaves along a shadow edge, and so the work, stay about
+//         constant as the penumbra widens)
 //   float pnTraversalBlockerMean(PnTraversal r)        depthSum / occluders (0 if none; Step 4)
 //   float pnTraversalOccludedFraction(PnTraversal r)   occluders / texels (Step 5)
 //   PnTraversal { float occluders; float depthSum; float texels; int nodes; int fetches; }
@@ -93,6 +97,10 @@ struct PnTraversal {
   int nodes;
   int fetches;
 };
+
+int pnTraversalLeafSide(int leafSide, int leafDivisor, ivec2 regionSize) {
+  return leafDivisor > 0 ? max(leafSide, max(regionSize.x, regionSize.y) / leafDivisor) : leafSide;
+}
 
 float pnTraversalBlockerMean(PnTraversal r) {
   return r.occluders > 0.0 ? r.depthSum / r.occluders : 0.0;

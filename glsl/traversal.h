@@ -12,6 +12,9 @@
 #define PN_TRAVERSAL_MAX_LEVEL 13
 #endif
 
+// A node budget that never binds: 2^26 nodes a traversal.
+#define PN_TRAVERSAL_NO_BUDGET 67108864
+
 // How an ambiguous leaf is estimated: the sample table's §3.2 samples, or
 // HQEPCSS's "every texel occludes at the node's min".
 #define PN_LEAF_SAMPLED 0

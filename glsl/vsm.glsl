@@ -51,6 +51,15 @@
 //   float pnVsmDepthRangeBound(vec2 minMax, float t)                 PN_VSM_BOUND_*
 //   float pnEvsmBound2(vec2 moments, float t, vec2 depthRange, float exponent, float minVariance)
 //   float pnEvsmBound4(vec4 moments, float t, vec2 depthRange, vec2 exponents, float minVariance)
+//   The calls (one receiver, from a lighting shader; 1 where the receiver has no finite
+//   position or depth; its texel clamped to the map):
+//   float pnVsm(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias,
+//               float minVariance, float bleedingReduction)
+//   float pnEvsm2(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias,
+//                 vec2 depthRange, float exponent, float minVariance, float bleedingReduction)
+//   float pnEvsm4(… as pnEvsm2, vec2 exponents …)
+//         receiver = (u, v, d) as pnLightProject gives (light_model.glsl); they read the texel under (u, v)
+//   Their building blocks, per texel:
 //   float pnVsmVisibility(sampler2D moments, sampler2DArray pyramid, ivec2 texel, int radius,
 //                         float receiverDepth, float bias, float minVariance, float bleedingReduction)
 //   float pnEvsmVisibility2(sampler2D moments, sampler2DArray pyramid, ivec2 texel, int radius,
@@ -188,6 +197,37 @@ float pnEvsmVisibility4(sampler2D moments, sampler2DArray pyramid, ivec2 texel, 
   float p = pnEvsmBound4(pnVsmFetchMoments(moments, texel), t, depthRange, exponents, minVariance);
   float bound = pnVsmDepthRangeBound(pnVsmWindowMinMax(pyramid, texel, radius), t);
   return pnVsmApplyBound(bound, pnVsmReduceBleeding(p, bleedingReduction));
+}
+
+// The texel under a receiver's (u, v), clamped to the moments' map; false when its position or
+// depth is not finite (nothing to test: lit).
+bool pnVsmReceiverTexel(sampler2D moments, vec3 receiver, out ivec2 texel) {
+  ivec2 n = textureSize(moments, 0);
+  texel = ivec2(clamp(floor(receiver.xy), vec2(0.0), vec2(n - ivec2(1))));
+  return pnVsmIsFinite(receiver.x) && pnVsmIsFinite(receiver.y) && pnVsmIsFinite(receiver.z);
+}
+
+float pnVsm(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias, float minVariance,
+            float bleedingReduction) {
+  ivec2 texel;
+  if (!pnVsmReceiverTexel(moments, receiver, texel)) return 1.0;
+  return pnVsmVisibility(moments, pyramid, texel, radius, receiver.z, bias, minVariance, bleedingReduction);
+}
+
+float pnEvsm2(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias, vec2 depthRange,
+              float exponent, float minVariance, float bleedingReduction) {
+  ivec2 texel;
+  if (!pnVsmReceiverTexel(moments, receiver, texel)) return 1.0;
+  return pnEvsmVisibility2(moments, pyramid, texel, radius, receiver.z, bias, depthRange, exponent, minVariance,
+                           bleedingReduction);
+}
+
+float pnEvsm4(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias, vec2 depthRange,
+              vec2 exponents, float minVariance, float bleedingReduction) {
+  ivec2 texel;
+  if (!pnVsmReceiverTexel(moments, receiver, texel)) return 1.0;
+  return pnEvsmVisibility4(moments, pyramid, texel, radius, receiver.z, bias, depthRange, exponents, minVariance,
+                           bleedingReduction);
 }
 
 #endif  // PENUMBRA_VSM_GLSL

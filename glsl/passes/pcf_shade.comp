@@ -17,6 +17,6 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
-  float v = receiver.w != 0.0 ? pnPcfBilinearVisibility(pnDepthMap, receiver.xy, receiver.z, pnParams.bias) : 1.0;
+  float v = receiver.w != 0.0 ? pnPcf(pnDepthMap, receiver.xyz, pnParams.bias) : 1.0;
   imageStore(pnVisibility, p, vec4(v, 0.0, 0.0, 0.0));
 }

@@ -1,10 +1,12 @@
 // pcss_one_call.glsl — a PCSS technique as an engine runs it: per pixel, the
-// G-buffer's receiver handed to the technique's one call (pnFastPcss or
-// pnPoissonPcss, PN_PCSS_ONE_CALL), its settings from the pipeline's block.
+// G-buffer's receiver handed to the technique's one call (pnFastPcss,
+// pnPoissonPcss, pnExactPcss or pnHqepcss: PN_PCSS_ONE_CALL), its settings
+// from the pipeline's block.
 // The compute pass (pcss_one_call.comp) and the fragment pass
 // (pcss_one_call.frag, a full-screen triangle) both return pnOneCallShade.
 // Result per pixel: (visibility, Step 4's work, Step 5's work, flags):
-// work = traversal nodes (fast) or samples (poisson); flags = 1 when the
+// work = traversal nodes (fast) or samples (poisson), not counted (0) for
+// exact PCSS and HQEPCSS, whose calls return the visibility only; flags = 1 when the
 // pixel has a search region + 2 when it has a filter region + 4 when it sees
 // a surface in front of the light (the staged passes' counts: PcssStats).
 //   bindings and blocks: pcss_params.h
@@ -15,6 +17,7 @@
 #include "pcss_params.h"
 
 layout(binding = PN_PCSS_SHADE_GBUFFER_BINDING) uniform sampler2D pnGBuffer;
+layout(binding = PN_PCSS_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
 layout(binding = PN_PCSS_MIP_BINDING) uniform sampler2D pnMip;
 layout(binding = PN_PCSS_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
 layout(binding = PN_PCSS_DEPTH_SUMS_BINDING) uniform usampler2D pnDepthSums;
@@ -24,7 +27,9 @@ layout(binding = PN_PCSS_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 #define PN_POISSON_BLOCKER_DISK pnDisk.points  // read in place
 #define PN_POISSON_FILTER_DISK pnFilterDisk.points
 #include "pcss_params.glsl"
+#include "exact_pcss.glsl"
 #include "fast_pcss.glsl"
+#include "hqepcss.glsl"
 #include "poisson_pcss.glsl"
 
 #ifndef PN_PCSS_ONE_CALL
@@ -40,6 +45,16 @@ vec4 pnOneCallShade(ivec2 p) {
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return vec4(1.0, 0.0, 0.0, 0.0);  // no surface: lit
   PnLight light = pnPcssLight();
+  if (PN_PCSS_ONE_CALL == PN_ONE_CALL_EXACT) {
+    return vec4(pnExactPcss(pnDepthMap, light, receiver.xyz, pnPcss.bias, pnPcss.filterScale), 0.0, 0.0,
+                receiver.z > 0.0 ? 4.0 : 0.0);
+  }
+  if (PN_PCSS_ONE_CALL == PN_ONE_CALL_HQEPCSS) {
+    PnHqepcssSettings s = PnHqepcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.refineIterations,
+                                            pnPcss.regionMode, pnPcss.leafSide, pnPcss.leafDivisor,
+                                            pnPcss.nodeBudget);
+    return vec4(pnHqepcss(pnPyramid, pnDepthMap, light, receiver.xyz, s), 0.0, 0.0, receiver.z > 0.0 ? 4.0 : 0.0);
+  }
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_POISSON) {
     PnPoissonPcssSettings s = PnPoissonPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                     pnPcss.filterSamples);

@@ -85,5 +85,7 @@ PN_END_UNIFORM_BLOCK(pnFilterDisk)
 // Which call pcss_one_call.glsl makes (PN_PCSS_ONE_CALL, a compile-time switch).
 #define PN_ONE_CALL_FAST 0     // pnFastPcss (fast_pcss.glsl)
 #define PN_ONE_CALL_POISSON 1  // pnPoissonPcss (poisson_pcss.glsl)
+#define PN_ONE_CALL_EXACT 2    // pnExactPcss (exact_pcss.glsl)
+#define PN_ONE_CALL_HQEPCSS 3  // pnHqepcss (hqepcss.glsl)
 
 #endif  // PENUMBRA_PASSES_PCSS_PARAMS_H

@@ -19,7 +19,6 @@ layout(rgba32f, binding = PN_PCSS_RESULT_IMAGE) writeonly uniform image2D pnResu
 #include "pcss_work.glsl"
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums  // PN_DEPTH_SUMS_TABLE's exact sums
 #include "traversal.glsl"
-#include "fast_pcss.glsl"  // pnFastPcssLeafSide
 
 void main() {
   ivec2 p;
@@ -31,7 +30,7 @@ void main() {
   }
   int n = int(pnPcss.mapSize);
   PnRect rect = pnEntryRegion(entry, n, PN_PCSS_REGION_MODE);
-  int leafSide = pnFastPcssLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, rect);
+  int leafSide = pnTraversalLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, rect.size);
   PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
       ? pnTraverseRegionMip(pnMip, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
                             leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)

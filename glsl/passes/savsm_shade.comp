@@ -26,8 +26,7 @@ void main() {
   vec4 g = texelFetch(pnGBuffer, p, 0);
   float v = 1.0;
   if (g.w != 0.0) {
-    v = pnSavsmEstimate(pnTable, pnMip, pnSavsmParamsLight(), g.xyz, pnParams.unitRange,
-                        pnSavsmParamsSettings()).visibility;
+    v = pnSavsm(pnTable, pnMip, pnSavsmParamsLight(), g.xyz, pnParams.unitRange, pnSavsmParamsSettings());
   }
   imageStore(pnVisibility, p, vec4(v, 0.0, 0.0, 0.0));
 }

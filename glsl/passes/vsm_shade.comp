@@ -28,18 +28,16 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
   vec4 g = texelFetch(pnGBuffer, p, 0);
   float v = 1.0;
-  if (g.w != 0.0 && pnVsmIsFinite(g.z) && pnVsmIsFinite(g.x) && pnVsmIsFinite(g.y)) {
-    ivec2 n = textureSize(pnMoments, 0);
-    ivec2 texel = ivec2(clamp(floor(g.xy), vec2(0.0), vec2(n - ivec2(1))));
+  if (g.w != 0.0) {
 #if PN_VSM_SHADE_KIND == PN_VSM_KIND_EVSM4
-    v = pnEvsmVisibility4(pnMoments, pnPyramid, texel, pnParams.radius, g.z, pnParams.bias, pnParams.depthRange,
-                          pnParams.exponents, pnParams.minVariance, pnParams.bleedingReduction);
+    v = pnEvsm4(pnMoments, pnPyramid, g.xyz, pnParams.radius, pnParams.bias, pnParams.depthRange, pnParams.exponents,
+                pnParams.minVariance, pnParams.bleedingReduction);
 #elif PN_VSM_SHADE_KIND == PN_VSM_KIND_EVSM2
-    v = pnEvsmVisibility2(pnMoments, pnPyramid, texel, pnParams.radius, g.z, pnParams.bias, pnParams.depthRange,
-                          pnParams.exponents.x, pnParams.minVariance, pnParams.bleedingReduction);
+    v = pnEvsm2(pnMoments, pnPyramid, g.xyz, pnParams.radius, pnParams.bias, pnParams.depthRange,
+                pnParams.exponents.x, pnParams.minVariance, pnParams.bleedingReduction);
 #else
-    v = pnVsmVisibility(pnMoments, pnPyramid, texel, pnParams.radius, g.z, pnParams.bias, pnParams.minVariance,
-                        pnParams.bleedingReduction);
+    v = pnVsm(pnMoments, pnPyramid, g.xyz, pnParams.radius, pnParams.bias, pnParams.minVariance,
+              pnParams.bleedingReduction);
 #endif
   }
   imageStore(pnVisibility, p, vec4(v, 0.0, 0.0, 0.0));

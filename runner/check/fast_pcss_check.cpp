@@ -1,6 +1,7 @@
-// Cases of the fast_pcss check (issue 24): the one calls an engine makes —
-// pnFastPcss (fast_pcss.glsl) and pnPoissonPcss (poisson_pcss.glsl) — on each
-// scene's own shadow map and G-buffer:
+// Cases of the fast_pcss check (issue 24): the PCSS family's one calls an
+// engine makes — pnFastPcss (fast_pcss.glsl), pnPoissonPcss (poisson_pcss.glsl),
+// pnExactPcss (exact_pcss.glsl), pnHqepcss (hqepcss.glsl) — on each scene's
+// own shadow map and G-buffer:
 // - in a compute pass (the runner's default path) against the staged passes
 //   of the same settings: the same arithmetic in another order of passes, so
 //   equal bit for bit;
@@ -9,9 +10,10 @@
 //   arithmetic in another stage, equal bit for bit on Mesa's llvmpipe (a
 //   driver may contract a * b + c into an fma in one stage and not the other:
 //   docs/integration.md says what to expect there);
-// - with every improvement off (refine 0, leaf 1, the table's exact sums) in
-//   both stages against exact PCSS brute force on the CPU (double), the
-//   pixels within rounding of a decision left out and counted.
+// - pnExactPcss, and pnFastPcss with every improvement off (refine 0, leaf 1,
+//   the table's exact sums), in both stages against exact PCSS brute force on
+//   the CPU (double), the pixels within rounding of a decision left out and
+//   counted.
 #include <string>
 #include <vector>
 
@@ -41,7 +43,8 @@ Image channel(const Image& image, int c) {
 
 // The settings the one calls are checked with: the shipped defaults, the
 // paper's windows with a growing leaf and min-estimated blocker leaves (every
-// per-pixel option of pnFastPcss), every improvement off, and Poisson PCSS.
+// per-pixel option of pnFastPcss), every improvement off, Poisson PCSS, exact
+// PCSS and HQEPCSS.
 std::vector<PcssSettings> one_call_settings() {
   PcssSettings windows = fast_pcss();
   windows.name = "fast, windows, leaf divisor 8, min blocker leaves";
@@ -54,7 +57,10 @@ std::vector<PcssSettings> one_call_settings() {
   poisson_fewer.blocker_samples = 16;
   poisson_fewer.filter_samples = 32;
   poisson_fewer.filter_scale = 0.5f;
-  return {fast_pcss(), windows, fast_pcss_all_off(), poisson_pcss(), poisson_fewer};
+  std::vector<PcssSettings> out{fast_pcss(), windows, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
+                                exact_pcss(), hqepcss()};
+  for (PcssSettings& s : out) s.staged = false;  // exact PCSS and HQEPCSS run staged by default
+  return out;
 }
 
 }  // namespace
@@ -87,7 +93,7 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
                          compare(staged, compute_visibility, Tolerance::exact())});
       results.push_back({what + ": one call in a fragment shader vs the compute pass (visibility, work, flags)",
                          Tolerance::exact(), compare(compute_work, fragment, Tolerance::exact())});
-      if (settings.name != fast_pcss_all_off().name) continue;
+      if (settings.name != fast_pcss_all_off().name && settings.name != exact_pcss().name) continue;
       const PcssReference reference =
           exact_pcss_reference(map, gbuffer, scene.light, settings.bias, settings.filter_scale, kMargin);
       for (const auto& [stage, image] : {std::pair<const char*, Image>{"compute pass", compute_visibility},

@@ -49,8 +49,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_pcss_regions_check},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
        &run_pipeline_check},
-      {"fast_pcss", "pnFastPcss and pnPoissonPcss as one call: compute pass vs the staged passes and fragment shader vs "
-                    "compute pass (exact); every improvement off vs exact PCSS brute force on the CPU",
+      {"fast_pcss", "pnFastPcss, pnPoissonPcss, pnExactPcss, pnHqepcss as one call: compute pass vs the staged passes "
+                    "and fragment shader vs compute pass (exact); exact and all-off vs exact PCSS brute force on the CPU",
        &run_fast_pcss_check},
       {"pcf", "brute-force window scan (whole, banded, bounded side) vs the definition in double; counts exact",
        &run_pcf_check},

@@ -282,12 +282,14 @@ void PcssPipeline::prepare_one_call(PcssFrame& frame, const TechniqueInputs& inp
   const PcssSettings& s = frame.settings;
   if (!frame.one_call) throw Error("PCSS frame '" + s.name + "': its settings have no one call (reuse, blur, the "
                                    "pyramid or the scan), or stages=on");
-  // What the call reads: the mip chain (and the sums table when asked) for pnFastPcss; the map itself for
-  // pnPoissonPcss (it skips non-finite texels as the sanitized copy's +Inf would be skipped).
-  if (*frame.one_call == OneCall::fast) build_structure(frame, inputs, inputs.light.map_size);
+  // What the call reads: the mip chain (and the sums table when asked) for pnFastPcss, the pyramid for
+  // pnHqepcss; and the map itself (the calls skip non-finite texels as the sanitized copy's +Inf is skipped).
+  if (*frame.one_call == OneCall::fast || *frame.one_call == OneCall::hqepcss)
+    build_structure(frame, inputs, inputs.light.map_size);
   bind.uniform(make_block(inputs.light, s));
   bind.texture(PN_PCSS_SHADE_GBUFFER_BINDING, *inputs.gbuffer);
   bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? frame.mip->texture : no_mip_);
+  bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? frame.pyramid->texture : no_pyramid_);
   bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
   bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
   bind.texture(PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map);
@@ -295,8 +297,13 @@ void PcssPipeline::prepare_one_call(PcssFrame& frame, const TechniqueInputs& inp
   bind.uniform_buffer(PN_PCSS_POISSON_FILTER_DISK_BINDING, disk(s.filter_samples, filter_disk));
 }
 
+static_assert(static_cast<int>(OneCall::fast) == PN_ONE_CALL_FAST && static_cast<int>(OneCall::poisson) == PN_ONE_CALL_POISSON &&
+                  static_cast<int>(OneCall::exact) == PN_ONE_CALL_EXACT &&
+                  static_cast<int>(OneCall::hqepcss) == PN_ONE_CALL_HQEPCSS,
+              "OneCall is pcss_params.h's PN_ONE_CALL_*");
+
 static std::vector<Define> one_call_defines(OneCall call, bool record_work) {
-  return {{"PN_PCSS_ONE_CALL", call == OneCall::fast ? "PN_ONE_CALL_FAST" : "PN_ONE_CALL_POISSON"},
+  return {{"PN_PCSS_ONE_CALL", std::to_string(static_cast<int>(call))},
           {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
 }
 
@@ -309,9 +316,11 @@ PcssFrame PcssPipeline::run_one_call(const TechniqueInputs& inputs, const PcssSe
   PassBindings bind(*context_);
   GlObject blocker_disk, filter_disk;
   prepare_one_call(frame, inputs, bind, blocker_disk, filter_disk);
-  clock.stage(*frame.one_call == OneCall::poisson ? "no structure"
-              : frame.depth_sums.texture.id() != 0 ? "mip chain + sums"
-                                                   : "mip chain");
+  const OneCall call = *frame.one_call;
+  clock.stage(call == OneCall::hqepcss                ? "pyramid"
+              : call != OneCall::fast                 ? "no structure"
+              : frame.depth_sums.texture.id() != 0    ? "mip chain + sums"
+                                                      : "mip chain");
   frame.visibility = make_float_texture(*context_, size, size, 1);
   frame.work = record_work ? make_float_texture(*context_, size, size, 4) : cleared_texture(*context_, 1, 4);
   bind.image(PN_PCSS_VISIBILITY_IMAGE, frame.visibility, GL_WRITE_ONLY, GL_R32F);

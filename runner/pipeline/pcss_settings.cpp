@@ -40,6 +40,12 @@ std::optional<OneCall> one_call(const PcssSettings& s) {
     return OneCall::fast;
   if (s.blockers == Estimator::poisson && s.occlusion == Estimator::poisson && s.refine_iterations == 0)
     return OneCall::poisson;
+  if (s.blockers == Estimator::scan && s.occlusion == Estimator::scan && s.refine_iterations == 0)
+    return OneCall::exact;
+  const LeafMode blocker_leaves = s.blocker_leaf_mode.value_or(s.leaf_mode);
+  if (s.structure == Structure::pyramid && s.blockers == Estimator::traversal && blocker_leaves == LeafMode::min &&
+      s.occlusion == Estimator::scan)
+    return OneCall::hqepcss;
   return std::nullopt;
 }
 
@@ -51,22 +57,25 @@ PcssSettings exact_pcss() {
   s.blockers = s.occlusion = Estimator::scan;
   s.search_tile = s.filter_tile = 0;
   s.blur = false;
+  s.staged = true;  // llvmpipe's loop cap (PcssSettings::staged); exact:stages=off runs pnExactPcss
   return s;
 }
 
 PcssSettings poisson_pcss() {
   PcssSettings s = exact_pcss();
   s.name = "poisson";
+  s.staged = false;
   s.blockers = s.occlusion = Estimator::poisson;
   return s;
 }
 
 PcssSettings hqepcss() {
   PcssSettings s = exact_pcss();
-  s.name = "hqepcss";
-  s.refine_iterations = PcssSettings{}.refine_iterations;
+  s.name = "hqepcss";  // staged as exact PCSS is; hqepcss:stages=off runs pnHqepcss
+  s.refine_iterations = kHqepcssRefineIterations;
   s.region = RegionMode::window;
   s.blockers = Estimator::traversal;
+  s.leaf_side = kHqepcssLeafSide;
   s.leaf_mode = LeafMode::min;
   return s;
 }

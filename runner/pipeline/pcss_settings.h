@@ -65,20 +65,24 @@ struct PcssSettings {
   // pixels_per_texel is the frame's (screen size / map size), set by Step 6.
   BlurParams blur_params{PN_BLUR_RADIUS, PN_BLUR_SIGMA, true, kBlurDepthTolerance, false};
   // Run through the staged passes (a pass a step, per-stage times) even where
-  // the settings are a one-call technique (one_call below).
+  // the settings are a one-call technique (one_call below). Exact PCSS and
+  // HQEPCSS default to it: their brute-force PCF in one call runs past
+  // llvmpipe's cap of 65535 loop iterations an invocation on regions wider
+  // than ~1000 texels, which the staged scan's bands of rows stay under.
   bool staged = false;
 
   // Throws Error naming the setting and its accepted range.
   void validate() const;
 };
 
-// The one call an engine makes that computes `s` in one pass, or none: reuse and blur need
-// neighbours, the pyramid and the scan have no one-call form, and a Poisson
-// search refined from a structure is not what engines ship; `staged` asks for
-// the passes.
+// The one call an engine makes that computes `s` in one pass, or none: reuse
+// and blur need neighbours, and the other combinations of estimators and
+// structures are ablations no engine ships; `staged` asks for the passes.
 enum class OneCall {
   fast,     // pnFastPcss (fast_pcss.glsl)
   poisson,  // pnPoissonPcss (poisson_pcss.glsl)
+  exact,    // pnExactPcss (exact_pcss.glsl)
+  hqepcss,  // pnHqepcss (hqepcss.glsl)
 };
 std::optional<OneCall> one_call(const PcssSettings& s);
 

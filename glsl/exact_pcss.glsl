@@ -1,0 +1,46 @@
+// exact_pcss.glsl — exact PCSS in one call: the reference the other PCSS
+// techniques approximate, brute force over every texel of its regions.
+//
+// description:
+//   SPEC §4.8 ("exact PCSS"). For the receiver (u, v, d):
+//     search  = PCSS's search width for d (blockers as near as the near plane,
+//               light_model.glsl), the exact square of that side around (u, v)
+//               (pcss_regions.glsl: pnSearchStart, pnEntryRect); no surface -> 1
+//     blockers = every texel of the search square with depth < d - bias
+//               (pcf.glsl: pnPcfWindow): mean = their depth sum / count; none -> 1
+//     filter  = the square of side filterScale · penumbra (Eq. 1) around (u, v)
+//               (pnFilterEntry)
+//     visibility = 1 - (texels of the filter square with depth < d - bias) / its texels
+//   The staged passes (pcss_search, pcss_scan in bands, pcss_filter, pcss_shade)
+//   compute the same sums in the same row order: equal bit for bit.
+//
+// use:
+//   float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, float bias, float filterScale)
+//         receiver = (u, v, d) as pnLightProject gives (light_model.glsl); depthMap: the linear
+//         light depth (R32F), texelFetch only
+//
+// cost: one fetch per texel of both squares: O(s²) for a side-s region, the
+//   cost the other techniques exist to avoid. (A driver that caps a loop's
+//   iterations per invocation — llvmpipe: 65535 — cuts a region wider than
+//   about 1000 texels short: the runner runs exact PCSS in bands of rows.)
+
+#ifndef PENUMBRA_EXACT_PCSS_GLSL
+#define PENUMBRA_EXACT_PCSS_GLSL
+
+#include "light_model.glsl"
+#include "pcf.glsl"
+#include "pcss_regions.glsl"
+
+float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, float bias, float filterScale) {
+  int n = int(light.mapSize);
+  vec4 search = pnSearchStart(light, vec4(receiver, 1.0));
+  if (pnEntryLit(search)) return 1.0;
+  PnRect searchRect = pnEntryRect(search, n);
+  PnPcf blockers = pnPcfWindow(depthMap, searchRect.origin, searchRect.size, search.x, bias);
+  vec4 filterEntry = pnFilterEntry(light, search, pnPcfBlockerMean(blockers), blockers.occluders > 0.0, filterScale);
+  if (pnEntryLit(filterEntry)) return 1.0;
+  PnRect filterRect = pnEntryRect(filterEntry, n);
+  return 1.0 - pnPcfOccludedFraction(pnPcfWindow(depthMap, filterRect.origin, filterRect.size, filterEntry.x, bias));
+}
+
+#endif  // PENUMBRA_EXACT_PCSS_GLSL
