@@ -1,5 +1,6 @@
-// Cases of the pipeline check (issue 5): exact PCSS against the CPU
-// reference; the wiring check (Fast PCSS with every improvement off equals
+// Cases of the pipeline check (issue 5): every registry technique through the
+// seam (finite, the sky lit, and its one call in a fragment shader equal to
+// its own path); exact PCSS against the CPU reference; the wiring check (Fast PCSS with every improvement off equals
 // exact PCSS); SSIM of Fast PCSS with the paper's defaults against exact
 // PCSS at 512²; and bad inputs — NaN and empty shadow-map texels, receivers
 // outside the light's frustum, a zero-size light — giving finite, documented
@@ -162,6 +163,15 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
       results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]", visibility));
       results.push_back(sky_stays_lit(name + ": technique '" + entry.name + "': pixels that see no surface stay lit",
                                       gbuffer, visibility));
+      // Its one call in a fragment shader (a full-screen triangle reading the G-buffer, as a deferred
+      // lighting pass runs it) against the runner's path: the same arithmetic, equal on llvmpipe.
+      if (!technique->has_one_call()) continue;
+      TechniqueInputs fragment_inputs = inputs;
+      fragment_inputs.stage = ShadeStage::fragment;
+      results.push_back({name + ": technique '" + entry.name + "': its one call in a fragment shader vs its own path",
+                         Tolerance::exact(),
+                         compare(visibility, read_float_texture(context, technique->run(fragment_inputs, false).visibility),
+                                 Tolerance::exact())});
     }
 
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).

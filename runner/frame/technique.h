@@ -16,6 +16,7 @@
 #include "gl/objects.h"
 #include "gl/texture.h"
 #include "passes/cascade_blend_pass.h"
+#include "passes/shade_pass.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
 
@@ -38,6 +39,9 @@ struct TechniqueInputs {
   // Set when the frame is cascaded (cascades/cascaded_frame.h): what CascadedTechnique runs its
   // technique on, once a cascade; a technique itself reads only the fields above.
   const CascadeInputs* cascades = nullptr;
+  // The stage the technique's one call runs in: a compute pass, or a fragment shader as a deferred
+  // lighting pass runs it (the fragment-stage check; only for a technique with one, has_one_call()).
+  ShadeStage stage = ShadeStage::compute;
 };
 
 // A cascaded frame's layers: each cascade's map, G-buffer and light as one TechniqueInputs, and
@@ -63,6 +67,9 @@ class Technique {
   // One frame. `with_stats`: also count the frame's stats (a readback, after the last timestamp).
   // Throws Error for inputs it cannot take.
   virtual TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const = 0;
+  // Whether its visibility comes from one call per pixel (so it runs in either ShadeStage); false
+  // for the ablations that need neighbours (reuse, blur) or a staged structure.
+  virtual bool has_one_call() const { return true; }
 };
 
 // GL resources that techniques of one family share (compiled passes, tables),

@@ -63,19 +63,17 @@ std::vector<float> PcfQueryPass::bilinear(const GlObject& depth_map, const std::
 }
 
 PcfShadePass::PcfShadePass(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(compile_pass(context, tree, "passes/pcf_shade.comp")) {}
+    : context_(&context), shade_(context, tree, "passes/pcf_shade", PN_PCF_SHADE_VISIBILITY_IMAGE) {}
 
-FloatTexture PcfShadePass::run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias) const {
-  FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);
+FloatTexture PcfShadePass::run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias,
+                               ShadeStage stage) const {
   glsl::PnPcfShadeParams block{};
   block.bias = bias;
   PassBindings bind(*context_);
   bind.uniform(block);
   bind.texture(PN_PCF_SHADE_MAP_BINDING, shadow_map);
   bind.texture(PN_PCF_SHADE_GBUFFER_BINDING, gbuffer);
-  bind.image(PN_PCF_SHADE_VISIBILITY_IMAGE, visibility, GL_WRITE_ONLY, GL_R32F);
-  program_.dispatch(screen_size, screen_size);
-  return visibility;
+  return shade_.run(stage, {}, screen_size, bind);
 }
 
 }  // namespace pn

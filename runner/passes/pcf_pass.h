@@ -8,6 +8,7 @@
 #include "core/query_grid.h"
 #include "gl/compute_program.h"
 #include "passes/query_pass.h"
+#include "passes/shade_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -49,11 +50,12 @@ class PcfQueryPass {
 class PcfShadePass {
  public:
   PcfShadePass(const Context& context, const SourceTree& tree);
-  FloatTexture run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias) const;
+  FloatTexture run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias,
+                   ShadeStage stage = ShadeStage::compute) const;
 
  private:
   const Context* context_;
-  ComputeProgram program_;
+  ShadePass shade_;
 };
 
 }  // namespace pn

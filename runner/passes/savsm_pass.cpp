@@ -60,25 +60,23 @@ Rect rect_of(const Query& q) {
 
 SavsmPass::SavsmPass(const Context& context, const SourceTree& tree)
     : context_(&context),
-      shade_(context, tree, "passes/savsm_shade.comp"),
+      shade_(context, tree, "passes/savsm_shade", PN_SAVSM_VISIBILITY_IMAGE),
       fixed_query_(context, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FIXED),
                    QueryCompile::on_first_use),
       float_query_(context, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FLOAT),
                    QueryCompile::on_first_use) {}
 
 FloatTexture SavsmPass::shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer,
-                              int screen_size, const LightModel& light, const SavsmSettings& settings) const {
+                              int screen_size, const LightModel& light, const SavsmSettings& settings,
+                              ShadeStage stage) const {
   check_sizes(table, light);
   const glsl::PnSavsmParams block = make_block(table, light, settings);
-  FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);
   PassBindings bind(*context_);
   bind.uniform(block);
   bind.texture(PN_SAVSM_TABLE_BINDING, table.texture);
   bind.texture(PN_SAVSM_MIP_BINDING, mip);
   bind.texture(PN_SAVSM_INPUT_BINDING, gbuffer);
-  bind.image(PN_SAVSM_VISIBILITY_IMAGE, visibility, GL_WRITE_ONLY, GL_R32F);
-  shade_.get(table_define(table)).dispatch(screen_size, screen_size);
-  return visibility;
+  return shade_.run(stage, table_define(table), screen_size, bind);
 }
 
 std::vector<SavsmQueryResult> SavsmPass::query(const MomentsTable& table, const GlObject& mip,

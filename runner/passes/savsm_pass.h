@@ -13,6 +13,7 @@
 #include "core/texel_rect.h"
 #include "modules/savsm.h"
 #include "scene/light_model.h"
+#include "passes/shade_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -34,8 +35,10 @@ class SavsmPass {
   // Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid), as a new
   // screen² R32F texture; pixels without a surface are 1. `mip`: the map's min/max mip chain
   // (read when settings.bound or the min blocker mode; else any 2-D texture).
+  // In `stage`: savsm.glsl's pnSavsm in a compute pass or a fragment shader (shade_pass.h).
   FloatTexture shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer, int screen_size,
-                     const LightModel& light, const SavsmSettings& settings) const;
+                     const LightModel& light, const SavsmSettings& settings,
+                     ShadeStage stage = ShadeStage::compute) const;
 
   // One result per receiver (u, v in texels, linear light depth).
   std::vector<SavsmQueryResult> query(const MomentsTable& table, const GlObject& mip,
@@ -44,7 +47,7 @@ class SavsmPass {
 
  private:
   const Context* context_;
-  PassVariants shade_;  // by PN_SAVSM_TABLE
+  ShadePass shade_;  // by PN_SAVSM_TABLE
   QueryPass fixed_query_, float_query_;  // PN_SAVSM_TABLE fixed, float
 };
 

@@ -75,13 +75,11 @@ std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyram
 }
 
 VsmShadePass::VsmShadePass(const Context& context, const SourceTree& tree)
-    : context_(&context), variants_(context, tree, "passes/vsm_shade.comp") {}
+    : context_(&context), shade_(context, tree, "passes/vsm_shade", PN_VSM_SHADE_VISIBILITY_IMAGE) {}
 
 FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer,
-                               int screen_size, const VsmParams& params, float bias) const {
+                               int screen_size, const VsmParams& params, float bias, ShadeStage stage) const {
   params.validate();
-  const ComputeProgram& program = variants_.get({{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}});
-  FloatTexture visibility = make_float_texture(*context_, screen_size, screen_size, 1);
   const glsl::PnVsmShadeParams block{{params.near_depth, params.far_depth},
                                      {params.positive_exponent, params.negative_exponent},
                                      params.blur.radius,
@@ -93,9 +91,7 @@ FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& py
   bind.texture(PN_VSM_SHADE_MOMENTS_BINDING, moments.texture);
   bind.texture(PN_VSM_SHADE_PYRAMID_BINDING, pyramid.texture);
   bind.texture(PN_VSM_SHADE_GBUFFER_BINDING, gbuffer);
-  bind.image(PN_VSM_SHADE_VISIBILITY_IMAGE, visibility, GL_WRITE_ONLY, GL_R32F);
-  program.dispatch(screen_size, screen_size);
-  return visibility;
+  return shade_.run(stage, {{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}}, screen_size, bind);
 }
 
 }  // namespace pn

@@ -12,6 +12,7 @@
 #include "passes/depth_pyramid_pass.h"
 #include "modules/vsm.h"
 #include "passes/query_pass.h"
+#include "passes/shade_pass.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -65,11 +66,11 @@ class VsmShadePass {
  public:
   VsmShadePass(const Context& context, const SourceTree& tree);
   FloatTexture run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
-                   const VsmParams& params, float bias) const;
+                   const VsmParams& params, float bias, ShadeStage stage = ShadeStage::compute) const;
 
  private:
   const Context* context_;
-  PassVariants variants_;  // by PN_VSM_SHADE_KIND
+  ShadePass shade_;  // by PN_VSM_SHADE_KIND
 };
 
 }  // namespace pn

@@ -273,18 +273,16 @@ PcssFrame PcssPipeline::begin_frame(const TechniqueInputs& inputs, const PcssSet
   PcssFrame frame;
   frame.settings = settings;
   frame.size = inputs.screen_size;
-  frame.one_call = one_call(settings);
+  if (!settings.staged) frame.one_call = one_call(settings);
   return frame;
 }
 
-void PcssPipeline::prepare_one_call(PcssFrame& frame, const TechniqueInputs& inputs, PassBindings& bind,
-                                    GlObject& blocker_disk, GlObject& filter_disk) const {
+void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs,
+                                    PassBindings& bind, GlObject& blocker_disk, GlObject& filter_disk) const {
   const PcssSettings& s = frame.settings;
-  if (!frame.one_call) throw Error("PCSS frame '" + s.name + "': its settings have no one call (reuse, blur, the "
-                                   "pyramid or the scan), or stages=on");
   // What the call reads: the mip chain (and the sums table when asked) for pnFastPcss, the pyramid for
   // pnHqepcss; and the map itself (the calls skip non-finite texels as the sanitized copy's +Inf is skipped).
-  if (*frame.one_call == OneCall::fast || *frame.one_call == OneCall::hqepcss)
+  if (call == OneCall::fast || call == OneCall::hqepcss)
     build_structure(frame, inputs, inputs.light.map_size);
   bind.uniform(make_block(inputs.light, s));
   bind.texture(PN_PCSS_SHADE_GBUFFER_BINDING, *inputs.gbuffer);
@@ -315,8 +313,8 @@ PcssFrame PcssPipeline::run_one_call(const TechniqueInputs& inputs, const PcssSe
   clock.start();
   PassBindings bind(*context_);
   GlObject blocker_disk, filter_disk;
-  prepare_one_call(frame, inputs, bind, blocker_disk, filter_disk);
   const OneCall call = *frame.one_call;
+  prepare_one_call(frame, call, inputs, bind, blocker_disk, filter_disk);
   clock.stage(call == OneCall::hqepcss                ? "pyramid"
               : call != OneCall::fast                 ? "no structure"
               : frame.depth_sums.texture.id() != 0    ? "mip chain + sums"
@@ -332,14 +330,19 @@ PcssFrame PcssPipeline::run_one_call(const TechniqueInputs& inputs, const PcssSe
   return frame;
 }
 
-FloatTexture PcssPipeline::run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings) const {
+FloatTexture PcssPipeline::run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings,
+                                        int channels) const {
   PcssFrame frame = begin_frame(inputs, settings);
+  const std::optional<OneCall> call = one_call(settings);
+  if (!call)
+    throw Error("PCSS frame '" + settings.name + "': no one call to run in a fragment shader (reuse and blur need "
+                "neighbours; the other combinations are staged ablations)");
   PassBindings bind(*context_);
   GlObject blocker_disk, filter_disk;
-  prepare_one_call(frame, inputs, bind, blocker_disk, filter_disk);
+  prepare_one_call(frame, *call, inputs, bind, blocker_disk, filter_disk);
   const GlObject program = link_raster_pass(*context_, tree_, "passes/full_screen.vert", "passes/pcss_one_call.frag",
-                                            one_call_defines(*frame.one_call, true));
-  RasterTarget target(*context_, frame.size, 4);
+                                            one_call_defines(*call, true));
+  RasterTarget target(*context_, frame.size, channels);
   target.draw_full_screen(program);
   context_->throw_if_gl_error("PCSS frame '" + settings.name + "' in a fragment shader");
   return target.release_texture();

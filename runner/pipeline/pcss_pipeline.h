@@ -50,7 +50,7 @@ struct PcssFrame {
   GlObject filter_parents;
   GlObject occlusion_results;
   FloatTexture visibility;     // Step 5: 1 - occluded fraction (the one call's result)
-  std::optional<OneCall> one_call;  // set: the frame ran as one pass (settings' one_call), not the steps above
+  std::optional<OneCall> one_call;  // set: the frame ran as one pass (one_call(settings), not staged), not the steps above
   FloatTexture work;           // one call, when recorded: (visibility, Step 4's work, Step 5's work, flags)
   FloatTexture blurred;        // Step 6, when on: depth-aware over receiver_depth (blur_params.depth_aware)
   std::vector<std::pair<std::string, double>> stages;  // GPU ms, in order
@@ -87,11 +87,12 @@ class PcssPipeline {
   // Throws Error for invalid settings or inputs.
   PcssFrame run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work = true) const;
 
-  // The one call of `settings` (which must have one) in a fragment shader: a
-  // full-screen triangle over a screen-size RGBA32F target, each fragment
-  // (visibility, Step 4's work, Step 5's work, flags) — what the compute
-  // pass's work image holds. For the fragment-stage check.
-  FloatTexture run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings) const;
+  // The one call of `settings` (which must have one, staged or not) in a
+  // fragment shader: a full-screen triangle over a screen-size target of
+  // `channels` (4: each fragment's (visibility, Step 4's work, Step 5's work,
+  // flags), what the compute pass's work image holds; 1: the visibility).
+  // For the fragment-stage checks.
+  FloatTexture run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings, int channels = 4) const;
 
   PcssStats stats(const PcssFrame& frame) const;
 
@@ -112,8 +113,8 @@ class PcssPipeline {
   // The source's structures (inputs.pyramid, inputs.mip) are used as they are when they fit.
   void build_structure(PcssFrame& frame, const TechniqueInputs& inputs, int map_size) const;
   // The one-call path's structure and bindings (the compute and the fragment pass alike).
-  void prepare_one_call(PcssFrame& frame, const TechniqueInputs& inputs, PassBindings& bind, GlObject& blocker_disk,
-                        GlObject& filter_disk) const;
+  void prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs, PassBindings& bind,
+                        GlObject& blocker_disk, GlObject& filter_disk) const;
   PcssFrame run_one_call(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work) const;
   PcssFrame begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const;
   // The disk of `samples` points: the blocker or PCF default, else one uploaded into `other`.

@@ -35,7 +35,7 @@ void PcssSettings::validate() const {
 }
 
 std::optional<OneCall> one_call(const PcssSettings& s) {
-  if (s.staged || s.search_tile > 0 || s.filter_tile > 0 || s.blur) return std::nullopt;
+  if (s.search_tile > 0 || s.filter_tile > 0 || s.blur) return std::nullopt;
   if (s.structure == Structure::mip && s.blockers == Estimator::traversal && s.occlusion == Estimator::traversal)
     return OneCall::fast;
   if (s.blockers == Estimator::poisson && s.occlusion == Estimator::poisson && s.refine_iterations == 0)

@@ -77,7 +77,8 @@ struct PcssSettings {
 
 // The one call an engine makes that computes `s` in one pass, or none: reuse
 // and blur need neighbours, and the other combinations of estimators and
-// structures are ablations no engine ships; `staged` asks for the passes.
+// structures are ablations no engine ships. (Whether a frame runs it or the
+// staged passes is `staged`'s choice.)
 enum class OneCall {
   fast,     // pnFastPcss (fast_pcss.glsl)
   poisson,  // pnPoissonPcss (poisson_pcss.glsl)

@@ -34,7 +34,7 @@ class PcfTechnique : public Technique {
     StageClock clock(*context_);
     clock.start();
     TechniqueFrame out;
-    out.visibility = pass_->run(*inputs.shadow_map, *inputs.gbuffer, size, settings_.bias);
+    out.visibility = pass_->run(*inputs.shadow_map, *inputs.gbuffer, size, settings_.bias, inputs.stage);
     context_->throw_if_gl_error("pcf shade");
     clock.stage("shade");
     out.stages = clock.read();

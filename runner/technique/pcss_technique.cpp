@@ -4,6 +4,11 @@
 
 namespace pn {
 TechniqueFrame PcssTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
+  if (inputs.stage == ShadeStage::fragment) {
+    TechniqueFrame out;
+    out.visibility = pipeline_->run_fragment(inputs, settings_, 1);
+    return out;
+  }
   PcssFrame frame = pipeline_->run(inputs, settings_, with_stats);
   TechniqueFrame out;
   out.stages = frame.stages;

@@ -16,7 +16,9 @@ class PcssTechnique : public Technique {
   PcssTechnique(const PcssPipeline& pipeline, PcssSettings settings) : pipeline_(&pipeline), settings_(std::move(settings)) {}
   // Stats: "representatives" (computed / regions, Steps 4 and 5) and "work/px"
   // (traversal nodes, scanned texels or Poisson samples per receiver).
+  // In ShadeStage::fragment: the one call in a fragment shader, no stats.
   TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override;
+  bool has_one_call() const override { return one_call(settings_).has_value(); }
 
  private:
   const PcssPipeline* pipeline_;

@@ -79,7 +79,7 @@ TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool) const {
   }
   TechniqueFrame out;
   out.visibility = passes_->shade.shade(table, *mip, *inputs.gbuffer, inputs.screen_size, inputs.light,
-                                        settings_.savsm);
+                                        settings_.savsm, inputs.stage);
   context_->throw_if_gl_error("savsm shade");
   clock.stage("shade");
   out.stages = clock.read();

@@ -83,7 +83,8 @@ TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool) const {
     clock.stage("pyramid");
   }
   TechniqueFrame out;
-  out.visibility = passes_->shade.run(blurred, *pyramid, *inputs.gbuffer, inputs.screen_size, params, settings_.bias);
+  out.visibility = passes_->shade.run(blurred, *pyramid, *inputs.gbuffer, inputs.screen_size, params, settings_.bias,
+                                       inputs.stage);
   clock.stage("shade");
   out.stages = clock.read();
   return out;

@@ -31,6 +31,7 @@
 #define EX_MIP_READ_BINDING 1          // texture unit: the chain, read at level - 1
 #define EX_MIP_WRITE_IMAGE 0           // image unit: the chain at the level being written
 #define EX_MIP_LEVEL_LOCATION 0        // int
+#define EX_MIP_LIGHT_PROJECTION_LOCATION 1  // mat4: mip_from_depth_buffer.glsl only
 #define EX_MIP_GROUP_SIZE 8            // 8 x 8 invocations a work group
 
 #endif  // EXAMPLE_SHADER_INTERFACE_H

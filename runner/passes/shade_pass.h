@@ -1,0 +1,46 @@
+// The last pass of a technique as an engine runs it: per screen pixel, the
+// G-buffer's receiver handed to the technique's one call, in the stage the
+// caller picks — a compute pass (the runner's default) or a fragment shader
+// over a full-screen triangle, as a deferred lighting pass runs it (the
+// fragment-stage checks). Both programs come from one stem: `<stem>.comp`
+// writes its result to an r32f image, `<stem>.frag` (with
+// passes/full_screen.vert) to the colour target; both include the body that
+// calls the technique.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl/compute_program.h"
+#include "gl/pass_bindings.h"
+#include "gl/pass_variants.h"
+#include "gl/texture.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+enum class ShadeStage {
+  compute,   // a compute pass, one invocation a pixel
+  fragment,  // a fragment shader, one fragment a pixel (gl_FragCoord)
+};
+
+class ShadePass {
+ public:
+  // `stem`: e.g. "passes/pcf_shade"; `image_binding`: the compute pass's r32f output image.
+  ShadePass(const Context& context, const SourceTree& tree, std::string stem, unsigned image_binding);
+
+  // A new size² R32F texture of the pass's values, computed in `stage` with the programs of
+  // `defines` (compiled on first use); `bind` holds every resource the pass reads.
+  FloatTexture run(ShadeStage stage, const std::vector<Define>& defines, int size, PassBindings& bind) const;
+
+ private:
+  const Context* context_;
+  SourceTree tree_;
+  std::string stem_;
+  unsigned image_binding_;
+  PassVariants compute_;
+  mutable std::map<std::string, GlObject> fragment_;  // by the defines, as PassVariants keys them
+};
+
+}  // namespace pn
