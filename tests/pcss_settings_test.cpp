@@ -1,0 +1,44 @@
+// Which PCSS settings an engine can run as one call (pcss_settings.h one_call),
+// and which of them the runner runs that way by default.
+#include <catch2/catch.hpp>
+
+#include "pipeline/pcss_settings.h"
+
+namespace {
+
+pn::PcssSettings with(pn::PcssSettings s, const char* key, const char* value) {
+  pn::set_pcss_setting(s, key, value);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("one call: the shipped techniques have one, the ablations that need neighbours or the pyramid do not") {
+  using pn::OneCall;
+  CHECK(pn::one_call(pn::fast_pcss()) == OneCall::fast);
+  CHECK(pn::one_call(pn::poisson_pcss()) == OneCall::poisson);
+  CHECK(pn::one_call(pn::exact_pcss()) == OneCall::exact);
+  CHECK(pn::one_call(pn::hqepcss()) == OneCall::hqepcss);
+  CHECK(pn::one_call(pn::fast_pcss_all_off()) == OneCall::fast);
+  for (const char* key : {"leaf", "refine"}) CHECK(pn::one_call(with(pn::fast_pcss(), key, "1")) == OneCall::fast);
+  CHECK(pn::one_call(with(pn::fast_pcss(), "region", "window")) == OneCall::fast);
+  CHECK(pn::one_call(with(pn::fast_pcss(), "depth-sums", "table")) == OneCall::fast);
+  // Neighbours (reuse, blur), the pyramid under Fast PCSS, a refined Poisson search: staged only.
+  CHECK_FALSE(pn::one_call(pn::fast_paper_pcss()));
+  CHECK_FALSE(pn::one_call(with(pn::fast_pcss(), "reuse", "on")));
+  CHECK_FALSE(pn::one_call(with(pn::fast_pcss(), "blur", "on")));
+  CHECK_FALSE(pn::one_call(with(pn::fast_pcss(), "structure", "pyramid")));
+  CHECK_FALSE(pn::one_call(with(pn::poisson_pcss(), "refine", "3")));
+  CHECK_FALSE(pn::one_call(with(pn::hqepcss(), "leaf-mode", "sampled")));
+}
+
+TEST_CASE("one call: fast and poisson run it by default, exact and hqepcss run staged (llvmpipe's loop cap)") {
+  CHECK_FALSE(pn::fast_pcss().staged);
+  CHECK_FALSE(pn::poisson_pcss().staged);
+  CHECK(pn::exact_pcss().staged);
+  CHECK(pn::hqepcss().staged);
+  CHECK(with(pn::fast_pcss(), "stages", "on").staged);
+  CHECK_FALSE(with(pn::exact_pcss(), "stages", "off").staged);
+  pn::PcssSettings bad = pn::fast_pcss();
+  CHECK_THROWS_WITH(pn::set_pcss_setting(bad, "stages", "maybe"), Catch::Contains("stages=maybe") && Catch::Contains("on or off"));
+}
