@@ -27,8 +27,8 @@ TEST_CASE("cascades: splits, order, selection, blend, spheres, snaps and the fit
   const auto results = pn::test::run_check(cascades(), PENUMBRA_GLSL_DIR);
   // 7 split cases; selection: 4 counts x 2 k x 3 bands x 2 fades x 2, plus the seam case where
   // band > 0 and m > 1 (3 x 2 x 2 x 2); sphere 2, snap 2; blend pass 4; the city's hard shadow 4,
-  // its seams 2; path 3 counts x 4.
-  CHECK(results.size() == 7 + 96 + 24 + 4 + 4 + 4 + 2 + 12);
+  // its seams 2; path 3 counts x 4; pcf and fast on cascades in fragment shaders 2.
+  CHECK(results.size() == 7 + 96 + 24 + 4 + 4 + 4 + 2 + 12 + 2);
   pn::test::check_all_pass(results);
 }
 
@@ -86,4 +86,15 @@ TEST_CASE("negative: a blend pass that reads cascade 0 for cascade 1 fails the b
   }
   CHECK(failing_named(results, "blend pass") > 0);
   CHECK(failing_named(results, "no seams: Fast PCSS") == 1);
+}
+
+TEST_CASE("negative: a PCSS fragment shader reading its neighbour fails fast's cascaded fragment case, not pcf's") {
+  // The stage reaches every cascade's call (CascadedTechnique passes it on): only the broken stage fails.
+  const pn::test::BrokenCopy copy("passes/pcss_one_call.frag", "pnOneCallShade(ivec2(gl_FragCoord.xy))",
+                                  "pnOneCallShade(ivec2(gl_FragCoord.xy) + ivec2(1, 0))");
+  REQUIRE(copy.found());
+  const auto results = pn::test::run_check(cascades(), copy.root());
+  CHECK(failing_named(results, "fast's call in fragment shaders") == 1);
+  CHECK(failing_named(results, "pcf's call in fragment shaders") == 0);
+  CHECK(pn::test::failing_cases(results) == 1);
 }

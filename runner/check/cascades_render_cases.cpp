@@ -161,6 +161,22 @@ void city_hard_shadow_cases(const CheckEnvironment& env, CityRig& rig, std::vect
                                {0.0f}, {static_cast<float>(std::max(0.0, errors[m] - whole_error))}, Tolerance::exact()));
   results.push_back(row_case("city hard shadow: m 3 below m 1", {0.0f}, {static_cast<float>(std::max(0.0, errors[2] - errors[0]))},
                              Tolerance::exact()));
+
+  // On cascades too, each cascade's call runs in the stage the frame asks for: Fast PCSS's and the
+  // hard PCF's calls in fragment shaders equal their compute passes, blended.
+  CascadeSettings three;
+  three.count = 3, three.map_size = kMap;
+  const auto frame = render_cascaded_frame(env.context, rig.maps, gbuffer, city, three, kScreen);
+  for (const char* name : {"pcf", "fast"}) {
+    const auto technique = parse_technique(name)->create(rig.resources);
+    const CascadedTechnique on_cascades(*technique, rig.blend, env.context);
+    TechniqueInputs inputs = frame->inputs(city.light);
+    const Image computed = read_float_texture(env.context, on_cascades.run(inputs, false).visibility);
+    inputs.stage = ShadeStage::fragment;
+    const Image fragment = read_float_texture(env.context, on_cascades.run(inputs, false).visibility);
+    results.push_back({std::string("city, 3 cascades: ") + name + "'s call in fragment shaders vs compute passes",
+                       Tolerance::exact(), compare(computed, fragment, Tolerance::exact())});
+  }
 }
 
 // --- no seams: Fast PCSS on cascades at the split borders ---------------------------------------------

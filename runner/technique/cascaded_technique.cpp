@@ -12,7 +12,10 @@ TechniqueFrame CascadedTechnique::run(const TechniqueInputs& inputs, bool with_s
   if (!inputs.cascades) throw Error("a cascaded technique needs a cascaded frame (a scene lit by the sun)");
   const CascadeInputs& cascades = *inputs.cascades;
   std::vector<TechniqueFrame> layers;
-  for (const TechniqueInputs& layer : cascades.layers) layers.push_back(inner_->run(layer, with_stats));
+  for (TechniqueInputs layer : cascades.layers) {
+    layer.stage = inputs.stage;  // each cascade's call in the stage the frame asks for
+    layers.push_back(inner_->run(layer, with_stats));
+  }
   std::vector<const GlObject*> visibilities;
   for (const TechniqueFrame& layer : layers) visibilities.push_back(&layer.visibility);
   TechniqueFrame out;

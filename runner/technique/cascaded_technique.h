@@ -19,7 +19,9 @@ class CascadedTechnique : public Technique {
 
   // Throws Error unless inputs.cascades is set. Stages: the inner technique's, each summed over
   // the cascades, then "cascade blend"; stats: each cascade's, prefixed "c<i> ".
+  // inputs.stage reaches every cascade's call.
   TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override;
+  bool has_one_call() const override { return inner_->has_one_call(); }
 
  private:
   const Technique* inner_;
