@@ -8,20 +8,20 @@ ShadePass::ShadePass(const Context& context, const SourceTree& tree, std::string
     : context_(&context), tree_(tree), stem_(std::move(stem)), image_binding_(image_binding),
       compute_(context, tree, stem_ + ".comp") {}
 
-FloatTexture ShadePass::run(ShadeStage stage, const std::vector<Define>& defines, int size, PassBindings& bind) const {
+FloatTexture ShadePass::run(ShadeStage stage, const std::vector<Define>& defines, int size, PassBindings& bind,
+                            int fragment_channels) const {
   if (stage == ShadeStage::compute) {
     FloatTexture out = make_float_texture(*context_, size, size, 1);
     bind.image(image_binding_, out, GL_WRITE_ONLY, GL_R32F);
     compute_.get(defines).dispatch(size, size);
     return out;
   }
-  std::string key;
-  for (const Define& d : defines) key += d.name + "=" + d.value + ";";
+  const std::string key = define_key(defines);
   auto found = fragment_.find(key);
   if (found == fragment_.end())
     found = fragment_.emplace(key, link_raster_pass(*context_, tree_, "passes/full_screen.vert", stem_ + ".frag", defines))
                 .first;
-  RasterTarget target(*context_, size, 1);
+  RasterTarget target(*context_, size, fragment_channels);
   target.draw_full_screen(found->second);
   return target.release_texture();
 }

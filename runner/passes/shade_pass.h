@@ -30,9 +30,12 @@ class ShadePass {
   // `stem`: e.g. "passes/pcf_shade"; `image_binding`: the compute pass's r32f output image.
   ShadePass(const Context& context, const SourceTree& tree, std::string stem, unsigned image_binding);
 
-  // A new size² R32F texture of the pass's values, computed in `stage` with the programs of
-  // `defines` (compiled on first use); `bind` holds every resource the pass reads.
-  FloatTexture run(ShadeStage stage, const std::vector<Define>& defines, int size, PassBindings& bind) const;
+  // A new size² texture of the pass's values, computed in `stage` with the programs of `defines`
+  // (compiled on first use); `bind` holds every resource the pass reads (and any further image
+  // the compute pass writes). The compute pass's output is R32F; the fragment shader's target has
+  // `fragment_channels` channels (what it writes beyond the visibility, for a check).
+  FloatTexture run(ShadeStage stage, const std::vector<Define>& defines, int size, PassBindings& bind,
+                   int fragment_channels = 1) const;
 
  private:
   const Context* context_;
@@ -40,7 +43,7 @@ class ShadePass {
   std::string stem_;
   unsigned image_binding_;
   PassVariants compute_;
-  mutable std::map<std::string, GlObject> fragment_;  // by the defines, as PassVariants keys them
+  mutable std::map<std::string, GlObject> fragment_;  // by define_key
 };
 
 }  // namespace pn

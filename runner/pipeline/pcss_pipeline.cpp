@@ -10,7 +10,6 @@
 #include "passes/traversal_pass.h"
 #include "modules/depth_pyramid.h"
 #include "modules/fast_pcss.h"
-#include "passes/scene_draw.h"
 #include "sampling/poisson_disk.h"
 #include "sampling/sample_table.h"
 #include "scene/light_block.h"
@@ -125,12 +124,11 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       search_(context, tree, "passes/pcss_search.comp"),
       traverse_(context, tree, "passes/pcss_traverse.comp"),
       filter_(context, tree, "passes/pcss_filter.comp"),
-      one_call_(context, tree, "passes/pcss_one_call.comp"),
+      one_call_(context, tree, "passes/pcss_one_call", PN_PCSS_VISIBILITY_IMAGE),
       scan_(compile_pass(context, tree, "passes/pcss_scan.comp")),
       poisson_(compile_pass(context, tree, "passes/pcss_poisson.comp")),
       compact_(compile_pass(context, tree, "passes/pcss_compact.comp")),
       shade_(compile_pass(context, tree, "passes/pcss_shade.comp")),
-      tree_(tree),
       sample_table_(upload_sample_table(context, generate_sample_table(kSampleTableSeed))),
       blocker_disk_(upload_disk(context, PcssSettings{}.blocker_samples, kBlockerDiskSeed)),
       filter_disk_(upload_disk(context, PcssSettings{}.filter_samples, kFilterDiskSeed)),
@@ -305,9 +303,7 @@ static std::vector<Define> one_call_defines(OneCall call, bool record_work) {
           {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
 }
 
-PcssFrame PcssPipeline::run_one_call(const TechniqueInputs& inputs, const PcssSettings& settings,
-                                     bool record_work) const {
-  PcssFrame frame = begin_frame(inputs, settings);
+PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inputs, bool record_work) const {
   const int size = frame.size;
   StageClock clock(*context_);
   clock.start();
@@ -319,14 +315,12 @@ PcssFrame PcssPipeline::run_one_call(const TechniqueInputs& inputs, const PcssSe
               : call != OneCall::fast                 ? "no structure"
               : frame.depth_sums.texture.id() != 0    ? "mip chain + sums"
                                                       : "mip chain");
-  frame.visibility = make_float_texture(*context_, size, size, 1);
   frame.work = record_work ? make_float_texture(*context_, size, size, 4) : cleared_texture(*context_, 1, 4);
-  bind.image(PN_PCSS_VISIBILITY_IMAGE, frame.visibility, GL_WRITE_ONLY, GL_R32F);
   bind.image(PN_PCSS_WORK_IMAGE, frame.work, GL_WRITE_ONLY, GL_RGBA32F);
-  one_call_.get(one_call_defines(*frame.one_call, record_work)).dispatch(size, size);
+  frame.visibility = one_call_.run(ShadeStage::compute, one_call_defines(call, record_work), size, bind);
   clock.stage("one call");
   frame.stages = clock.read();
-  context_->throw_if_gl_error("PCSS frame '" + settings.name + "'");
+  context_->throw_if_gl_error("PCSS frame '" + frame.settings.name + "'");
   return frame;
 }
 
@@ -340,17 +334,14 @@ FloatTexture PcssPipeline::run_fragment(const TechniqueInputs& inputs, const Pcs
   PassBindings bind(*context_);
   GlObject blocker_disk, filter_disk;
   prepare_one_call(frame, *call, inputs, bind, blocker_disk, filter_disk);
-  const GlObject program = link_raster_pass(*context_, tree_, "passes/full_screen.vert", "passes/pcss_one_call.frag",
-                                            one_call_defines(*call, true));
-  RasterTarget target(*context_, frame.size, channels);
-  target.draw_full_screen(program);
+  FloatTexture out = one_call_.run(ShadeStage::fragment, one_call_defines(*call, true), frame.size, bind, channels);
   context_->throw_if_gl_error("PCSS frame '" + settings.name + "' in a fragment shader");
-  return target.release_texture();
+  return out;
 }
 
 PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work) const {
   PcssFrame frame = begin_frame(inputs, settings);
-  if (frame.one_call) return run_one_call(inputs, settings, record_work);
+  if (frame.one_call) return run_one_call(std::move(frame), inputs, record_work);
   const int size = frame.size;
   const int n = inputs.light.map_size;
   StageClock clock(*context_);

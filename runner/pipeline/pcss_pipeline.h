@@ -20,6 +20,7 @@
 #include "passes/minmax_mip_pass.h"
 #include "passes/summed_area_pass.h"
 #include "passes/reuse_pass.h"
+#include "passes/shade_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "frame/technique.h"
 
@@ -115,7 +116,7 @@ class PcssPipeline {
   // The one-call path's structure and bindings (the compute and the fragment pass alike).
   void prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs, PassBindings& bind,
                         GlObject& blocker_disk, GlObject& filter_disk) const;
-  PcssFrame run_one_call(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work) const;
+  PcssFrame run_one_call(PcssFrame frame, const TechniqueInputs& inputs, bool record_work) const;
   PcssFrame begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const;
   // The disk of `samples` points: the blocker or PCF default, else one uploaded into `other`.
   const GlObject& disk(int samples, GlObject& other) const;
@@ -130,9 +131,9 @@ class PcssPipeline {
   SummedAreaPass depth_sums_;
   ReusePass reuse_;
   BlurPass blur_;
-  PassVariants search_, traverse_, filter_, one_call_;  // compiled per switch setting (pcss_params.glsl's PN_PCSS_*)
+  PassVariants search_, traverse_, filter_;  // compiled per switch setting (pcss_params.glsl's PN_PCSS_*)
+  ShadePass one_call_;  // pcss_one_call.comp / .frag, per PN_PCSS_ONE_CALL
   ComputeProgram scan_, poisson_, compact_, shade_;
-  SourceTree tree_;  // for the fragment pass, linked on demand
   GlObject sample_table_, blocker_disk_, filter_disk_, no_parents_;
   GlObject no_pyramid_, no_mip_, no_depth_sums_;  // bound where a frame has no such structure
 };
