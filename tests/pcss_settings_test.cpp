@@ -42,3 +42,16 @@ TEST_CASE("one call: fast and poisson run it by default, exact and hqepcss run s
   pn::PcssSettings bad = pn::fast_pcss();
   CHECK_THROWS_WITH(pn::set_pcss_setting(bad, "stages", "maybe"), Catch::Contains("stages=maybe") && Catch::Contains("on or off"));
 }
+
+TEST_CASE("one call: the Vogel disk runs only as its call, with up to 128 samples") {
+  CHECK(pn::one_call(pn::vogel_pcss()) == pn::OneCall::vogel);
+  CHECK_FALSE(pn::vogel_pcss().staged);
+  pn::vogel_pcss().validate();
+  with(with(pn::vogel_pcss(), "blocker-samples", "128"), "filter-samples", "128").validate();
+  CHECK_THROWS_WITH(with(pn::vogel_pcss(), "filter-samples", "129").validate(),
+                    Catch::Contains("filter samples 129: expected 1..128"));
+  CHECK_THROWS_WITH(with(pn::poisson_pcss(), "filter-samples", "65").validate(),
+                    Catch::Contains("filter samples 65: expected 1..64"));
+  for (const auto& [key, value] : {std::pair{"stages", "on"}, {"refine", "2"}, {"occlusion", "poisson"}, {"blur", "on"}})
+    CHECK_THROWS_WITH(with(pn::vogel_pcss(), key, value).validate(), Catch::Contains("only as its one call"));
+}

@@ -1,11 +1,11 @@
 // pcss_one_call.glsl — a PCSS technique as an engine runs it: per pixel, the
 // G-buffer's receiver handed to the technique's one call (pnFastPcss,
-// pnPoissonPcss, pnExactPcss or pnHqepcss: PN_PCSS_ONE_CALL), its settings
+// pnPoissonPcss, pnVogelPcss, pnExactPcss or pnHqepcss: PN_PCSS_ONE_CALL), its settings
 // from the pipeline's block.
 // The compute pass (pcss_one_call.comp) and the fragment pass
 // (pcss_one_call.frag, a full-screen triangle) both return pnOneCallShade.
 // Result per pixel: (visibility, Step 4's work, Step 5's work, flags):
-// work = traversal nodes (fast) or samples (poisson), not counted (0) for
+// work = traversal nodes (fast) or samples (poisson, vogel), not counted (0) for
 // exact PCSS and HQEPCSS, whose calls return the visibility only; flags = 1 when the
 // pixel has a search region + 2 when it has a filter region + 4 when it sees
 // a surface in front of the light (the staged passes' counts: PcssStats).
@@ -31,6 +31,7 @@ layout(binding = PN_PCSS_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 #include "fast_pcss.glsl"
 #include "hqepcss.glsl"
 #include "poisson_pcss.glsl"
+#include "vogel_pcss.glsl"
 
 #ifndef PN_PCSS_ONE_CALL
 #define PN_PCSS_ONE_CALL PN_ONE_CALL_FAST
@@ -59,6 +60,14 @@ vec4 pnOneCallShade(ivec2 p) {
     PnPoissonPcssSettings s = PnPoissonPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                     pnPcss.filterSamples);
     PnPoissonPcssResult r = pnPoissonPcssEstimate(pnDepthMap, light, receiver.xyz, s, vec2(1.0, 0.0));
+    float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
+    float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
+    return vec4(r.visibility, searched, filtered, pnOneCallFlags(r.searchEntry, r.filterEntry));
+  }
+  if (PN_PCSS_ONE_CALL == PN_ONE_CALL_VOGEL) {
+    PnVogelPcssSettings s = PnVogelPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
+                                                pnPcss.filterSamples);
+    PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, p, s);
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
     return vec4(r.visibility, searched, filtered, pnOneCallFlags(r.searchEntry, r.filterEntry));

@@ -67,7 +67,7 @@ PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
   int leafDivisor;      // pcss_traverse: > 0: the leaf side is at least the region's side / leafDivisor
   int writeKeys;        // pcss_search, pcss_filter: 0 when the reuse keys are not needed or are the entries
                         // themselves (no reuse, or the exact region mode: pnEntryLinkKey returns the entry)
-  int blockerSamples;   // pcss_one_call, Poisson: the blocker disk's samples
+  int blockerSamples;   // pcss_one_call, Poisson and Vogel: the blocker disk's samples
   int filterSamples;    // and the PCF disk's
   int blockerLeafMode;  // pcss_one_call, fast: Step 4's leaves (a PN_LEAF_*, or PN_FAST_PCSS_SAME_LEAF_MODE)
 PN_END_UNIFORM_BLOCK(pnPcss)
@@ -87,5 +87,6 @@ PN_END_UNIFORM_BLOCK(pnFilterDisk)
 #define PN_ONE_CALL_POISSON 1  // pnPoissonPcss (poisson_pcss.glsl)
 #define PN_ONE_CALL_EXACT 2    // pnExactPcss (exact_pcss.glsl)
 #define PN_ONE_CALL_HQEPCSS 3  // pnHqepcss (hqepcss.glsl)
+#define PN_ONE_CALL_VOGEL 4    // pnVogelPcss (vogel_pcss.glsl)
 
 #endif  // PENUMBRA_PASSES_PCSS_PARAMS_H

@@ -17,6 +17,7 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_truth_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env);
@@ -56,6 +57,9 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_pcf_check},
       {"poisson_pcss", "Poisson-disk samples (parameter and constant disks, rotation) vs the definition in double",
        &run_poisson_pcss_check},
+      {"vogel_pcss", "Vogel-disk samples (counts 1..128, turns) and the interleaved-gradient-noise rotation vs the "
+                     "definition in double, within GPU sin/cos error",
+       &run_vogel_pcss_check},
       {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
        &run_truth_check},
       {"summed_area", "64-bit fixed-point summed-area tables: depth and moment sums vs direct box sums (exact), float "

@@ -289,13 +289,16 @@ void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const Techni
   bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
   bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
   bind.texture(PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map);
-  bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, disk(s.blocker_samples, blocker_disk));
-  bind.uniform_buffer(PN_PCSS_POISSON_FILTER_DISK_BINDING, disk(s.filter_samples, filter_disk));
+  // Only the Poisson call reads its disks; the others bind the defaults (a Vogel count may exceed the block's).
+  const bool poisson = call == OneCall::poisson;
+  bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, poisson ? disk(s.blocker_samples, blocker_disk) : blocker_disk_);
+  bind.uniform_buffer(PN_PCSS_POISSON_FILTER_DISK_BINDING, poisson ? disk(s.filter_samples, filter_disk) : filter_disk_);
 }
 
 static_assert(static_cast<int>(OneCall::fast) == PN_ONE_CALL_FAST && static_cast<int>(OneCall::poisson) == PN_ONE_CALL_POISSON &&
                   static_cast<int>(OneCall::exact) == PN_ONE_CALL_EXACT &&
-                  static_cast<int>(OneCall::hqepcss) == PN_ONE_CALL_HQEPCSS,
+                  static_cast<int>(OneCall::hqepcss) == PN_ONE_CALL_HQEPCSS &&
+                  static_cast<int>(OneCall::vogel) == PN_ONE_CALL_VOGEL,
               "OneCall is pcss_params.h's PN_ONE_CALL_*");
 
 static std::vector<Define> one_call_defines(OneCall call, bool record_work) {

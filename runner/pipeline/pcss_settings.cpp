@@ -26,11 +26,15 @@ void PcssSettings::validate() const {
   if (filter_tile < 0 || filter_tile > kReuseMaxTile) throw bad("filter reuse tile", filter_tile, tiles.c_str());
   for (float s : {sigma1, sigma2, sigma3})
     if (!(s >= 0) || !std::isfinite(s)) throw bad("similarity bound", s, "a finite number >= 0");
-  const std::string samples = "1.." + std::to_string(kPoissonMaxSamples);  // poisson_pcss.glsl's disk array
-  if (blocker_samples < 1 || blocker_samples > kPoissonMaxSamples)
-    throw bad("blocker samples", blocker_samples, samples.c_str());
-  if (filter_samples < 1 || filter_samples > kPoissonMaxSamples)
-    throw bad("filter samples", filter_samples, samples.c_str());
+  const bool vogel = blockers == Estimator::vogel || occlusion == Estimator::vogel;
+  if (vogel && (blockers != occlusion || staged || one_call(*this) != OneCall::vogel))
+    throw Error("method '" + name + "': the Vogel disk runs only as its one call (pnVogelPcss): expected "
+                "blockers=vogel with occlusion=vogel, refine 0, no reuse, no blur, stages off");
+  // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
+  const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
+  const std::string samples = "1.." + std::to_string(most);
+  if (blocker_samples < 1 || blocker_samples > most) throw bad("blocker samples", blocker_samples, samples.c_str());
+  if (filter_samples < 1 || filter_samples > most) throw bad("filter samples", filter_samples, samples.c_str());
   if (blur) blur_params.validate();
 }
 
@@ -42,6 +46,8 @@ std::optional<OneCall> one_call(const PcssSettings& s) {
     return OneCall::poisson;
   if (s.blockers == Estimator::scan && s.occlusion == Estimator::scan && s.refine_iterations == 0)
     return OneCall::exact;
+  if (s.blockers == Estimator::vogel && s.occlusion == Estimator::vogel && s.refine_iterations == 0)
+    return OneCall::vogel;
   const LeafMode blocker_leaves = s.blocker_leaf_mode.value_or(s.leaf_mode);
   if (s.structure == Structure::pyramid && s.blockers == Estimator::traversal && blocker_leaves == LeafMode::min &&
       s.occlusion == Estimator::scan)
@@ -66,6 +72,15 @@ PcssSettings poisson_pcss() {
   s.name = "poisson";
   s.staged = false;
   s.blockers = s.occlusion = Estimator::poisson;
+  return s;
+}
+
+PcssSettings vogel_pcss() {
+  PcssSettings s = poisson_pcss();
+  s.name = "vogel";
+  s.blockers = s.occlusion = Estimator::vogel;
+  s.blocker_samples = kVogelBlockerSamples;
+  s.filter_samples = kVogelPcfSamples;
   return s;
 }
 
@@ -141,7 +156,8 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
     if (value == "scan") return Estimator::scan;
     if (value == "traversal") return Estimator::traversal;
     if (value == "poisson") return Estimator::poisson;
-    throw bad("scan, traversal or poisson");
+    if (value == "vogel") return Estimator::vogel;
+    throw bad("scan, traversal, poisson or vogel");
   };
   if (key == "refine") s.refine_iterations = integer();
   else if (key == "region") {

@@ -13,6 +13,7 @@
 #include "modules/poisson_pcss.h"
 #include "modules/reuse.h"
 #include "modules/traversal.h"
+#include "modules/vogel_pcss.h"
 
 namespace pn {
 
@@ -21,6 +22,7 @@ enum class Estimator {
   scan,       // every texel (exact PCSS)
   traversal,  // quadtree over the pyramid (traversal.glsl)
   poisson,    // fixed Poisson-disk samples (Poisson PCSS)
+  vogel,      // a Vogel disk rotated per pixel (vogel_pcss.glsl): its one call only
 };
 
 // How the GPU skips the pixels that need not compute in Steps 4 and 5 — lit
@@ -57,8 +59,9 @@ struct PcssSettings {
   int filter_tile = 2;         // reuse k for Step 5; 0 = no reuse
   float sigma1 = 0.0f, sigma2 = 0.1f, sigma3 = 0.1f;  // Eq. 7 (§5.2 defaults)
   WorkSkip skip = WorkSkip::list;
-  int blocker_samples = kPoissonBlockerSamples;  // Poisson PCSS: 36, 1..kPoissonMaxSamples (64)
-  int filter_samples = kPoissonPcfSamples;       // 64
+  // Poisson PCSS: 36 / 64, 1..kPoissonMaxSamples (64); Vogel PCSS: 1..kVogelMaxSamples (128).
+  int blocker_samples = kPoissonBlockerSamples;
+  int filter_samples = kPoissonPcfSamples;
   bool blur = true;            // Step 6
   // Radius 3 (§5.3), depth-aware; the adaptive radius (blur.glsl: at most half
   // the pixel's penumbra, 0 on lit pixels and contact shadows) off for now.
@@ -84,11 +87,13 @@ enum class OneCall {
   poisson,  // pnPoissonPcss (poisson_pcss.glsl)
   exact,    // pnExactPcss (exact_pcss.glsl)
   hqepcss,  // pnHqepcss (hqepcss.glsl)
+  vogel,    // pnVogelPcss (vogel_pcss.glsl)
 };
 std::optional<OneCall> one_call(const PcssSettings& s);
 
 PcssSettings exact_pcss();    // brute force over the whole search and filter regions
 PcssSettings poisson_pcss();  // 36 blocker / 64 PCF Poisson-disk samples
+PcssSettings vogel_pcss();    // 16 blocker / 32 PCF Vogel-disk samples, rotated per pixel
 PcssSettings hqepcss();       // refined search, min-estimated leaves for blockers, brute-force PCF
 PcssSettings fast_paper_pcss();  // seed 000 with the paper's settings (§5: windows, leaf 8, reuse 4/2, blur radius 3)
 PcssSettings fast_pcss();        // Fast PCSS's defaults, chosen with the bench (docs/benchmarks.md)

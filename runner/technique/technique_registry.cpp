@@ -40,6 +40,9 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return pcss_ablation("fast-branch", "skip", "branch"); }},
       {"fast-blur", "Fast PCSS with Step 6's depth-aware blur, its radius following the filter size",
        []() -> Made { return pcss_ablation("fast-blur", "blur", "on"); }},
+      {"vogel", "Vogel PCSS: 16 blocker / 32 PCF golden-angle samples rotated per pixel by interleaved gradient "
+                "noise, in one pass, as three.js, Godot and bgfx ship it (pnVogelPcss)",
+       []() -> Made { return pcss_config(vogel_pcss()); }},
       {"pcf", "hard shadow, 2x2 bilinear PCF (pcf.glsl): what a hardware shadow sampler gives, seed 003's baseline",
        []() -> Made { return pcf_config("pcf"); }},
       {"vsm", "variance shadow map (seed 003): blurred moments, Chebyshev bound, linstep(0.2) reduction, depth-range bound (vsm.glsl)",
