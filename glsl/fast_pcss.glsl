@@ -75,6 +75,7 @@ struct PnFastPcssResult {
   float blockerMean;   // 0 without a blocker
   int blockerNodes;    // Step 4's traversal nodes (0 when lit after Step 3)
   int occlusionNodes;  // Step 5's (0 when lit after Step 4)
+  int fetches;         // texel fetches: Step 3 at its bound (9 a refinement), the traversals' counted
 };
 
 PnFastPcssSettings pnFastPcssDefaults(float bias) {
@@ -95,8 +96,10 @@ PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize
 PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
                                     PnFastPcssSettings s) {
   int n = int(light.mapSize);
-  PnFastPcssResult r = PnFastPcssResult(1.0, vec4(0.0), vec4(0.0), 0.0, 0, 0);
-  r.searchEntry = pnSearchEntryMip(mip, n, light, vec4(receiver, 1.0), s.bias, s.refineIterations);
+  PnFastPcssResult r = PnFastPcssResult(1.0, vec4(0.0), vec4(0.0), 0.0, 0, 0, 0);
+  int refinements;
+  r.searchEntry = pnSearchEntryMipCounted(mip, n, light, vec4(receiver, 1.0), s.bias, s.refineIterations, refinements);
+  r.fetches = 9 * refinements;
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
 
@@ -104,6 +107,7 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
   PnTraversal blockers = pnFastPcssTraverse(mip, sampleTable, n, r.searchEntry, s, blockerLeafMode,
                                             s.depthSums, pixel);
   r.blockerNodes = blockers.nodes;
+  r.fetches += blockers.fetches;
   bool hasBlocker = blockers.occluders > 0.0;
   r.blockerMean = hasBlocker ? blockers.depthSum / blockers.occluders : 0.0;
   r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
@@ -115,6 +119,7 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
   PnTraversal occlusion = pnFastPcssTraverse(mip, sampleTable, n, r.filterEntry, s, s.leafMode,
                                              PN_DEPTH_SUMS_NONE, pixel);
   r.occlusionNodes = occlusion.nodes;
+  r.fetches += occlusion.fetches;
   r.visibility = 1.0 - (occlusion.texels > 0.0 ? occlusion.occluders / occlusion.texels : 0.0);
   return r;
 }

@@ -33,6 +33,8 @@
 //   vec4  pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias,
 //                          int iterations)   the same from the aligned mip chain (minmax_mip.glsl):
 //                          zmin over the aligned nodes touching the square (<= 9 fetches), a superset
+//   vec4  pnSearchEntryMipCounted(... the same ..., out int refinements)   and how many refinements read
+//                          the chain (<= 9 fetches each: the call's cost)
 //   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
 //   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
@@ -123,15 +125,23 @@ vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float b
   return entry;
 }
 
-vec4 pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations) {
+vec4 pnSearchEntryMipCounted(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations,
+                             out int refinements) {
   vec4 entry = pnSearchStart(light, receiver);
+  refinements = 0;
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
+    refinements += 1;
     entry = pnSearchRefine(light, entry, pnSearchRegionMinMip(mip, mapSize, entry), bias, done);
     if (done) break;
   }
   return entry;
+}
+
+vec4 pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations) {
+  int refinements;
+  return pnSearchEntryMipCounted(mip, mapSize, light, receiver, bias, iterations, refinements);
 }
 
 PnRect pnEntryRegion(vec4 entry, int mapSize, int regionMode) {

@@ -10,5 +10,6 @@
 layout(location = PN_SCENE_TARGET_LOCATION) out vec4 pnShaded;
 
 void main() {
-  pnShaded = pnOneCallShade(ivec2(gl_FragCoord.xy));
+  float fetches;
+  pnShaded = pnOneCallShade(ivec2(gl_FragCoord.xy), fetches);
 }

@@ -9,6 +9,9 @@
 // exact PCSS and HQEPCSS, whose calls return the visibility only; flags = 1 when the
 // pixel has a search region + 2 when it has a filter region + 4 when it sees
 // a surface in front of the light (the staged passes' counts: PcssStats).
+// `fetches`: the texel fetches the call made (fast: pnFastPcssEstimate's count;
+// poisson, vogel: the samples taken; 0, not counted, for exact PCSS and HQEPCSS)
+// — the bench's GPU cost proxy.
 //   bindings and blocks: pcss_params.h
 
 #ifndef PENUMBRA_PCSS_ONE_CALL_GLSL
@@ -42,7 +45,8 @@ float pnOneCallFlags(vec4 searchEntry, vec4 filterEntry) {
          (searchEntry.x > 0.0 ? 4.0 : 0.0);
 }
 
-vec4 pnOneCallShade(ivec2 p) {
+vec4 pnOneCallShade(ivec2 p, out float fetches) {
+  fetches = 0.0;
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return vec4(1.0, 0.0, 0.0, 0.0);  // no surface: lit
   PnLight light = pnPcssLight();
@@ -62,6 +66,7 @@ vec4 pnOneCallShade(ivec2 p) {
     PnPoissonPcssResult r = pnPoissonPcssEstimate(pnDepthMap, light, receiver.xyz, s, vec2(1.0, 0.0));
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
+    fetches = searched + filtered;
     return vec4(r.visibility, searched, filtered, pnOneCallFlags(r.searchEntry, r.filterEntry));
   }
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_VOGEL) {
@@ -70,6 +75,7 @@ vec4 pnOneCallShade(ivec2 p) {
     PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, p, s);
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
+    fetches = searched + filtered;
     return vec4(r.visibility, searched, filtered, pnOneCallFlags(r.searchEntry, r.filterEntry));
   }
   PnFastPcssSettings s = PnFastPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.refineIterations,
@@ -77,6 +83,7 @@ vec4 pnOneCallShade(ivec2 p) {
                                             pnPcss.leafMode, pnPcss.blockerLeafMode, pnPcss.nodeBudget,
                                             pnPcss.depthSums);
   PnFastPcssResult r = pnFastPcssEstimate(pnMip, pnSampleTable, light, receiver.xyz, p, s);
+  fetches = float(r.fetches);
   return vec4(r.visibility, float(r.blockerNodes), float(r.occlusionNodes),
               pnOneCallFlags(r.searchEntry, r.filterEntry));
 }

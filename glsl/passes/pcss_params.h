@@ -33,6 +33,7 @@
 #define PN_PCSS_RESULT_IMAGE 3        // pcss_traverse, pcss_scan, pcss_poisson: per-pixel result
 #define PN_PCSS_VISIBILITY_IMAGE 3    // pcss_shade, pcss_one_call: 1 − occluded fraction
 #define PN_PCSS_WORK_IMAGE 2          // pcss_one_call: (visibility, Step 4's work, Step 5's work, flags)
+#define PN_PCSS_FETCH_IMAGE 1         // pcss_one_call: r32f texel fetches of the call (the bench's cost proxy)
 
 // Buffers.
 #define PN_PCSS_WORK_LIST_BINDING 0     // SSBO: pcss_work.glsl's list

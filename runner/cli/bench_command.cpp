@@ -3,6 +3,7 @@
 
 #include "bench/cache_bench.h"
 #include "bench/cascades_bench.h"
+#include "bench/frontier_bench.h"
 #include "bench/pipeline_bench.h"
 #include "bench/pyramid_bench.h"
 #include "bench/sweep_bench.h"
@@ -26,6 +27,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     SweepBenchSetup sweep;
     CacheBenchSetup cache;
     CascadesBenchSetup cascades;
+    FrontierBenchSetup frontier;
+    bool quick = false;
     std::vector<std::string> methods;
     int max_level = 31;
     std::string json;
@@ -33,14 +36,15 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
-  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | cache | cascades | tables")->required();
+  cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | frontier | cache | cascades | tables")->required();
   auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); tables: default 256 512 1024 2048 4096; pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
   auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal, pipeline and tables, 3 for sweep)");
   cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
   cmd->add_option("--model", opt->pipeline.model, "pipeline: a mesh file (any format Assimp reads) on the ground instead of --scene");
-  cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes)")->delimiter(',');
-  cmd->add_option("--widths", opt->sweep.factors, "sweep: light width factors (default 1,2,4,8)")->delimiter(',');
-  cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep: run exact PCSS only at light width factors up to this (default 2; inf: at every factor)");
+  auto* scenes = cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes); frontier: default boxes,fence,tall_blocker,spider,city")->delimiter(',');
+  auto* widths = cmd->add_option("--widths", opt->sweep.factors, "sweep, frontier: light width factors (default 1,2,4,8)")->delimiter(',');
+  auto* exact_up_to = cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep, frontier: run exact PCSS only at light width factors up to this (default 2; frontier 1; inf: at every factor)");
+  cmd->add_flag("--quick", opt->quick, "frontier: the short run for CI (boxes and tall_blocker at 128², widths 1 and 8, a configuration per technique, one round)");
   cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(',');
   auto* truth_samples = cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline, sweep: S for the ray-traced truth's S x S light samples (default 16)");
   cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)");
@@ -60,13 +64,14 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--path-frames", opt->cascades.path_frames, "cascades: frames along the camera path (default 12)");
   cmd->add_option("--path-methods", opt->cascades.path_methods, "cascades: techniques along the camera path (default pcf,fast)")->delimiter(',');
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
-  cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG");
+  cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG; cascades, frontier: theirs");
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->callback([opt, repeats, sizes, truth_samples, screen, &global, &exit_code] {
+  cmd->callback([opt, repeats, sizes, truth_samples, screen, scenes, widths, exact_up_to, &global, &exit_code] {
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep" &&
-        opt->what != "cache" && opt->what != "cascades" && opt->what != "tables")
-      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, cache, cascades, tables");
+        opt->what != "frontier" && opt->what != "cache" && opt->what != "cascades" && opt->what != "tables")
+      throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, frontier, cache, cascades, tables");
+    if (opt->quick && opt->what != "frontier") throw Error("--quick: only bench frontier has a quick run");
     if (!opt->methods.empty()) require_list_length("methods", opt->methods.size());
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
@@ -75,6 +80,16 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
       if (truth_samples->count() > 0) opt->sweep.truth_samples = opt->pipeline.truth_samples;
       validate_sweep_setup(opt->sweep);
+    } else if (opt->what == "frontier") {
+      if (opt->quick) opt->frontier = quick_frontier_setup();
+      if (scenes->count() > 0) opt->frontier.scenes = opt->sweep.scenes;
+      if (widths->count() > 0) opt->frontier.widths = opt->sweep.factors;
+      if (sizes->count() > 0) opt->frontier.sizes = opt->sizes;
+      if (repeats->count() > 0) opt->frontier.repeats = opt->repeats;
+      if (truth_samples->count() > 0) opt->frontier.truth_samples = opt->pipeline.truth_samples;
+      if (exact_up_to->count() > 0) opt->frontier.exact_up_to = opt->sweep.exact_up_to;
+      if (!opt->methods.empty()) opt->frontier.methods = opt->methods;
+      validate_frontier_setup(opt->frontier);
     } else if (opt->what == "cascades") {
       if (sizes->count() > 0) opt->cascades.sizes = opt->sizes;
       if (repeats->count() > 0) opt->cascades.repeats = opt->repeats;
@@ -101,8 +116,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       validate_traversal_bench_setup(opt->traversal);
     }
     if (!opt->json.empty()) validate_output_path(opt->json);  // before the bench's minutes of work
-    if (!opt->plot.empty() && opt->what != "cache" && opt->what != "cascades")
-      throw Error("--plot: only bench cache and cascades draw their plots (sweep: scripts/plot_sweep.py)");
+    if (!opt->plot.empty() && opt->what != "cache" && opt->what != "cascades" && opt->what != "frontier")
+      throw Error("--plot: only bench cache, cascades and frontier draw their plots (sweep: scripts/plot_sweep.py)");
     if (!opt->plot.empty()) validate_output_path(opt->plot);
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
@@ -121,6 +136,16 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const SweepBench bench = bench_sweep(*context, tree, opt->sweep);
       print_sweep_bench(std::cout, bench);
       results = sweep_bench_json(opt->sweep, bench);
+    } else if (opt->what == "frontier") {
+      const std::vector<FrontierPoint> points = bench_frontier(*context, tree, opt->frontier);
+      print_frontier_bench(std::cout, points);
+      results = frontier_bench_json(opt->frontier, points);
+      if (!opt->plot.empty()) {
+        frontier_bench_chart(points, std::string("penumbra bench frontier") + (opt->quick ? " --quick" : "") +
+                                         ": time against MAE vs the ray-traced truth, " + context->renderer())
+            .write_png(opt->plot);
+        std::cout << "wrote " << opt->plot << "\n";
+      }
     } else if (opt->what == "cascades") {
       const CascadesBench bench = bench_cascades(*context, tree, opt->cascades);
       print_cascades_bench(std::cout, bench);

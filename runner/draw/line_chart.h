@@ -17,15 +17,19 @@ struct ChartSeries {
   Rgb colour;
   bool dashed = false;
   std::vector<std::pair<double, double>> points;  // (x, y) in order of x; non-finite y left out
+  bool lines = true;  // false: markers only (a scatter)
+  int marker = 7;     // side of each point's square, pixels
 };
 
 struct ChartPanel {
   std::string title, x_label, y_label;
   std::vector<ChartSeries> series;
+  bool log_x = false;  // x on a log scale (x > 0; ticks at 1, 2, 5 × 10^k)
 };
 
-// `title` above the panels; the legend (every label of the first panel) below them.
-Canvas draw_line_charts(const std::string& title, const std::vector<ChartPanel>& panels);
+// `title` above the panels; the legend (every label of the first panel) below them. `columns`
+// panels a row (0: all in one row).
+Canvas draw_line_charts(const std::string& title, const std::vector<ChartPanel>& panels, int columns = 0);
 
 // The step of about `count` nice ticks (1, 2 or 5 × 10^k) from 0 to `top` (> 0).
 double nice_tick_step(double top, int count);

@@ -219,8 +219,7 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   PassBindings bind(*context_);
   bind_inputs(bind);
   bind.uniform(block);
-  GlObject other_disk;
-  if (estimator == Estimator::poisson) bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, disk(samples, other_disk));
+  if (estimator == Estimator::poisson) bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, disk(samples));
   // The work list: its header (groups x, y, z; count), and room for every pixel only when listing.
   const std::size_t header = 4 * sizeof(std::uint32_t);
   const std::size_t room = list ? static_cast<std::size_t>(size) * size * 2 * sizeof(std::uint32_t) : 0;
@@ -237,11 +236,14 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   }
 }
 
-const GlObject& PcssPipeline::disk(int samples, GlObject& other) const {
+const GlObject& PcssPipeline::disk(int samples) const {
   if (samples == PN_POISSON_BLOCKER_SAMPLES) return blocker_disk_;
   if (samples == PN_POISSON_PCF_SAMPLES) return filter_disk_;
-  other = upload_disk(*context_, samples, kFilterDiskSeed);  // a count other than the defaults gets its own disk
-  return other;
+  // A count other than the defaults gets its own disk, made once (Bridson's algorithm on the CPU and
+  // an upload: not a per-frame cost an engine pays, so not inside a timed frame after the first).
+  auto found = other_disks_.find(samples);
+  if (found == other_disks_.end()) found = other_disks_.emplace(samples, upload_disk(*context_, samples, kFilterDiskSeed)).first;
+  return found->second;
 }
 
 void PcssPipeline::reuse_and_estimate(PcssFrame& frame, const PcssBlock& block, StageClock& clock,
@@ -276,7 +278,7 @@ PcssFrame PcssPipeline::begin_frame(const TechniqueInputs& inputs, const PcssSet
 }
 
 void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs,
-                                    PassBindings& bind, GlObject& blocker_disk, GlObject& filter_disk) const {
+                                    PassBindings& bind) const {
   const PcssSettings& s = frame.settings;
   // What the call reads: the mip chain (and the sums table when asked) for pnFastPcss, the pyramid for
   // pnHqepcss; and the map itself (the calls skip non-finite texels as the sanitized copy's +Inf is skipped).
@@ -291,8 +293,8 @@ void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const Techni
   bind.texture(PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map);
   // Only the Poisson call reads its disks; the others bind the defaults (a Vogel count may exceed the block's).
   const bool poisson = call == OneCall::poisson;
-  bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, poisson ? disk(s.blocker_samples, blocker_disk) : blocker_disk_);
-  bind.uniform_buffer(PN_PCSS_POISSON_FILTER_DISK_BINDING, poisson ? disk(s.filter_samples, filter_disk) : filter_disk_);
+  bind.uniform_buffer(PN_PCSS_POISSON_DISK_BINDING, poisson ? disk(s.blocker_samples) : blocker_disk_);
+  bind.uniform_buffer(PN_PCSS_POISSON_FILTER_DISK_BINDING, poisson ? disk(s.filter_samples) : filter_disk_);
 }
 
 static_assert(static_cast<int>(OneCall::fast) == PN_ONE_CALL_FAST && static_cast<int>(OneCall::poisson) == PN_ONE_CALL_POISSON &&
@@ -311,15 +313,16 @@ PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inp
   StageClock clock(*context_);
   clock.start();
   PassBindings bind(*context_);
-  GlObject blocker_disk, filter_disk;
   const OneCall call = *frame.one_call;
-  prepare_one_call(frame, call, inputs, bind, blocker_disk, filter_disk);
+  prepare_one_call(frame, call, inputs, bind);
   clock.stage(call == OneCall::hqepcss                ? "pyramid"
               : call != OneCall::fast                 ? "no structure"
               : frame.depth_sums.texture.id() != 0    ? "mip chain + sums"
                                                       : "mip chain");
   frame.work = record_work ? make_float_texture(*context_, size, size, 4) : cleared_texture(*context_, 1, 4);
   bind.image(PN_PCSS_WORK_IMAGE, frame.work, GL_WRITE_ONLY, GL_RGBA32F);
+  frame.fetches = record_work ? make_float_texture(*context_, size, size, 1) : cleared_texture(*context_, 1, 1);
+  bind.image(PN_PCSS_FETCH_IMAGE, frame.fetches, GL_WRITE_ONLY, GL_R32F);
   frame.visibility = one_call_.run(ShadeStage::compute, one_call_defines(call, record_work), size, bind);
   clock.stage("one call");
   frame.stages = clock.read();
@@ -335,8 +338,7 @@ FloatTexture PcssPipeline::run_fragment(const TechniqueInputs& inputs, const Pcs
     throw Error("PCSS frame '" + settings.name + "': no one call to run in a fragment shader (reuse and blur need "
                 "neighbours; the other combinations are staged ablations)");
   PassBindings bind(*context_);
-  GlObject blocker_disk, filter_disk;
-  prepare_one_call(frame, *call, inputs, bind, blocker_disk, filter_disk);
+  prepare_one_call(frame, *call, inputs, bind);
   FloatTexture out = one_call_.run(ShadeStage::fragment, one_call_defines(*call, true), frame.size, bind, channels);
   context_->throw_if_gl_error("PCSS frame '" + settings.name + "' in a fragment shader");
   return out;
@@ -438,6 +440,8 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
         if (flags & 1) ++s.searched, ++s.search_computed, s.blocker_work += work.at(x, y, 1);
         if (flags & 2) ++s.filtered, ++s.filter_computed, s.occlusion_work += work.at(x, y, 2);
       }
+    s.fetches = fetch_proxy(read_float_texture(*context_, frame.fetches),
+                            [&](int x, int y) { return (static_cast<int>(work.at(x, y, 3)) & 4) != 0; });
     return s;
   }
   const auto read4 = [&](const GlObject& t) { return read_float_texture(*context_, t, size, size, 4); };
@@ -448,6 +452,7 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
   const Image search_parents = search_reuse ? read1(frame.search_parents) : Image(size, size);
   const Image filter_parents = filter_reuse ? read1(frame.filter_parents) : Image(size, size);
   PcssStats s;
+  Image fetches(size, size);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       if (search.at(x, y, 0) > 0.0f) ++s.receivers;
@@ -456,6 +461,7 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
         if (search_parents.at(x, y) == static_cast<float>(PN_REUSE_NONE)) {
           ++s.search_computed;
           s.blocker_work += blockers.at(x, y, 3);
+          fetches.at(x, y) += blockers.at(x, y, 3);
         }
       }
       if (filter.at(x, y, 3) >= 0.0f) {
@@ -463,9 +469,11 @@ PcssStats PcssPipeline::stats(const PcssFrame& frame) const {
         if (filter_parents.at(x, y) == static_cast<float>(PN_REUSE_NONE)) {
           ++s.filter_computed;
           s.occlusion_work += occlusion.at(x, y, 3);
+          fetches.at(x, y) += occlusion.at(x, y, 3);
         }
       }
     }
+  s.fetches = fetch_proxy(fetches, [&](int x, int y) { return search.at(x, y, 0) > 0.0f; });
   return s;
 }
 

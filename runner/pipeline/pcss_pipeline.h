@@ -5,6 +5,7 @@
 // with reuse → soft-shadow map), Step 6 (blur).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,6 +23,7 @@
 #include "passes/reuse_pass.h"
 #include "passes/shade_pass.h"
 #include "pipeline/pcss_settings.h"
+#include "frame/fetch_proxy.h"
 #include "frame/technique.h"
 
 namespace pn {
@@ -53,6 +55,7 @@ struct PcssFrame {
   FloatTexture visibility;     // Step 5: 1 - occluded fraction (the one call's result)
   std::optional<OneCall> one_call;  // set: the frame ran as one pass (one_call(settings), not staged), not the steps above
   FloatTexture work;           // one call, when recorded: (visibility, Step 4's work, Step 5's work, flags)
+  FloatTexture fetches;        // one call, when recorded: the call's texel fetches per pixel
   FloatTexture blurred;        // Step 6, when on: depth-aware over receiver_depth (blur_params.depth_aware)
   std::vector<std::pair<std::string, double>> stages;  // GPU ms, in order
 
@@ -74,6 +77,9 @@ struct PcssStats {
   double occlusion_work = 0.0;
   double representative_fraction() const;  // computed / regions, Steps 4 and 5 together
   double work_per_receiver() const;
+  // Texel fetches (fetch_proxy.h): the one call's own count; staged, Steps 4 and 5's work (a node,
+  // texel or sample each: one fetch), Step 3 not counted.
+  FetchProxy fetches;
 };
 
 class PcssPipeline {
@@ -114,12 +120,11 @@ class PcssPipeline {
   // The source's structures (inputs.pyramid, inputs.mip) are used as they are when they fit.
   void build_structure(PcssFrame& frame, const TechniqueInputs& inputs, int map_size) const;
   // The one-call path's structure and bindings (the compute and the fragment pass alike).
-  void prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs, PassBindings& bind,
-                        GlObject& blocker_disk, GlObject& filter_disk) const;
+  void prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs, PassBindings& bind) const;
   PcssFrame run_one_call(PcssFrame frame, const TechniqueInputs& inputs, bool record_work) const;
   PcssFrame begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const;
-  // The disk of `samples` points: the blocker or PCF default, else one uploaded into `other`.
-  const GlObject& disk(int samples, GlObject& other) const;
+  // The disk of `samples` points: the blocker or PCF default, else one made on first use and kept.
+  const GlObject& disk(int samples) const;
   // Their second half's inputs into `bind`: `entries`, parents (tile > 0), results, and the
   // uniform block with the tile.
   void bind_representatives(PassBindings& bind, glsl::PnPcssParams block, const GlObject& entries, int tile,
@@ -136,6 +141,7 @@ class PcssPipeline {
   ComputeProgram scan_, poisson_, compact_, shade_;
   GlObject sample_table_, blocker_disk_, filter_disk_, no_parents_;
   GlObject no_pyramid_, no_mip_, no_depth_sums_;  // bound where a frame has no such structure
+  mutable std::map<int, GlObject> other_disks_;   // disk(): the other counts asked for, by count
 };
 
 }  // namespace pn

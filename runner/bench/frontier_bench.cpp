@@ -1,0 +1,259 @@
+#include "bench/frontier_bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <memory>
+
+#include "bench/sweep_bench.h"
+#include "core/bounds.h"
+#include "core/error.h"
+#include "core/format.h"
+#include "core/progress.h"
+#include "draw/line_chart.h"
+#include "scene/city_scene.h"
+#include "scene/model.h"
+#include "scene/scene.h"
+#include "technique/comparison.h"
+#include "technique/technique_registry.h"
+
+namespace pn {
+
+namespace {
+
+constexpr const char* kFrontierModelScene = "spider";  // fixtures::kCityModels[0] on the ground
+
+std::string samples_spec(const char* family, int n) {
+  return std::string(family) + ":blocker-samples=" + std::to_string(n) + ":filter-samples=" + std::to_string(n);
+}
+
+// The scene at one map size and width factor.
+Scene frontier_scene(const std::string& name, int size, double width) {
+  Scene scene = name == kFrontierModelScene                     ? make_model_scene(fixtures::kCityModels[0], size)
+                : find_city_scene_fixture_or_null(name) != nullptr ? make_city_scene(*find_city_scene_fixture_or_null(name), size)
+                                                                : make_scene(find_scene_fixture(name), size);
+  scale_light_width(scene, width, "light width factor");
+  return scene;
+}
+
+std::string family_of(const std::string& spec) {
+  const std::string name = spec.substr(0, spec.find(':'));
+  for (const char* family : {"poisson", "vogel", "fast", "hqepcss", "savsm", "exact", "pcf"})
+    if (name.rfind(family, 0) == 0) return family;
+  if (name == "vsm" || name.rfind("evsm", 0) == 0) return "vsm";
+  return name;
+}
+
+std::optional<double> stat(const NamedValues& stats, const char* name) {
+  for (const auto& [key, value] : stats)
+    if (key == name) return value;
+  return std::nullopt;
+}
+
+std::string width_text(double w) { return "x" + format_number("%g", w); }
+
+}  // namespace
+
+std::vector<std::string> frontier_techniques() {
+  std::vector<std::string> out;
+  for (int n : {8, 16, 32, 64}) out.push_back(samples_spec("poisson", n));
+  out.push_back("poisson");  // the seeds' 36 / 64
+  for (int n : {8, 16, 32, 64, 128}) out.push_back(samples_spec("vogel", n));
+  out.push_back("vogel");  // 16 / 32
+  for (const char* s : {"fast", "fast:leaf=4", "fast:leaf=8", "fast:leaf=32", "fast:leaf-divisor=8",
+                        "fast:leaf-divisor=16", "hqepcss", "savsm", "vsm", "evsm", "pcf", "exact"})
+    out.push_back(s);
+  return out;
+}
+
+FrontierBenchSetup quick_frontier_setup() {
+  FrontierBenchSetup s;
+  s.scenes = {"boxes", "tall_blocker"};
+  s.widths = {1, 8};
+  s.sizes = {128};
+  s.repeats = 1;
+  s.truth_samples = 4;
+  s.methods = {samples_spec("poisson", 16), "poisson", "vogel", samples_spec("vogel", 64), "fast", "fast:leaf=8",
+               "hqepcss", "savsm", "vsm", "pcf", "exact"};
+  return s;
+}
+
+void validate_frontier_setup(const FrontierBenchSetup& s) {
+  require_list_length("frontier scenes", s.scenes.size());
+  require_list_length("frontier light width factors", s.widths.size());
+  require_list_length("frontier sizes", s.sizes.size());
+  for (int n : s.sizes)
+    if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
+  if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
+  if (s.truth_samples < 1 || s.truth_samples > 64)
+    throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
+  if (!(s.exact_up_to > 0))
+    throw Error("exact up to " + format_number("%g", s.exact_up_to) + ": expected a light width factor > 0");
+  for (const std::string& name : s.scenes) {
+    if (name != kFrontierModelScene && !find_city_scene_fixture_or_null(name)) find_scene_fixture(name);
+    if (name == kFrontierModelScene || find_city_scene_fixture_or_null(name)) continue;  // read when run
+    for (double w : s.widths) frontier_scene(name, 16, w);
+  }
+  for (double w : s.widths) validate_light_width_factor(w, "light width factor");
+  for (const std::string& m : s.methods) parse_technique(m)->validate();
+}
+
+void mark_frontier(FrontierPoint& point) {
+  for (FrontierRow& r : point.rows) {
+    r.on_frontier = true;
+    for (const FrontierRow& o : point.rows)
+      if (&o != &r && o.ms <= r.ms && o.mae <= r.mae && (o.ms < r.ms || o.mae < r.mae)) r.on_frontier = false;
+  }
+  point.beats_default.reset();
+  const auto fast = std::find_if(point.rows.begin(), point.rows.end(),
+                                 [](const FrontierRow& r) { return r.method == kFrontierDefault; });
+  if (fast == point.rows.end()) return;
+  for (const FrontierRow& o : point.rows)
+    if (o.family != fast->family && o.mae <= fast->mae && o.ms < fast->ms &&
+        (!point.beats_default || o.ms < point.beats_default->ms))
+      point.beats_default = o;
+}
+
+std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTree& tree, const FrontierBenchSetup& setup) {
+  validate_frontier_setup(setup);
+  std::vector<std::unique_ptr<TechniqueConfig>> configs;
+  for (const std::string& m : setup.methods.empty() ? frontier_techniques() : setup.methods)
+    configs.push_back(parse_technique(m));
+  std::vector<FrontierPoint> points;
+  Progress progress("bench frontier", setup.scenes.size() * setup.sizes.size() * setup.widths.size());
+  for (const std::string& name : setup.scenes)
+    for (int n : setup.sizes)
+      for (double w : setup.widths) {
+        progress.step(name + " " + std::to_string(n) + " " + width_text(w) + ": " + std::to_string(configs.size()) +
+                      " configurations, the truth");
+        ComparisonSetup cs;
+        cs.screen_size = n;
+        cs.repeats = setup.repeats;
+        cs.truth_samples = setup.truth_samples;
+        if (find_city_scene_fixture_or_null(name)) {
+          CascadeSettings c;
+          c.count = kFrontierCascades, c.map_size = n, c.stable = true;
+          cs.cascades = c;
+        }
+        for (const auto& c : configs)
+          if (w <= setup.exact_up_to || !is_exact_spec(c->name())) cs.techniques.push_back(c.get());
+        const Comparison result = compare_techniques(context, tree, frontier_scene(name, n, w), cs);
+        FrontierPoint p;
+        p.scene = name, p.size = n, p.width = w;
+        for (const TechniqueResult& r : result.results) {
+          FrontierRow row;
+          row.method = r.name, row.family = family_of(r.name);
+          row.ms = r.measurement.total_ms;
+          row.ssim = r.vs_truth.light_facing.ssim, row.mae = r.vs_truth.light_facing.mae;
+          row.fetches = stat(r.measurement.frame.stats, "fetch/px");
+          row.tile_max = stat(r.measurement.frame.stats, "fetch tile max");
+          p.rows.push_back(row);
+        }
+        mark_frontier(p);
+        points.push_back(std::move(p));
+      }
+  return points;
+}
+
+void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& points) {
+  for (const FrontierPoint& p : points) {
+    std::vector<std::string> names;
+    for (const FrontierRow& r : p.rows) names.push_back(r.method);
+    const int w = name_column_width(names);
+    out << "scene " << p.scene << ", " << p.size << "x" << p.size << ", light width " << width_text(p.width)
+        << "; light-facing pixels vs the ray-traced truth, by time:\n"
+        << std::left << std::setw(w) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(8) << "SSIM"
+        << std::setw(9) << "MAE" << std::setw(10) << "fetch/px" << std::setw(10) << "tile max" << "  frontier\n";
+    std::vector<const FrontierRow*> sorted;
+    for (const FrontierRow& r : p.rows) sorted.push_back(&r);
+    std::stable_sort(sorted.begin(), sorted.end(), [](const FrontierRow* a, const FrontierRow* b) { return a->ms < b->ms; });
+    for (const FrontierRow* r : sorted) {
+      out << std::left << std::setw(w) << r->method << std::right << std::fixed << std::setprecision(2) << std::setw(10)
+          << r->ms << std::setprecision(4) << std::setw(8) << r->ssim << std::setw(9) << r->mae << std::setprecision(1);
+      if (r->fetches) out << std::setw(10) << *r->fetches << std::setw(10) << *r->tile_max;
+      else out << std::setw(10) << "-" << std::setw(10) << "-";
+      out << (r->on_frontier ? "  *" : "") << "\n";
+    }
+    out.unsetf(std::ios::floatfield);
+    const auto fast = std::find_if(p.rows.begin(), p.rows.end(),
+                                   [](const FrontierRow& r) { return r.method == kFrontierDefault; });
+    if (fast != p.rows.end()) {
+      out << kFrontierDefault << " on the frontier: ";
+      if (!p.beats_default) out << "yes (no other technique reaches its MAE in less time)\n";
+      else
+        out << "no: " << p.beats_default->method << " reaches MAE " << format_number("%.4f", p.beats_default->mae)
+            << " <= " << format_number("%.4f", fast->mae) << " in " << format_number("%.2f", p.beats_default->ms)
+            << " ms, " << format_number("%.2f", fast->ms / p.beats_default->ms) << "x less time\n";
+    }
+    out << "\n";
+  }
+}
+
+nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::vector<FrontierPoint>& points) {
+  nlohmann::json list = nlohmann::json::array();
+  const auto row_json = [](const FrontierRow& r) {
+    return nlohmann::json{{"method", r.method},
+                          {"family", r.family},
+                          {"ms", r.ms},
+                          {"ssim", r.ssim},
+                          {"mae", r.mae},
+                          {"fetches_per_pixel", r.fetches ? nlohmann::json(*r.fetches) : nlohmann::json(nullptr)},
+                          {"fetch_tile_max", r.tile_max ? nlohmann::json(*r.tile_max) : nlohmann::json(nullptr)},
+                          {"on_frontier", r.on_frontier}};
+  };
+  for (const FrontierPoint& p : points) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const FrontierRow& r : p.rows) rows.push_back(row_json(r));
+    list.push_back({{"scene", p.scene},
+                    {"size", p.size},
+                    {"width", p.width},
+                    {"rows", rows},
+                    {"default", kFrontierDefault},
+                    {"beats_default", p.beats_default ? row_json(*p.beats_default) : nlohmann::json(nullptr)}});
+  }
+  return {{"scenes", setup.scenes}, {"widths", setup.widths}, {"sizes", setup.sizes},
+          {"repeats", setup.repeats}, {"truth_samples", setup.truth_samples},
+          {"exact_up_to", setup.exact_up_to}, {"points", list}};
+}
+
+Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title) {
+  const std::vector<std::pair<std::string, Rgb>> families{
+      {"poisson", {31, 119, 180}}, {"vogel", {23, 190, 207}}, {"fast", {214, 39, 40}},  {"hqepcss", {148, 103, 189}},
+      {"savsm", {44, 160, 44}},    {"vsm", {188, 189, 34}},   {"pcf", {127, 127, 127}}, {"exact", {140, 86, 75}}};
+  std::vector<ChartPanel> panels;
+  int columns = 1;
+  for (const FrontierPoint& p : points) {
+    ChartPanel panel;
+    panel.title = p.scene + " " + std::to_string(p.size) + "², light " + width_text(p.width);
+    panel.x_label = "GPU ms (log)";
+    panel.y_label = "MAE vs truth, light-facing";
+    panel.log_x = true;
+    ChartSeries frontier{"Pareto frontier", {0, 0, 0}, true, {}};
+    frontier.marker = 0;  // a line under the points
+    for (const FrontierRow& r : p.rows)
+      if (r.on_frontier) frontier.points.emplace_back(r.ms, r.mae);
+    std::sort(frontier.points.begin(), frontier.points.end());
+    panel.series.push_back(frontier);
+    for (const auto& [family, colour] : families) {
+      ChartSeries s{family, colour, false, {}};
+      s.lines = false;
+      for (const FrontierRow& r : p.rows)
+        if (r.family == family) s.points.emplace_back(r.ms, r.mae);
+      panel.series.push_back(s);
+    }
+    ChartSeries chosen{std::string(kFrontierDefault) + " (the default: large)", {214, 39, 40}, false, {}};
+    chosen.lines = false;
+    chosen.marker = 13;
+    for (const FrontierRow& r : p.rows)
+      if (r.method == kFrontierDefault) chosen.points.emplace_back(r.ms, r.mae);
+    panel.series.push_back(chosen);
+    panels.push_back(panel);
+    columns = std::max(columns, static_cast<int>(std::count_if(points.begin(), points.end(), [&](const FrontierPoint& q) {
+                                  return q.scene == p.scene && q.size == p.size;
+                                })));
+  }
+  return draw_line_charts(title, panels, columns);
+}
+
+}  // namespace pn

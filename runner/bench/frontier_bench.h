@@ -1,0 +1,80 @@
+// `penumbra bench frontier` (issue 25): which technique gives the best shadow
+// for a frame budget, and does that change when the light widens? Per scene ×
+// map size × light width, every technique at several budgets (the Poisson and
+// Vogel disks at 8–128 taps, Fast PCSS over its leaf settings, HQEPCSS,
+// SAVSM, VSM / EVSM, PCF, exact PCSS where affordable) is timed as engines run
+// it (its one call and its per-frame structures, interleaved rounds, medians)
+// and scored on light-facing pixels against the ray-traced truth; the Pareto
+// frontier of time against MAE is drawn, and Fast PCSS's default is asked
+// whether another technique reaches its MAE in less time. Beside each time,
+// the GPU cost proxy (frame/fetch_proxy.h): texel fetches per pixel and the
+// mean of each 8×8 tile's maximum.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "draw/canvas.h"
+#include "gl/context.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+struct FrontierBenchSetup {
+  // boxes, fence, tall_blocker (area light), spider (the Assimp model on the ground), city (the sun,
+  // on kFrontierCascades cascades).
+  std::vector<std::string> scenes{"boxes", "fence", "tall_blocker", "spider", "city"};
+  std::vector<double> widths{1, 2, 4, 8};  // light width factors
+  std::vector<int> sizes{512, 1024};       // shadow map = screen (each cascade's map on the city)
+  int repeats = 3;
+  int truth_samples = 16;
+  double exact_up_to = 1.0;           // exact PCSS only at width factors <= this (its scan grows as width²)
+  std::vector<std::string> methods;   // empty: frontier_techniques()
+};
+
+inline constexpr int kFrontierCascades = 3;
+inline constexpr const char* kFrontierDefault = "fast";  // the configuration the frontier is asked about
+
+// Every configuration of the full run.
+std::vector<std::string> frontier_techniques();
+// `--quick`: boxes and the tall blocker at 128², widths 1 and 8, one round, 4² truth samples, and
+// a configuration of each technique family (short enough for CI).
+FrontierBenchSetup quick_frontier_setup();
+
+// Throws Error naming the first bad setting (unknown scene, bad width, size outside 16..4096,
+// repeats outside 1..100, truth samples outside 1..64, a bad method). No GL; reads the model.
+void validate_frontier_setup(const FrontierBenchSetup& setup);
+
+struct FrontierRow {
+  std::string method, family;  // family: the registry name ("poisson", "vogel", "fast", ...)
+  double ms = 0.0;             // GPU time of the technique's frame (structures + call), median
+  double ssim = 0.0, mae = 0.0;  // light-facing pixels vs the truth
+  std::optional<double> fetches, tile_max;  // the cost proxy, where the technique counts its fetches
+  bool on_frontier = false;    // no other row is as fast and as close, and strictly better in one
+};
+
+struct FrontierPoint {
+  std::string scene;
+  int size = 0;
+  double width = 1.0;  // factor
+  std::vector<FrontierRow> rows;
+  // The default's standing: the fastest row of another family with MAE <= the default's and less
+  // time, if any.
+  std::optional<FrontierRow> beats_default;
+};
+
+std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTree& tree, const FrontierBenchSetup& setup);
+
+// Marks rows on the Pareto frontier and finds what beats the default (no GL; the bench calls it).
+void mark_frontier(FrontierPoint& point);
+
+void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& points);
+nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::vector<FrontierPoint>& points);
+// One panel per scene × width (a row of panels per scene and size), time (log) against MAE, each
+// family's configurations as points, the frontier drawn, the default marked.
+Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title);
+
+}  // namespace pn

@@ -1,0 +1,29 @@
+#!/bin/sh
+# bench_frontier_quick.sh PENUMBRA WORKDIR
+# `penumbra bench frontier --quick` (through gl_or_skip.sh: exit 77 without a
+# GL context) as CI runs it: the tables with Fast PCSS's standing, a JSON with
+# its 4 points (2 scenes × 2 widths), each with at least one row on the
+# frontier and the cost proxy beside the PCSS rows, and a PNG plot.
+penumbra=$1 work=$2
+here=$(dirname "$0")
+rm -rf "$work" && mkdir -p "$work" || exit 1
+sh "$here/gl_or_skip.sh" "$penumbra" "fast on the frontier: (yes|no)" \
+  bench frontier --quick --json "$work/frontier.json" --plot "$work/frontier.png"
+status=$?
+[ "$status" -eq 0 ] || exit "$status"
+/usr/bin/python3 - "$work/frontier.json" <<'PY' || exit 1
+import json, sys
+doc = json.load(open(sys.argv[1]))
+points = doc["results"]["points"]
+assert len(points) == 4, f"expected 4 points, found {len(points)}"
+for p in points:
+    where = f"{p['scene']} x{p['width']:g}"
+    assert any(r["on_frontier"] for r in p["rows"]), f"{where}: no row on the frontier"
+    fast = [r for r in p["rows"] if r["method"] == "fast"]
+    assert fast and fast[0]["fetches_per_pixel"] is not None, f"{where}: fast has no fetch count"
+    assert fast[0]["fetch_tile_max"] >= fast[0]["fetches_per_pixel"], f"{where}: tile max below the mean"
+print("frontier.json: 4 points, a frontier in each, fast's fetch proxy")
+PY
+signature=$(head -c 8 "$work/frontier.png" | od -An -tx1 | tr -d ' \n')
+[ "$signature" = "89504e470d0a1a0a" ] || { echo "$work/frontier.png is not a PNG ($signature)"; exit 1; }
+echo "frontier.png: PNG, $(wc -c < "$work/frontier.png") bytes"
