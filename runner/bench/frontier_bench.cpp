@@ -6,12 +6,12 @@
 #include <map>
 #include <memory>
 
-#include "bench/sweep_bench.h"
 #include "core/bounds.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "core/progress.h"
 #include "draw/line_chart.h"
+#include "frame/fetch_proxy.h"
 #include "scene/city_scene.h"
 #include "scene/model.h"
 #include "scene/scene.h"
@@ -49,6 +49,11 @@ std::optional<double> stat(const NamedValues& stats, const char* name) {
   for (const auto& [key, value] : stats)
     if (key == name) return value;
   return std::nullopt;
+}
+
+bool scans_filter_region(const std::string& spec) {
+  const std::string family = family_of(spec);
+  return family == "exact" || family == "hqepcss";
 }
 
 std::string width_text(double w) { return "x" + format_number("%g", w); }
@@ -137,7 +142,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
           cs.cascades = c;
         }
         for (const auto& c : configs)
-          if (w <= setup.exact_up_to || !is_exact_spec(c->name())) cs.techniques.push_back(c.get());
+          if (w <= setup.exact_up_to || !scans_filter_region(c->name())) cs.techniques.push_back(c.get());
         const Comparison result = compare_techniques(context, tree, frontier_scene(name, n, w), cs);
         FrontierPoint p;
         p.scene = name, p.size = n, p.width = w;
@@ -146,8 +151,8 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
           row.method = r.name, row.family = family_of(r.name);
           row.ms = r.measurement.total_ms;
           row.ssim = r.vs_truth.light_facing.ssim, row.mae = r.vs_truth.light_facing.mae;
-          row.fetches = stat(r.measurement.frame.stats, "fetch/px");
-          row.tile_max = stat(r.measurement.frame.stats, "fetch tile max");
+          row.fetches = stat(r.measurement.frame.stats, kFetchStat);
+          row.tile_max = stat(r.measurement.frame.stats, kFetchTileMaxStat);
           p.rows.push_back(row);
         }
         mark_frontier(p);

@@ -10,10 +10,15 @@
 #include <vector>
 
 #include "core/image.h"
+#include "frame/technique.h"  // NamedValues
 
 namespace pn {
 
 inline constexpr int kFetchTile = 8;  // pixels a side: a SIMD group of 64 lanes
+
+// The stats (TechniqueFrame::stats) that carry it.
+inline constexpr const char* kFetchStat = "fetch/px";
+inline constexpr const char* kFetchTileMaxStat = "fetch tile max";
 
 struct FetchProxy {
   double per_receiver = 0.0;  // fetches per pixel that sees a surface
@@ -41,6 +46,12 @@ FetchProxy fetch_proxy(const Image& fetches, Receiver receiver) {
     }
   if (receivers > 0) p.per_receiver /= static_cast<double>(receivers), p.tile_max /= static_cast<double>(receivers);
   return p;
+}
+
+// A technique whose call makes a fixed number of fetches a receiver (its module's bound: pcf, vsm,
+// savsm) reports it as both figures.
+inline NamedValues constant_fetch_stats(double per_receiver) {
+  return {{kFetchStat, per_receiver}, {kFetchTileMaxStat, per_receiver}};
 }
 
 }  // namespace pn

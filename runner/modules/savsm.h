@@ -12,6 +12,8 @@ namespace pn {
 inline constexpr double kSavsmMinOccluded = PN_SAVSM_MIN_OCCLUDED;
 inline constexpr int kSavsmRectFetches = PN_SAVSM_RECT_FETCHES;
 inline constexpr int kSavsmMaxSquareFetches = PN_SAVSM_MAX_SQUARE_FETCHES;
+// A receiver's most texel fetches (savsm.glsl's cost): two table rectangles and two mip-chain squares.
+inline constexpr int kSavsmMaxReceiverFetches = 2 * kSavsmRectFetches + 2 * kSavsmMaxSquareFetches;
 
 enum class SavsmBlocker { table = PN_SAVSM_BLOCKER_TABLE, min = PN_SAVSM_BLOCKER_MIN };
 const char* savsm_blocker_name(SavsmBlocker blocker);  // "table", "min"

@@ -14,6 +14,8 @@ enum class VsmKind { vsm = PN_VSM_KIND_VSM, evsm2 = PN_VSM_KIND_EVSM2, evsm4 = P
 inline constexpr double kEvsmMaxExponent = PN_EVSM_MAX_EXPONENT;
 inline constexpr double kVsmMaxBleedingReduction = PN_VSM_MAX_BLEEDING_REDUCTION;
 inline constexpr float kVsmVarianceFloor = static_cast<float>(PN_VSM_VARIANCE_FLOOR);  // FLT_MIN
+// A receiver's texel fetches (vsm.glsl's cost): its moments, and the pyramid's square for the bound.
+inline constexpr int kVsmReceiverFetches = 1 + 4;
 
 const char* vsm_kind_name(VsmKind kind);  // "vsm", "evsm2", "evsm4"
 int vsm_moment_channels(VsmKind kind);    // 2, 2, 4

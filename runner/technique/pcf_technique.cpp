@@ -3,9 +3,11 @@
 #include <cmath>
 
 #include "core/format.h"
+#include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
 #include "gl/gpu_timer.h"
 #include "frame/setting_value.h"
+#include "modules/pcf.h"
 #include "passes/pcf_pass.h"
 
 namespace pn {
@@ -27,7 +29,7 @@ class PcfTechnique : public Technique {
   PcfTechnique(const Context& context, const PcfShadePass& pass, PcfTechniqueSettings settings)
       : context_(&context), pass_(&pass), settings_(std::move(settings)) {}
 
-  TechniqueFrame run(const TechniqueInputs& inputs, bool) const override {
+  TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override {
     if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
       throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
     const int size = inputs.screen_size;
@@ -38,6 +40,7 @@ class PcfTechnique : public Technique {
     context_->throw_if_gl_error("pcf shade");
     clock.stage("shade");
     out.stages = clock.read();
+    if (with_stats) out.stats = constant_fetch_stats(kPcfReceiverFetches);
     return out;
   }
 

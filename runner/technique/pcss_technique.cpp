@@ -16,8 +16,8 @@ TechniqueFrame PcssTechnique::run(const TechniqueInputs& inputs, bool with_stats
     const PcssStats stats = pipeline_->stats(frame);
     out.stats = {{"representatives", stats.representative_fraction()},
                  {"work/px", stats.work_per_receiver()},
-                 {"fetch/px", stats.fetches.per_receiver},
-                 {"fetch tile max", stats.fetches.tile_max}};
+                 {kFetchStat, stats.fetches.per_receiver},
+                 {kFetchTileMaxStat, stats.fetches.tile_max}};
   }
   out.visibility = std::move(settings_.blur ? frame.blurred : frame.visibility);
   return out;

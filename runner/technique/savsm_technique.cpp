@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
@@ -57,7 +58,7 @@ SavsmPasses::SavsmPasses(const Context& context, const SourceTree& tree)
       mip(context, tree),
       no_mip(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)) {}
 
-TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool) const {
+TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
   if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
     throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
   const int n = inputs.light.map_size;
@@ -83,6 +84,7 @@ TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool) const {
   context_->throw_if_gl_error("savsm shade");
   clock.stage("shade");
   out.stages = clock.read();
+  if (with_stats) out.stats = constant_fetch_stats(kSavsmMaxReceiverFetches);
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "frame/setting_value.h"
 #include "core/format.h"
+#include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
 #include "gl/gpu_timer.h"
 
@@ -62,7 +63,7 @@ std::unique_ptr<TechniqueConfig> vsm_config(VsmKind kind, const char* name) {
 VsmPasses::VsmPasses(const Context& context, const SourceTree& tree)
     : moments(context, tree), shade(context, tree), pyramid(context, tree) {}
 
-TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool) const {
+TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
   if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
     throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
   const int n = inputs.light.map_size;
@@ -87,6 +88,7 @@ TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool) const {
                                        inputs.stage);
   clock.stage("shade");
   out.stages = clock.read();
+  if (with_stats) out.stats = constant_fetch_stats(kVsmReceiverFetches);
   return out;
 }
 
