@@ -51,6 +51,9 @@
 //                                float bias, vec2 points[PN_POISSON_MAX_SAMPLES], int count, vec2 rotation)
 //   PnPoisson pnPoissonOcclusionDisk(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
 //                                    float bias, int count, vec2 rotation)   (with PN_POISSON_DISK_ARRAY)
+//   PnPoisson pnPoissonAddSamplePlane(... the same ..., float threshold, vec2 gradient, PnPoisson sums)
+//         with a receiver plane (receiver_plane.glsl): the texel q's threshold is
+//         threshold + gradient · (q + 1/2 - centre)
 //   PnPoisson pnPoissonAddSample(sampler2D depthMap, vec2 centre, float radius, vec2 offset, vec2 rotation,
 //                                float threshold, PnPoisson sums)   one sample (radius = s / 2, threshold = t)
 //   float pnPoissonBlockerMean(PnPoisson s)        depthSum / occluders, 0 without occluders
@@ -75,6 +78,7 @@
 #include "light_model.glsl"
 #include "pcss_regions.glsl"
 #include "poisson_pcss.h"
+#include "receiver_plane.glsl"
 
 struct PnPoisson {
   float occluders;  // samples with depth < dP - bias
@@ -94,20 +98,28 @@ float pnPoissonOccludedFraction(PnPoisson s) {
   return s.samples > 0.0 ? s.occluders / s.samples : 0.0;
 }
 
-PnPoisson pnPoissonAddSample(sampler2D depthMap, vec2 centre, float radius, vec2 offset, vec2 rotation,
-                             float threshold, PnPoisson sums) {
+// With a receiver plane (receiver_plane.glsl): the threshold at the sampled texel's centre q + 1/2 is
+// threshold + gradient · (q + 1/2 - centre), the disk's centre being the receiver's (u, v).
+PnPoisson pnPoissonAddSamplePlane(sampler2D depthMap, vec2 centre, float radius, vec2 offset, vec2 rotation,
+                                  float threshold, vec2 gradient, PnPoisson sums) {
   vec2 o = vec2(rotation.x * offset.x - rotation.y * offset.y, rotation.y * offset.x + rotation.x * offset.y);
   vec2 p = centre + radius * o;
   sums.samples += 1.0;
   // Inside the map, compared as floats before any conversion (NaN and ±Inf fail).
   vec2 n = vec2(textureSize(depthMap, 0));
   if (!(all(greaterThanEqual(p, vec2(0.0))) && all(lessThan(p, n)))) return sums;
-  float d = texelFetch(depthMap, ivec2(floor(p)), 0).r;
-  if (d < threshold && !isinf(d)) {  // NaN compares false
+  vec2 q = floor(p);
+  float d = texelFetch(depthMap, ivec2(q), 0).r;
+  if (d < threshold + dot(gradient, q + 0.5 - centre) && !isinf(d)) {  // NaN compares false
     sums.occluders += 1.0;
     sums.depthSum += d;
   }
   return sums;
+}
+
+PnPoisson pnPoissonAddSample(sampler2D depthMap, vec2 centre, float radius, vec2 offset, vec2 rotation,
+                             float threshold, PnPoisson sums) {
+  return pnPoissonAddSamplePlane(depthMap, centre, radius, offset, rotation, threshold, vec2(0.0), sums);
 }
 
 PnPoisson pnPoissonOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth, float bias,

@@ -15,7 +15,9 @@
 //   Each sample reads the texel it falls in, floor(p_k); with t = dP - bias
 //     occluders = #{ k : p_k inside the map, d(floor(p_k)) < t },
 //     depthSum = sum of those d,  samples = n (those outside the map included)
-//   — PnPoisson's sums, accumulated by poisson_pcss.glsl's pnPoissonAddSample,
+//   (with a receiver plane of gradient g the texel q compares with
+//   t + g · (q + 1/2 - c): receiver_plane.glsl)
+//   — PnPoisson's sums, accumulated by poisson_pcss.glsl's pnPoissonAddSamplePlane,
 //   so the two disks agree on every rule: a sample outside the map or at a
 //   non-finite position occludes nothing, non-finite texels never occlude.
 //   The per-pixel turn is interleaved gradient noise (Jimenez 2014) at the
@@ -36,11 +38,18 @@
 //   float pnVogelPcss(sampler2D depthMap, PnLight light, vec3 receiver, ivec2 pixel, PnVogelPcssSettings settings)
 //         receiver = (u, v, d) as pnLightProject gives; pixel = the screen pixel
 //         (ivec2(gl_FragCoord.xy) or gl_GlobalInvocationID.xy), which seeds the rotation
+//   float pnVogelPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane, ivec2 pixel,
+//                     PnVogelPcssSettings settings)
+//         with the receiver-plane depth bias (receiver_plane.glsl): receiverPlane = the light depth's
+//         gradient across the map, e.g. pnReceiverPlaneGradient(dFdx(receiver), dFdy(receiver), maxSlope);
+//         vec2(0.0) is the call above
 //   PnVogelPcssSettings pnVogelPcssDefaults(float bias)   16 / 32 samples, filterScale 1
-//   PnVogelPcssResult pnVogelPcssEstimate(... the same ...)   visibility, the regions, the mean, the turn
+//   PnVogelPcssResult pnVogelPcssEstimate(depthMap, light, receiver, receiverPlane, pixel, settings)
+//         visibility, the regions, the mean, the turn
 //   PnPoisson pnVogelOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
-//                              float bias, int count, float turn)   one disk (count clamped to
-//                                                                   [0, PN_VOGEL_MAX_SAMPLES])
+//                              float bias, int count, float turn, vec2 gradient)   one disk (count
+//                              clamped to [0, PN_VOGEL_MAX_SAMPLES]); gradient: the receiver plane's
+//                              (texel q's threshold + gradient · (q + 1/2 - centre)), or vec2(0.0)
 //   vec2  pnVogelOffset(int k, int count, float turn)   sample k in the unit disk
 //   float pnInterleavedGradientNoise(vec2 position)     in [0, 1); position = gl_FragCoord.xy
 //   depthMap: linear light depth in .r (R32F or any float format), texelFetch only.
@@ -72,14 +81,15 @@ vec2 pnVogelOffset(int k, int count, float turn) {
 }
 
 PnPoisson pnVogelOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth, float bias,
-                           int count, float turn) {
+                           int count, float turn, vec2 gradient) {
   PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
   float radius = 0.5 * diameter;
   float t = receiverDepth - bias;
   int n = clamp(count, 0, PN_VOGEL_MAX_SAMPLES);
   for (int k = 0; k < PN_VOGEL_MAX_SAMPLES; ++k) {
     if (k >= n) break;
-    sums = pnPoissonAddSample(depthMap, centre, radius, pnVogelOffset(k, n, turn), vec2(1.0, 0.0), t, sums);
+    sums = pnPoissonAddSamplePlane(depthMap, centre, radius, pnVogelOffset(k, n, turn), vec2(1.0, 0.0), t, gradient,
+                                   sums);
   }
   return sums;
 }
@@ -103,26 +113,31 @@ PnVogelPcssSettings pnVogelPcssDefaults(float bias) {
   return PnVogelPcssSettings(bias, 1.0, PN_VOGEL_BLOCKER_SAMPLES, PN_VOGEL_PCF_SAMPLES);
 }
 
-PnVogelPcssResult pnVogelPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver, ivec2 pixel,
-                                      PnVogelPcssSettings s) {
+PnVogelPcssResult pnVogelPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane,
+                                      ivec2 pixel, PnVogelPcssSettings s) {
   float turn = pnInterleavedGradientNoise(vec2(pixel) + 0.5);
   PnVogelPcssResult r = PnVogelPcssResult(1.0, pnSearchStart(light, vec4(receiver, 1.0)), vec4(0.0), 0.0, turn);
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
   PnPoisson blockers = pnVogelOcclusion(depthMap, r.searchEntry.yz, r.searchEntry.w, r.searchEntry.x, s.bias,
-                                        s.blockerSamples, turn);
+                                        s.blockerSamples, turn, receiverPlane);
   bool hasBlocker = blockers.occluders > 0.0;
   r.blockerMean = pnPoissonBlockerMean(blockers);
   r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
   if (pnEntryLit(r.filterEntry)) return r;  // no blocker: lit, no PCF
   PnPoisson filtered = pnVogelOcclusion(depthMap, r.filterEntry.yz, r.filterEntry.w, r.filterEntry.x, s.bias,
-                                        s.filterSamples, turn);
+                                        s.filterSamples, turn, receiverPlane);
   r.visibility = 1.0 - pnPoissonOccludedFraction(filtered);
   return r;
 }
 
+float pnVogelPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane, ivec2 pixel,
+                  PnVogelPcssSettings settings) {
+  return pnVogelPcssEstimate(depthMap, light, receiver, receiverPlane, pixel, settings).visibility;
+}
+
 float pnVogelPcss(sampler2D depthMap, PnLight light, vec3 receiver, ivec2 pixel, PnVogelPcssSettings settings) {
-  return pnVogelPcssEstimate(depthMap, light, receiver, pixel, settings).visibility;
+  return pnVogelPcss(depthMap, light, receiver, vec2(0.0), pixel, settings);
 }
 
 #endif  // PENUMBRA_VOGEL_PCSS_GLSL

@@ -72,7 +72,7 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_VOGEL) {
     PnVogelPcssSettings s = PnVogelPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                 pnPcss.filterSamples);
-    PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, p, s);
+    PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, vec2(0.0), p, s);
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
     fetches = searched + filtered;

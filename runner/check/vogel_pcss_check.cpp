@@ -5,7 +5,8 @@
 // straddling an edge or a corner, and wholly outside; counts 1…128 and the
 // clamped 0, 200, -3; turns 0, just below 1 and random; receivers at the centre
 // texel's depth (bias 0), random with bias 0.01, above and below every depth,
-// NaN and +Inf; and the rotation noise at pixel centres up to 4096.
+// NaN and +Inf; a receiver plane (gradient up to 0.05 a texel) on every third
+// query; and the rotation noise at pixel centres up to 4096.
 //
 // Tolerances. A GPU's sin and cos are not correctly rounded: the bound used is
 // Vulkan's, absolute error <= 2^-11 on [-π, π] (GLSL's own spec states none),
@@ -13,8 +14,9 @@
 //   e = r (2^-11 + δθ + 8u) + 4u (|c| + r + 1),  δθ = 2π · 4u (0.382 k + 2)
 // texels (per axis; u = 2^-24) of its position in double, and the reference
 // gives it every verdict a position in that square can have (texels around it
-// that disagree, a map edge, or a depth within 2 FLT_EPSILON |t| of
-// t = dP - bias): occluders and depth sum must lie in the resulting interval
+// that disagree, a map edge, or a depth within 4 FLT_EPSILON of the terms of
+// its threshold t + g · (q + 1/2 - c), t = dP - bias, when bias or g are not 0):
+// occluders and depth sum must lie in the resulting interval
 // (the sum widened by the float sum's relative bound (n+1) u (1 + n u)); the
 // sample count is exact. A last case requires the samples left open so to stay
 // under 2 % — the check's teeth: a wrong radius, angle or count moves samples
@@ -97,23 +99,30 @@ std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
             case 4: receiver = NAN; break;
             default: receiver = INFINITY; break;
           }
-          gpu.push_back({x, y, diameter, receiver, bias, count, turn});
+          // A receiver plane on every third query: up to 0.05 light depth a texel (the fixtures' depths are
+          // about 0..1 over 257 texels).
+          const bool plane = gpu.size() % 3 == 2;
+          const float gx = plane ? random.uniform_float(-0.05f, 0.05f) : 0.0f;
+          const float gy = plane ? random.uniform_float(-0.05f, 0.05f) : 0.0f;
+          gpu.push_back({x, y, diameter, receiver, bias, count, turn, gx, gy});
         }
     for (int k = 0; k < 64; ++k) {  // the noise at pixel centres across a 4096² screen, no samples
       const float x = std::floor(random.uniform_float(0.0f, 4096.0f)) + 0.5f;
       const float y = std::floor(random.uniform_float(0.0f, 4096.0f)) + 0.5f;
-      gpu.push_back({x, y, 1.0f, 0.5f, 0.0f, 0, 0.0f});
+      gpu.push_back({x, y, 1.0f, 0.5f, 0.0f, 0, 0.0f, 0.0f, 0.0f});
     }
     const std::vector<VogelPcssGpuResult> observed = pass.run(texture, gpu);
 
     BoundedElements occluders, sums, samples;
     for (size_t k = 0; k < gpu.size(); ++k) {
       const VogelPcssGpuQuery& g = gpu[k];
-      const VogelPcssQuery q{g.centre_x, g.centre_y, g.diameter, g.receiver_depth, g.bias, g.count, g.turn};
-      const double t = static_cast<double>(g.receiver_depth - g.bias);
-      const double tie = 2.0 * FLT_EPSILON * std::max(std::fabs(t), static_cast<double>(FLT_MIN));
-      const VogelPcssBounds b =
-          vogel_pcss_bounds(map, q, [&q](int i, int) { return position_error(q, i); }, g.bias != 0.0f && std::isfinite(t) ? tie : 0.0);
+      const VogelPcssQuery q{g.centre_x, g.centre_y, g.diameter, g.receiver_depth, g.bias,
+                             g.count,    g.turn,     g.gradient_x, g.gradient_y};
+      // The threshold's rounding: none for t = dP exactly (bias 0, no plane), else within
+      // 4 FLT_EPSILON of its terms (dP - bias, then the plane's two products and sums).
+      const bool rounded = g.bias != 0.0f || g.gradient_x != 0.0f || g.gradient_y != 0.0f;
+      const VogelPcssBounds b = vogel_pcss_bounds(map, q, [&q](int i, int) { return position_error(q, i); },
+                                                  rounded ? 4.0 * FLT_EPSILON : 0.0);
       const VogelPcssGpuResult& o = observed[k];
       const int x = static_cast<int>(k);
       occluders.add_interval(b.occluders_lo, b.occluders_hi, o.occluders, x, 0);

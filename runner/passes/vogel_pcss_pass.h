@@ -15,6 +15,7 @@ struct VogelPcssGpuQuery {
   float receiver_depth = 0.0f, bias = 0.0f;
   int count = 0;
   float turn = 0.0f;
+  float gradient_x = 0.0f, gradient_y = 0.0f;  // the receiver plane's (0: a constant bias)
 };
 
 struct VogelPcssGpuResult {

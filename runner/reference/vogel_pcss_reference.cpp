@@ -36,9 +36,12 @@ VogelPcssBounds vogel_pcss_bounds(const Image& depth, const VogelPcssQuery& q,
       for (long y = first(p.y); y <= last(p.y, depth.height); ++y)
         for (long x = first(p.x); x <= last(p.x, depth.width); ++x) {
           const double d = depth.at(static_cast<int>(x), static_cast<int>(y));
+          const double along_x = q.gradient_x * (x + 0.5 - q.centre_x), along_y = q.gradient_y * (y + 0.5 - q.centre_y);
+          const double threshold = t + along_x + along_y;
+          const double band = tie > 0.0 && std::isfinite(t) ? tie * (std::fabs(t) + std::fabs(along_x) + std::fabs(along_y)) : 0.0;
           const bool finite = std::isfinite(d);
-          if (finite && d < t + tie) can_occlude = true, least = std::min(least, d), most = std::max(most, d);
-          if (!(finite && d < t - tie)) can_miss = true;
+          if (finite && d < threshold + band) can_occlude = true, least = std::min(least, d), most = std::max(most, d);
+          if (!(finite && d < threshold - band)) can_miss = true;
         }
     if (can_occlude && (can_miss || least != most)) ++b.ambiguous;
     if (can_occlude && !can_miss) ++b.occluders_lo, b.depth_sum_lo += least;

@@ -2,8 +2,9 @@
 // double: sample k of n in a disk of diameter s around centre c, turn τ, lies at
 //   p_k = c + (s / 2) ρ_k (cos θ_k, sin θ_k),  ρ_k = sqrt((k + 1/2) / n),
 //   θ_k = 2π (fract(k g + τ) − 1/2),  g = (3 − √5) / 2,
-// reads texel floor(p_k) when p_k is inside the map (nothing otherwise) and
-// occludes when that texel's depth d is finite and d < dP − bias. The raw map
+// reads texel q = floor(p_k) when p_k is inside the map (nothing otherwise) and
+// occludes when that texel's depth d is finite and d < dP − bias + g · (q + ½ − c)
+// (g: the receiver plane's gradient, 0 without one). The raw map
 // is read (NaN and ±Inf allowed). The per-pixel turn is interleaved gradient
 // noise, fract(z · fract(x·q.x + y·q.y)) at the pixel's centre q.
 //
@@ -25,6 +26,7 @@ struct VogelPcssQuery {
   double receiver_depth = 0.0, bias = 0.0;
   int count = 0;                          // clamped to [0, kVogelMaxSamples]
   double turn = 0.0;                      // rotation, in turns
+  double gradient_x = 0.0, gradient_y = 0.0;  // receiver plane: texel q compares with t + g · (q + 1/2 - c)
 };
 
 struct VogelPcssPosition {
@@ -41,8 +43,9 @@ struct VogelPcssBounds {
   long ambiguous = 0;  // samples whose verdict or depth the position error leaves open
 };
 
-// `position_error(k, n)`: texels, per axis, a GPU's position of sample k may be off by; `tie`: light-depth
-// units within which a texel's comparison with dP − bias may go either way.
+// `position_error(k, n)`: texels, per axis, a GPU's position of sample k may be off by; `tie`: the
+// fraction of |t| + |g.x Δx| + |g.y Δy| (the threshold's terms at a texel) within which a texel's
+// comparison with its threshold may go either way (0: exact).
 VogelPcssBounds vogel_pcss_bounds(const Image& depth, const VogelPcssQuery& query,
                                   const std::function<double(int k, int n)>& position_error, double tie);
 

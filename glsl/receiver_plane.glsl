@@ -1,0 +1,87 @@
+// receiver_plane.glsl — receiver-plane depth bias: compare each shadow-map
+// texel with the receiver's surface at that texel, not with one depth.
+//
+// description:
+//   A receiver at (u, v, d) (shadow-map texels, continuous, and linear light
+//   depth) lies on a surface; near it the surface's light depth, as a function
+//   of the map position q, is to first order the plane
+//     z(q) = d + g · (q - (u, v)),   g = (∂d/∂u, ∂d/∂v)   (light depth per texel).
+//   g comes from two steps of the receiver across the screen, a = (du, dv, dd)
+//   and b (dFdx and dFdy of (u, v, d) in a fragment shader, or differences of
+//   G-buffer neighbours): g solves g · (a.u, a.v) = a.d and g · (b.u, b.v) =
+//   b.d (the plane through the three points), by Cramer's rule. When
+//   |a.u b.v - a.v b.u| < PN_RECEIVER_PLANE_MIN_DET (the surface edge-on to
+//   the light or the camera, or a step across a silhouette) or the result is
+//   not finite, g = 0. |g| is then clamped to maxSlope (light depth per
+//   texel): a receiver steeper than that is not trusted to be a plane.
+//   A texel q (covering [q, q + 1)) occludes the receiver when its depth is
+//   below the plane at its centre minus the constant bias:
+//     d(q) < z(q + 1/2) - bias
+//   so a sloped receiver needs no bias for its slope (no acne), and the
+//   constant bias covers only the map's rounding (less peter-panning).
+//   Over a rectangle of texels [o, o + s) the plane's extremes at the texel
+//   centres are z(o + s/2) ± (|g.x| (s.x - 1) + |g.y| (s.y - 1)) / 2
+//   (pnReceiverPlaneRange): what a node of a hierarchy is decided against.
+//   First order: in a perspective map a world plane's 1/d, not d, is affine
+//   in q, so far from the receiver z(q) bends away from the surface; the
+//   constant bias covers what that leaves within the filter region.
+//
+// use:
+//   vec2  pnReceiverPlaneGradient(vec3 stepA, vec3 stepB, float maxSlope)   g, or 0
+//   vec2  pnReceiverPlaneFromNeighbours(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above,
+//                                       float maxSlope)
+//         G-buffer entries (u, v, d, valid); per axis the one-sided step with the smaller |Δd| between
+//         valid entries (the side that stays on the receiver's surface at a depth edge); none: g = 0
+//   float pnReceiverPlaneDepth(vec3 receiver, vec2 gradient, vec2 q)    z(q)
+//   vec2  pnReceiverPlaneRange(vec3 receiver, vec2 gradient, ivec2 origin, ivec2 size)   (min, max)
+//         of z over the centres of the texels [origin, origin + size)
+//
+// options:
+//   PN_RECEIVER_PLANE_MIN_DET   the singular steps' bound (1e-6 texels²; receiver_plane.h)
+//
+// cost: the gradient: ~12 ALU operations and a division; a texel's threshold: one dot product.
+
+#ifndef PENUMBRA_RECEIVER_PLANE_GLSL
+#define PENUMBRA_RECEIVER_PLANE_GLSL
+
+#include "receiver_plane.h"
+
+vec2 pnReceiverPlaneGradient(vec3 a, vec3 b, float maxSlope) {
+  float det = a.x * b.y - a.y * b.x;
+  if (!(abs(det) >= PN_RECEIVER_PLANE_MIN_DET)) return vec2(0.0);  // NaN fails too
+  vec2 g = vec2(a.z * b.y - b.z * a.y, b.z * a.x - a.z * b.x) / det;
+  float slope = length(g);
+  if (isnan(slope) || isinf(slope)) return vec2(0.0);
+  return slope > maxSlope ? g * (maxSlope / slope) : g;
+}
+
+// The step from `centre` toward the neighbour of the two (`minus` one pixel before, `plus` after) whose
+// depth differs less, as (u, v, d) per pixel; 0 when neither is valid.
+vec3 pnReceiverPlaneStep(vec4 centre, vec4 minus, vec4 plus) {
+  bool useMinus = minus.w != 0.0, usePlus = plus.w != 0.0;
+  if (useMinus && usePlus) {
+    usePlus = abs(plus.z - centre.z) <= abs(centre.z - minus.z);
+    useMinus = !usePlus;
+  }
+  if (usePlus) return plus.xyz - centre.xyz;
+  if (useMinus) return centre.xyz - minus.xyz;
+  return vec3(0.0);
+}
+
+vec2 pnReceiverPlaneFromNeighbours(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above, float maxSlope) {
+  return pnReceiverPlaneGradient(pnReceiverPlaneStep(centre, left, right), pnReceiverPlaneStep(centre, below, above),
+                                 maxSlope);
+}
+
+float pnReceiverPlaneDepth(vec3 receiver, vec2 gradient, vec2 q) {
+  return receiver.z + dot(gradient, q - receiver.xy);
+}
+
+vec2 pnReceiverPlaneRange(vec3 receiver, vec2 gradient, ivec2 origin, ivec2 size) {
+  vec2 s = vec2(size);
+  float mid = pnReceiverPlaneDepth(receiver, gradient, vec2(origin) + 0.5 * s);
+  float extent = 0.5 * (abs(gradient.x) * max(s.x - 1.0, 0.0) + abs(gradient.y) * max(s.y - 1.0, 0.0));
+  return vec2(mid - extent, mid + extent);
+}
+
+#endif  // PENUMBRA_RECEIVER_PLANE_GLSL
