@@ -9,10 +9,10 @@
 //   g comes from two steps of the receiver across the screen, a = (du, dv, dd)
 //   and b (dFdx and dFdy of (u, v, d) in a fragment shader, or differences of
 //   G-buffer neighbours): g solves g · (a.u, a.v) = a.d and g · (b.u, b.v) =
-//   b.d (the plane through the three points), by Cramer's rule. When
-//   |a.u b.v - a.v b.u| < PN_RECEIVER_PLANE_MIN_DET (the surface edge-on to
-//   the light or the camera, or a step across a silhouette) or the result is
-//   not finite, g = 0. |g| is then clamped to maxSlope (light depth per
+//   b.d (the plane through the three points), by Cramer's rule. When the
+//   steps are parallel, |a.u b.v - a.v b.u| < PN_RECEIVER_PLANE_MIN_SINE ·
+//   |(a.u, a.v)| |(b.u, b.v)| (the surface edge-on to the light or the
+//   camera, a zero step), or the result is not finite, g = 0. |g| is then clamped to maxSlope (light depth per
 //   texel): a receiver steeper than that is not trusted to be a plane.
 //   A texel q (covering [q, q + 1)) occludes the receiver when its depth is
 //   below the plane at its centre minus the constant bias:
@@ -37,7 +37,7 @@
 //         of z over the centres of the texels [origin, origin + size)
 //
 // options:
-//   PN_RECEIVER_PLANE_MIN_DET   the singular steps' bound (1e-6 texels²; receiver_plane.h)
+//   PN_RECEIVER_PLANE_MIN_SINE   the parallel steps' bound (0.01; receiver_plane.h)
 //
 // cost: the gradient: ~12 ALU operations and a division; a texel's threshold: one dot product.
 
@@ -48,7 +48,7 @@
 
 vec2 pnReceiverPlaneGradient(vec3 a, vec3 b, float maxSlope) {
   float det = a.x * b.y - a.y * b.x;
-  if (!(abs(det) >= PN_RECEIVER_PLANE_MIN_DET)) return vec2(0.0);  // NaN fails too
+  if (!(abs(det) > PN_RECEIVER_PLANE_MIN_SINE * length(a.xy) * length(b.xy))) return vec2(0.0);  // NaN fails too
   vec2 g = vec2(a.z * b.y - b.z * a.y, b.z * a.x - a.z * b.x) / det;
   float slope = length(g);
   if (isnan(slope) || isinf(slope)) return vec2(0.0);

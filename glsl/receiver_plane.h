@@ -4,10 +4,14 @@
 #ifndef PENUMBRA_RECEIVER_PLANE_H
 #define PENUMBRA_RECEIVER_PLANE_H
 
-// The steps' Jacobian is singular below this |det| (texels²): the receiver is
-// seen edge-on (from the light or the camera) and the plane is not used.
-#ifndef PN_RECEIVER_PLANE_MIN_DET
-#define PN_RECEIVER_PLANE_MIN_DET 1.0e-6
+// The two steps are taken as parallel — the receiver seen edge-on from the
+// light or the camera, or steps too short to tell apart — when the sine of
+// the angle between their (du, dv) is below this (0.57°): |det| < it · |a| |b|.
+// The steps are float differences of map positions up to a few thousand
+// texels (an error of ~1e-4 texels each), so a smaller bound would let
+// rounding decide the plane.
+#ifndef PN_RECEIVER_PLANE_MIN_SINE
+#define PN_RECEIVER_PLANE_MIN_SINE 0.01
 #endif
 
 #endif  // PENUMBRA_RECEIVER_PLANE_H

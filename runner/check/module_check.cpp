@@ -18,6 +18,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_receiver_plane_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_truth_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_summed_area_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env);
@@ -60,6 +61,9 @@ const std::vector<ModuleCheck>& module_checks() {
       {"vogel_pcss", "Vogel-disk samples (counts 1..128, turns) and the interleaved-gradient-noise rotation vs the "
                      "definition in double, within GPU sin/cos error",
        &run_vogel_pcss_check},
+      {"receiver_plane", "receiver-plane gradient from G-buffer neighbours (edges, invalid and singular steps, clamps) "
+                         "and its range over rectangles vs the definition in double",
+       &run_receiver_plane_check},
       {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
        &run_truth_check},
       {"summed_area", "64-bit fixed-point summed-area tables: depth and moment sums vs direct box sums (exact), float "
