@@ -55,3 +55,14 @@ TEST_CASE("one call: the Vogel disk runs only as its call, with up to 128 sample
   for (const auto& [key, value] : {std::pair{"stages", "on"}, {"refine", "2"}, {"occlusion", "poisson"}, {"blur", "on"}})
     CHECK_THROWS_WITH(with(pn::vogel_pcss(), key, value).validate(), Catch::Contains("only as its one call"));
 }
+
+TEST_CASE("receiver plane: on, off or a tangent for the Vogel call; refused elsewhere and when negative") {
+  CHECK(with(pn::vogel_pcss(), "receiver-plane", "on").receiver_plane_tan == pn::kReceiverPlaneTan);
+  CHECK(with(pn::vogel_pcss(), "receiver-plane", "2.5").receiver_plane_tan == 2.5f);
+  CHECK(with(with(pn::vogel_pcss(), "receiver-plane", "on"), "receiver-plane", "off").receiver_plane_tan == 0.0f);
+  with(pn::vogel_pcss(), "receiver-plane", "on").validate();
+  CHECK_THROWS_WITH(with(pn::vogel_pcss(), "receiver-plane", "-1").validate(),
+                    Catch::Contains("receiver plane tangent -1: expected 0 (off) or a finite number > 0"));
+  CHECK_THROWS_WITH(with(pn::fast_pcss(), "receiver-plane", "on").validate(),
+                    Catch::Contains("only the Vogel call (pnVogelPcss) takes a receiver plane so far"));
+}

@@ -45,6 +45,12 @@ float pnOneCallFlags(vec4 searchEntry, vec4 filterEntry) {
          (searchEntry.x > 0.0 ? 4.0 : 0.0);
 }
 
+// A G-buffer entry, invalid (w = 0) outside the screen.
+vec4 pnOneCallEntry(ivec2 p) {
+  ivec2 n = textureSize(pnGBuffer, 0);
+  return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, n)) ? texelFetch(pnGBuffer, p, 0) : vec4(0.0);
+}
+
 vec4 pnOneCallShade(ivec2 p, out float fetches) {
   fetches = 0.0;
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
@@ -72,7 +78,13 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_VOGEL) {
     PnVogelPcssSettings s = PnVogelPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                 pnPcss.filterSamples);
-    PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, vec2(0.0), p, s);
+    vec2 plane = vec2(0.0);
+    if (pnPcss.receiverPlaneTan > 0.0) {
+      float maxSlope = pnPcss.receiverPlaneTan * pnLightTexelWorld(light, receiver.z);
+      plane = pnReceiverPlaneFromNeighbours(receiver, pnOneCallEntry(p - ivec2(1, 0)), pnOneCallEntry(p + ivec2(1, 0)),
+                                            pnOneCallEntry(p - ivec2(0, 1)), pnOneCallEntry(p + ivec2(0, 1)), maxSlope);
+    }
+    PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, plane, p, s);
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
     fetches = searched + filtered;

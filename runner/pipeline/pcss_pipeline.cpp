@@ -16,7 +16,8 @@
 
 namespace pn::glsl {
 #include "passes/pcss_params.h"
-PN_STD140_SIZE(PnPcssParams, 112);
+PN_STD140_SIZE(PnPcssParams, 128);
+PN_STD140_OFFSET(PnPcssParams, receiverPlaneTan, 112);
 PN_STD140_OFFSET(PnPcssParams, blockerLeafMode, 108);
 PN_STD140_SIZE(PnPoissonFilterDisk, 16 * PN_POISSON_MAX_SAMPLES);
 PN_STD140_OFFSET(PnPcssParams, lightTexelWorld, 20);
@@ -56,6 +57,7 @@ PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   b.blockerSamples = s.blocker_samples;
   b.filterSamples = s.filter_samples;
   b.blockerLeafMode = s.blocker_leaf_mode ? static_cast<std::int32_t>(*s.blocker_leaf_mode) : kFastPcssSameLeafMode;
+  b.receiverPlaneTan = s.receiver_plane_tan;
   return b;
 }
 

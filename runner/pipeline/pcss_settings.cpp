@@ -30,6 +30,10 @@ void PcssSettings::validate() const {
   if (vogel && (blockers != occlusion || staged || one_call(*this) != OneCall::vogel))
     throw Error("method '" + name + "': the Vogel disk runs only as its one call (pnVogelPcss): expected "
                 "blockers=vogel with occlusion=vogel, refine 0, no reuse, no blur, stages off");
+  if (!std::isfinite(receiver_plane_tan) || receiver_plane_tan < 0)
+    throw bad("receiver plane tangent", receiver_plane_tan, "0 (off) or a finite number > 0");
+  if (receiver_plane_tan > 0 && !vogel)
+    throw Error("method '" + name + "': receiver-plane: only the Vogel call (pnVogelPcss) takes a receiver plane so far");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);
@@ -133,7 +137,8 @@ const std::vector<std::string>& pcss_setting_keys() {
   static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf-divisor", "blocker-leaf-mode", "leaf", "leaf-mode", "budget", "reuse",
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
                                              "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "blur-adaptive", "bias", "c", "sigma1", "sigma2", "sigma3",
-                                             "blockers", "occlusion", "blocker-samples", "filter-samples", "stages"};
+                                             "blockers", "occlusion", "blocker-samples", "filter-samples", "stages",
+                                             "receiver-plane"};
   return keys;
 }
 
@@ -204,6 +209,7 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   else if (key == "blocker-samples") s.blocker_samples = integer();
   else if (key == "filter-samples") s.filter_samples = integer();
   else if (key == "stages") s.staged = on_off();
+  else if (key == "receiver-plane") s.receiver_plane_tan = value == "off" ? 0.0f : value == "on" ? kReceiverPlaneTan : real();
   else throw unknown_setting(s.name, key, pcss_setting_keys());
 }
 

@@ -38,6 +38,10 @@ enum class WorkSkip {
 // edges, and between a surface and a pixel that sees none (+Inf).
 inline constexpr double kBlurDepthTolerance = 0.05;
 
+// `receiver-plane=on`: the receiver plane's slope clamped at 10 (84°): steeper
+// receivers (walls seen edge-on from the light) keep the constant bias's share.
+inline constexpr float kReceiverPlaneTan = 10.0f;
+
 // The defaults of PcssSettings are the paper's (fast_paper_pcss); fast_pcss()
 // is Fast PCSS as this project ships it, chosen by measurement.
 struct PcssSettings {
@@ -73,6 +77,9 @@ struct PcssSettings {
   // llvmpipe's cap of 65535 loop iterations an invocation on regions wider
   // than ~1000 texels, which the staged scan's bands of rows stay under.
   bool staged = false;
+  // > 0: the receiver-plane depth bias (receiver_plane.glsl) from the G-buffer's neighbours, its slope
+  // clamped to this tangent; 0: off. The Vogel call only so far.
+  float receiver_plane_tan = 0.0f;
 
   // Throws Error naming the setting and its accepted range.
   void validate() const;
