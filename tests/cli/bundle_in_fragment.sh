@@ -13,7 +13,7 @@ status=0
 # module | declarations before the bundle | the call (receiver r, light L: a macro, expanded only where used)
 calls='fast_pcss.glsl|S(0) uniform sampler2D uMip; S(1) uniform sampler2D uTable;|pnFastPcss(uMip, uTable, L, r, ivec2(gl_FragCoord.xy), pnFastPcssDefaults(0.02))
 poisson_pcss.glsl|S(0) uniform sampler2D uMap; const vec2 B[2] = vec2[](vec2(0.1, 0.2), vec2(-0.3, 0.4)); const vec2 F[3] = vec2[](vec2(0.5, 0.0), vec2(0.0, -0.5), vec2(-0.2, 0.1));\n#define PN_POISSON_BLOCKER_DISK B\n#define PN_POISSON_FILTER_DISK F|pnPoissonPcss(uMap, L, r, pnPoissonPcssDefaults(0.02), pnPoissonRotation(gl_FragCoord.x))
-vogel_pcss.glsl|S(0) uniform sampler2D uMap;|pnVogelPcss(uMap, L, r, ivec2(gl_FragCoord.xy), pnVogelPcssDefaults(0.02))
+vogel_pcss.glsl|S(0) uniform sampler2D uMap;|pnVogelPcss(uMap, L, r, ivec2(gl_FragCoord.xy), pnVogelPcssDefaults(0.02)) * pnVogelPcss(uMap, L, r, pnReceiverPlaneGradient(dFdx(r), dFdy(r), 0.1), ivec2(gl_FragCoord.xy), pnVogelPcssDefaults(0.02))
 exact_pcss.glsl|S(0) uniform sampler2D uMap;|pnExactPcss(uMap, L, r, 0.02, 1.0)
 hqepcss.glsl|S(0) uniform sampler2DArray uPyramid; S(1) uniform sampler2D uMap;|pnHqepcss(uPyramid, uMap, L, r, pnHqepcssDefaults(0.02))
 pcf.glsl|S(0) uniform sampler2D uMap;|pnPcf(uMap, r, 0.02)
