@@ -95,12 +95,8 @@ void validate_frontier_setup(const FrontierBenchSetup& s) {
     throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
   if (!(s.exact_up_to > 0))
     throw Error("exact up to " + format_number("%g", s.exact_up_to) + ": expected a light width factor > 0");
-  for (const std::string& name : s.scenes) {
-    if (name != kFrontierModelScene && !find_city_scene_fixture_or_null(name)) find_scene_fixture(name);
-    if (name == kFrontierModelScene || find_city_scene_fixture_or_null(name)) continue;  // read when run
-    for (double w : s.widths) frontier_scene(name, 16, w);
-  }
-  for (double w : s.widths) validate_light_width_factor(w, "light width factor");
+  for (const std::string& name : s.scenes)
+    for (double w : s.widths) frontier_scene(name, 16, w);  // the scene (its models read), the factor, the light
   for (const std::string& m : s.methods) parse_technique(m)->validate();
 }
 
