@@ -90,8 +90,8 @@ TEST_CASE("negative: a blend pass that reads cascade 0 for cascade 1 fails the b
 
 TEST_CASE("negative: a PCSS fragment shader reading its neighbour fails fast's cascaded fragment case, not pcf's") {
   // The stage reaches every cascade's call (CascadedTechnique passes it on): only the broken stage fails.
-  const pn::test::BrokenCopy copy("passes/pcss_one_call.frag", "pnOneCallShade(ivec2(gl_FragCoord.xy))",
-                                  "pnOneCallShade(ivec2(gl_FragCoord.xy) + ivec2(1, 0))");
+  const pn::test::BrokenCopy copy("passes/pcss_one_call.frag", "pnOneCallShade(ivec2(gl_FragCoord.xy), fetches)",
+                                  "pnOneCallShade(ivec2(gl_FragCoord.xy) + ivec2(1, 0), fetches)");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(cascades(), copy.root());
   CHECK(failing_named(results, "fast's call in fragment shaders") == 1);

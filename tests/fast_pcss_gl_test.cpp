@@ -38,8 +38,8 @@ TEST_CASE("negative: a copy of fast_pcss.glsl that halves the occluded fraction 
 }
 
 TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fails only against the compute pass") {
-  const pn::test::BrokenCopy copy("passes/pcss_one_call.frag", "pnOneCallShade(ivec2(gl_FragCoord.xy))",
-                                  "pnOneCallShade(ivec2(gl_FragCoord.xy + vec2(0.5, 0.0)))");
+  const pn::test::BrokenCopy copy("passes/pcss_one_call.frag", "pnOneCallShade(ivec2(gl_FragCoord.xy), fetches)",
+                                  "pnOneCallShade(ivec2(gl_FragCoord.xy + vec2(0.5, 0.0)), fetches)");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(fast_pcss(), copy.root());
   size_t fragment_failing = 0;
