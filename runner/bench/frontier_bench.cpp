@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "bench/sweep_bench.h"
 #include "core/bounds.h"
 #include "core/error.h"
 #include "core/format.h"
@@ -88,13 +89,7 @@ void validate_frontier_setup(const FrontierBenchSetup& s) {
   require_list_length("frontier scenes", s.scenes.size());
   require_list_length("frontier light width factors", s.widths.size());
   require_list_length("frontier sizes", s.sizes.size());
-  for (int n : s.sizes)
-    if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
-  if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
-  if (s.truth_samples < 1 || s.truth_samples > 64)
-    throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
-  if (!(s.exact_up_to > 0))
-    throw Error("exact up to " + format_number("%g", s.exact_up_to) + ": expected a light width factor > 0");
+  validate_width_bench_settings(s.sizes, s.repeats, s.truth_samples, s.exact_up_to);
   for (const std::string& name : s.scenes)
     for (double w : s.widths) frontier_scene(name, 16, w);  // the scene (its models read), the factor, the light
   for (const std::string& m : s.methods) parse_technique(m)->validate();

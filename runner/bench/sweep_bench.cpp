@@ -21,17 +21,21 @@ Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor
   return scene;
 }
 
+void validate_width_bench_settings(const std::vector<int>& sizes, int repeats, int truth_samples, double exact_up_to) {
+  for (int n : sizes)
+    if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
+  if (repeats < 1 || repeats > 100) throw Error("repeats " + std::to_string(repeats) + ": expected 1..100");
+  if (truth_samples < 1 || truth_samples > 64)
+    throw Error("truth samples " + std::to_string(truth_samples) + ": expected 1..64 per side");
+  if (!(exact_up_to > 0))
+    throw Error("exact up to " + format_number("%g", exact_up_to) + ": expected a light width factor > 0");
+}
+
 void validate_sweep_setup(const SweepBenchSetup& s) {
   require_list_length("sweep scenes", s.scenes.size());
   require_list_length("sweep light width factors", s.factors.size());
   require_list_length("sweep sizes", s.sizes.size());
-  for (int n : s.sizes)
-    if (n < 16 || n > 4096) throw Error("size " + std::to_string(n) + ": expected 16..4096");
-  if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
-  if (s.truth_samples < 1 || s.truth_samples > 64)
-    throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
-  if (!(s.exact_up_to > 0))
-    throw Error("exact up to " + format_number("%g", s.exact_up_to) + ": expected a light width factor > 0");
+  validate_width_bench_settings(s.sizes, s.repeats, s.truth_samples, s.exact_up_to);
   for (const std::string& name : s.scenes) {
     const auto& fixture = find_scene_fixture(name);
     for (double f : s.factors) sweep_scene(fixture, 16, f);  // the factor and the scaled light, without GL

@@ -36,6 +36,10 @@ struct SweepBenchSetup {
   std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: render_techniques()
 };
 
+// The settings the sweep and the frontier (frontier_bench.h) share: sizes in 16..4096, repeats in
+// 1..100, truth samples in 1..64, exact_up_to > 0 (NaN included). Throws Error naming the first bad one.
+void validate_width_bench_settings(const std::vector<int>& sizes, int repeats, int truth_samples, double exact_up_to);
+
 // Throws Error naming the first bad setting: an unknown scene, a factor that is not a finite
 // number > 0 (or that makes a light that does not validate), a size outside 16..4096, repeats
 // outside 1..100, truth samples outside 1..64, exact_up_to not > 0 (NaN included), no factors,
