@@ -18,6 +18,9 @@
 //   float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, float bias, float filterScale)
 //         receiver = (u, v, d) as pnLightProject gives (light_model.glsl); depthMap: the linear
 //         light depth (R32F), texelFetch only
+//   float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane, float bias,
+//                     float filterScale)   with a receiver-plane depth bias (receiver_plane.glsl): each
+//         texel compared with the plane at its centre (pcf.glsl's pnPcfWindowPlane); 0: the call above
 //
 // cost: one fetch per texel of both squares: O(s²) for a side-s region, the
 //   cost the other techniques exist to avoid. (A driver that caps a loop's
@@ -31,16 +34,22 @@
 #include "pcf.glsl"
 #include "pcss_regions.glsl"
 
-float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, float bias, float filterScale) {
+float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane, float bias,
+                  float filterScale) {
   int n = int(light.mapSize);
   vec4 search = pnSearchStart(light, vec4(receiver, 1.0));
   if (pnEntryLit(search)) return 1.0;
   PnRect searchRect = pnEntryRect(search, n);
-  PnPcf blockers = pnPcfWindow(depthMap, searchRect.origin, searchRect.size, search.x, bias);
+  PnPcf blockers = pnPcfWindowPlane(depthMap, searchRect.origin, searchRect.size, receiver, receiverPlane, bias);
   vec4 filterEntry = pnFilterEntry(light, search, pnPcfBlockerMean(blockers), blockers.occluders > 0.0, filterScale);
   if (pnEntryLit(filterEntry)) return 1.0;
   PnRect filterRect = pnEntryRect(filterEntry, n);
-  return 1.0 - pnPcfOccludedFraction(pnPcfWindow(depthMap, filterRect.origin, filterRect.size, filterEntry.x, bias));
+  return 1.0 - pnPcfOccludedFraction(
+                   pnPcfWindowPlane(depthMap, filterRect.origin, filterRect.size, receiver, receiverPlane, bias));
+}
+
+float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, float bias, float filterScale) {
+  return pnExactPcss(depthMap, light, receiver, vec2(0.0), bias, filterScale);
 }
 
 #endif  // PENUMBRA_EXACT_PCSS_GLSL

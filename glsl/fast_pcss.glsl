@@ -31,8 +31,12 @@
 //         receiver = (u, v, d): shadow-map texels (continuous) and linear light depth, as
 //         pnLightProject gives (light_model.glsl); pixel = the screen pixel (gl_FragCoord.xy
 //         or gl_GlobalInvocationID.xy), which picks the sample set
+//   float pnFastPcss(... vec3 receiver, vec2 receiverPlane, ivec2 pixel, ...)   with a receiver-plane
+//         depth bias: receiverPlane = the receiver's light depth per texel (receiver_plane.glsl, from
+//         dFdx/dFdy or G-buffer neighbours); every step compares a texel with the plane at its centre and
+//         decides a node against the plane's range over it (traversal.glsl); 0 is the call above
 //   PnFastPcssSettings pnFastPcssDefaults(float bias)     the shipped settings (fast_pcss.h)
-//   PnFastPcssResult pnFastPcssEstimate(...same parameters...)   visibility and what led to it
+//   PnFastPcssResult pnFastPcssEstimate(...same parameters, either form...)   visibility and what led to it
 //   mip: minmax_mip.glsl's chain of the map (RGBA32F, built per frame: pnMipLevel0Texel,
 //        pnMipCombineTexel); sampleTable: sample_table.glsl's 21×8 RG32F table
 //        (`penumbra sample-table` prints it), both read with texelFetch only.
@@ -85,26 +89,27 @@ PnFastPcssSettings pnFastPcssDefaults(float bias) {
 }
 
 // One traversal of an entry's region (Step 4 with depth sums, Step 5 without).
-PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry,
+PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
                                PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
-  return pnTraverseRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.x, s.bias,
-                             pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size), leafMode, s.nodeBudget,
-                             depthSums, pixel);
+  return pnTraverseRegionMipPlane(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane,
+                                  s.bias, pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size), leafMode,
+                                  s.nodeBudget, depthSums, pixel);
 }
 
-PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
-                                    PnFastPcssSettings s) {
+PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+                                    vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   int n = int(light.mapSize);
   PnFastPcssResult r = PnFastPcssResult(1.0, vec4(0.0), vec4(0.0), 0.0, 0, 0, 0);
   int refinements;
-  r.searchEntry = pnSearchEntryMipCounted(mip, n, light, vec4(receiver, 1.0), s.bias, s.refineIterations, refinements);
+  r.searchEntry = pnSearchEntryMipPlane(mip, n, light, vec4(receiver, 1.0), receiverPlane, s.bias, s.refineIterations,
+                                        refinements);
   r.fetches = 9 * refinements;
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
 
   int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
-  PnTraversal blockers = pnFastPcssTraverse(mip, sampleTable, n, r.searchEntry, s, blockerLeafMode,
+  PnTraversal blockers = pnFastPcssTraverse(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
                                             s.depthSums, pixel);
   r.blockerNodes = blockers.nodes;
   r.fetches += blockers.fetches;
@@ -116,7 +121,7 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
     return r;
   }
 
-  PnTraversal occlusion = pnFastPcssTraverse(mip, sampleTable, n, r.filterEntry, s, s.leafMode,
+  PnTraversal occlusion = pnFastPcssTraverse(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
                                              PN_DEPTH_SUMS_NONE, pixel);
   r.occlusionNodes = occlusion.nodes;
   r.fetches += occlusion.fetches;
@@ -124,9 +129,19 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
   return r;
 }
 
+PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
+                                    PnFastPcssSettings s) {
+  return pnFastPcssEstimate(mip, sampleTable, light, receiver, vec2(0.0), pixel, s);
+}
+
+float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, vec2 receiverPlane, ivec2 pixel,
+                 PnFastPcssSettings settings) {
+  return pnFastPcssEstimate(mip, sampleTable, light, receiver, receiverPlane, pixel, settings).visibility;
+}
+
 float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
                  PnFastPcssSettings settings) {
-  return pnFastPcssEstimate(mip, sampleTable, light, receiver, pixel, settings).visibility;
+  return pnFastPcssEstimate(mip, sampleTable, light, receiver, vec2(0.0), pixel, settings).visibility;
 }
 
 #endif  // PENUMBRA_FAST_PCSS_GLSL

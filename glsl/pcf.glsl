@@ -38,6 +38,10 @@
 //   PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias)
 //   PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias,
 //                      int firstRow, int rowCount, PnPcf sums)      sums + the band's rows (map rows)
+//   PnPcf pnPcfWindowPlane(sampler2D depthMap, ivec2 origin, ivec2 size, vec3 receiver, vec2 gradient,
+//                          float bias)          with a receiver plane (receiver_plane.glsl): texel q
+//         occludes when d(q) < d - bias + gradient · (q + 1/2 - (u, v)), receiver = (u, v, d);
+//         gradient 0 is pnPcfWindow exactly (pnPcfAddRowsPlane: the same for a band of rows)
 //   PnPcf pnPcfZero()
 //   float pnPcfBilinearVisibility(sampler2D depthMap, vec2 position, float receiverDepth, float bias)
 //         hard shadow with 2×2 bilinear PCF (what a hardware shadow sampler does; seed 003's
@@ -61,6 +65,8 @@
 
 #ifndef PENUMBRA_PCF_GLSL
 #define PENUMBRA_PCF_GLSL
+
+#include "receiver_plane.glsl"
 
 #ifndef PN_PCF_MAX_SIDE
 #define PN_PCF_MAX_SIDE 8192
@@ -92,8 +98,8 @@ float pnPcfOccludedFraction(PnPcf s) {
   return s.texels > 0.0 ? s.occluders / s.texels : 0.0;
 }
 
-PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias, int firstRow,
-                   int rowCount, PnPcf sums) {
+PnPcf pnPcfAddRowsPlane(sampler2D depthMap, ivec2 origin, ivec2 size, vec3 receiver, vec2 gradient, float bias,
+                        int firstRow, int rowCount, PnPcf sums) {
   ivec2 n = textureSize(depthMap, 0);
   // Clip to the map, then bound each side by PN_PCF_MAX_SIDE from the clipped origin.
   ivec2 lo = clamp(origin, ivec2(0), n);
@@ -101,13 +107,13 @@ PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverD
   hi = min(hi, lo + ivec2(PN_PCF_MAX_SIDE));
   int rowStart = max(lo.y, firstRow);
   int rowEnd = min(hi.y, firstRow + max(rowCount, 0));
-  float t = receiverDepth - bias;
+  float t = receiver.z - bias;
   for (int y = rowStart; y < rowEnd; ++y) {
     for (int x = lo.x; x < hi.x; x += PN_PCF_ROW_STEP) {
       for (int i = 0; i < PN_PCF_ROW_STEP; ++i) {  // constant trip count: unrolled
         if (x + i < hi.x) {
           float d = texelFetch(depthMap, ivec2(x + i, y), 0).r;
-          if (pnPcfOccludes(d, t)) {
+          if (pnPcfOccludes(d, pnReceiverPlaneThreshold(t, gradient, receiver.xy, ivec2(x + i, y)))) {
             sums.occluders += 1.0;
             sums.depthSum += d;
           }
@@ -117,6 +123,17 @@ PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverD
     sums.texels += float(hi.x - lo.x);
   }
   return sums;
+}
+
+PnPcf pnPcfAddRows(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias, int firstRow,
+                   int rowCount, PnPcf sums) {
+  return pnPcfAddRowsPlane(depthMap, origin, size, vec3(0.0, 0.0, receiverDepth), vec2(0.0), bias, firstRow, rowCount,
+                           sums);
+}
+
+PnPcf pnPcfWindowPlane(sampler2D depthMap, ivec2 origin, ivec2 size, vec3 receiver, vec2 gradient, float bias) {
+  return pnPcfAddRowsPlane(depthMap, origin, size, receiver, gradient, bias, 0, textureSize(depthMap, 0).y,
+                           pnPcfZero());
 }
 
 PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias) {

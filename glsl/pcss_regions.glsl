@@ -35,6 +35,10 @@
 //                          zmin over the aligned nodes touching the square (<= 9 fetches), a superset
 //   vec4  pnSearchEntryMipCounted(... the same ..., out int refinements)   and how many refinements read
 //                          the chain (<= 9 fetches each: the call's cost)
+//   vec4  pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient,
+//                               float bias, int iterations, out int refinements)
+//                          with a receiver plane (receiver_plane.glsl): lit when zmin is not below the
+//                          plane's highest threshold over the region; gradient 0 is ...MipCounted exactly
 //   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
 //   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
@@ -60,6 +64,7 @@
 #include "light_model.glsl"
 #include "minmax_mip.glsl"
 #include "pcss_regions.h"
+#include "receiver_plane.glsl"
 #include "region.glsl"
 
 bool pnEntryLit(vec4 entry) {
@@ -104,14 +109,19 @@ vec4 pnSearchStart(PnLight light, vec4 receiver) {
   return vec4(d, receiver.xy, pnLightSearchWidthTexels(light, d));
 }
 
-// One refinement step from the region's min depth: lit, shrunk, or `done`.
-vec4 pnSearchRefine(PnLight light, vec4 entry, float zmin, float bias, out bool done) {
+// One refinement step from the region's min depth: lit when no depth is
+// below the test's highest threshold over the region, else shrunk, or `done`.
+vec4 pnSearchRefineBelow(PnLight light, vec4 entry, float zmin, float highestThreshold, out bool done) {
   done = true;
-  if (!(zmin < entry.x - bias)) return vec4(entry.xyz, PN_REGION_LIT);
+  if (!(zmin < highestThreshold)) return vec4(entry.xyz, PN_REGION_LIT);
   float side = pnLightBlockerWindowTexels(light, entry.x, zmin);
   if (!(side < entry.w)) return entry;
   done = false;
   return vec4(entry.xyz, side);
+}
+
+vec4 pnSearchRefine(PnLight light, vec4 entry, float zmin, float bias, out bool done) {
+  return pnSearchRefineBelow(light, entry, zmin, entry.x - bias, done);
 }
 
 vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations) {
@@ -125,18 +135,25 @@ vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float b
   return entry;
 }
 
-vec4 pnSearchEntryMipCounted(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations,
-                             out int refinements) {
+vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient, float bias,
+                           int iterations, out int refinements) {
   vec4 entry = pnSearchStart(light, receiver);
   refinements = 0;
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
     refinements += 1;
-    entry = pnSearchRefine(light, entry, pnSearchRegionMinMip(mip, mapSize, entry), bias, done);
+    PnRect r = pnEntryRect(entry, mapSize);
+    float highest = pnReceiverPlaneThresholdRange(entry.x - bias, gradient, receiver.xy, r.origin, r.origin + r.size).y;
+    entry = pnSearchRefineBelow(light, entry, pnSearchRegionMinMip(mip, mapSize, entry), highest, done);
     if (done) break;
   }
   return entry;
+}
+
+vec4 pnSearchEntryMipCounted(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations,
+                             out int refinements) {
+  return pnSearchEntryMipPlane(mip, mapSize, light, receiver, vec2(0.0), bias, iterations, refinements);
 }
 
 vec4 pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations) {

@@ -110,7 +110,7 @@ PnPoisson pnPoissonAddSamplePlane(sampler2D depthMap, vec2 centre, float radius,
   if (!(all(greaterThanEqual(p, vec2(0.0))) && all(lessThan(p, n)))) return sums;
   vec2 q = floor(p);
   float d = texelFetch(depthMap, ivec2(q), 0).r;
-  if (d < threshold + dot(gradient, q + 0.5 - centre) && !isinf(d)) {  // NaN compares false
+  if (d < pnReceiverPlaneThreshold(threshold, gradient, centre, ivec2(q)) && !isinf(d)) {  // NaN compares false
     sums.occluders += 1.0;
     sums.depthSum += d;
   }

@@ -35,6 +35,12 @@
 //   float pnReceiverPlaneDepth(vec3 receiver, vec2 gradient, vec2 q)    z(q)
 //   vec2  pnReceiverPlaneRange(vec3 receiver, vec2 gradient, ivec2 origin, ivec2 size)   (min, max)
 //         of z over the centres of the texels [origin, origin + size)
+//   float pnReceiverPlaneThreshold(float threshold, vec2 gradient, vec2 centre, ivec2 q)
+//         the shadow test's threshold at texel q: threshold + g · (q + 1/2 - centre), threshold = the
+//         receiver's depth minus the bias, centre = its (u, v); g = 0 returns `threshold` itself
+//   vec2  pnReceiverPlaneThresholdRange(float threshold, vec2 gradient, vec2 centre, ivec2 lo, ivec2 hi)
+//         its (min, max) over the texels [lo, hi), widened by the float rounding of both (g = 0:
+//         (threshold, threshold)): a node decided against the range agrees with each of its texels' own thresholds
 //
 // options:
 //   PN_RECEIVER_PLANE_MIN_SINE   the parallel steps' bound (0.01; receiver_plane.h)
@@ -82,6 +88,23 @@ vec2 pnReceiverPlaneRange(vec3 receiver, vec2 gradient, ivec2 origin, ivec2 size
   float mid = pnReceiverPlaneDepth(receiver, gradient, vec2(origin) + 0.5 * s);
   float extent = 0.5 * (abs(gradient.x) * max(s.x - 1.0, 0.0) + abs(gradient.y) * max(s.y - 1.0, 0.0));
   return vec2(mid - extent, mid + extent);
+}
+
+// No plane (gradient 0) returns the threshold itself, whatever the centre (a NaN one too).
+float pnReceiverPlaneThreshold(float threshold, vec2 gradient, vec2 centre, ivec2 q) {
+  return all(equal(gradient, vec2(0.0))) ? threshold : threshold + dot(gradient, vec2(q) + 0.5 - centre);
+}
+
+vec2 pnReceiverPlaneThresholdRange(float threshold, vec2 gradient, vec2 centre, ivec2 lo, ivec2 hi) {
+  if (all(equal(gradient, vec2(0.0)))) return vec2(threshold);
+  vec2 offset = 0.5 * vec2(lo + hi) - centre;  // the texel centres' mean, from the receiver
+  float mid = threshold + dot(gradient, offset);
+  float extent = 0.5 * dot(abs(gradient), max(vec2(hi - lo) - 1.0, vec2(0.0)));
+  // Each texel's threshold rounds q + 1/2 - centre (|q| + |centre| large), the products and the sum;
+  // so do mid and extent: 2^-18 of the magnitudes involved bounds both (a few float ulps each).
+  vec2 magnitude = abs(vec2(lo)) + abs(vec2(hi)) + 2.0 * abs(centre);
+  float slack = exp2(-18.0) * (abs(threshold) + abs(mid) + dot(abs(gradient), magnitude));
+  return vec2(mid - extent - slack, mid + extent + slack);
 }
 
 #endif  // PENUMBRA_RECEIVER_PLANE_GLSL

@@ -56,6 +56,12 @@
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
 //       int nodeBudget, int depthSums, ivec2 pixel)
 //       over minmax_mip.glsl's chain; depthSums: PN_DEPTH_SUMS_NONE / _TABLE / _MIDPOINT (traversal.h).
+//   PnTraversal pnTraverseRegionMipPlane(... ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, ...)
+//       the same with a receiver plane (receiver_plane.glsl): receiver = (u, v, d), gradient = its
+//       light depth per texel; texel q occludes when d(q) < d - bias + gradient · (q + 1/2 - (u, v)),
+//       a node is decided against the plane's range over its part (pnReceiverPlaneThresholdRange,
+//       widened by rounding), a sampled leaf's sample against its own texel's threshold, a min or
+//       ramp leaf at its part's centre. Gradient 0 is pnTraverseRegionMip exactly.
 //       _TABLE reads summed_area.glsl's table of the map through PN_TRAVERSAL_SUM_TABLE (below);
 //       without that define it counts as _MIDPOINT, so a shader that never asks for exact sums
 //       declares no table.
@@ -87,8 +93,18 @@
 #include "minmax_mip.glsl"
 #include "region.glsl"
 #include "sample_table.glsl"
+#include "receiver_plane.glsl"
 #include "summed_area.glsl"
 #include "traversal.h"  // PN_TRAVERSAL_MAX_LEVEL, PN_LEAF_SAMPLED, PN_LEAF_MIN
+
+// The shadow test of a traversal over the mip chain (receiver_plane.glsl): a
+// texel q occludes when its depth < threshold + gradient · (q + 1/2 - centre);
+// gradient 0 is one depth, threshold, for every texel.
+struct PnTraversalTest {
+  float threshold;  // the receiver's depth minus the bias
+  vec2 gradient;    // its plane's light depth per texel (receiver_plane.glsl), or 0
+  vec2 centre;      // the receiver's (u, v) in texels
+};
 
 struct PnTraversal {
   float occluders;
@@ -176,12 +192,13 @@ void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2
 
 // Sample i < m of a sampled leaf over the mip chain's level 0.
 void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size, float t) {
+                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size,
+                          PnTraversalTest test) {
   if (i >= m) return;
   ivec2 p = pnSampleTexel(pnSample(sampleTable, first + i, set), lo, size);
   float d = pnMipFetch(mip, 0, p).x;
   r.fetches += 1;
-  if (d < t) {
+  if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
     occluding += 1.0;
     depthSum += d;
   }
@@ -189,22 +206,31 @@ void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnT
 
 // The same over the mip chain's level 0.
 void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D sampleTable, ivec2 lo,
-                           ivec2 size, int side, float t, ivec2 pixel) {
+                           ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
   int m = pnSampleCount(k);
   int first = pnSampleFirstColumn(k);
   int set = pnSampleSet(pixel);
   float occluding = 0.0;
   float depthSum = 0.0;
-  // Four samples a step (m is 1, 4 or 16): llvmpipe ends a loop once its
-  // iterations, summed over all its entries in one invocation, reach 65535
-  // (measured: a 256² fine checker at leaf 2 hits it one sample a step).
-  for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
+  // m is 1, 4 or 16. llvmpipe ends a loop once its iterations, summed over
+  // all its entries in one invocation, reach 65535 (measured: a 256² fine
+  // checker at leaf 2 hits it one sample a step, and at four a step once the
+  // plane's threshold made the loop too long to unroll): the first four
+  // samples are taken without a loop, the rest (16-sample leaves, at most a
+  // sixteenth of the region's texels) four a step.
+  pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 0, m, lo, size, test);
+  if (m > 1) {
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 1, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 2, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 3, m, lo, size, test);
+  }
+  for (int g = 4; g < PN_SAMPLE_MAX_COUNT; g += 4) {
     if (g >= m) break;
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g, m, lo, size, t);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 1, m, lo, size, t);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 2, m, lo, size, t);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 3, m, lo, size, t);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 1, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 2, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 3, m, lo, size, test);
   }
   float texels = float(size.x * size.y);
   r.occluders += texels * occluding / float(m);
@@ -349,37 +375,42 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2
 // Reads an aligned node of the chain and counts its clipped part [lo, hi)
 // when its (min, max) decide it; returns true when it is ambiguous, with its
 // (min, max) in `nodeRange`.
+// The test's thresholds over the part (receiver_plane.glsl): all below the
+// lowest -> every texel occludes; none below the highest -> none does.
 bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, int level, ivec2 origin,
-                             ivec2 lo, ivec2 hi, float t, int depthSums, out vec2 nodeRange) {
+                             ivec2 lo, ivec2 hi, PnTraversalTest test, int depthSums, out vec2 nodeRange) {
   vec2 node = pnMipFetch(mip, level, origin >> level);
   r.nodes += 1;
   r.fetches += 1;
   nodeRange = node;
-  if (node.y < t) {
+  vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, lo, hi);
+  if (node.y < t.x) {
     pnTraversalAddOccludingPart(r, node, lo, hi, depthSums);
     return false;
   }
-  return node.x < t;
+  return node.x < t.y;
 }
 
 // A node that will not be descended: its clipped part classified, and
 // estimated by the leaf mode when ambiguous (samples spread over the part).
+// Without samples (min, ramp) a sloped test is taken at the part's centre.
 void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, sampler2D sampleTable,
-                              int level, ivec2 origin, ivec2 lo, ivec2 hi, float t, int leafMode, int depthSums,
-                              ivec2 pixel) {
+                              int level, ivec2 origin, ivec2 lo, ivec2 hi, PnTraversalTest test, int leafMode,
+                              int depthSums, ivec2 pixel) {
   vec2 range;
-  if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, t, depthSums, range)) return;
+  if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
     ivec2 size = hi - lo;
+    float t = test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
     pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), t);
   } else {
-    pnTraversalSampleLeafMip(r, mip, sampleTable, lo, hi - lo, 1 << level, t, pixel);
+    pnTraversalSampleLeafMip(r, mip, sampleTable, lo, hi - lo, 1 << level, test, pixel);
   }
 }
 
 // The four level-0 children (texels) of a level-1 node at `origin`, clipped to the region.
 void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, ivec2 origin,
-                            ivec2 regionStart, ivec2 regionEnd, float t, int depthSums) {
+                            ivec2 regionStart, ivec2 regionEnd, PnTraversalTest test, int depthSums) {
   vec4 pair0 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y));
   vec4 pair1 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y + 1));
   vec4 depths = vec4(pair0.x, pair0.z, pair1.x, pair1.z);  // (0,0), (1,0), (0,1), (1,1): min = max = depth
@@ -391,20 +422,24 @@ void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, ivec2 origin,
   bvec2 x = bvec2(lower.x && first.x, second.x && upper.x);  // columns 0, 1 inside
   bvec2 y = bvec2(lower.y && first.y, second.y && upper.y);  // rows 0, 1 inside
   vec4 inside = vec4(x.x && y.x, x.y && y.x, x.x && y.y, x.y && y.y);
-  vec4 occluding = inside * vec4(lessThan(depths, vec4(t)));
+  vec4 t = vec4(pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin),
+                pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin + ivec2(1, 0)),
+                pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin + ivec2(0, 1)),
+                pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin + ivec2(1, 1)));
+  vec4 occluding = inside * vec4(lessThan(depths, t));
   r.occluders += dot(occluding, vec4(1.0));
   if (depthSums != PN_DEPTH_SUMS_NONE) r.depthSum += dot(occluding, mix(vec4(0.0), depths, greaterThan(occluding, vec4(0.0))));
 }
 
-PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize,
-                                ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
-                                int nodeBudget, int depthSums, ivec2 pixel) {
+PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int mapSize,
+                                     ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias,
+                                     int leafSide, int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
   ivec2 regionStart, regionEnd;
   PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, textureSize(mip, 0).y), regionStart,
                                    regionEnd);
   ivec2 size = regionEnd - regionStart;
-  float t = receiverDepth - bias;
-  if (isnan(t) || r.texels == 0.0) return r;
+  PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
+  if (isnan(test.threshold) || r.texels == 0.0) return r;
 
   // The 2×2 aligned nodes of level `top` at the region's aligned corner cover
   // it (side <= 2^top); they are the children of a virtual root one level up,
@@ -427,10 +462,10 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSiz
     if (all(lessThan(lo, hi))) {
       bool spent = r.nodes + 1 >= budget;
       if (side <= leafSide || spent) {
-        pnTraversalVisitLeafPart(r, mip, sampleTable, level, origin, lo, hi, t, leafMode, depthSums, pixel);
+        pnTraversalVisitLeafPart(r, mip, sampleTable, level, origin, lo, hi, test, leafMode, depthSums, pixel);
       } else {
         vec2 range;
-        if (pnTraversalClassifyPart(r, mip, level, origin, lo, hi, t, depthSums, range)) {
+        if (pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) {
           int h = side >> 1;
           if (h == 1) {
             // Texels: never ambiguous, so classified here, four at a time and
@@ -438,7 +473,7 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSiz
             // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
             // iterations per invocation ended the exact (leaf 1) traversal of
             // a 256² fine checker early; one sampling site a step does not.
-            pnTraversalVisitTexels(r, mip, origin, regionStart, regionEnd, t, depthSums);
+            pnTraversalVisitTexels(r, mip, origin, regionStart, regionEnd, test, depthSums);
           } else {
             descend = true;
           }
@@ -450,6 +485,13 @@ PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSiz
     if (pnTraversalNext(level, code, descend, rootLevel)) break;  // the virtual root's four children are done
   }
   return r;
+}
+
+PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize,
+                                ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide,
+                                int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
+  return pnTraverseRegionMipPlane(mip, sampleTable, mapSize, regionOrigin, regionSize, vec3(0.0, 0.0, receiverDepth),
+                                  vec2(0.0), bias, leafSide, leafMode, nodeBudget, depthSums, pixel);
 }
 
 #endif  // PENUMBRA_TRAVERSAL_GLSL

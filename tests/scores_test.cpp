@@ -40,6 +40,20 @@ TEST_CASE("mean absolute error: by hand over all texels and over a mask") {
   CHECK_THROWS_AS(pn::mean_absolute_error(a, pn::Image(3, 2)), pn::Error);
 }
 
+TEST_CASE("bias errors: darkening where the reference is fully lit, brightening where fully shadowed") {
+  pn::Image reference(5, 1), observed(5, 1), mask(5, 1, 1, 1.0f);
+  const float r[] = {1.0f, 0.995f, 0.0f, 0.5f, 0.0f}, o[] = {0.8f, 1.0f, 0.3f, 0.2f, 0.0f};
+  for (int x = 0; x < 5; ++x) reference.at(x, 0) = r[x], observed.at(x, 0) = o[x];
+  const pn::BiasErrors all = pn::bias_errors(reference, observed);
+  CHECK(all.acne == Approx((0.2 + 0.0) / 2).epsilon(1e-6));  // the brighter one counts 0, not -0.005
+  CHECK(all.leak == Approx((0.3 + 0.0) / 2).epsilon(1e-6));  // 0.5 is neither
+  mask.at(0, 0) = 0.0f, mask.at(2, 0) = 0.0f;
+  const pn::BiasErrors masked = pn::bias_errors(reference, observed, &mask);
+  CHECK(masked.acne == 0.0);
+  CHECK(masked.leak == 0.0);
+  CHECK_THROWS_AS(pn::bias_errors(reference, pn::Image(3, 1)), pn::Error);
+}
+
 TEST_CASE("masked SSIM: an all-ones mask gives the unmasked SSIM, a mask over identical content gives 1") {
   const pn::Image a = noise(40, 1), b = noise(40, 2);
   CHECK(pn::ssim(a, b, pn::Image(40, 40, 1, 1.0f)) == Approx(pn::ssim(a, b)).epsilon(1e-12));

@@ -51,13 +51,24 @@ vec4 pnOneCallEntry(ivec2 p) {
   return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, n)) ? texelFetch(pnGBuffer, p, 0) : vec4(0.0);
 }
 
+// The receiver's plane (receiver_plane.glsl) from its G-buffer neighbours when
+// the block asks for one (receiverPlaneTan > 0: the steepest slope trusted, as
+// a tangent), else 0: no plane.
+vec2 pnOneCallReceiverPlane(ivec2 p, vec4 receiver, PnLight light) {
+  if (!(pnPcss.receiverPlaneTan > 0.0)) return vec2(0.0);
+  float maxSlope = pnPcss.receiverPlaneTan * pnLightTexelWorld(light, receiver.z);
+  return pnReceiverPlaneFromNeighbours(receiver, pnOneCallEntry(p - ivec2(1, 0)), pnOneCallEntry(p + ivec2(1, 0)),
+                                       pnOneCallEntry(p - ivec2(0, 1)), pnOneCallEntry(p + ivec2(0, 1)), maxSlope);
+}
+
 vec4 pnOneCallShade(ivec2 p, out float fetches) {
   fetches = 0.0;
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return vec4(1.0, 0.0, 0.0, 0.0);  // no surface: lit
   PnLight light = pnPcssLight();
+  vec2 plane = pnOneCallReceiverPlane(p, receiver, light);
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_EXACT) {
-    return vec4(pnExactPcss(pnDepthMap, light, receiver.xyz, pnPcss.bias, pnPcss.filterScale), 0.0, 0.0,
+    return vec4(pnExactPcss(pnDepthMap, light, receiver.xyz, plane, pnPcss.bias, pnPcss.filterScale), 0.0, 0.0,
                 receiver.z > 0.0 ? 4.0 : 0.0);
   }
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_HQEPCSS) {
@@ -78,12 +89,6 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_VOGEL) {
     PnVogelPcssSettings s = PnVogelPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                 pnPcss.filterSamples);
-    vec2 plane = vec2(0.0);
-    if (pnPcss.receiverPlaneTan > 0.0) {
-      float maxSlope = pnPcss.receiverPlaneTan * pnLightTexelWorld(light, receiver.z);
-      plane = pnReceiverPlaneFromNeighbours(receiver, pnOneCallEntry(p - ivec2(1, 0)), pnOneCallEntry(p + ivec2(1, 0)),
-                                            pnOneCallEntry(p - ivec2(0, 1)), pnOneCallEntry(p + ivec2(0, 1)), maxSlope);
-    }
     PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, plane, p, s);
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
@@ -94,7 +99,7 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
                                             pnPcss.regionMode, pnPcss.leafSide, pnPcss.leafDivisor,
                                             pnPcss.leafMode, pnPcss.blockerLeafMode, pnPcss.nodeBudget,
                                             pnPcss.depthSums);
-  PnFastPcssResult r = pnFastPcssEstimate(pnMip, pnSampleTable, light, receiver.xyz, p, s);
+  PnFastPcssResult r = pnFastPcssEstimate(pnMip, pnSampleTable, light, receiver.xyz, plane, p, s);
   fetches = float(r.fetches);
   return vec4(r.visibility, float(r.blockerNodes), float(r.occlusionNodes),
               pnOneCallFlags(r.searchEntry, r.filterEntry));

@@ -1,7 +1,9 @@
 // traversal_query.comp — traversal.glsl over a batch of receivers, over the
 // decreased pyramid or the aligned mip chain (pnParams.structure).
 // Query k: texel k of query image A = (region origin x, y, region width, height),
-//          texel k of query image B = (receiver depth, screen pixel x, y, 0).
+//          texel k of query image B = (receiver depth, screen pixel x, y, 0),
+//          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the mip
+//          chain's traversal with that plane (pnTraverseRegionMipPlane; gradient 0: none).
 // Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches, 0, 0).
 // Bindings and the parameter block: traversal_query.h.
 
@@ -15,6 +17,7 @@ layout(binding = PN_TRAVERSAL_QUERY_MIP_BINDING) uniform sampler2D pnMip;
 layout(binding = PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING) uniform usampler2D pnDepthSums;
 layout(binding = PN_TRAVERSAL_QUERY_A_BINDING) uniform sampler2D pnQueryA;
 layout(binding = PN_TRAVERSAL_QUERY_B_BINDING) uniform sampler2D pnQueryB;
+layout(binding = PN_TRAVERSAL_QUERY_PLANE_BINDING) uniform sampler2D pnQueryE;
 layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_C_BINDING) writeonly uniform image2D pnResultC;
 layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_D_BINDING) writeonly uniform image2D pnResultD;
 
@@ -26,10 +29,11 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnResultC)))) return;
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
+  vec4 e = texelFetch(pnQueryE, p, 0);
   PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP)
-      ? pnTraverseRegionMip(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), b.x,
-                            pnParams.bias, pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget,
-                            pnParams.depthSums, ivec2(b.yz))
+      ? pnTraverseRegionMipPlane(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
+                                 vec3(e.xy, b.x), e.zw, pnParams.bias, pnParams.leafSide, pnParams.leafMode,
+                                 pnParams.nodeBudget, pnParams.depthSums, ivec2(b.yz))
       : pnTraverseRegion(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), b.x, pnParams.bias,
                          pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
   imageStore(pnResultC, p, vec4(r.occluders, r.depthSum, r.texels, 0.0));

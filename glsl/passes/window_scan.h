@@ -15,6 +15,7 @@
 #define PN_WINDOW_SCAN_RESULT_D_BINDING 4  // image2D, rgba32f: 0, fetches, 0, 0
 #define PN_WINDOW_SCAN_B_BINDING 5         // sampler2D, RGBA32F: receiver depth, -, -, -
 #define PN_WINDOW_SCAN_PARAMS_BINDING 6
+#define PN_WINDOW_SCAN_PLANE_BINDING 9     // the traversal batch's receiver planes: not read (no plane)
 
 PN_UNIFORM_BLOCK(PnWindowScanParams, PN_WINDOW_SCAN_PARAMS_BINDING)
   float bias;

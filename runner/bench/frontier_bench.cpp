@@ -142,6 +142,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
           row.method = r.name, row.family = family_of(r.name);
           row.ms = r.measurement.total_ms;
           row.ssim = r.vs_truth.light_facing.ssim, row.mae = r.vs_truth.light_facing.mae;
+          row.bias = r.vs_truth.bias;
           row.fetches = stat(r.measurement.frame.stats, kFetchStat);
           row.tile_max = stat(r.measurement.frame.stats, kFetchTileMaxStat);
           p.rows.push_back(row);
@@ -160,13 +161,15 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
     out << "scene " << p.scene << ", " << p.size << "x" << p.size << ", light width " << width_text(p.width)
         << "; light-facing pixels vs the ray-traced truth, by time:\n"
         << std::left << std::setw(w) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(8) << "SSIM"
-        << std::setw(9) << "MAE" << std::setw(10) << "fetch/px" << std::setw(10) << "tile max" << "  frontier\n";
+        << std::setw(9) << "MAE" << std::setw(8) << "acne" << std::setw(8) << "leak" << std::setw(10) << "fetch/px"
+        << std::setw(10) << "tile max" << "  frontier\n";
     std::vector<const FrontierRow*> sorted;
     for (const FrontierRow& r : p.rows) sorted.push_back(&r);
     std::stable_sort(sorted.begin(), sorted.end(), [](const FrontierRow* a, const FrontierRow* b) { return a->ms < b->ms; });
     for (const FrontierRow* r : sorted) {
       out << std::left << std::setw(w) << r->method << std::right << std::fixed << std::setprecision(2) << std::setw(10)
-          << r->ms << std::setprecision(4) << std::setw(8) << r->ssim << std::setw(9) << r->mae << std::setprecision(1);
+          << r->ms << std::setprecision(4) << std::setw(8) << r->ssim << std::setw(9) << r->mae << std::setw(8)
+          << r->bias.acne << std::setw(8) << r->bias.leak << std::setprecision(1);
       if (r->fetches) out << std::setw(10) << *r->fetches << std::setw(10) << *r->tile_max;
       else out << std::setw(10) << "-" << std::setw(10) << "-";
       out << (r->on_frontier ? "  *" : "") << "\n";
@@ -194,6 +197,8 @@ nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::v
                           {"ms", r.ms},
                           {"ssim", r.ssim},
                           {"mae", r.mae},
+                          {"acne", r.bias.acne},
+                          {"leak", r.bias.leak},
                           {"fetches_per_pixel", r.fetches ? nlohmann::json(*r.fetches) : nlohmann::json(nullptr)},
                           {"fetch_tile_max", r.tile_max ? nlohmann::json(*r.tile_max) : nlohmann::json(nullptr)},
                           {"on_frontier", r.on_frontier}};

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "draw/canvas.h"
+#include "metrics/scores.h"
 #include "gl/context.h"
 #include "shader/source_tree.h"
 
@@ -54,6 +55,7 @@ struct FrontierRow {
   std::string method, family;  // family: the registry name ("poisson", "vogel", "fast", ...)
   double ms = 0.0;             // GPU time of the technique's frame (structures + call), median
   double ssim = 0.0, mae = 0.0;  // light-facing pixels vs the truth
+  BiasErrors bias;               // acne and leak on them (metrics/scores.h)
   std::optional<double> fetches, tile_max;  // the cost proxy, where the technique counts its fetches
   bool on_frontier = false;    // no other row is as fast and as close, and strictly better in one
 };

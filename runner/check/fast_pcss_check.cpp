@@ -13,7 +13,11 @@
 // - pnExactPcss, and pnFastPcss with every improvement off (refine 0, leaf 1,
 //   the table's exact sums), in both stages against exact PCSS brute force on
 //   the CPU (double), the pixels within rounding of a decision left out and
-//   counted.
+//   counted;
+// - the same three calls with the receiver plane from the G-buffer's
+//   neighbours (pnFastPcss / pnExactPcss's receiverPlane overloads): fragment
+//   vs compute, and the exact two against the brute force with the plane
+//   (each texel against the plane at its centre; the staged passes take none).
 #include <string>
 #include <vector>
 
@@ -59,6 +63,12 @@ std::vector<PcssSettings> one_call_settings() {
   poisson_fewer.filter_scale = 0.5f;
   std::vector<PcssSettings> out{fast_pcss(), windows, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
                                 exact_pcss(), hqepcss()};
+  // With the receiver plane from the G-buffer's neighbours (receiver_plane.glsl): the calls that take one.
+  for (PcssSettings s : {fast_pcss(), fast_pcss_all_off(), exact_pcss()}) {
+    s.name += ", receiver plane";
+    s.receiver_plane_tan = kReceiverPlaneTan;
+    out.push_back(s);
+  }
   for (PcssSettings& s : out) s.staged = false;  // exact PCSS and HQEPCSS run staged by default
   return out;
 }
@@ -85,17 +95,23 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
       const PcssFrame computed = pipeline.run(inputs, settings);
       const Image compute_work = read_float_texture(context, computed.work);
       const Image fragment = read_float_texture(context, pipeline.run_fragment(inputs, settings));
-      PcssSettings staged_settings = settings;
-      staged_settings.staged = true;
-      const Image staged = read_float_texture(context, pipeline.run(inputs, staged_settings).soft_shadow());
       const Image compute_visibility = read_float_texture(context, computed.visibility);
-      results.push_back({what + ": one call in a compute pass vs the staged passes", Tolerance::exact(),
-                         compare(staged, compute_visibility, Tolerance::exact())});
+      const bool plane = settings.receiver_plane_tan > 0;  // the staged passes take no plane
+      if (!plane) {
+        PcssSettings staged_settings = settings;
+        staged_settings.staged = true;
+        const Image staged = read_float_texture(context, pipeline.run(inputs, staged_settings).soft_shadow());
+        results.push_back({what + ": one call in a compute pass vs the staged passes", Tolerance::exact(),
+                           compare(staged, compute_visibility, Tolerance::exact())});
+      }
       results.push_back({what + ": one call in a fragment shader vs the compute pass (visibility, work, flags)",
                          Tolerance::exact(), compare(compute_work, fragment, Tolerance::exact())});
-      if (settings.name != fast_pcss_all_off().name && settings.name != exact_pcss().name) continue;
-      const PcssReference reference =
-          exact_pcss_reference(map, gbuffer, scene.light, settings.bias, settings.filter_scale, kMargin);
+      const bool brute_force_equal =  // exact PCSS, and fast with every improvement off
+          (settings.blockers == Estimator::scan && settings.occlusion == Estimator::scan) ||
+          (settings.blockers == Estimator::traversal && settings.leaf_side == 1 && settings.refine_iterations == 0);
+      if (!brute_force_equal) continue;
+      const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, settings.bias,
+                                                           settings.filter_scale, kMargin, settings.receiver_plane_tan);
       for (const auto& [stage, image] : {std::pair<const char*, Image>{"compute pass", compute_visibility},
                                          std::pair<const char*, Image>{"fragment shader", channel(fragment, 0)}}) {
         Image observed = image;

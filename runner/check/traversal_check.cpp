@@ -7,6 +7,11 @@
 // - sampled and HQEPCSS (min) leaves, leaf sides 2…16: equal to the CPU
 //   recursion with the same table and decisions (nodes, fetches and counts
 //   exactly, blocker mean to float rounding);
+// - leaf side 1 over the mip chain with a receiver plane (pnTraverseRegionMipPlane):
+//   occluders and depth sum within the interval the brute-force definition in
+//   double leaves open to float rounding (texels within a band of their own
+//   threshold), shallow to steep gradients, the plane's centre inside and far
+//   outside the region; the open texels stay under 1 %;
 // - the node budget on the fine checkerboard at the receiver depth: within
 //   budget + 3·levels + 1 nodes, equal to the recursion with that budget,
 //   its error against brute force in the case name.
@@ -154,6 +159,65 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       const auto decisions = recursion(st, scene, queries, exact_settings);
       add_comparison(results, label + st.label + " leaf 1 vs brute force:", scene, brute, observed, decisions, false);
       add_comparison(results, label + st.label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
+    }
+
+    // Leaf side 1 with a receiver plane over the mip chain against the plane's brute force: a node is
+    // decided against the plane's range over it, widened by rounding, so the counts are exact but for
+    // texels within rounding of their own threshold.
+    {
+      std::vector<TraversalQuery> plane_queries;
+      const float gradients[][2] = {{0.004f, -0.003f}, {-0.03f, 0.02f}, {0.2f, -0.1f}};
+      for (size_t i = 0; i < regions.size(); i += 2) {
+        const Rect& r = regions[i];
+        const std::vector<float> rs = receivers_for(scene.depth, r);
+        for (size_t g = 0; g < 3; ++g)
+          for (size_t k = 1; k < 4; ++k) {  // at the region's min, middle and max: the plane crosses its depths
+            if (!std::isfinite(rs[k])) continue;  // a -Inf min: every texel's threshold is -Inf
+            TraversalQuery q{r, rs[k], static_cast<int>(plane_queries.size()), 0};
+            // The plane's point inside the region, or 40 texels beyond its corner (extrapolated).
+            const float off = (k == 2) ? -40.0f : 0.37f;
+            q.receiver_u = static_cast<float>(r.x) + 0.5f * static_cast<float>(r.width) + off;
+            q.receiver_v = static_cast<float>(r.y) + 0.5f * static_cast<float>(r.height) - 0.61f;
+            q.gradient_u = gradients[g][0], q.gradient_v = gradients[g][1];
+            plane_queries.push_back(q);
+          }
+      }
+      TraversalSettings s;
+      s.bias = 0.001f;
+      const auto observed = observe(structures[1], scene, plane_queries, s);
+      BoundedElements occluders, sums;
+      double open = 0.0, texels = 0.0;
+      for (size_t k = 0; k < plane_queries.size(); ++k) {
+        const TraversalQuery& q = plane_queries[k];
+        const PlaneOccluders b = brute_force_occluders_plane(scene.depth, q.region, q.receiver_u, q.receiver_v,
+                                                             q.receiver_depth, q.gradient_u, q.gradient_v, s.bias,
+                                                             std::ldexp(1.0, -20));
+        const TraversalResult& o = observed[k];
+        const int x = static_cast<int>(k);
+        occluders.add_interval(b.certain.occluders, b.certain.occluders + b.open, static_cast<float>(o.occluders), x, 0);
+        // The GPU's float sum of its nodes' and texels' sums: within (nodes + fetches + 8) ulps of the largest depth
+        // times the texels summed.
+        const double rounding = static_cast<double>(o.nodes + o.fetches + 8) * FLT_EPSILON * scene.largest *
+                                (b.certain.occluders + b.open + 1.0);
+        sums.add_interval(b.certain.depth_sum + b.open_depth_lo - rounding,
+                          b.certain.depth_sum + b.open_depth_hi + rounding, static_cast<float>(o.depth_sum), x, 0);
+        open += b.open, texels += b.certain.texels;
+      }
+      const std::string name = label + " mip chain leaf 1 with a receiver plane vs its brute force (" +
+                               std::to_string(plane_queries.size()) + " queries, query k at (k, 0)): ";
+      for (const auto& [what, elements] : {std::pair<const char*, const BoundedElements*>{"occluders", &occluders},
+                                           {"depth sum", &sums}}) {
+        Tolerance tolerance = Tolerance::absolute(0.0);
+        const Comparison c = compare_bounded(*elements, tolerance);
+        results.push_back({name + what + " within the rounding interval", tolerance, c});
+      }
+      BoundedElements open_share;
+      open_share.add(0.0, static_cast<float>(texels > 0 ? open / texels : 0.0), 0.01, 0, 0);
+      Tolerance open_tolerance = Tolerance::absolute(0.0);
+      const Comparison open_result = compare_bounded(open_share, open_tolerance);
+      results.push_back({name + "texels left open by rounding " + format_number("%.0f", open) + " of " +
+                             format_number("%.0f", texels) + " (<= 1 %)",
+                         open_tolerance, open_result});
     }
 
     // Sampled and min leaves against the recursion with the same table and decisions.

@@ -1,5 +1,6 @@
 #include "metrics/scores.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -26,6 +27,20 @@ double mean_absolute_error(const Image& a, const Image& b, const Image* mask) {
   return count > 0 ? sum / (static_cast<double>(count) * a.channels) : 0.0;
 }
 
+BiasErrors bias_errors(const Image& reference, const Image& observed, const Image* mask) {
+  mean_absolute_error(reference, observed, mask);  // the same size checks
+  double darker = 0.0, brighter = 0.0;
+  long lit = 0, shadowed = 0;
+  for (int y = 0; y < reference.height; ++y)
+    for (int x = 0; x < reference.width; ++x) {
+      if (mask && mask->at(x, y) == 0.0f) continue;
+      const double r = reference.at(x, y), o = observed.at(x, y);
+      if (r >= kFullyLit) darker += std::max(r - o, 0.0), ++lit;
+      if (r <= 1.0 - kFullyLit) brighter += std::max(o - r, 0.0), ++shadowed;
+    }
+  return {lit > 0 ? darker / static_cast<double>(lit) : 0.0, shadowed > 0 ? brighter / static_cast<double>(shadowed) : 0.0};
+}
+
 Image light_facing_mask(const Image& surface) {
   Image mask(surface.width, surface.height);
   for (int y = 0; y < surface.height; ++y)
@@ -45,6 +60,7 @@ Scores VisibilityScorer::score(const Image& observed) const {
   s.whole = {ssim(reference_, observed), mean_absolute_error(reference_, observed)};
   s.light_facing = {ssim(reference_, observed, facing_), mean_absolute_error(reference_, observed, &facing_)};
   s.lit = {ssim(lit_reference_, lit_observed), mean_absolute_error(lit_reference_, lit_observed)};
+  s.bias = bias_errors(reference_, observed, &facing_);
   return s;
 }
 

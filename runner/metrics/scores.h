@@ -14,8 +14,19 @@ struct ImageScore {
   double mae = 0.0;
 };
 
+// A depth bias's two errors, on light-facing pixels (issue 25): acne — the mean darkening,
+// max(reference − observed, 0), where the reference is fully lit (>= kFullyLit: the receiver
+// shadows itself); leak — the mean brightening, max(observed − reference, 0), where the reference
+// is fully shadowed (<= 1 − kFullyLit: the light under a blocker's contact, peter-panning). 0 where
+// no pixel counts.
+struct BiasErrors {
+  double acne = 0.0, leak = 0.0;
+};
+inline constexpr double kFullyLit = 0.99;
+
 struct Scores {
   ImageScore whole, light_facing, lit;
+  BiasErrors bias;  // on the light-facing pixels
 };
 
 // Mean |a − b| over the texels where `mask` (same size, one channel) is non-zero, or over all
@@ -24,6 +35,9 @@ double mean_absolute_error(const Image& a, const Image& b, const Image* mask = n
 
 // 1 where the surface faces the light: `surface` is SurfaceRenderer's image (channel 3: max(N·L, 0)).
 Image light_facing_mask(const Image& surface);
+
+// The two over the texels where `mask` is non-zero (all without one); single-channel images of one size.
+BiasErrors bias_errors(const Image& reference, const Image& observed, const Image* mask = nullptr);
 
 // Scores against one reference on one surface: the light-facing mask and the
 // reference's lit luma are made once, for every image scored against it.

@@ -25,12 +25,13 @@ GlObject upload_sample_table(const Context& context, const SampleTable& table) {
 namespace {
 
 std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries) {
-  std::vector<Query> a, b;
+  std::vector<Query> a, b, e;
   for (const TraversalQuery& q : queries) {
     a.push_back({float(q.region.x), float(q.region.y), float(q.region.width), float(q.region.height)});
     b.push_back({q.receiver_depth, float(q.pixel_x), float(q.pixel_y), 0.0f});
+    e.push_back({q.receiver_u, q.receiver_v, q.gradient_u, q.gradient_v});
   }
-  return {query_image(a), query_image(b)};
+  return {query_image(a), query_image(b), query_image(e)};
 }
 
 }  // namespace
@@ -50,7 +51,7 @@ std::vector<TraversalResult> TraversalBatch::read() const {
 
 TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
     : query_(context, tree, "passes/traversal_query.comp",
-             {{PN_TRAVERSAL_QUERY_A_BINDING, PN_TRAVERSAL_QUERY_B_BINDING},
+             {{PN_TRAVERSAL_QUERY_A_BINDING, PN_TRAVERSAL_QUERY_B_BINDING, PN_TRAVERSAL_QUERY_PLANE_BINDING},
               {PN_TRAVERSAL_QUERY_RESULT_C_BINDING, PN_TRAVERSAL_QUERY_RESULT_D_BINDING}}),
       empty_array_(make_placeholder_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
       empty_2d_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
@@ -79,7 +80,7 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject
 
 WindowScanPass::WindowScanPass(const Context& context, const SourceTree& tree)
     : query_(context, tree, "passes/window_scan.comp",
-             {{PN_WINDOW_SCAN_A_BINDING, PN_WINDOW_SCAN_B_BINDING},
+             {{PN_WINDOW_SCAN_A_BINDING, PN_WINDOW_SCAN_B_BINDING, PN_WINDOW_SCAN_PLANE_BINDING},
               {PN_WINDOW_SCAN_RESULT_C_BINDING, PN_WINDOW_SCAN_RESULT_D_BINDING}}) {}
 
 void WindowScanPass::dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const {

@@ -19,6 +19,10 @@ struct TraversalQuery {
   Rect region;
   float receiver_depth = 0.0f;
   int pixel_x = 0, pixel_y = 0;
+  // The mip chain's traversal only: a receiver plane (glsl/receiver_plane.glsl) through (u, v, depth)
+  // with this light depth per texel; 0: none.
+  float receiver_u = 0.0f, receiver_v = 0.0f;
+  float gradient_u = 0.0f, gradient_v = 0.0f;
 };
 
 // The same for every query of a batch.
@@ -50,7 +54,7 @@ class TraversalBatch {
   friend class TraversalPass;
   friend class WindowScanPass;
   std::size_t count_;
-  QueryBatch batch_;  // inputs A, B; results C, D
+  QueryBatch batch_;  // inputs A, B, E; results C, D
 };
 
 class TraversalPass {

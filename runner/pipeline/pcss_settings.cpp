@@ -32,8 +32,11 @@ void PcssSettings::validate() const {
                 "blockers=vogel with occlusion=vogel, refine 0, no reuse, no blur, stages off");
   if (!std::isfinite(receiver_plane_tan) || receiver_plane_tan < 0)
     throw bad("receiver plane tangent", receiver_plane_tan, "0 (off) or a finite number > 0");
-  if (receiver_plane_tan > 0 && !vogel)
-    throw Error("method '" + name + "': receiver-plane: only the Vogel call (pnVogelPcss) takes a receiver plane so far");
+  const std::optional<OneCall> call = one_call(*this);
+  const bool plane_call = !staged && call && (*call == OneCall::fast || *call == OneCall::exact || *call == OneCall::vogel);
+  if (receiver_plane_tan > 0 && !plane_call)
+    throw Error("method '" + name + "': receiver-plane: expected a one call that takes a receiver plane (fast, exact or "
+                "vogel: pnFastPcss, pnExactPcss, pnVogelPcss) with stages off");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);

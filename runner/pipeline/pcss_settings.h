@@ -78,7 +78,7 @@ struct PcssSettings {
   // than ~1000 texels, which the staged scan's bands of rows stay under.
   bool staged = false;
   // > 0: the receiver-plane depth bias (receiver_plane.glsl) from the G-buffer's neighbours, its slope
-  // clamped to this tangent; 0: off. The Vogel call only so far.
+  // clamped to this tangent; 0: off. The one calls of fast, exact and vogel (validate).
   float receiver_plane_tan = 0.0f;
 
   // Throws Error naming the setting and its accepted range.

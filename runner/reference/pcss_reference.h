@@ -21,7 +21,12 @@ struct PcssReference {
 };
 
 // `margin`: texels for the roundings of squares, relative to dP for depths near dP - bias.
+// `receiver_plane_tan` > 0: with the receiver-plane depth bias (glsl/receiver_plane.glsl) — each
+// pixel's plane from its G-buffer neighbours (receiver_plane_reference.h, slope clamped to this
+// tangent times a texel's world width at dP), texel q occluding when d(q) < dP - bias + g · (q + ½ −
+// (u, v)); a pixel whose plane float arithmetic could decide otherwise (a step choice near a tie,
+// the steps near the parallel bound, the slope near its clamp) is ambiguous.
 PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
-                                   double filter_scale, double margin);
+                                   double filter_scale, double margin, double receiver_plane_tan = 0.0);
 
 }  // namespace pn

@@ -18,6 +18,28 @@ TraversalResult brute_force_occluders(const Image& depth, const Rect& region, fl
   return r;
 }
 
+PlaneOccluders brute_force_occluders_plane(const Image& depth, const Rect& region, double u, double v,
+                                           double receiver_depth, double gradient_u, double gradient_v, double bias,
+                                           double band) {
+  PlaneOccluders r;
+  r.certain.texels = static_cast<double>(region.width) * region.height;
+  const double t0 = receiver_depth - bias;
+  for (int y = region.y; y < region.y + region.height; ++y)
+    for (int x = region.x; x < region.x + region.width; ++x) {
+      const double d = depth.at(x, y);
+      const double t = t0 + gradient_u * (x + 0.5 - u) + gradient_v * (y + 0.5 - v);
+      const double width = band * (std::fabs(t0) + std::fabs(gradient_u) * (std::abs(x) + std::fabs(u) + 1.0) +
+                                   std::fabs(gradient_v) * (std::abs(y) + std::fabs(v) + 1.0));
+      if (std::fabs(d - t) <= width) {
+        r.open += 1.0;
+        (d < 0 ? r.open_depth_lo : r.open_depth_hi) += d;
+      } else if (d < t) {
+        r.certain.occluders += 1.0, r.certain.depth_sum += d;
+      }
+    }
+  return r;
+}
+
 namespace {
 
 // An ambiguous leaf of `texels` texels with depths in [lo, hi], lo < t <= hi, estimated without

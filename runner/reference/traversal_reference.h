@@ -19,6 +19,19 @@ namespace pn {
 // `depth` is a sanitized N×N map (sanitized_depths); `region` lies inside it.
 TraversalResult brute_force_occluders(const Image& depth, const Rect& region, float receiver_depth, float bias);
 
+// The definition with a receiver plane (glsl/receiver_plane.glsl), in double: texel q occludes when
+// d(q) < receiver_depth - bias + g · (q + ½ − (u, v)). A texel whose depth lies within
+// `band` · (|receiver_depth - bias| + |g.u| (|q.x| + |u| + 1) + |g.v| (|q.y| + |v| + 1)) of its threshold
+// — where a float evaluation may round either way — is left open: counted in `open`, its depth in
+// open_depth_lo (if negative) or open_depth_hi; `certain` holds the others.
+struct PlaneOccluders {
+  TraversalResult certain;
+  double open = 0.0, open_depth_lo = 0.0, open_depth_hi = 0.0;
+};
+PlaneOccluders brute_force_occluders_plane(const Image& depth, const Rect& region, double u, double v,
+                                           double receiver_depth, double gradient_u, double gradient_v, double bias,
+                                           double band);
+
 // `max_level` is the pyramid's last level (nodes above it are not classified).
 TraversalResult traversal_reference(const Image& depth, int max_level, const SampleTable& table, const Rect& region,
                                     const TraversalParams& params);
