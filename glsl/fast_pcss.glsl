@@ -20,7 +20,10 @@
 //   (sample_table.glsl: neighbouring pixels use different sets, so the noise
 //   is spatially decorrelated — a blur around the call can remove it, the
 //   call itself never reads a neighbour). leafDivisor > 0 grows the leaf with
-//   the region: leaf = max(leafSide, region side / leafDivisor).
+//   the region: leaf = max(leafSide, region side / leafDivisor). grid > 0 bounds
+//   the work instead: each region is counted over a fixed grid of about grid²
+//   aligned nodes (traversal.glsl, pnGridRegionMip), ambiguous ones sampled,
+//   never descended — the cost no longer grows with the penumbra.
 //   Exactness: leafSide 1 with the table's depth sums (PN_TRAVERSAL_SUM_TABLE,
 //   PN_DEPTH_SUMS_TABLE) and refineIterations 0 is exact PCSS (brute force
 //   over the same regions) up to the rounding of the blocker mean's sums.
@@ -70,6 +73,7 @@ struct PnFastPcssSettings {
   int blockerLeafMode;   // Step 4's leaves: a PN_LEAF_*, or PN_FAST_PCSS_SAME_LEAF_MODE
   int nodeBudget;        // per traversal, >= 1
   int depthSums;         // Step 4: PN_DEPTH_SUMS_MIDPOINT, or _TABLE with PN_TRAVERSAL_SUM_TABLE
+  int grid;              // 0: Steps 4 and 5 traverse; 1..PN_GRID_MAX_CELLS: bounded work (pnGridRegionMip)
 };
 
 struct PnFastPcssResult {
@@ -85,13 +89,16 @@ struct PnFastPcssResult {
 PnFastPcssSettings pnFastPcssDefaults(float bias) {
   return PnFastPcssSettings(bias, 1.0, PN_FAST_PCSS_REFINE_ITERATIONS, PN_REGION_EXACT, PN_FAST_PCSS_LEAF_SIDE, 0,
                             PN_LEAF_SAMPLED, PN_FAST_PCSS_SAME_LEAF_MODE, PN_FAST_PCSS_NODE_BUDGET,
-                            PN_DEPTH_SUMS_MIDPOINT);
+                            PN_DEPTH_SUMS_MIDPOINT, PN_FAST_PCSS_GRID);
 }
 
 // One traversal of an entry's region (Step 4 with depth sums, Step 5 without).
 PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
                                PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
+  if (s.grid > 0)
+    return pnGridRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
+                           s.grid, s.leafSide, leafMode, depthSums, pixel);
   return pnTraverseRegionMipPlane(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane,
                                   s.bias, pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size), leafMode,
                                   s.nodeBudget, depthSums, pixel);

@@ -14,6 +14,8 @@
 #define PN_FAST_PCSS_LEAF_SIDE 16
 // Nodes a traversal may visit before it stops descending: no bound.
 #define PN_FAST_PCSS_NODE_BUDGET PN_TRAVERSAL_NO_BUDGET
+// Steps 4 and 5 traverse (0), or count over a grid of this many cells a side (pnGridRegionMip).
+#define PN_FAST_PCSS_GRID 0
 // blockerLeafMode's "as leafMode".
 #define PN_FAST_PCSS_SAME_LEAF_MODE -1
 

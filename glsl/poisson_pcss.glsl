@@ -175,44 +175,56 @@ PnPoissonPcssSettings pnPoissonPcssDefaults(float bias) {
   return PnPoissonPcssSettings(bias, 1.0, PN_POISSON_BLOCKER_SAMPLES, PN_POISSON_PCF_SAMPLES);
 }
 
-PnPoisson pnPoissonBlockerSearch(sampler2D depthMap, vec4 entry, float bias, int count, vec2 rotation) {
+PnPoisson pnPoissonBlockerSearch(sampler2D depthMap, vec4 entry, float bias, vec2 gradient, int count,
+                                 vec2 rotation) {
   PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
   for (int i = 0; i < PN_POISSON_BLOCKER_DISK.length(); ++i) {
     if (i >= count) break;
-    sums = pnPoissonAddSample(depthMap, entry.yz, 0.5 * entry.w, PN_POISSON_BLOCKER_DISK[i], rotation,
-                              entry.x - bias, sums);
+    sums = pnPoissonAddSamplePlane(depthMap, entry.yz, 0.5 * entry.w, PN_POISSON_BLOCKER_DISK[i], rotation,
+                                   entry.x - bias, gradient, sums);
   }
   return sums;
 }
 
-PnPoisson pnPoissonFilter(sampler2D depthMap, vec4 entry, float bias, int count, vec2 rotation) {
+PnPoisson pnPoissonFilter(sampler2D depthMap, vec4 entry, float bias, vec2 gradient, int count, vec2 rotation) {
   PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
   for (int i = 0; i < PN_POISSON_FILTER_DISK.length(); ++i) {
     if (i >= count) break;
-    sums = pnPoissonAddSample(depthMap, entry.yz, 0.5 * entry.w, PN_POISSON_FILTER_DISK[i], rotation,
-                              entry.x - bias, sums);
+    sums = pnPoissonAddSamplePlane(depthMap, entry.yz, 0.5 * entry.w, PN_POISSON_FILTER_DISK[i], rotation,
+                                   entry.x - bias, gradient, sums);
   }
   return sums;
 }
 
-PnPoissonPcssResult pnPoissonPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver,
+PnPoissonPcssResult pnPoissonPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane,
                                           PnPoissonPcssSettings s, vec2 rotation) {
   PnPoissonPcssResult r = PnPoissonPcssResult(1.0, pnSearchStart(light, vec4(receiver, 1.0)), vec4(0.0), 0.0);
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
-  PnPoisson blockers = pnPoissonBlockerSearch(depthMap, r.searchEntry, s.bias, s.blockerSamples, rotation);
+  PnPoisson blockers = pnPoissonBlockerSearch(depthMap, r.searchEntry, s.bias, receiverPlane, s.blockerSamples,
+                                              rotation);
   bool hasBlocker = blockers.occluders > 0.0;
   r.blockerMean = pnPoissonBlockerMean(blockers);
   r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
   if (pnEntryLit(r.filterEntry)) return r;  // no blocker: lit, no PCF
-  r.visibility = 1.0 - pnPoissonOccludedFraction(pnPoissonFilter(depthMap, r.filterEntry, s.bias,
+  r.visibility = 1.0 - pnPoissonOccludedFraction(pnPoissonFilter(depthMap, r.filterEntry, s.bias, receiverPlane,
                                                                  s.filterSamples, rotation));
   return r;
 }
 
+PnPoissonPcssResult pnPoissonPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver,
+                                          PnPoissonPcssSettings s, vec2 rotation) {
+  return pnPoissonPcssEstimate(depthMap, light, receiver, vec2(0.0), s, rotation);
+}
+
+float pnPoissonPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane,
+                    PnPoissonPcssSettings settings, vec2 rotation) {
+  return pnPoissonPcssEstimate(depthMap, light, receiver, receiverPlane, settings, rotation).visibility;
+}
+
 float pnPoissonPcss(sampler2D depthMap, PnLight light, vec3 receiver, PnPoissonPcssSettings settings,
                     vec2 rotation) {
-  return pnPoissonPcssEstimate(depthMap, light, receiver, settings, rotation).visibility;
+  return pnPoissonPcssEstimate(depthMap, light, receiver, vec2(0.0), settings, rotation).visibility;
 }
 #endif
 

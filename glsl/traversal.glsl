@@ -62,6 +62,15 @@
 //       a node is decided against the plane's range over its part (pnReceiverPlaneThresholdRange,
 //       widened by rounding), a sampled leaf's sample against its own texel's threshold, a min or
 //       ramp leaf at its part's centre. Gradient 0 is pnTraverseRegionMip exactly.
+//   PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
+//       ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide, int leafMode,
+//       int depthSums, ivec2 pixel)
+//       bounded work (Fast PCSS's `grid`): the aligned nodes of the level whose side is the
+//       region's side / grid rounded up to a power of two — at most (grid + 1)² of them, 1 <= grid
+//       <= PN_GRID_MAX_CELLS (traversal.h) — each read once; an ambiguous node is a leaf, sampled
+//       with the table's group for min(its side, leafSide) (16: 16 samples, 4: 4, 1: 1) or estimated
+//       by leafMode. The work no longer grows with the region: the leaves along a shadow edge
+//       stay about 2·grid. grid >= the region's side: the nodes are texels, exact.
 //       _TABLE reads summed_area.glsl's table of the map through PN_TRAVERSAL_SUM_TABLE (below);
 //       without that define it counts as _MIDPOINT, so a shader that never asks for exact sums
 //       declares no table.
@@ -85,6 +94,8 @@
 //   nodes <= min(4/3 · side², nodeBudget + 3 · rootLevel + 1). Over the mip
 //   chain: one fetch per node touching the region (+4 per wholly occluding
 //   part with the table), nodes <= nodeBudget + 3 · (top + 1) + 8, top = ceil(log2 side).
+//   The grid: (grid + 1)² nodes at most, the sample group read once (<= 16 fetches), 4^k
+//   a sampled leaf.
 
 #ifndef PENUMBRA_TRAVERSAL_GLSL
 #define PENUMBRA_TRAVERSAL_GLSL
@@ -483,6 +494,70 @@ PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int m
       r.nodes += 1;  // outside the region: visited, nothing to read
     }
     if (pnTraversalNext(level, code, descend, rootLevel)) break;  // the virtual root's four children are done
+  }
+  return r;
+}
+
+// The same region counted with bounded work: the aligned nodes of the level
+// whose side is the region's side / grid (rounded up to a power of two), each
+// read once and decided against the test; an ambiguous one is a leaf, never
+// descended — sampled from the table's group for min(its side, leafSide), or
+// estimated by the leaf mode. At most (grid + 1)² nodes whatever the region's
+// size; with grid >= the region's side the nodes are texels: exact.
+PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
+                            ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
+                            int leafMode, int depthSums, ivec2 pixel) {
+  ivec2 start, end;
+  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, textureSize(mip, 0).y), start, end);
+  ivec2 size = end - start;
+  PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
+  if (isnan(test.threshold) || r.texels == 0.0) return r;
+  int cells = clamp(grid, 1, PN_GRID_MAX_CELLS);
+  int cell = max(1, (max(size.x, size.y) + cells - 1) / cells);
+  int level = min(findMSB(cell - 1) + 1, pnMipMaxLevel(mip));  // ceil(log2 cell)
+  int side = 1 << level;
+  ivec2 first = start >> level;
+  ivec2 count = ((end - 1) >> level) - first + 1;  // <= cells + 1 a side
+  // One sample group for every leaf (the pixel's set of the group for
+  // min(side, leafSide)): its positions read once, not once a leaf.
+  int k = pnSampleGroupLog4(min(side, max(leafSide, 1)));
+  int m = pnSampleCount(k);
+  vec2 positions[PN_SAMPLE_MAX_COUNT];
+  if (leafMode == PN_LEAF_SAMPLED) {
+    int firstColumn = pnSampleFirstColumn(k), set = pnSampleSet(pixel);
+    for (int i = 0; i < PN_SAMPLE_MAX_COUNT; ++i) positions[i] = i < m ? pnSample(sampleTable, firstColumn + i, set) : vec2(0.0);
+  }
+  for (int j = 0; j <= PN_GRID_MAX_CELLS; ++j) {
+    if (j >= count.y) break;
+    for (int i = 0; i <= PN_GRID_MAX_CELLS; ++i) {
+      if (i >= count.x) break;
+      ivec2 origin = (first + ivec2(i, j)) << level;
+      ivec2 lo = max(origin, start), hi = min(origin + side, end);
+      vec2 range;
+      if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) continue;
+      if (leafMode != PN_LEAF_SAMPLED) {
+        float t = test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
+        pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float((hi.x - lo.x) * (hi.y - lo.y)), t);
+      } else {
+        float occluding = 0.0, depthSum = 0.0;
+        for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
+          if (g >= m) break;
+          for (int i = g; i < g + 4; ++i) {  // constant trip count: unrolled
+            if (i >= m) continue;
+            ivec2 q = pnSampleTexel(positions[i], lo, hi - lo);
+            float d = pnMipFetch(mip, 0, q).x;
+            r.fetches += 1;
+            if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, q)) {
+              occluding += 1.0;
+              depthSum += d;
+            }
+          }
+        }
+        float texels = float((hi.x - lo.x) * (hi.y - lo.y));
+        r.occluders += texels * occluding / float(m);
+        r.depthSum += texels * depthSum / float(m);
+      }
+    }
   }
   return r;
 }

@@ -37,4 +37,8 @@
 #define PN_DEPTH_SUMS_TABLE 1
 #define PN_DEPTH_SUMS_MIDPOINT 2
 
+// pnGridRegionMip's loop bound: cells per side of its grid (the grid has at most
+// PN_GRID_MAX_CELLS + 1 aligned nodes a side, the region straddling them).
+#define PN_GRID_MAX_CELLS 16
+
 #endif  // PENUMBRA_TRAVERSAL_H

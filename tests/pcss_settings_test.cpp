@@ -65,10 +65,20 @@ TEST_CASE("receiver plane: on, off or a tangent for the fast, exact and Vogel ca
                     Catch::Contains("receiver plane tangent -1: expected 0 (off) or a finite number > 0"));
   with(pn::fast_pcss(), "receiver-plane", "on").validate();
   with(with(pn::exact_pcss(), "stages", "off"), "receiver-plane", "on").validate();
-  const char* refused = "receiver-plane: expected a one call that takes a receiver plane (fast, exact or vogel";
-  CHECK_THROWS_WITH(with(pn::poisson_pcss(), "receiver-plane", "on").validate(), Catch::Contains(refused));
+  const char* refused = "receiver-plane: expected a one call that takes a receiver plane (fast, exact, poisson or vogel";
+  with(pn::poisson_pcss(), "receiver-plane", "on").validate();
   CHECK_THROWS_WITH(with(pn::hqepcss(), "receiver-plane", "on").validate(), Catch::Contains(refused));
   CHECK_THROWS_WITH(with(with(pn::fast_pcss(), "stages", "on"), "receiver-plane", "on").validate(),
                     Catch::Contains(refused));
   CHECK_THROWS_WITH(with(pn::fast_paper_pcss(), "receiver-plane", "on").validate(), Catch::Contains(refused));
+}
+
+TEST_CASE("grid: 0 (off) or 1..PN_GRID_MAX_CELLS over the mip chain; refused elsewhere") {
+  CHECK(with(pn::fast_pcss(), "grid", "4").grid == 4);
+  with(pn::fast_pcss(), "grid", "4").validate();
+  with(pn::fast_pcss(), "grid", std::to_string(PN_GRID_MAX_CELLS).c_str()).validate();
+  CHECK_THROWS_WITH(with(pn::fast_pcss(), "grid", std::to_string(PN_GRID_MAX_CELLS + 1).c_str()).validate(),
+                    Catch::Contains("grid 17: expected 0 (off) or 1..16"));
+  CHECK_THROWS_WITH(with(pn::fast_pcss(), "grid", "-1").validate(), Catch::Contains("grid -1: expected"));
+  CHECK_THROWS_WITH(with(pn::fast_paper_pcss(), "grid", "4").validate(), Catch::Contains("grid: expected structure=mip"));
 }

@@ -80,7 +80,7 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_POISSON) {
     PnPoissonPcssSettings s = PnPoissonPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                     pnPcss.filterSamples);
-    PnPoissonPcssResult r = pnPoissonPcssEstimate(pnDepthMap, light, receiver.xyz, s, vec2(1.0, 0.0));
+    PnPoissonPcssResult r = pnPoissonPcssEstimate(pnDepthMap, light, receiver.xyz, plane, s, vec2(1.0, 0.0));
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
     fetches = searched + filtered;
@@ -98,7 +98,7 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
   PnFastPcssSettings s = PnFastPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.refineIterations,
                                             pnPcss.regionMode, pnPcss.leafSide, pnPcss.leafDivisor,
                                             pnPcss.leafMode, pnPcss.blockerLeafMode, pnPcss.nodeBudget,
-                                            pnPcss.depthSums);
+                                            pnPcss.depthSums, pnPcss.grid);
   PnFastPcssResult r = pnFastPcssEstimate(pnMip, pnSampleTable, light, receiver.xyz, plane, p, s);
   fetches = float(r.fetches);
   return vec4(r.visibility, float(r.blockerNodes), float(r.occlusionNodes),

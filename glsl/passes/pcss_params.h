@@ -71,8 +71,9 @@ PN_UNIFORM_BLOCK(PnPcssParams, PN_PCSS_PARAMS_BINDING)
   int blockerSamples;   // pcss_one_call, Poisson and Vogel: the blocker disk's samples
   int filterSamples;    // and the PCF disk's
   int blockerLeafMode;  // pcss_one_call, fast: Step 4's leaves (a PN_LEAF_*, or PN_FAST_PCSS_SAME_LEAF_MODE)
-  float receiverPlaneTan;  // pcss_one_call, Vogel: > 0: the receiver-plane bias from the G-buffer's neighbours,
+  float receiverPlaneTan;  // pcss_one_call: > 0: the receiver-plane bias from the G-buffer's neighbours,
                            // its slope clamped to this tangent (light depth per world unit across the map)
+  int grid;                // pcss_traverse, pcss_one_call (fast): > 0: pnGridRegionMip with this many cells a side
 PN_END_UNIFORM_BLOCK(pnPcss)
 
 // Points in the unit disk (Bridson's, runner/sampling/poisson_disk.h), count = sampleCount.

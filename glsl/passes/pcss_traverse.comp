@@ -31,7 +31,10 @@ void main() {
   int n = int(pnPcss.mapSize);
   PnRect rect = pnEntryRegion(entry, n, PN_PCSS_REGION_MODE);
   int leafSide = pnTraversalLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, rect.size);
-  PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
+  PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP && pnPcss.grid > 0)
+      ? pnGridRegionMip(pnMip, pnSampleTable, n, rect.origin, rect.size, entry.yzx, vec2(0.0), pnPcss.bias,
+                        pnPcss.grid, pnPcss.leafSide, PN_PCSS_LEAF_MODE, PN_PCSS_DEPTH_SUMS, p)
+      : (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
       ? pnTraverseRegionMip(pnMip, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
                             leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
       : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, leafSide,

@@ -30,7 +30,11 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   vec4 e = texelFetch(pnQueryE, p, 0);
-  PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP)
+  PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP && pnParams.grid > 0)
+      ? pnGridRegionMip(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
+                        pnParams.bias, pnParams.grid, pnParams.leafSide, pnParams.leafMode, pnParams.depthSums,
+                        ivec2(b.yz))
+      : (pnParams.structure == PN_STRUCTURE_MIP)
       ? pnTraverseRegionMipPlane(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
                                  vec3(e.xy, b.x), e.zw, pnParams.bias, pnParams.leafSide, pnParams.leafMode,
                                  pnParams.nodeBudget, pnParams.depthSums, ivec2(b.yz))

@@ -28,6 +28,7 @@ PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   int structure;     // PN_STRUCTURE_* (traversal.h)
   int depthSums;     // the mip chain's traversal: PN_DEPTH_SUMS_* (traversal.h)
   int mapSize;       // the mip chain's map side N
+  int grid;          // the mip chain: > 0: pnGridRegionMip with this many cells a side
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_TRAVERSAL_QUERY_H

@@ -67,8 +67,8 @@ std::vector<std::string> frontier_techniques() {
   out.push_back("poisson");  // the seeds' 36 / 64
   for (int n : {8, 16, 32, 64, 128}) out.push_back(samples_spec("vogel", n));
   out.push_back("vogel");  // 16 / 32
-  for (const char* s : {"fast", "fast:receiver-plane=1", "vogel:receiver-plane=1", "fast:leaf=4", "fast:leaf=8",
-                        "fast:leaf=32", "fast:leaf-divisor=8",
+  for (const char* s : {"fast", "fast:receiver-plane=1", "vogel:receiver-plane=1", "fast:grid=4", "fast:grid=2",
+                        "fast:leaf=4", "fast:leaf=8", "fast:leaf=32", "fast:leaf-divisor=8",
                         "fast:leaf-divisor=16", "hqepcss", "savsm", "vsm", "evsm", "pcf", "exact"})
     out.push_back(s);
   return out;

@@ -61,10 +61,14 @@ std::vector<PcssSettings> one_call_settings() {
   poisson_fewer.blocker_samples = 16;
   poisson_fewer.filter_samples = 32;
   poisson_fewer.filter_scale = 0.5f;
-  std::vector<PcssSettings> out{fast_pcss(), windows, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
+  PcssSettings grid = fast_pcss();
+  grid.name = "fast, grid 4, ramp blocker leaves";
+  grid.grid = 4;
+  grid.blocker_leaf_mode = LeafMode::ramp;
+  std::vector<PcssSettings> out{fast_pcss(), windows, grid, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
                                 exact_pcss(), hqepcss()};
   // With the receiver plane from the G-buffer's neighbours (receiver_plane.glsl): the calls that take one.
-  for (PcssSettings s : {fast_pcss(), fast_pcss_all_off(), exact_pcss()}) {
+  for (PcssSettings s : {fast_pcss(), fast_pcss_all_off(), exact_pcss(), poisson_pcss()}) {
     s.name += ", receiver plane";
     s.receiver_plane_tan = kReceiverPlaneTan;
     out.push_back(s);

@@ -12,6 +12,9 @@
 //   double leaves open to float rounding (texels within a band of their own
 //   threshold), shallow to steep gradients, the plane's centre inside and far
 //   outside the region; the open texels stay under 1 %;
+// - the grid (pnGridRegionMip) at 1, 4 and 16 cells, sampled (leaf side 16,
+//   4) and ramp leaves: equal to the CPU's grid with the same decisions and
+//   samples; at 16 cells on regions of side <= 16 (texels) equal to brute force;
 // - the node budget on the fine checkerboard at the receiver depth: within
 //   budget + 3·levels + 1 nodes, equal to the recursion with that budget,
 //   its error against brute force in the case name.
@@ -243,6 +246,37 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
                          scene, expected, observed, expected, true, s.depth_sums != DepthSums::none,
                          mode == LeafMode::ramp);
         }
+
+    // The grid (pnGridRegionMip) over the mip chain: against the CPU's grid with the same decisions and
+    // samples, and with grid >= the region's side (texels) against brute force.
+    for (int grid : {1, 4, 16})
+      for (const auto& [mode, leaf] : {std::pair{LeafMode::sampled, 16}, {LeafMode::sampled, 4}, {LeafMode::ramp, 16}}) {
+        TraversalSettings s;
+        s.grid = grid, s.leaf_side = leaf, s.leaf_mode = mode, s.bias = 0.001f;
+        s.depth_sums = grid == 4 ? DepthSums::none : grid == 16 ? DepthSums::midpoint : DepthSums::table;
+        std::vector<TraversalResult> expected;
+        for (const TraversalQuery& q : leaf_queries) {
+          const TraversalParams p{q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y};
+          expected.push_back(aligned_grid_reference(scene.depth, table, q.region, p, s.depth_sums, grid));
+        }
+        const auto observed = observe(structures[1], scene, leaf_queries, s);
+        add_comparison(results,
+                       label + " grid " + std::to_string(grid) + (mode == LeafMode::ramp ? ", ramp" : ", sampled") +
+                           " leaves of side <= " + std::to_string(leaf) + ":",
+                       scene, expected, observed, expected, true, s.depth_sums != DepthSums::none, mode == LeafMode::ramp);
+      }
+    {
+      std::vector<TraversalQuery> small;
+      std::vector<TraversalResult> brute_small;
+      for (size_t k = 0; k < queries.size(); ++k)
+        if (std::max(queries[k].region.width, queries[k].region.height) <= 16)
+          small.push_back(queries[k]), brute_small.push_back(brute[k]);
+      TraversalSettings s;
+      s.grid = 16;
+      const auto observed = observe(structures[1], scene, small, s);
+      add_comparison(results, label + " grid 16 on regions of side <= 16 (texels) vs brute force:", scene, brute_small,
+                     observed, brute_small, false);
+    }
 
     if (std::string(fixture.name) == "fine_checker") {
       // The pathological case: every node ambiguous at receiver 0.5.

@@ -10,6 +10,7 @@ namespace pn::glsl {
 #include "passes/window_scan.h"
 PN_STD140_SIZE(PnTraversalQueryParams, 32);
 PN_STD140_OFFSET(PnTraversalQueryParams, mapSize, 24);
+PN_STD140_OFFSET(PnTraversalQueryParams, grid, 28);
 PN_STD140_OFFSET(PnTraversalQueryParams, leafSide, 4);
 PN_STD140_OFFSET(PnTraversalQueryParams, leafMode, 8);
 PN_STD140_OFFSET(PnTraversalQueryParams, nodeBudget, 12);
@@ -68,7 +69,8 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject
                                            settings.node_budget,
                                            mip ? PN_STRUCTURE_MIP : PN_STRUCTURE_PYRAMID,
                                            static_cast<int>(settings.depth_sums),
-                                           mip ? structure.mip->map_size : 0};
+                                           mip ? structure.mip->map_size : 0,
+                                           settings.grid};
   query_.dispatch(batch.batch_,
                   {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? empty_array_ : structure.pyramid->texture},
                    {PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? structure.mip->texture : empty_2d_},

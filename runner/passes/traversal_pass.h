@@ -32,6 +32,7 @@ struct TraversalSettings {
   LeafMode leaf_mode = LeafMode::sampled;
   int node_budget = 1 << 26;
   DepthSums depth_sums = DepthSums::table;  // the mip chain's traversal
+  int grid = 0;  // the mip chain: > 0 counts over pnGridRegionMip's grid instead of traversing
 };
 
 // What a traversal reads: the decreased pyramid, or the aligned mip chain

@@ -18,6 +18,7 @@ namespace pn::glsl {
 #include "passes/pcss_params.h"
 PN_STD140_SIZE(PnPcssParams, 128);
 PN_STD140_OFFSET(PnPcssParams, receiverPlaneTan, 112);
+PN_STD140_OFFSET(PnPcssParams, grid, 116);
 PN_STD140_OFFSET(PnPcssParams, blockerLeafMode, 108);
 PN_STD140_SIZE(PnPoissonFilterDisk, 16 * PN_POISSON_MAX_SAMPLES);
 PN_STD140_OFFSET(PnPcssParams, lightTexelWorld, 20);
@@ -47,6 +48,7 @@ PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
   b.regionMode = static_cast<std::int32_t>(s.region);
   b.leafSide = s.leaf_side;
   b.leafDivisor = s.leaf_divisor;
+  b.grid = s.grid;
   b.leafMode = static_cast<std::int32_t>(s.leaf_mode);
   b.nodeBudget = s.node_budget;
   b.sigma1 = s.sigma1;

@@ -21,6 +21,10 @@ void PcssSettings::validate() const {
   if (leaf_side < 1 || leaf_side > 8192) throw bad("leaf side", leaf_side, "1..8192");
   if (node_budget < 1) throw bad("node budget", node_budget, ">= 1");
   if (leaf_divisor < 0 || leaf_divisor > 8192) throw bad("leaf divisor", leaf_divisor, "0 (off) or 1..8192");
+  const std::string grids = "0 (off) or 1.." + std::to_string(PN_GRID_MAX_CELLS);  // traversal.h's loop bound
+  if (grid < 0 || grid > PN_GRID_MAX_CELLS) throw bad("grid", grid, grids.c_str());
+  if (grid > 0 && structure != Structure::mip)
+    throw Error("method '" + name + "': grid: expected structure=mip (the grid reads the aligned min/max mip chain)");
   const std::string tiles = "0 (off) or 1.." + std::to_string(kReuseMaxTile);  // reuse.glsl
   if (search_tile < 0 || search_tile > kReuseMaxTile) throw bad("search reuse tile", search_tile, tiles.c_str());
   if (filter_tile < 0 || filter_tile > kReuseMaxTile) throw bad("filter reuse tile", filter_tile, tiles.c_str());
@@ -33,10 +37,10 @@ void PcssSettings::validate() const {
   if (!std::isfinite(receiver_plane_tan) || receiver_plane_tan < 0)
     throw bad("receiver plane tangent", receiver_plane_tan, "0 (off) or a finite number > 0");
   const std::optional<OneCall> call = one_call(*this);
-  const bool plane_call = !staged && call && (*call == OneCall::fast || *call == OneCall::exact || *call == OneCall::vogel);
+  const bool plane_call = !staged && call && *call != OneCall::hqepcss;
   if (receiver_plane_tan > 0 && !plane_call)
-    throw Error("method '" + name + "': receiver-plane: expected a one call that takes a receiver plane (fast, exact or "
-                "vogel: pnFastPcss, pnExactPcss, pnVogelPcss) with stages off");
+    throw Error("method '" + name + "': receiver-plane: expected a one call that takes a receiver plane (fast, exact, "
+                "poisson or vogel: pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss) with stages off");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);
@@ -137,7 +141,7 @@ PcssSettings fast_pcss_all_off() {
 }
 
 const std::vector<std::string>& pcss_setting_keys() {
-  static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf-divisor", "blocker-leaf-mode", "leaf", "leaf-mode", "budget", "reuse",
+  static const std::vector<std::string> keys{"refine", "region", "structure", "depth-sums", "leaf-divisor", "grid", "blocker-leaf-mode", "leaf", "leaf-mode", "budget", "reuse",
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
                                              "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "blur-adaptive", "bias", "c", "sigma1", "sigma2", "sigma3",
                                              "blockers", "occlusion", "blocker-samples", "filter-samples", "stages",
@@ -183,6 +187,7 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
     else throw bad("table or midpoint");
   } else if (key == "leaf") s.leaf_side = integer();
   else if (key == "leaf-divisor") s.leaf_divisor = integer();
+  else if (key == "grid") s.grid = integer();
   else if (key == "blocker-leaf-mode") s.blocker_leaf_mode = leaf_mode();
   else if (key == "leaf-mode") s.leaf_mode = leaf_mode();
   else if (key == "budget") s.node_budget = integer();

@@ -56,6 +56,9 @@ struct PcssSettings {
   Estimator occlusion = Estimator::traversal; // Step 5
   int leaf_side = 8;           // traversal leaves; 1 = exact (sampled leaves off)
   int leaf_divisor = 0;        // > 0: leaves at least the region's side / leaf_divisor (pcss_traverse.comp); 0 = off
+  // > 0: Steps 4 and 5 over the mip chain count a grid of about grid² aligned nodes instead of
+  // traversing (traversal.glsl, pnGridRegionMip): bounded work; 0 = off. 1..PN_GRID_MAX_CELLS.
+  int grid = 0;
   LeafMode leaf_mode = LeafMode::sampled;
   std::optional<LeafMode> blocker_leaf_mode;  // Step 4's leaves when set (the blocker mean), else leaf_mode
   int node_budget = kFastPcssNodeBudget;  // per pixel (traversal.glsl): 2^26, unbounded in effect

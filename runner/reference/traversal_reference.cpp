@@ -226,7 +226,56 @@ class AlignedRecursion {
   TraversalResult r_;
 };
 
+// Over the aligned nodes of one level clipped to the region (pnGridRegionMip).
+TraversalResult grid_count(const Image& depth, const SampleTable& table, const Rect& region, const TraversalParams& p,
+                           DepthSums sums, int grid) {
+  TraversalResult r;
+  r.texels = static_cast<double>(region.width) * region.height;
+  const float t = p.receiver_depth - p.bias;
+  if (std::isnan(t) || r.texels == 0) return r;
+  int padded = 2, max_level = 1;
+  while (padded < std::max(depth.width, depth.height)) padded *= 2, ++max_level;
+  const int cells = std::clamp(grid, 1, PN_GRID_MAX_CELLS);
+  const int wanted = std::max(1, (std::max(region.width, region.height) + cells - 1) / cells);
+  int level = 0;
+  while ((1 << level) < wanted) ++level;
+  level = std::min(level, max_level);
+  const int side = 1 << level;
+  for (int ny = region.y >> level; ny <= (region.y + region.height - 1) >> level; ++ny)
+    for (int nx = region.x >> level; nx <= (region.x + region.width - 1) >> level; ++nx) {
+      const int ox = nx * side, oy = ny * side;
+      const int lx = std::max(ox, region.x), ly = std::max(oy, region.y);
+      const int hx = std::min(ox + side, region.x + region.width), hy = std::min(oy + side, region.y + region.height);
+      const double part = static_cast<double>(hx - lx) * (hy - ly);
+      ++r.nodes, ++r.fetches;
+      float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+      for (int y = oy; y < std::min(oy + side, depth.height); ++y)
+        for (int x = ox; x < std::min(ox + side, depth.width); ++x) lo = std::min(lo, depth.at(x, y)), hi = std::max(hi, depth.at(x, y));
+      if (hi < t) {  // every texel occludes
+        r.occluders += part;
+        if (sums == DepthSums::none) continue;
+        if (sums == DepthSums::midpoint && lo != hi) {
+          r.depth_sum += 0.5 * (static_cast<double>(lo) + hi) * part;
+          continue;
+        }
+        for (int y = ly; y < hy; ++y)
+          for (int x = lx; x < hx; ++x) r.depth_sum += depth.at(x, y);
+        if (lo != hi) r.fetches += 4;
+        continue;
+      }
+      if (!(lo < t)) continue;
+      if (p.leaf_mode != LeafMode::sampled) estimate_leaf(p.leaf_mode, lo, hi, part, t, r);
+      else sample_rect(depth, table, t, p, lx, ly, hx - lx, hy - ly, std::min(side, std::max(p.leaf_side, 1)), r);
+    }
+  return r;
+}
+
 }  // namespace
+
+TraversalResult aligned_grid_reference(const Image& depth, const SampleTable& table, const Rect& region,
+                                       const TraversalParams& params, DepthSums sums, int grid) {
+  return grid_count(depth, table, region, params, sums, grid);
+}
 
 TraversalResult aligned_traversal_reference(const Image& depth, const SampleTable& table, const Rect& region,
                                             const TraversalParams& params, DepthSums sums) {

@@ -46,4 +46,12 @@ TraversalResult traversal_reference(const Image& depth, int max_level, const Sam
 TraversalResult aligned_traversal_reference(const Image& depth, const SampleTable& table, const Rect& region,
                                             const TraversalParams& params, DepthSums sums);
 
+// pnGridRegionMip, decided independently: the aligned nodes of level ceil(log2 ceil(side / grid))
+// (capped at the chain's last level) that touch the region, each node's min / max by scanning its
+// texels, a wholly occluding part's sum as `sums` says, an ambiguous node a leaf — the §3.2
+// samples of the group for min(node side, leaf side), or the leaf mode's estimate at the part's
+// centre. With grid >= the region's side it must equal brute force.
+TraversalResult aligned_grid_reference(const Image& depth, const SampleTable& table, const Rect& region,
+                                       const TraversalParams& params, DepthSums sums, int grid);
+
 }  // namespace pn
