@@ -17,8 +17,10 @@ const pn::ModuleCheck& fast_pcss() { return pn::find_module_check("fast_pcss"); 
 
 TEST_CASE("the one calls equal the staged passes in compute and fragment stage, and exact PCSS with everything off") {
   const auto results = pn::test::run_check(fast_pcss(), PENUMBRA_GLSL_DIR);
-  // 3 scenes × 7 settings × (compute vs staged, fragment vs compute) + 3 scenes × (all off, exact) × 2 stages vs the CPU.
-  CHECK(results.size() == 3 * 7 * 2 + 3 * 2 * 2);
+  // 3 scenes × 8 settings × (compute vs staged, fragment vs compute) + 3 scenes × 4 settings with a receiver plane ×
+  // fragment vs compute (the staged passes take no plane) + 3 scenes × (all off, exact) × (without, with the plane) ×
+  // 2 stages vs the CPU.
+  CHECK(results.size() == 3 * 8 * 2 + 3 * 4 + 3 * 2 * 2 * 2);
   pn::test::check_all_pass(results);
 }
 
@@ -33,7 +35,8 @@ TEST_CASE("negative: a copy of fast_pcss.glsl that halves the occluded fraction 
     if (named(r, ": poisson") || named(r, ": exact") || named(r, ": hqepcss")) CHECK(r.comparison.pass);
     else if (named(r, "vs the staged passes") || named(r, "brute force")) fast_failing += r.comparison.pass ? 0 : 1;
   }
-  CHECK(fast_failing == 3 * 3 + 3 * 2);  // every scene: three fast settings vs the staged passes, both stages vs the CPU
+  // Every scene: four fast settings vs the staged passes; all off, without and with the plane, in both stages vs the CPU.
+  CHECK(fast_failing == 3 * 4 + 3 * 2 * 2);
   CHECK(pn::test::failing_cases(results) == fast_failing);  // the fragment shader still equals the compute pass
 }
 
@@ -48,5 +51,5 @@ TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fai
     if (named(r, "vs the staged passes")) CHECK(r.comparison.pass);
     if (named(r, "fragment shader vs the compute pass")) fragment_failing += r.comparison.pass ? 0 : 1;
   }
-  CHECK(fragment_failing == 3 * 7);
+  CHECK(fragment_failing == 3 * 12);  // every setting, with a plane or not
 }

@@ -45,7 +45,8 @@ TEST_CASE("negative: a copy of pcss_regions.glsl with half the filter side fails
 }
 
 TEST_CASE("negative: a lit decision that lets a texel at exactly d - bias occlude fails the search decisions") {
-  const BrokenCopy copy("pcss_regions.glsl", "if (!(zmin < entry.x - bias)) return", "if (!(zmin <= entry.x - bias)) return");
+  const BrokenCopy copy("pcss_regions.glsl", "if (!(zmin < highestThreshold)) return",
+                        "if (!(zmin <= highestThreshold)) return");
   REQUIRE(copy.found());
   const auto results = run_check(regions(), copy.root());
   CHECK(failing_named(results, "lit decisions") > 0);  // receivers at the depth of the texel under them, bias 0

@@ -158,7 +158,9 @@ Target driver_target(const Context& context) { return context.is_es() ? Target::
 
 ComputeProgram compile_pass(const Context& context, const SourceTree& tree, const std::string& pass,
                             const std::vector<Define>& defines) {
-  return ComputeProgram(context, pass, standalone_source(flatten(tree, pass), driver_target(context), defines));
+  // The runner's own pass: from the root, never from the working directory.
+  return ComputeProgram(context, pass,
+                        standalone_source(flatten(tree, tree.locate_in_root(pass)), driver_target(context), defines));
 }
 
 GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& stem) {
@@ -168,8 +170,8 @@ GlObject link_raster_pass(const Context& context, const SourceTree& tree, const 
 GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& vertex,
                           const std::string& fragment, const std::vector<Define>& defines) {
   const Target target = driver_target(context);
-  const ShaderSource vertex_source = standalone_source(flatten(tree, vertex), target, defines);
-  const ShaderSource fragment_source = standalone_source(flatten(tree, fragment), target, defines);
+  const ShaderSource vertex_source = standalone_source(flatten(tree, tree.locate_in_root(vertex)), target, defines);
+  const ShaderSource fragment_source = standalone_source(flatten(tree, tree.locate_in_root(fragment)), target, defines);
   return link_program(context, fragment, {&vertex_source, &fragment_source});
 }
 

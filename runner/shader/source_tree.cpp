@@ -38,6 +38,17 @@ fs::path SourceTree::locate(const fs::path& file) const {
   return canonical;
 }
 
+fs::path SourceTree::locate_in_root(const fs::path& file) const {
+  std::error_code ec;
+  const fs::path canonical = fs::canonical(file.is_relative() ? root_ / file : file, ec);
+  if (ec) throw Error("'" + file.string() + "': no such file in the glsl root '" + root_.string() + "'");
+  if (!fs::is_regular_file(canonical))
+    throw Error("'" + file.string() + "': expected a GLSL file, found a directory or special file");
+  if (!inside_root(canonical))
+    throw Error("'" + file.string() + "': expected a file inside the glsl root '" + root_.string() + "'");
+  return canonical;
+}
+
 fs::path SourceTree::resolve_include(const fs::path& includer, const std::string& requested) const {
   if (requested.empty()) throw Error("#include \"\": expected a file name");
   if (fs::path(requested).is_absolute())

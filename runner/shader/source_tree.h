@@ -22,6 +22,11 @@ class SourceTree {
   // Throws Error when it does not exist or lies outside the root.
   std::filesystem::path locate(const std::filesystem::path& file) const;
 
+  // The same for a file the runner itself names (its passes: "passes/blur.comp"): a relative name
+  // is taken from the root only, whatever the working directory holds (a `passes/` folder in the
+  // working directory must never stand in for the root's). Throws Error like locate.
+  std::filesystem::path locate_in_root(const std::filesystem::path& file) const;
+
   // Canonical path for `#include "requested"` written in `includer`.
   // Throws Error (message without location) when the file is missing or outside the root.
   std::filesystem::path resolve_include(const std::filesystem::path& includer,
