@@ -119,3 +119,18 @@ TEST_CASE("only for loops bounded by construction stay unguarded") {
   CHECK(guarded("for (int i = 0; i > -8; --i) s += i;"));
   CHECK(guarded("while (s < 8) s += 1;"));
 }
+
+TEST_CASE("a #define that spells a loop keyword or pastes tokens is refused, naming its line (issue 26 B3)") {
+  const pn::LoopGuardSettings settings{3, 100};
+  for (const char* define : {"#define PN_REPEAT while\n", "#  define LOOP(n) for (int i = 0; i < n; ++i)\n",
+                             "#define DO do\n", "#define KEY(a, b) a##b\n", "#define R \\\n  while\n"}) {
+    pn::ShaderSource source = wrapped(std::string("float g = 1.0;\n") + define + "float f() { return g; }\n");
+    CHECK_THROWS_WITH(pn::guard_loops(source, settings),
+                      Catch::StartsWith("m.glsl:2: a #define that spells a loop keyword (for, while, do) or pastes tokens"));
+  }
+  // A loop keyword in a #define's comment, or a name that merely contains one, is fine.
+  pn::ShaderSource fine = wrapped(
+      "#define PN_BINDING 1  // for the table, while it lasts\n#define FOREVER_WHILE_DONE 2 /* do */\n"
+      "float f() { return float(PN_BINDING + FOREVER_WHILE_DONE); }\n");
+  CHECK(pn::guard_loops(fine, settings).empty());
+}

@@ -36,6 +36,13 @@ void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const size_t first_line_end = source.text.find('\n') + 1;
       text = source.text.substr(0, first_line_end) + header + source.text.substr(first_line_end);
     }
+    if (!opt->output.empty()) {
+      // Writing over a file the bundle was made from would destroy the module (issue 26 B12).
+      std::error_code ec;
+      for (const std::string& file : flat.files)
+        if (std::filesystem::equivalent(opt->output, tree.root() / file, ec))
+          throw Error("output '" + opt->output + "': it is " + file + ", one of the bundle's inputs: expected another file");
+    }
     if (opt->output.empty()) std::cout << text;
     else write_file_atomically(opt->output, text);
     exit_code = 0;

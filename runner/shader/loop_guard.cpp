@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/error.h"
+
 namespace pn {
 namespace {
 
@@ -229,6 +231,58 @@ std::string guard_prelude(const LoopGuardSettings& settings, size_t loops) {
          "}\n";
 }
 
+// The guard reads the source before the preprocessor: a loop that a macro spells
+// (`#define REPEAT while`, or a keyword pasted together with ##) would run unguarded
+// — a driver may then drop it and the check pass (issue 26 B3). Such a #define is
+// refused, naming its line: the loop has to be written out where it runs.
+void refuse_macro_loops(const ShaderSource& source, size_t start) {
+  const std::string& s = source.text;
+  for (size_t line_start = start; line_start < s.size();) {
+    size_t line_end = s.find('\n', line_start);
+    // A directive continues over lines that end in a backslash.
+    while (line_end != std::string::npos && line_end > line_start && s[line_end - 1] == '\\') line_end = s.find('\n', line_end + 1);
+    if (line_end == std::string::npos) line_end = s.size();
+    size_t i = line_start;
+    while (i < line_end && (s[i] == ' ' || s[i] == '\t')) ++i;
+    if (i < line_end && s[i] == '#') {
+      ++i;
+      while (i < line_end && (s[i] == ' ' || s[i] == '\t')) ++i;
+      if (s.compare(i, 6, "define") == 0) {
+        // The directive without its comments, as tokens.
+        std::string text;
+        for (size_t k = i + 6; k < line_end;) {
+          if (const size_t after = skip_comment(s, k); after != k) {
+            text += ' ';
+            k = after;
+          } else {
+            text += s[k++];
+          }
+        }
+        bool refused = text.find("##") != std::string::npos;
+        for (size_t k = 0; k < text.size() && !refused;) {
+          if (!identifier_char(text[k])) {
+            ++k;
+            continue;
+          }
+          size_t e = k;
+          while (e < text.size() && identifier_char(text[e])) ++e;
+          const std::string word = text.substr(k, e - k);
+          refused = word == "for" || word == "while" || word == "do";
+          k = e;
+        }
+        if (refused) {
+          const int line = static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(line_start), '\n')) + 1;
+          const auto [file, file_line] = source.origin_of_line(line);
+          throw Error(file + ":" + std::to_string(file_line) +
+                      ": a #define that spells a loop keyword (for, while, do) or pastes tokens (##): the loop guard "
+                      "cannot bound a loop a macro writes; expected the loop written out");
+        }
+      }
+    }
+    line_start = line_end + 1;
+  }
+}
+
 }  // namespace
 
 std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettings& settings) {
@@ -236,6 +290,7 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
   // The prelude goes before the first #line marker: lines up to there map to "<wrapper>".
   size_t start = s.find("\n#line ");
   start = start == std::string::npos ? s.size() : start + 1;
+  refuse_macro_loops(source, start);
 
   std::vector<Insertion> edits;
   std::vector<GuardedLoop> loops;

@@ -8,7 +8,9 @@
 # - `check blur` on a copy whose blur weights run a doubly nested endless loop fails
 #   within its --gpu-timeout (here 20 s; the loop guard ends it long before),
 #   naming the pass, the file and the line of the loop (llvmpipe used to delete
-#   or cap the loop, and the check passed).
+#   or cap the loop, and the check passed);
+# - the same with the loop spelled through a macro (`#define PN_REPEAT while`):
+#   refused, naming the #define's line (it used to pass).
 # Exit 77 (skipped) without a GL context.
 set -u
 penumbra=$1 glsl=$2 work=$3
@@ -49,4 +51,17 @@ printf '%s\n' "$out"
 [ "$seconds" -le 30 ] || fail "endless loop: took $seconds s"
 printf '%s\n' "$out" | grep -q "^blur: FAIL passes/blur.comp: dispatch: the loop at blur.glsl:$line ran past 65000 iterations" ||
   fail "endless loop: no message naming the pass and blur.glsl:$line"
+
+# Issue 26 B3: an endless loop spelled through a macro used to pass (the guard never saw a loop
+# keyword and the driver dropped the loop); the #define is refused, naming its line.
+cp "$glsl/blur.glsl" "$work/copy/blur.glsl" || fail "could not restore blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1#define PN_REPEAT while\n  float x = 0.0;\n  PN_REPEAT (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
+line=$(grep -n '^#define PN_REPEAT while' "$work/copy/blur.glsl" | cut -d: -f1)
+[ -n "$line" ] || fail "could not put the macro-spelled loop into blur.glsl"
+out=$(timeout 120 "$penumbra" check blur --glsl-root "$work/copy" --gpu-timeout 20 2>&1)
+status=$?
+printf '%s\n' "$out"
+[ "$status" -eq 1 ] || fail "macro loop: expected exit 1 (a false PASS before), got $status"
+printf '%s\n' "$out" | grep -q "^blur: FAIL blur.glsl:$line: a #define that spells a loop keyword" ||
+  fail "macro loop: no message naming blur.glsl:$line"
 echo "broken_copy_commands: ok"
