@@ -56,4 +56,8 @@ TEST_CASE("the GLSL constant's name must be an unreserved GLSL identifier (negat
   CHECK(pn::poisson_disk_glsl(disk, "kDisk_4", 1u).find("const vec2 kDisk_4[4]") != std::string::npos);
   for (const char* bad : {"", "bad name;}", "4disk", "gl_Disk", "my__disk", "disk[2]"})
     CHECK_THROWS_WITH(pn::poisson_disk_glsl(disk, bad, 1u), Catch::Contains("expected a GLSL identifier"));
+  for (const char* word : {"while", "int", "struct", "precise", "this", "goto", "vec3", "dmat2x4", "usampler2D", "image2D"})
+    CHECK_THROWS_WITH(pn::poisson_disk_glsl(disk, word, 1u), Catch::Contains("a GLSL keyword or reserved word"));
+  for (const char* fine : {"whiley", "vector", "matrix", "sampler", "images", "doMore"})
+    CHECK_NOTHROW(pn::poisson_disk_glsl(disk, fine, 1u));
 }
