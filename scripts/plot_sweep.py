@@ -44,7 +44,10 @@ def load(path):
             fail(f"'{path}': results.rows[{i}]: malformed ({type(e).__name__}: {e})")
     if not rows:
         fail(f"'{path}': no technique ran")
-    methods = [str(m) for m in results.get("methods", [])] or sorted({r[3] for r in rows})
+    listed = results.get("methods", [])
+    if not isinstance(listed, list) or not all(isinstance(m, str) for m in listed):
+        fail(f"'{path}': results.methods: expected a list of method names, found {json.dumps(listed)[:40]}")
+    methods = listed or sorted({r[3] for r in rows})
     return doc, rows, methods
 
 
