@@ -107,7 +107,13 @@ void scale_light_width(Scene& scene, double factor, const char* what) {
     light_by_sun(scene, scene.sun->direction, scene.sun->angular_diameter_radians * factor);
     return;
   }
+  const double base = scene.light.width;
   scene.light.width *= factor;
+  if (!(scene.light.width <= kMaxLightWidth))
+    throw Error(std::string(what) + " " + format_number("%g", factor) + ": the light would be " +
+                format_number("%g", scene.light.width) + " wide, past the " + format_number("%g", kMaxLightWidth) +
+                " the ray-traced truth's float rays represent: expected a factor <= " +
+                format_number("%g", kMaxLightWidth / base));
   scene.light.validate();
 }
 

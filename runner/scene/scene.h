@@ -114,6 +114,12 @@ void light_by_sun(Scene& scene, const glm::vec3& direction, double angular_diame
 void validate_light_width_factor(double factor, const char* what);
 void scale_light_width(Scene& scene, double factor, const char* what);
 
+// The widest area light the runner represents: the ray-traced truth shoots float rays (Embree)
+// to points up to half the width from the light's centre, and Embree refuses a ray with a
+// coordinate above 1.8e18 (FLT_LARGE; it aborts on one); 1e15 leaves room for where the light
+// and the scene are (issue 26 B1). scale_light_width refuses a factor that passes it.
+inline constexpr double kMaxLightWidth = 1e15;
+
 // What a screen pixel sees, in the shadow map's terms (Step 2): the shadow-map
 // position of the surface point through the pixel's centre, in texels
 // (continuous: texel i spans [i, i + 1)), and its linear light depth.
