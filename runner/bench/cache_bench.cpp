@@ -44,6 +44,7 @@ void validate_cache_bench_setup(const CacheBenchSetup& setup) {
   if (setup.frames < 1 || setup.frames > 1000) throw Error("frames " + std::to_string(setup.frames) + ": expected 1..1000");
   if (setup.warmup < 1 || setup.warmup > 100) throw Error("warm-up frames " + std::to_string(setup.warmup) + ": expected 1..100");
   if (setup.screen < 16 || setup.screen > 4096) throw Error("screen " + std::to_string(setup.screen) + ": expected 16..4096");
+  validate_animated_scene_model(setup.model);  // last: it reads the file
 }
 
 CacheBench bench_cache(const Context& context, const SourceTree& tree, const CacheBenchSetup& setup) {

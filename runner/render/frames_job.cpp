@@ -42,6 +42,7 @@ void validate_frames_setup(const FramesSetup& s) {
   if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
   if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
   if (s.method) s.method->validate();
+  validate_animated_scene_model(s.model);  // last: it reads the file
 }
 
 FramesResult run_frames(const Context& context, const SourceTree& tree, const FramesSetup& setup) {

@@ -23,6 +23,10 @@ std::filesystem::path animated_scene_model(const std::filesystem::path& chosen) 
   return std::filesystem::exists(fixtures::kAnimatedModel) ? fixtures::kAnimatedModel : "";
 }
 
+void validate_animated_scene_model(const std::filesystem::path& chosen) {
+  if (!chosen.empty()) load_model_triangles(chosen);
+}
+
 void validate_moving_share(double k, const char* what) {
   if (!(k >= 0.0 && k <= 1.0)) throw Error(std::string(what) + " " + std::to_string(k) + ": expected 0 <= K <= 1");
 }

@@ -26,6 +26,10 @@ const fixtures::AnimatedSceneFixture& find_animated_scene_fixture(const std::str
 // and that file exists, else none (empty: boxes only).
 std::filesystem::path animated_scene_model(const std::filesystem::path& chosen);
 
+// Throws Error unless the model `chosen` names (if any) loads: what a command calls before it makes
+// a GL context or an output directory, so a bad file is refused first (issue 26 B13).
+void validate_animated_scene_model(const std::filesystem::path& chosen);
+
 // Throws Error unless 0 <= k <= 1 (named `what`).
 void validate_moving_share(double k, const char* what);
 
