@@ -33,8 +33,11 @@ TEST_CASE("sweep scene: factors that are not finite and > 0 are refused (negativ
   CHECK_THROWS_WITH(pn::sweep_scene(fixture, 64, -2.0), "light width factor -2: expected a finite number > 0");
   CHECK_THROWS_WITH(pn::sweep_scene(fixture, 64, kNaN), "light width factor nan: expected a finite number > 0");
   CHECK_THROWS_WITH(pn::sweep_scene(fixture, 64, kInf), "light width factor inf: expected a finite number > 0");
-  // Finite factor, but a width the light model refuses.
-  CHECK_THROWS_WITH(pn::sweep_scene(fixture, 64, 1e308), Catch::StartsWith("light width inf"));
+  // Finite factors, but a light wider than the ray-traced truth represents (issue 26 B1).
+  CHECK_THROWS_WITH(pn::sweep_scene(fixture, 64, 1e308),
+                    Catch::StartsWith("light width factor 1e+308: the light would be inf wide, past the 1e+15"));
+  CHECK_THROWS_WITH(pn::sweep_scene(fixture, 64, 1e19), Catch::Contains("expected a factor <= 3.33333e+14"));
+  CHECK_NOTHROW(pn::sweep_scene(fixture, 64, 3e14));
 }
 
 TEST_CASE("time growth: last counted time over first, from the first factor with a time to the last") {

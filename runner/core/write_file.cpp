@@ -1,6 +1,13 @@
 #include "core/write_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <random>
 
 #include "core/error.h"
 
@@ -16,6 +23,28 @@ void write_in_place(const fs::path& path, const std::string& text) {
   if (!file) throw Error("output '" + path.string() + "': cannot be written");
   file << text;
   if (!file.flush()) throw Error("output '" + path.string() + "': write failed");
+}
+
+// A temporary file of its own in the target's directory (issue 26 B7, B10): a short name
+// no other writer uses (two processes writing one output each rename their own), made with
+// O_EXCL, mode 0666 less the umask like any output; the name never lengthens the target's.
+struct Temporary {
+  fs::path path;
+  int fd = -1;
+};
+Temporary create_temporary(const fs::path& target, const fs::path& requested) {
+  const fs::path directory = fs::absolute(target).parent_path();
+  std::random_device entropy;
+  for (int attempt = 0; attempt < 64; ++attempt) {
+    char name[32];
+    std::snprintf(name, sizeof name, ".pn-%08x%08x.tmp", entropy(), entropy());
+    const fs::path candidate = directory / name;
+    const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) return {candidate, fd};
+    if (errno != EEXIST)
+      throw Error("output '" + requested.string() + "': cannot be written (" + std::strerror(errno) + ")");
+  }
+  throw Error("output '" + requested.string() + "': cannot be written (no free temporary name)");
 }
 
 }  // namespace
@@ -59,21 +88,27 @@ void write_file_atomically(const fs::path& requested, const std::string& text) {
   const fs::file_status status = fs::status(path, ec);
   if (fs::exists(status) && !fs::is_regular_file(status)) return write_in_place(path, text);
 
-  const fs::path temporary = path.string() + ".partial";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw Error("output '" + requested.string() + "': cannot be written");
-    file << text;
-    if (!file.flush()) {
-      file.close();
-      fs::remove(temporary, ec);
-      throw Error("output '" + requested.string() + "': write failed");
+  const Temporary temporary = create_temporary(path, requested);
+  for (size_t done = 0; done < text.size();) {
+    const ssize_t n = ::write(temporary.fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string reason = std::strerror(n < 0 ? errno : EIO);
+      ::close(temporary.fd);
+      fs::remove(temporary.path, ec);
+      throw Error("output '" + requested.string() + "': write failed (" + reason + ")");
     }
+    done += static_cast<size_t>(n);
   }
-  fs::rename(temporary, path, ec);
+  if (::close(temporary.fd) != 0) {
+    const std::string reason = std::strerror(errno);
+    fs::remove(temporary.path, ec);
+    throw Error("output '" + requested.string() + "': write failed (" + reason + ")");
+  }
+  fs::rename(temporary.path, path, ec);
   if (ec) {
-    fs::remove(temporary, ec);
-    throw Error("output '" + requested.string() + "': cannot be replaced");
+    fs::remove(temporary.path);
+    throw Error("output '" + requested.string() + "': cannot be replaced (" + ec.message() + ")");
   }
 }
 

@@ -15,8 +15,9 @@ void validate_output_path(const std::filesystem::path& path);
 // work has succeeded.
 void validate_output_directory(const std::filesystem::path& directory);
 
-// Writes `text` to `path` through a temporary file that is renamed over it,
-// so a failure leaves no partial file. A symbolic link stays a link (the file
+// Writes `text` to `path` through a temporary file of its own in the same
+// directory (`.pn-<random>.tmp`, O_EXCL) that is renamed over it, so a failure
+// leaves no partial file and concurrent writers never share a temporary. A symbolic link stays a link (the file
 // it points to is replaced); an existing file that is not a regular one (a
 // device such as /dev/null, a FIFO) is written in place, never replaced.
 // Throws Error naming the path (validate_output_path's errors, a failed write).

@@ -22,7 +22,7 @@ done
 if "$penumbra" bundle --glsl-root "$data/cycle" a.glsl -o "$out/cycle.comp" 2>/dev/null; then
   echo "a bundle with an include cycle succeeded"; status=1
 fi
-if [ -e "$out/cycle.comp" ] || [ -e "$out/cycle.comp.partial" ]; then
+if [ -e "$out/cycle.comp" ] || ls -a "$out" | grep -q '^\.pn-.*\.tmp$'; then
   echo "a failed bundle left a file behind"; status=1
 fi
 exit $status
