@@ -97,14 +97,13 @@ float pnReceiverPlaneThreshold(float threshold, vec2 gradient, vec2 centre, ivec
 
 vec2 pnReceiverPlaneThresholdRange(float threshold, vec2 gradient, vec2 centre, ivec2 lo, ivec2 hi) {
   if (all(equal(gradient, vec2(0.0)))) return vec2(threshold);
-  vec2 offset = 0.5 * vec2(lo + hi) - centre;  // the texel centres' mean, from the receiver
-  float mid = threshold + dot(gradient, offset);
-  float extent = 0.5 * dot(abs(gradient), max(vec2(hi - lo) - 1.0, vec2(0.0)));
+  vec2 range = pnReceiverPlaneRange(vec3(centre, threshold), gradient, lo, hi - lo);
   // Each texel's threshold rounds q + 1/2 - centre (|q| + |centre| large), the products and the sum;
-  // so do mid and extent: 2^-18 of the magnitudes involved bounds both (a few float ulps each).
+  // so does the range: 2^-18 of the magnitudes involved bounds both (a few float ulps each).
   vec2 magnitude = abs(vec2(lo)) + abs(vec2(hi)) + 2.0 * abs(centre);
+  float mid = 0.5 * (range.x + range.y);
   float slack = exp2(-18.0) * (abs(threshold) + abs(mid) + dot(abs(gradient), magnitude));
-  return vec2(mid - extent - slack, mid + extent + slack);
+  return range + vec2(-slack, slack);
 }
 
 #endif  // PENUMBRA_RECEIVER_PLANE_GLSL

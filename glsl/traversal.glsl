@@ -201,18 +201,25 @@ void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2
   r.depthSum += texels * depthSum / float(m);
 }
 
-// Sample i < m of a sampled leaf over the mip chain's level 0.
-void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size,
-                          PnTraversalTest test) {
-  if (i >= m) return;
-  ivec2 p = pnSampleTexel(pnSample(sampleTable, first + i, set), lo, size);
+// One sample of a leaf [lo, lo + size) over the mip chain's level 0, at a
+// table position in [0, 1)².
+void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
+                         vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
+  ivec2 p = pnSampleTexel(position, lo, size);
   float d = pnMipFetch(mip, 0, p).x;
   r.fetches += 1;
   if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
     occluding += 1.0;
     depthSum += d;
   }
+}
+
+// Sample i < m of a sampled leaf, its position from the table.
+void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
+                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size,
+                          PnTraversalTest test) {
+  if (i >= m) return;
+  pnTraversalSampleAt(occluding, depthSum, r, mip, pnSample(sampleTable, first + i, set), lo, size, test);
 }
 
 // The same over the mip chain's level 0.
@@ -383,6 +390,12 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2
   }
 }
 
+// The test's threshold at the centre of the part [lo, hi): what a min or ramp
+// leaf, which has no texel of its own, is estimated against.
+float pnTraversalTestAtCentre(PnTraversalTest test, ivec2 lo, ivec2 hi) {
+  return test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
+}
+
 // Reads an aligned node of the chain and counts its clipped part [lo, hi)
 // when its (min, max) decide it; returns true when it is ambiguous, with its
 // (min, max) in `nodeRange`.
@@ -412,8 +425,7 @@ void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, sampler2D samp
   if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
     ivec2 size = hi - lo;
-    float t = test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
-    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), t);
+    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), pnTraversalTestAtCentre(test, lo, hi));
   } else {
     pnTraversalSampleLeafMip(r, mip, sampleTable, lo, hi - lo, 1 << level, test, pixel);
   }
@@ -536,21 +548,14 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
       vec2 range;
       if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) continue;
       if (leafMode != PN_LEAF_SAMPLED) {
-        float t = test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
-        pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float((hi.x - lo.x) * (hi.y - lo.y)), t);
+        pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float((hi.x - lo.x) * (hi.y - lo.y)),
+                                pnTraversalTestAtCentre(test, lo, hi));
       } else {
         float occluding = 0.0, depthSum = 0.0;
         for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
           if (g >= m) break;
           for (int i = g; i < g + 4; ++i) {  // constant trip count: unrolled
-            if (i >= m) continue;
-            ivec2 q = pnSampleTexel(positions[i], lo, hi - lo);
-            float d = pnMipFetch(mip, 0, q).x;
-            r.fetches += 1;
-            if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, q)) {
-              occluding += 1.0;
-              depthSum += d;
-            }
+            if (i < m) pnTraversalSampleAt(occluding, depthSum, r, mip, positions[i], lo, hi - lo, test);
           }
         }
         float texels = float((hi.x - lo.x) * (hi.y - lo.y));

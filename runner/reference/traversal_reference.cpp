@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace pn {
 
@@ -138,6 +139,30 @@ class Recursion {
   TraversalResult r_;
 };
 
+// The (min, max) depth of the aligned node of side `side` at (ox, oy), over its texels in the map.
+std::pair<float, float> node_range(const Image& depth, int ox, int oy, int side) {
+  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  for (int y = oy; y < std::min(oy + side, depth.height); ++y)
+    for (int x = ox; x < std::min(ox + side, depth.width); ++x) lo = std::min(lo, depth.at(x, y)), hi = std::max(hi, depth.at(x, y));
+  return {lo, hi};
+}
+
+// A wholly occluding node's clipped part [lx, hx) × [ly, hy): its texels, and its depth sum as
+// `sums` says (scanned, with the table's four fetches when lo != hi; the midpoint; none).
+void add_occluding_part(const Image& depth, int lx, int ly, int hx, int hy, float lo, float hi, DepthSums sums,
+                        TraversalResult& r) {
+  const double texels = static_cast<double>(hx - lx) * (hy - ly);
+  r.occluders += texels;
+  if (sums == DepthSums::none) return;
+  if (sums == DepthSums::midpoint && lo != hi) {
+    r.depth_sum += 0.5 * (static_cast<double>(lo) + hi) * texels;
+    return;
+  }
+  for (int y = ly; y < hy; ++y)
+    for (int x = lx; x < hx; ++x) r.depth_sum += depth.at(x, y);
+  if (lo != hi) r.fetches += 4;  // the table's four corners
+}
+
 // Over aligned nodes clipped to the region (minmax_mip.glsl's chain).
 class AlignedRecursion {
  public:
@@ -177,21 +202,9 @@ class AlignedRecursion {
     const bool spent = r_.nodes + 1 >= std::clamp(p_.node_budget, 1, 1 << 26);
     ++r_.nodes;
     ++r_.fetches;
-    // The node's min / max over its texels in the map.
-    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (int y = oy; y < std::min(oy + side, depth_.height); ++y)
-      for (int x = ox; x < std::min(ox + side, depth_.width); ++x)
-        lo = std::min(lo, depth_.at(x, y)), hi = std::max(hi, depth_.at(x, y));
+    const auto [lo, hi] = node_range(depth_, ox, oy, side);
     if (hi < t_) {  // every texel occludes: the part's count and depth sum
-      r_.occluders += part.texels();
-      if (sums_ == DepthSums::none) return;
-      if (sums_ == DepthSums::midpoint && lo != hi) {
-        r_.depth_sum += 0.5 * (static_cast<double>(lo) + hi) * part.texels();
-        return;
-      }
-      for (int y = part.ly; y < part.hy; ++y)
-        for (int x = part.lx; x < part.hx; ++x) r_.depth_sum += depth_.at(x, y);
-      if (lo != hi) r_.fetches += 4;  // the table's four corners
+      add_occluding_part(depth_, part.lx, part.ly, part.hx, part.hy, lo, hi, sums_, r_);
       return;
     }
     if (!(lo < t_)) return;  // none does
@@ -246,24 +259,14 @@ TraversalResult grid_count(const Image& depth, const SampleTable& table, const R
       const int ox = nx * side, oy = ny * side;
       const int lx = std::max(ox, region.x), ly = std::max(oy, region.y);
       const int hx = std::min(ox + side, region.x + region.width), hy = std::min(oy + side, region.y + region.height);
-      const double part = static_cast<double>(hx - lx) * (hy - ly);
       ++r.nodes, ++r.fetches;
-      float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-      for (int y = oy; y < std::min(oy + side, depth.height); ++y)
-        for (int x = ox; x < std::min(ox + side, depth.width); ++x) lo = std::min(lo, depth.at(x, y)), hi = std::max(hi, depth.at(x, y));
+      const auto [lo, hi] = node_range(depth, ox, oy, side);
       if (hi < t) {  // every texel occludes
-        r.occluders += part;
-        if (sums == DepthSums::none) continue;
-        if (sums == DepthSums::midpoint && lo != hi) {
-          r.depth_sum += 0.5 * (static_cast<double>(lo) + hi) * part;
-          continue;
-        }
-        for (int y = ly; y < hy; ++y)
-          for (int x = lx; x < hx; ++x) r.depth_sum += depth.at(x, y);
-        if (lo != hi) r.fetches += 4;
+        add_occluding_part(depth, lx, ly, hx, hy, lo, hi, sums, r);
         continue;
       }
       if (!(lo < t)) continue;
+      const double part = static_cast<double>(hx - lx) * (hy - ly);
       if (p.leaf_mode != LeafMode::sampled) estimate_leaf(p.leaf_mode, lo, hi, part, t, r);
       else sample_rect(depth, table, t, p, lx, ly, hx - lx, hy - ly, std::min(side, std::max(p.leaf_side, 1)), r);
     }

@@ -10,6 +10,20 @@ namespace {
 
 bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
+// The index just past the identifier that starts at `i` (`i` when none does).
+size_t identifier_end(const std::string& s, size_t i) {
+  while (i < s.size() && identifier_char(s[i])) ++i;
+  return i;
+}
+
+bool loop_keyword(const std::string& word) { return word == "for" || word == "while" || word == "do"; }
+
+// The module file and line of position `at` in the flattened source (ShaderSource::origin_of_line).
+std::pair<std::string, int> origin_of(const ShaderSource& source, size_t at) {
+  const std::string& s = source.text;
+  return source.origin_of_line(static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + 1);
+}
+
 // The index just past the comment starting at `i`, or `i` when none starts there.
 size_t skip_comment(const std::string& s, size_t i) {
   if (s.compare(i, 2, "//") == 0) {
@@ -196,10 +210,8 @@ bool bounded_by_construction(const std::string& s, size_t open, const Bracketed&
   if (s[first] == '{') {
     end = match_bracket(s, first).close;
   } else {
-    size_t word_end = first;
-    while (word_end < s.size() && identifier_char(s[word_end])) ++word_end;
-    const std::string word = s.substr(first, word_end - first);
-    if (word == "for" || word == "while" || word == "do" || word == "if" || word == "switch") return false;
+    const std::string word = s.substr(first, identifier_end(s, first) - first);
+    if (loop_keyword(word) || word == "if" || word == "switch") return false;
     end = s.find(';', first);
   }
   if (end == std::string::npos) return false;
@@ -264,15 +276,12 @@ void refuse_macro_loops(const ShaderSource& source, size_t start) {
             ++k;
             continue;
           }
-          size_t e = k;
-          while (e < text.size() && identifier_char(text[e])) ++e;
-          const std::string word = text.substr(k, e - k);
-          refused = word == "for" || word == "while" || word == "do";
+          const size_t e = identifier_end(text, k);
+          refused = loop_keyword(text.substr(k, e - k));
           k = e;
         }
         if (refused) {
-          const int line = static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(line_start), '\n')) + 1;
-          const auto [file, file_line] = source.origin_of_line(line);
+          const auto [file, file_line] = origin_of(source, line_start);
           throw Error(file + ":" + std::to_string(file_line) +
                       ": a #define that spells a loop keyword (for, while, do) or pastes tokens (##): the loop guard "
                       "cannot bound a loop a macro writes; expected the loop written out");
@@ -304,8 +313,7 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
       ++i;
       continue;
     }
-    size_t end = i;
-    while (end < s.size() && identifier_char(s[end])) ++end;
+    const size_t end = identifier_end(s, i);
     const std::string word = s.substr(i, end - i);
     const size_t keyword = i;
     i = end;
@@ -326,8 +334,7 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
       edits.push_back({from, " " + guard_call(id) + (empty ? "" : " && (")});
       if (!empty) edits.push_back({to, ")"});
     }
-    const int line = static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(keyword), '\n')) + 1;
-    const auto [file, file_line] = source.origin_of_line(line);
+    const auto [file, file_line] = origin_of(source, keyword);
     loops.push_back({file, file_line});
   }
   // Back to front, so that each insertion leaves the earlier positions valid.
