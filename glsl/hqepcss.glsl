@@ -17,6 +17,12 @@
 // use:
 //   float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 receiver,
 //                   PnHqepcssSettings settings)
+//   float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 receiver,
+//                   vec2 receiverPlane, PnHqepcssSettings settings)
+//         with a receiver-plane depth bias (receiver_plane.glsl: the receiver's light depth per
+//         texel, e.g. pnReceiverPlaneGradient of its derivatives): every test — the search's lit
+//         decision, each node, each PCF texel — against the plane at that texel; vec2(0) is the
+//         call above exactly
 //   PnHqepcssSettings pnHqepcssDefaults(float bias)    refine 8, window regions, leaf 8
 //         receiver = (u, v, d) as pnLightProject gives; pyramid: depth_pyramid.glsl's decreased
 //         pyramid of the map; depthMap: the map (linear light depth), for the PCF
@@ -49,21 +55,28 @@ PnHqepcssSettings pnHqepcssDefaults(float bias) {
                            PN_TRAVERSAL_NO_BUDGET);
 }
 
-float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 receiver, PnHqepcssSettings s) {
+float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane,
+                PnHqepcssSettings s) {
   int n = int(light.mapSize);
-  vec4 search = pnSearchEntry(pyramid, light, vec4(receiver, 1.0), s.bias, s.refineIterations);
+  vec4 search = pnSearchEntryPlane(pyramid, light, vec4(receiver, 1.0), receiverPlane, s.bias, s.refineIterations);
   if (pnEntryLit(search)) return 1.0;
   PnRect region = pnEntryRegion(search, n, s.regionMode);
   // Min leaves take no samples: the sample table is never read (the map stands in for it).
-  PnTraversal blockers = pnTraverseRegion(pyramid, depthMap, region.origin, region.size, search.x, s.bias,
-                                          pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size),
-                                          PN_LEAF_MIN, s.nodeBudget, ivec2(0));
+  PnTraversal blockers = pnTraverseRegionPlane(pyramid, depthMap, region.origin, region.size, receiver,
+                                               receiverPlane, s.bias,
+                                               pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size),
+                                               PN_LEAF_MIN, s.nodeBudget, ivec2(0));
   bool hasBlocker = blockers.occluders > 0.0;
   vec4 filterEntry = pnFilterEntry(light, search, hasBlocker ? blockers.depthSum / blockers.occluders : 0.0,
                                    hasBlocker, s.filterScale);
   if (pnEntryLit(filterEntry)) return 1.0;
   PnRect filterRect = pnEntryRect(filterEntry, n);
-  return 1.0 - pnPcfOccludedFraction(pnPcfWindow(depthMap, filterRect.origin, filterRect.size, filterEntry.x, s.bias));
+  return 1.0 - pnPcfOccludedFraction(pnPcfWindowPlane(depthMap, filterRect.origin, filterRect.size, receiver,
+                                                       receiverPlane, s.bias));
+}
+
+float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 receiver, PnHqepcssSettings s) {
+  return pnHqepcss(pyramid, depthMap, light, receiver, vec2(0.0), s);
 }
 
 #endif  // PENUMBRA_HQEPCSS_GLSL

@@ -33,6 +33,10 @@
 // filtering gives):
 //   float pnPcf(sampler2D depthMap, vec3 receiver, float bias)   receiver = (u, v, d) as
 //         pnLightProject gives (light_model.glsl): pnPcfBilinearVisibility at (u, v) for depth d
+//   float pnPcf(sampler2D depthMap, vec3 receiver, vec2 receiverPlane, float bias)
+//         with a receiver-plane depth bias (receiver_plane.glsl): each of the four texels tested
+//         against the receiver's plane at its own centre (pnPcfBilinearVisibilityPlane); vec2(0)
+//         is the call above exactly
 //
 // use:
 //   PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias)
@@ -48,6 +52,9 @@
 //         "PCF 2×2" baseline): the shadow test at the four texels whose centres surround
 //         `position` (continuous texels, texel i's centre at i + 0.5; clamped to the map),
 //         weighted bilinearly; 1 lit, 0 in shadow. A NaN or infinite position is lit.
+//   float pnPcfBilinearVisibilityPlane(sampler2D depthMap, vec3 receiver, vec2 gradient, float bias)
+//         the same at receiver.xy, each texel read (after the clamp) against its own threshold
+//         receiver.z - bias + gradient · (q + 1/2 - receiver.xy)
 //   float pnPcfBlockerMean(PnPcf s)         depthSum / occluders, 0 without occluders
 //   float pnPcfOccludedFraction(PnPcf s)    occluders / texels, 0 without texels
 //   bool  pnPcfOccludes(float depth, float threshold)   depth < threshold and finite
@@ -141,26 +148,38 @@ PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDe
   return pnPcfAddRows(depthMap, origin, size, receiverDepth, bias, 0, textureSize(depthMap, 0).y, pnPcfZero());
 }
 
-// The texel at p, clamped to the map: lit (1) unless it occludes the threshold.
-float pnPcfLitAt(sampler2D depthMap, ivec2 p, float threshold) {
-  ivec2 last = textureSize(depthMap, 0) - ivec2(1);
-  return pnPcfOccludes(texelFetch(depthMap, clamp(p, ivec2(0), last), 0).r, threshold) ? 0.0 : 1.0;
+// The texel at p, clamped to the map: lit (1) unless it occludes its own
+// threshold (the test's at the texel read).
+float pnPcfLitAt(sampler2D depthMap, ivec2 p, vec3 receiver, vec2 gradient, float threshold) {
+  ivec2 q = clamp(p, ivec2(0), textureSize(depthMap, 0) - ivec2(1));
+  float t = pnReceiverPlaneThreshold(threshold, gradient, receiver.xy, q);
+  return pnPcfOccludes(texelFetch(depthMap, q, 0).r, t) ? 0.0 : 1.0;
 }
 
-float pnPcfBilinearVisibility(sampler2D depthMap, vec2 position, float receiverDepth, float bias) {
-  vec2 p = position - vec2(0.5);  // texel i's centre is i + 0.5
+float pnPcfBilinearVisibilityPlane(sampler2D depthMap, vec3 receiver, vec2 gradient, float bias) {
+  vec2 p = receiver.xy - vec2(0.5);  // texel i's centre is i + 0.5
   vec2 cell = floor(p);
   vec2 f = p - cell;
-  if (any(isnan(f)) || any(isinf(position))) return 1.0;  // no position: nothing can be tested
+  if (any(isnan(f)) || any(isinf(receiver.xy))) return 1.0;  // no position: nothing can be tested
   ivec2 i = ivec2(clamp(cell, vec2(-2.0), vec2(textureSize(depthMap, 0))));
-  float t = receiverDepth - bias;
-  float top = mix(pnPcfLitAt(depthMap, i, t), pnPcfLitAt(depthMap, i + ivec2(1, 0), t), f.x);
-  float bottom = mix(pnPcfLitAt(depthMap, i + ivec2(0, 1), t), pnPcfLitAt(depthMap, i + ivec2(1, 1), t), f.x);
+  float t = receiver.z - bias;
+  float top = mix(pnPcfLitAt(depthMap, i, receiver, gradient, t),
+                  pnPcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), f.x);
+  float bottom = mix(pnPcfLitAt(depthMap, i + ivec2(0, 1), receiver, gradient, t),
+                     pnPcfLitAt(depthMap, i + ivec2(1, 1), receiver, gradient, t), f.x);
   return mix(top, bottom, f.y);
 }
 
+float pnPcfBilinearVisibility(sampler2D depthMap, vec2 position, float receiverDepth, float bias) {
+  return pnPcfBilinearVisibilityPlane(depthMap, vec3(position, receiverDepth), vec2(0.0), bias);
+}
+
+float pnPcf(sampler2D depthMap, vec3 receiver, vec2 receiverPlane, float bias) {
+  return pnPcfBilinearVisibilityPlane(depthMap, receiver, receiverPlane, bias);
+}
+
 float pnPcf(sampler2D depthMap, vec3 receiver, float bias) {
-  return pnPcfBilinearVisibility(depthMap, receiver.xy, receiver.z, bias);
+  return pnPcf(depthMap, receiver, vec2(0.0), bias);
 }
 
 #endif  // PENUMBRA_PCF_GLSL

@@ -30,6 +30,10 @@
 // use:
 //   vec4  pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias,
 //                       int iterations)                          receiver = G-buffer (u, v, d, valid)
+//   vec4  pnSearchEntryPlane(sampler2DArray pyramid, PnLight light, vec4 receiver, vec2 gradient, float bias,
+//                            int iterations)   with a receiver plane (receiver_plane.glsl): lit when the
+//                          region's min is not below the plane's highest threshold over the region;
+//                          gradient 0 is pnSearchEntry exactly
 //   vec4  pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias,
 //                          int iterations)   the same from the aligned mip chain (minmax_mip.glsl):
 //                          zmin over the aligned nodes touching the square (<= 9 fetches), a superset
@@ -120,19 +124,23 @@ vec4 pnSearchRefineBelow(PnLight light, vec4 entry, float zmin, float highestThr
   return vec4(entry.xyz, side);
 }
 
-vec4 pnSearchRefine(PnLight light, vec4 entry, float zmin, float bias, out bool done) {
-  return pnSearchRefineBelow(light, entry, zmin, entry.x - bias, done);
-}
-
-vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations) {
+vec4 pnSearchEntryPlane(sampler2DArray pyramid, PnLight light, vec4 receiver, vec2 gradient, float bias,
+                        int iterations) {
+  int n = pnPyramidMapSize(pyramid);
   vec4 entry = pnSearchStart(light, receiver);
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
-    entry = pnSearchRefine(light, entry, pnSearchRegionMin(pyramid, entry), bias, done);
+    PnRect r = pnEntryRect(entry, n);
+    float highest = pnReceiverPlaneThresholdRange(entry.x - bias, gradient, receiver.xy, r.origin, r.origin + r.size).y;
+    entry = pnSearchRefineBelow(light, entry, pnSearchRegionMin(pyramid, entry), highest, done);
     if (done) break;
   }
   return entry;
+}
+
+vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations) {
+  return pnSearchEntryPlane(pyramid, light, receiver, vec2(0.0), bias, iterations);
 }
 
 vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient, float bias,

@@ -177,30 +177,6 @@ bool pnTraversalNext(inout int level, inout uint code, bool descend, int rootLev
   return level == rootLevel;
 }
 
-// Eq. 5 / 6 over the rectangle [lo, lo + size) with the samples of a node of side `side`.
-void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, ivec2 lo,
-                           ivec2 size, int side, float t, ivec2 pixel) {
-  int k = pnSampleGroupLog4(side);
-  int m = pnSampleCount(k);
-  int first = pnSampleFirstColumn(k);
-  int set = pnSampleSet(pixel);
-  float occluding = 0.0;
-  float depthSum = 0.0;
-  for (int i = 0; i < PN_SAMPLE_MAX_COUNT; ++i) {
-    if (i >= m) break;
-    ivec2 p = pnSampleTexel(pnSample(sampleTable, first + i, set), lo, size);
-    float d = pnPyramidFetch(pyramid, 0, p).x;
-    r.fetches += 1;
-    if (d < t) {
-      occluding += 1.0;
-      depthSum += d;
-    }
-  }
-  float texels = float(size.x * size.y);
-  r.occluders += texels * occluding / float(m);
-  r.depthSum += texels * depthSum / float(m);
-}
-
 // One sample of a leaf [lo, lo + size) over the mip chain's level 0, at a
 // table position in [0, 1)².
 void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
@@ -222,7 +198,9 @@ void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnT
   pnTraversalSampleAt(occluding, depthSum, r, mip, pnSample(sampleTable, first + i, set), lo, size, test);
 }
 
-// The same over the mip chain's level 0.
+// Eq. 5 / 6 over the rectangle [lo, lo + size) with the samples of a node of
+// side `side` over the mip chain's level 0, each sample against its own
+// texel's threshold.
 void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D sampleTable, ivec2 lo,
                            ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
@@ -255,6 +233,59 @@ void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D samp
   r.depthSum += texels * depthSum / float(m);
 }
 
+// One sample of a leaf [lo, lo + size) over the pyramid's level 0 (as pnTraversalSampleAt).
+void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
+                         vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
+  ivec2 p = pnSampleTexel(position, lo, size);
+  float d = pnPyramidFetch(pyramid, 0, p).x;
+  r.fetches += 1;
+  if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
+    occluding += 1.0;
+    depthSum += d;
+  }
+}
+
+void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
+                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size,
+                          PnTraversalTest test) {
+  if (i >= m) return;
+  pnTraversalSampleAt(occluding, depthSum, r, pyramid, pnSample(sampleTable, first + i, set), lo, size, test);
+}
+
+// The same over the pyramid's level 0.
+void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, ivec2 lo,
+                           ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
+  int k = pnSampleGroupLog4(side);
+  int m = pnSampleCount(k);
+  int first = pnSampleFirstColumn(k);
+  int set = pnSampleSet(pixel);
+  float occluding = 0.0;
+  float depthSum = 0.0;
+  // As over the mip chain: the first four without a loop (llvmpipe's loop cut-off).
+  pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 0, m, lo, size, test);
+  if (m > 1) {
+    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 1, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 2, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 3, m, lo, size, test);
+  }
+  for (int g = 4; g < PN_SAMPLE_MAX_COUNT; g += 4) {
+    if (g >= m) break;
+    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 1, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 2, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 3, m, lo, size, test);
+  }
+  float texels = float(size.x * size.y);
+  r.occluders += texels * occluding / float(m);
+  r.depthSum += texels * depthSum / float(m);
+}
+
+// The test's threshold at the centre of the part [lo, hi): what a min or ramp
+// leaf, which has no texel of its own, is estimated against.
+float pnTraversalTestAtCentre(PnTraversalTest test, ivec2 lo, ivec2 hi) {
+  return test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
+}
+
 // PN_LEAF_MIN and PN_LEAF_RAMP over `texels` of an ambiguous leaf of depths
 // (lo, hi), lo < t <= hi (traversal.h).
 void pnTraversalEstimateLeaf(inout PnTraversal r, int leafMode, float lo, float hi, float texels, float t) {
@@ -269,45 +300,50 @@ void pnTraversalEstimateLeaf(inout PnTraversal r, int leafMode, float lo, float 
 }
 
 // Reads a node inside the region (with a pyramid level) and counts it: a node
-// whose texels all occlude is added whole; returns true when it is ambiguous,
-// with its (min, max) depth in `nodeRange`.
-bool pnTraversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level, ivec2 origin, float t,
-                         out vec2 nodeRange) {
+// whose texels all occlude (below the lowest of the test's thresholds over it)
+// is added whole; returns true when it is ambiguous, with its (min, max) depth
+// in `nodeRange`.
+bool pnTraversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level, ivec2 origin,
+                         PnTraversalTest test, out vec2 nodeRange) {
   vec4 node = pnPyramidFetch(pyramid, level, origin);
   r.nodes += 1;
   r.fetches += 1;
   nodeRange = node.xy;
-  if (node.y < t) {
-    float texels = float(1 << (2 * level));
+  int side = 1 << level;
+  vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, origin, origin + side);
+  if (node.y < t.x) {
+    float texels = float(side * side);
     r.occluders += texels;
     r.depthSum += node.z * texels;
     return false;
   }
-  return node.x < t;
+  return node.x < t.y;
 }
 
 // A node inside the region, with a pyramid level, that will not be descended:
-// classified, and estimated by the leaf mode when ambiguous.
+// classified, and estimated by the leaf mode when ambiguous (min and ramp
+// against the test's threshold at the node's centre).
 void pnTraversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, int level, ivec2 origin,
-                          float t, int leafMode, ivec2 pixel) {
+                          PnTraversalTest test, int leafMode, ivec2 pixel) {
   vec2 range;
-  if (!pnTraversalClassify(r, pyramid, level, origin, t, range)) return;
+  if (!pnTraversalClassify(r, pyramid, level, origin, test, range)) return;
   int side = 1 << level;
   if (leafMode != PN_LEAF_SAMPLED) {
-    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(side * side), t);
+    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(side * side),
+                            pnTraversalTestAtCentre(test, origin, origin + side));
   } else {
-    pnTraversalSampleLeaf(r, pyramid, sampleTable, origin, ivec2(side), side, t, pixel);
+    pnTraversalSampleLeaf(r, pyramid, sampleTable, origin, ivec2(side), side, test, pixel);
   }
 }
 
-PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin, ivec2 regionSize,
-                             float receiverDepth, float bias, int leafSide, int leafMode, int nodeBudget,
-                             ivec2 pixel) {
+PnTraversal pnTraverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin,
+                                  ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int leafSide,
+                                  int leafMode, int nodeBudget, ivec2 pixel) {
   ivec2 regionStart, regionEnd;
   PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, pnPyramidMapSize(pyramid), regionStart, regionEnd);
   ivec2 size = regionEnd - regionStart;
-  float t = receiverDepth - bias;
-  if (isnan(t) || r.texels == 0.0) return r;
+  PnTraversalTest t = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
+  if (isnan(t.threshold) || r.texels == 0.0) return r;
 
   int rootLevel = findMSB(max(size.x, size.y) - 1) + 1;
   int maxLevel = pnPyramidMaxLevel(pyramid);
@@ -358,6 +394,13 @@ PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec
   return r;
 }
 
+PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin, ivec2 regionSize,
+                             float receiverDepth, float bias, int leafSide, int leafMode, int nodeBudget,
+                             ivec2 pixel) {
+  return pnTraverseRegionPlane(pyramid, sampleTable, regionOrigin, regionSize, vec3(0.0, 0.0, receiverDepth),
+                               vec2(0.0), bias, leafSide, leafMode, nodeBudget, pixel);
+}
+
 PnTraversal pnTraverseWindow(sampler2DArray pyramid, sampler2D sampleTable, PnWindow window, float receiverDepth,
                              float bias, int leafSide, int leafMode, int nodeBudget, ivec2 pixel) {
   return pnTraverseRegion(pyramid, sampleTable, window.origin, ivec2(window.side), receiverDepth, bias, leafSide,
@@ -388,12 +431,6 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2
   } else {
     r.depthSum += 0.5 * (node.x + node.y) * texels;  // PN_DEPTH_SUMS_MIDPOINT: within (max - min) / 2 a texel
   }
-}
-
-// The test's threshold at the centre of the part [lo, hi): what a min or ramp
-// leaf, which has no texel of its own, is estimated against.
-float pnTraversalTestAtCentre(PnTraversalTest test, ivec2 lo, ivec2 hi) {
-  return test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
 }
 
 // Reads an aligned node of the chain and counts its clipped part [lo, hi)

@@ -6,7 +6,8 @@
 //   pcss_scan.comp does across dispatches, here in one invocation).
 // Result k: (occluders, depth sum, texels, 0).
 // B.w = 1 instead: pnPcfBilinearVisibility at position A.xy for receiver B.x, bias B.y; result
-//   (visibility, 0, 0, 0).
+//   (visibility, 0, 0, 0); with a receiver-plane gradient A.zw != 0, pnPcf's plane overload
+//   (pnPcfBilinearVisibilityPlane at (A.xy, B.x)).
 //   bindings: pcf_query.h
 // The check also compiles it with a small PN_PCF_MAX_SIDE to exercise the bound.
 
@@ -28,7 +29,9 @@ void main() {
   vec4 b = texelFetch(pnQueryB, p, 0);
   ivec2 origin = ivec2(a.xy), size = ivec2(a.zw);
   if (b.w == 1.0) {
-    imageStore(pnResult, p, vec4(pnPcfBilinearVisibility(pnDepthMap, a.xy, b.x, b.y), 0.0, 0.0, 0.0));
+    float v = all(equal(a.zw, vec2(0.0))) ? pnPcfBilinearVisibility(pnDepthMap, a.xy, b.x, b.y)
+                                          : pnPcf(pnDepthMap, vec3(a.xy, b.x), a.zw, b.y);
+    imageStore(pnResult, p, vec4(v, 0.0, 0.0, 0.0));
     return;
   }
   int rows = int(b.z);

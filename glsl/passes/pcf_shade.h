@@ -4,6 +4,7 @@
 #ifndef PENUMBRA_PASSES_PCF_SHADE_H
 #define PENUMBRA_PASSES_PCF_SHADE_H
 
+#include "light_fields.h"
 #include "uniform_block.h"
 
 // Distinct across resource kinds, so the pass is valid Vulkan GLSL as well.
@@ -13,7 +14,9 @@
 #define PN_PCF_SHADE_PARAMS_BINDING 3
 
 PN_UNIFORM_BLOCK(PnPcfShadeParams, PN_PCF_SHADE_PARAMS_BINDING)
-  float bias;  // light-depth units
+  PN_LIGHT_FIELDS          // PnLight (light_model.glsl): the receiver plane's slope clamp
+  float bias;              // light-depth units
+  float receiverPlaneTan;  // > 0: a receiver plane from the G-buffer, slopes clamped to this tangent; 0: none
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_PCF_SHADE_H

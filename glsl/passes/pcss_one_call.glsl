@@ -35,6 +35,7 @@ layout(binding = PN_PCSS_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 #include "hqepcss.glsl"
 #include "poisson_pcss.glsl"
 #include "vogel_pcss.glsl"
+#include "gbuffer_receiver_plane.glsl"
 
 #ifndef PN_PCSS_ONE_CALL
 #define PN_PCSS_ONE_CALL PN_ONE_CALL_FAST
@@ -45,28 +46,12 @@ float pnOneCallFlags(vec4 searchEntry, vec4 filterEntry) {
          (searchEntry.x > 0.0 ? 4.0 : 0.0);
 }
 
-// A G-buffer entry, invalid (w = 0) outside the screen.
-vec4 pnOneCallEntry(ivec2 p) {
-  ivec2 n = textureSize(pnGBuffer, 0);
-  return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, n)) ? texelFetch(pnGBuffer, p, 0) : vec4(0.0);
-}
-
-// The receiver's plane (receiver_plane.glsl) from its G-buffer neighbours when
-// the block asks for one (receiverPlaneTan > 0: the steepest slope trusted, as
-// a tangent), else 0: no plane.
-vec2 pnOneCallReceiverPlane(ivec2 p, vec4 receiver, PnLight light) {
-  if (!(pnPcss.receiverPlaneTan > 0.0)) return vec2(0.0);
-  float maxSlope = pnPcss.receiverPlaneTan * pnLightTexelWorld(light, receiver.z);
-  return pnReceiverPlaneFromNeighbours(receiver, pnOneCallEntry(p - ivec2(1, 0)), pnOneCallEntry(p + ivec2(1, 0)),
-                                       pnOneCallEntry(p - ivec2(0, 1)), pnOneCallEntry(p + ivec2(0, 1)), maxSlope);
-}
-
 vec4 pnOneCallShade(ivec2 p, out float fetches) {
   fetches = 0.0;
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return vec4(1.0, 0.0, 0.0, 0.0);  // no surface: lit
   PnLight light = pnPcssLight();
-  vec2 plane = pnOneCallReceiverPlane(p, receiver, light);
+  vec2 plane = pnGBufferReceiverPlane(pnGBuffer, p, receiver, light, pnPcss.receiverPlaneTan);
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_EXACT) {
     return vec4(pnExactPcss(pnDepthMap, light, receiver.xyz, plane, pnPcss.bias, pnPcss.filterScale), 0.0, 0.0,
                 receiver.z > 0.0 ? 4.0 : 0.0);
@@ -75,7 +60,7 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
     PnHqepcssSettings s = PnHqepcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.refineIterations,
                                             pnPcss.regionMode, pnPcss.leafSide, pnPcss.leafDivisor,
                                             pnPcss.nodeBudget);
-    return vec4(pnHqepcss(pnPyramid, pnDepthMap, light, receiver.xyz, s), 0.0, 0.0, receiver.z > 0.0 ? 4.0 : 0.0);
+    return vec4(pnHqepcss(pnPyramid, pnDepthMap, light, receiver.xyz, plane, s), 0.0, 0.0, receiver.z > 0.0 ? 4.0 : 0.0);
   }
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_POISSON) {
     PnPoissonPcssSettings s = PnPoissonPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,

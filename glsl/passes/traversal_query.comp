@@ -2,8 +2,9 @@
 // decreased pyramid or the aligned mip chain (pnParams.structure).
 // Query k: texel k of query image A = (region origin x, y, region width, height),
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0),
-//          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the mip
-//          chain's traversal with that plane (pnTraverseRegionMipPlane; gradient 0: none).
+//          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the
+//          traversal with that plane (pnTraverseRegionPlane, pnTraverseRegionMipPlane,
+//          pnGridRegionMip; gradient 0: none).
 // Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches, 0, 0).
 // Bindings and the parameter block: traversal_query.h.
 
@@ -38,8 +39,8 @@ void main() {
       ? pnTraverseRegionMipPlane(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
                                  vec3(e.xy, b.x), e.zw, pnParams.bias, pnParams.leafSide, pnParams.leafMode,
                                  pnParams.nodeBudget, pnParams.depthSums, ivec2(b.yz))
-      : pnTraverseRegion(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), b.x, pnParams.bias,
-                         pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
+      : pnTraverseRegionPlane(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
+                              pnParams.bias, pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
   imageStore(pnResultC, p, vec4(r.occluders, r.depthSum, r.texels, 0.0));
   imageStore(pnResultD, p, vec4(float(r.nodes), float(r.fetches), 0.0, 0.0));
 }

@@ -14,9 +14,11 @@
 //   the table's exact sums), in both stages against exact PCSS brute force on
 //   the CPU (double), the pixels within rounding of a decision left out and
 //   counted;
-// - the same three calls with the receiver plane from the G-buffer's
-//   neighbours (pnFastPcss / pnExactPcss's receiverPlane overloads): fragment
-//   vs compute, and the exact two against the brute force with the plane
+// - the same calls with the receiver plane from the G-buffer's
+//   neighbours (the receiverPlane overloads of pnFastPcss, pnExactPcss,
+//   pnPoissonPcss, pnHqepcss): fragment vs compute, and the exact ones (exact
+//   PCSS, fast with every improvement off, HQEPCSS at leaf 1 without
+//   refinement over exact regions) against the brute force with the plane
 //   (each texel against the plane at its centre; the staged passes take none).
 #include <string>
 #include <vector>
@@ -67,8 +69,14 @@ std::vector<PcssSettings> one_call_settings() {
   grid.blocker_leaf_mode = LeafMode::ramp;
   std::vector<PcssSettings> out{fast_pcss(), windows, grid, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
                                 exact_pcss(), hqepcss()};
-  // With the receiver plane from the G-buffer's neighbours (receiver_plane.glsl): the calls that take one.
-  for (PcssSettings s : {fast_pcss(), fast_pcss_all_off(), exact_pcss(), poisson_pcss()}) {
+  // HQEPCSS at leaf 1 over exact regions without refinement: exact PCSS over the pyramid.
+  PcssSettings hqepcss_exact = hqepcss();
+  hqepcss_exact.name = "hqepcss, refine 0, leaf 1, exact regions";
+  hqepcss_exact.refine_iterations = 0;
+  hqepcss_exact.leaf_side = 1;
+  hqepcss_exact.region = RegionMode::exact;
+  // With the receiver plane from the G-buffer's neighbours (receiver_plane.glsl): every one call takes one.
+  for (PcssSettings s : {fast_pcss(), fast_pcss_all_off(), exact_pcss(), poisson_pcss(), hqepcss(), hqepcss_exact}) {
     s.name += ", receiver plane";
     s.receiver_plane_tan = kReceiverPlaneTan;
     out.push_back(s);

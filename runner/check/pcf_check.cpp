@@ -7,7 +7,8 @@
 // Three ways per fixture: one pnPcfWindow call; bands of 1, 7 or 128 rows added
 // up with pnPcfAddRows (the pipeline's banded scan); and the pass compiled with
 // PN_PCF_MAX_SIDE 64, so that windows beyond the bound are cut to it. And per fixture,
-// pnPcfBilinearVisibility (2×2 bilinear PCF, the hard shadow) against its definition.
+// pnPcfBilinearVisibility (2×2 bilinear PCF, the hard shadow) against its definition, and
+// pnPcf's receiver-plane overload against the plane's definition.
 // Occluder and texel counts must be exact. The depth sum is a float sum of n
 // non-negative terms (every fixture depth is >= 0) in some order: its relative
 // error is at most (n - 1) u / (1 - (n - 1) u), u = 2^-24, plus u for rounding
@@ -133,6 +134,44 @@ CaseResult bilinear_case(const PcfQueryPass& pass, const GlObject& texture, cons
           compare(want, got, tolerance)};
 }
 
+// The same with a receiver plane (pnPcf's plane overload): each of the four texels against the
+// plane at its own centre, shallow to steep gradients, positions inside, across the edges and
+// outside the map. A query with a texel within rounding of its own threshold (2^-20 of the
+// magnitudes: the GPU rounds the threshold's terms in float) is left out and counted; the rest
+// within the bilinear weights' rounding, 1e-6.
+CaseResult bilinear_plane_case(const PcfQueryPass& pass, const GlObject& texture, const Image& map,
+                               const std::string& label) {
+  std::mt19937 random(0xb112);
+  std::uniform_real_distribution<float> position(-3.0f, kMapSize + 3.0f), slope(-0.3f, 0.3f);
+  std::vector<PcfBilinearQuery> queries;
+  std::vector<float> expected;
+  int open = 0;
+  for (int k = 0; k < 700; ++k) {
+    const float x = position(random), y = position(random);
+    const int tx = std::clamp(static_cast<int>(std::floor(x)), 0, kMapSize - 1);
+    const int ty = std::clamp(static_cast<int>(std::floor(y)), 0, kMapSize - 1);
+    const float d = std::isfinite(map.at(tx, ty)) ? map.at(tx, ty) : 0.5f;
+    const float scale = k % 3 == 0 ? 0.01f : k % 3 == 1 ? 0.1f : 1.0f;  // shallow to steep
+    const PcfBilinearQuery q{x, y, d + 0.001f * static_cast<float>(k % 7 - 3), 0.002f, scale * slope(random),
+                             scale * slope(random)};
+    const BilinearPlane r = pcf_bilinear_reference_plane(map, q.x, q.y, q.receiver_depth, q.gradient_u, q.gradient_v,
+                                                         q.bias, std::ldexp(1.0, -20));
+    if (r.open || (q.gradient_u == 0.0f && q.gradient_v == 0.0f)) {
+      ++open;
+      continue;
+    }
+    queries.push_back(q);
+    expected.push_back(static_cast<float>(r.visibility));
+  }
+  const std::vector<float> observed = pass.bilinear(texture, queries);
+  Image want(static_cast<int>(expected.size()), 1, 1), got(static_cast<int>(expected.size()), 1, 1);
+  for (size_t k = 0; k < expected.size(); ++k) want.texels[k] = expected[k], got.texels[k] = observed[k];
+  const Tolerance tolerance = Tolerance::absolute(1e-6);
+  return {label + " 2x2 bilinear PCF with a receiver plane vs the definition in double (" + std::to_string(open) +
+              " of 700 queries within rounding of a texel's threshold left out)",
+          tolerance, compare(want, got, tolerance)};
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
@@ -191,6 +230,7 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
       add_occlusion_cases(results, label + " " + v.name + ", sides > 16", groups[1], "texels", "dP - bias ties a texel");
     }
     results.push_back(bilinear_case(pass, texture, map, label));
+    results.push_back(bilinear_plane_case(pass, texture, map, label));
   }
   const bool few = left_out_total * 100 <= queries_total;
   const Image want(1, 1, 1, 1.0f), got(1, 1, 1, few ? 1.0f : 0.0f);

@@ -1,6 +1,7 @@
 // Cases of the pipeline check (issue 5): every registry technique through the
 // seam (finite, the sky lit, and its one call in a fragment shader equal to
-// its own path); exact PCSS against the CPU reference; the wiring check (Fast PCSS with every improvement off equals
+// its own path); the hard shadow with the G-buffer's receiver planes
+// (pcf:receiver-plane=on) against the CPU's; exact PCSS against the CPU reference; the wiring check (Fast PCSS with every improvement off equals
 // exact PCSS); SSIM of Fast PCSS with the paper's defaults against exact
 // PCSS at 512²; and bad inputs — NaN and empty shadow-map texels, receivers
 // outside the light's frustum, a zero-size light — giving finite, documented
@@ -172,6 +173,26 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
                          Tolerance::exact(),
                          compare(visibility, read_float_texture(context, technique->run(fragment_inputs, false).visibility),
                                  Tolerance::exact())});
+    }
+
+    // The hard shadow with the receiver plane from the G-buffer (pcf:receiver-plane=on) in both stages
+    // against the CPU's bilinear PCF with the same planes, ambiguous pixels left out.
+    {
+      const std::unique_ptr<Technique> pcf = parse_technique("pcf:receiver-plane=on:bias=0.01")->create(resources);
+      const PcssReference reference = pcf_plane_reference(map, gbuffer, scene.light, 0.01, std::ldexp(1.0, -20),
+                                                          kReceiverPlaneTan);
+      TechniqueInputs fragment_inputs = inputs;
+      fragment_inputs.stage = ShadeStage::fragment;
+      for (const TechniqueInputs* stage : {&inputs, static_cast<const TechniqueInputs*>(&fragment_inputs)}) {
+        Image observed = read_float_texture(context, pcf->run(*stage, false).visibility);
+        const int ambiguous = leave_out_ambiguous(reference, observed);
+        results.push_back({name + ": pcf:receiver-plane=on:bias=0.01, " +
+                               (stage->stage == ShadeStage::fragment ? "fragment shader" : "compute pass") +
+                               ", vs 2x2 bilinear PCF with the G-buffer's planes on the CPU (" +
+                               std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
+                           Tolerance::absolute(kFractionRounding),
+                           compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
+      }
     }
 
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).

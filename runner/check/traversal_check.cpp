@@ -7,7 +7,8 @@
 // - sampled and HQEPCSS (min) leaves, leaf sides 2…16: equal to the CPU
 //   recursion with the same table and decisions (nodes, fetches and counts
 //   exactly, blocker mean to float rounding);
-// - leaf side 1 over the mip chain with a receiver plane (pnTraverseRegionMipPlane):
+// - leaf side 1 over both structures with a receiver plane (pnTraverseRegionPlane,
+//   pnTraverseRegionMipPlane):
 //   occluders and depth sum within the interval the brute-force definition in
 //   double leaves open to float rounding (texels within a band of their own
 //   threshold), shallow to steep gradients, the plane's centre inside and far
@@ -164,7 +165,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       add_comparison(results, label + st.label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
     }
 
-    // Leaf side 1 with a receiver plane over the mip chain against the plane's brute force: a node is
+    // Leaf side 1 with a receiver plane over both structures against the plane's brute force: a node is
     // decided against the plane's range over it, widened by rounding, so the counts are exact but for
     // texels within rounding of their own threshold.
     {
@@ -187,7 +188,8 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       }
       TraversalSettings s;
       s.bias = 0.001f;
-      const auto observed = observe(structures[1], scene, plane_queries, s);
+      for (const Structure& st : structures) {
+      const auto observed = observe(st, scene, plane_queries, s);
       BoundedElements occluders, sums;
       double open = 0.0, texels = 0.0;
       for (size_t k = 0; k < plane_queries.size(); ++k) {
@@ -206,7 +208,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
                           b.certain.depth_sum + b.open_depth_hi + rounding, static_cast<float>(o.depth_sum), x, 0);
         open += b.open, texels += b.certain.texels;
       }
-      const std::string name = label + " mip chain leaf 1 with a receiver plane vs its brute force (" +
+      const std::string name = label + st.label + " leaf 1 with a receiver plane vs its brute force (" +
                                std::to_string(plane_queries.size()) + " queries, query k at (k, 0)): ";
       for (const auto& [what, elements] : {std::pair<const char*, const BoundedElements*>{"occluders", &occluders},
                                            {"depth sum", &sums}}) {
@@ -221,6 +223,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       results.push_back({name + "texels left open by rounding " + format_number("%.0f", open) + " of " +
                              format_number("%.0f", texels) + " (<= 1 %)",
                          open_tolerance, open_result});
+      }
     }
 
     // Sampled and min leaves against the recursion with the same table and decisions.

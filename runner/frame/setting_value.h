@@ -3,11 +3,13 @@
 // expected an integer" (or "a number"); and the one error for a key it does not own.
 #pragma once
 
+#include <cmath>
 #include <exception>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
+#include "modules/receiver_plane.h"
 
 namespace pn {
 
@@ -34,6 +36,16 @@ inline float setting_real(const std::string& method, const std::string& key, con
   } catch (const std::exception&) {
   }
   throw bad_setting_value(method, key, value, "a number");
+}
+
+// `receiver-plane=off|on|TAN`: 0 (no plane), kReceiverPlaneTan, or the slope clamp as a tangent,
+// finite and >= 0.
+inline float setting_receiver_plane(const std::string& method, const std::string& key, const std::string& value) {
+  if (value == "off") return 0.0f;
+  if (value == "on") return kReceiverPlaneTan;
+  const float tan = setting_real(method, key, value);
+  if (!std::isfinite(tan) || tan < 0.0f) throw bad_setting_value(method, key, value, "off, on or a finite tangent >= 0");
+  return tan;
 }
 
 // "method 'NAME': unknown setting 'KEY': expected k1, k2, …" (`keys`: the technique's own).

@@ -7,10 +7,11 @@
 #include "gl/std140.h"
 #include "gl/texture.h"
 #include "passes/pcf_query.h"
+#include "scene/light_block.h"
 
 namespace pn::glsl {
 #include "passes/pcf_shade.h"
-PN_STD140_SIZE(PnPcfShadeParams, 16);
+PN_STD140_SIZE(PnPcfShadeParams, 32);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -53,7 +54,7 @@ std::vector<float> PcfQueryPass::bilinear(const GlObject& depth_map, const std::
   if (queries.empty()) return {};
   std::vector<Query> a, b;
   for (const PcfBilinearQuery& q : queries) {
-    a.push_back({q.x, q.y, 0.0f, 0.0f});
+    a.push_back({q.x, q.y, q.gradient_u, q.gradient_v});
     b.push_back({q.receiver_depth, q.bias, 0.0f, 1.0f});
   }
   const QueryResults r = dispatch(depth_map, a, b);
@@ -65,10 +66,12 @@ std::vector<float> PcfQueryPass::bilinear(const GlObject& depth_map, const std::
 PcfShadePass::PcfShadePass(const Context& context, const SourceTree& tree)
     : context_(&context), shade_(context, tree, "passes/pcf_shade", PN_PCF_SHADE_VISIBILITY_IMAGE) {}
 
-FloatTexture PcfShadePass::run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias,
-                               ShadeStage stage) const {
+FloatTexture PcfShadePass::run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size,
+                               const LightModel& light, float bias, float receiver_plane_tan, ShadeStage stage) const {
   glsl::PnPcfShadeParams block{};
+  set_light_fields(block, light);
   block.bias = bias;
+  block.receiverPlaneTan = receiver_plane_tan;
   PassBindings bind(*context_);
   bind.uniform(block);
   bind.texture(PN_PCF_SHADE_MAP_BINDING, shadow_map);

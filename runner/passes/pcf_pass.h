@@ -9,6 +9,7 @@
 #include "gl/compute_program.h"
 #include "passes/query_pass.h"
 #include "passes/shade_pass.h"
+#include "scene/light_model.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -24,9 +25,11 @@ struct PcfQueryResult {
   float occluders = 0.0f, depth_sum = 0.0f, texels = 0.0f;
 };
 
-// pnPcfBilinearVisibility's inputs: a map position (continuous texels), a receiver depth, a bias.
+// pnPcfBilinearVisibility's inputs: a map position (continuous texels), a receiver depth, a bias;
+// and a receiver plane's gradient (light depth per texel; 0: none, else pnPcf's plane overload).
 struct PcfBilinearQuery {
   float x = 0.0f, y = 0.0f, receiver_depth = 0.0f, bias = 0.0f;
+  float gradient_u = 0.0f, gradient_v = 0.0f;
 };
 
 class PcfQueryPass {
@@ -45,13 +48,15 @@ class PcfQueryPass {
 };
 
 // Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid): the 2×2
-// bilinear PCF visibility of `shadow_map` (pnPcfBilinearVisibility) with `bias`, as a new screen²
+// bilinear PCF visibility of `shadow_map` (pnPcf) with `bias`, as a new screen²
 // R32F texture. The pass the pcf techniques of one context share (TechniqueResources::shared).
 class PcfShadePass {
  public:
   PcfShadePass(const Context& context, const SourceTree& tree);
-  FloatTexture run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, float bias,
-                   ShadeStage stage = ShadeStage::compute) const;
+  // receiver_plane_tan > 0: each pixel's receiver plane from its G-buffer neighbours, slopes
+  // clamped to that tangent (gbuffer_receiver_plane.glsl); 0: none.
+  FloatTexture run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, const LightModel& light,
+                   float bias, float receiver_plane_tan, ShadeStage stage = ShadeStage::compute) const;
 
  private:
   const Context* context_;

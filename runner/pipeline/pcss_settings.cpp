@@ -37,10 +37,9 @@ void PcssSettings::validate() const {
   if (!std::isfinite(receiver_plane_tan) || receiver_plane_tan < 0)
     throw bad("receiver plane tangent", receiver_plane_tan, "0 (off) or a finite number > 0");
   const std::optional<OneCall> call = one_call(*this);
-  const bool plane_call = !staged && call && *call != OneCall::hqepcss;
-  if (receiver_plane_tan > 0 && !plane_call)
-    throw Error("method '" + name + "': receiver-plane: expected a one call that takes a receiver plane (fast, exact, "
-                "poisson or vogel: pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss) with stages off");
+  if (receiver_plane_tan > 0 && (staged || !call))
+    throw Error("method '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
+                "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);
@@ -217,7 +216,7 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   else if (key == "blocker-samples") s.blocker_samples = integer();
   else if (key == "filter-samples") s.filter_samples = integer();
   else if (key == "stages") s.staged = on_off();
-  else if (key == "receiver-plane") s.receiver_plane_tan = value == "off" ? 0.0f : value == "on" ? kReceiverPlaneTan : real();
+  else if (key == "receiver-plane") s.receiver_plane_tan = setting_receiver_plane(s.name, key, value);
   else throw unknown_setting(s.name, key, pcss_setting_keys());
 }
 

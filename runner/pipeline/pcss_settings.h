@@ -11,6 +11,7 @@
 #include "modules/fast_pcss.h"
 #include "modules/pcss_regions.h"
 #include "modules/poisson_pcss.h"
+#include "modules/receiver_plane.h"
 #include "modules/reuse.h"
 #include "modules/traversal.h"
 #include "modules/vogel_pcss.h"
@@ -37,10 +38,6 @@ enum class WorkSkip {
 // this fraction (blur.glsl's depth-aware variant): across the G-buffer's depth
 // edges, and between a surface and a pixel that sees none (+Inf).
 inline constexpr double kBlurDepthTolerance = 0.05;
-
-// `receiver-plane=on`: the receiver plane's slope clamped at 10 (84°): steeper
-// receivers (walls seen edge-on from the light) keep the constant bias's share.
-inline constexpr float kReceiverPlaneTan = 10.0f;
 
 // The defaults of PcssSettings are the paper's (fast_paper_pcss); fast_pcss()
 // is Fast PCSS as this project ships it, chosen by measurement.

@@ -35,7 +35,11 @@ PcfSums pcf_reference(const Image& depth, const Rect& window, double receiver_de
 
 namespace pn {
 
-double pcf_bilinear_reference(const Image& depth, double x, double y, float threshold) {
+namespace {
+
+// The four texels around (x, y), each lit unless `occludes(d, tx, ty)`, weighted bilinearly.
+template <class Occludes>
+double bilinear(const Image& depth, double x, double y, Occludes occludes) {
   if (!std::isfinite(x) || !std::isfinite(y)) return 1.0;
   const double px = x - 0.5, py = y - 0.5;
   const double cx = std::floor(px), cy = std::floor(py);
@@ -45,10 +49,30 @@ double pcf_bilinear_reference(const Image& depth, double x, double y, float thre
     for (int i = 0; i < 2; ++i) {
       const double tx = std::clamp(cx + i, 0.0, depth.width - 1.0), ty = std::clamp(cy + j, 0.0, depth.height - 1.0);
       const float d = depth.at(static_cast<int>(tx), static_cast<int>(ty));
-      const bool occludes = std::isfinite(d) && d < threshold;
-      visibility += (occludes ? 0.0 : 1.0) * (i ? fx : 1.0 - fx) * (j ? fy : 1.0 - fy);
+      const bool occluding = std::isfinite(d) && occludes(static_cast<double>(d), tx, ty);
+      visibility += (occluding ? 0.0 : 1.0) * (i ? fx : 1.0 - fx) * (j ? fy : 1.0 - fy);
     }
   return visibility;
+}
+
+}  // namespace
+
+double pcf_bilinear_reference(const Image& depth, double x, double y, float threshold) {
+  return bilinear(depth, x, y, [&](double d, double, double) { return d < threshold; });
+}
+
+BilinearPlane pcf_bilinear_reference_plane(const Image& depth, double x, double y, double receiver_depth,
+                                           double gradient_u, double gradient_v, double bias, double band) {
+  BilinearPlane r;
+  const double t0 = receiver_depth - bias;
+  r.visibility = bilinear(depth, x, y, [&](double d, double tx, double ty) {
+    const double t = t0 + gradient_u * (tx + 0.5 - x) + gradient_v * (ty + 0.5 - y);
+    const double width = band * (std::fabs(t0) + std::fabs(gradient_u) * (std::fabs(tx) + std::fabs(x) + 1.0) +
+                                 std::fabs(gradient_v) * (std::fabs(ty) + std::fabs(y) + 1.0));
+    if (std::fabs(d - t) <= width) r.open = true;
+    return d < t;
+  });
+  return r;
 }
 
 }  // namespace pn

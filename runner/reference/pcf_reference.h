@@ -43,4 +43,15 @@ namespace pn {
 // position is lit.
 double pcf_bilinear_reference(const Image& depth, double x, double y, float threshold);
 
+// The same with a receiver plane (pnPcfBilinearVisibilityPlane): each texel q read (after the
+// clamp) against its own threshold d − bias + g · (q + ½ − (x, y)), in double. `open`: a texel
+// within `band` (relative to the magnitudes involved) of its threshold, which float rounding
+// may decide either way.
+struct BilinearPlane {
+  double visibility = 1.0;
+  bool open = false;
+};
+BilinearPlane pcf_bilinear_reference_plane(const Image& depth, double x, double y, double receiver_depth,
+                                           double gradient_u, double gradient_v, double bias, double band);
+
 }  // namespace pn

@@ -6,6 +6,7 @@
 
 #include "receiver_plane.h"
 #include "reference/depth_pyramid_reference.h"
+#include "reference/pcf_reference.h"
 #include "reference/receiver_plane_reference.h"
 
 namespace pn {
@@ -92,6 +93,25 @@ PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer
       const double texels = static_cast<double>(filter.width) * filter.height;
       out.visibility.at(px, py) = static_cast<float>(texels > 0 ? 1.0 - occluders / texels : 1.0);
       if (std::min({m1, m2, depth_margin}) < margin) out.ambiguous.at(px, py) = 1.0f;
+    }
+  return out;
+}
+
+PcssReference pcf_plane_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
+                                  double margin, double receiver_plane_tan) {
+  PcssReference out{Image(gbuffer.width, gbuffer.height, 1, 1.0f), Image(gbuffer.width, gbuffer.height, 1, 0.0f)};
+  for (int py = 0; py < gbuffer.height; ++py)
+    for (int px = 0; px < gbuffer.width; ++px) {
+      const double d = gbuffer.at(px, py, 2);
+      if (gbuffer.at(px, py, 3) == 0.0f) continue;
+      bool unsure = false;
+      const std::array<double, 2> g =
+          receiver_plane_tan > 0 ? plane_at(gbuffer, px, py, receiver_plane_tan * light.texel_world_at(d), unsure)
+                                 : std::array<double, 2>{0.0, 0.0};
+      const BilinearPlane r =
+          pcf_bilinear_reference_plane(shadow_map, gbuffer.at(px, py, 0), gbuffer.at(px, py, 1), d, g[0], g[1], bias, margin);
+      out.visibility.at(px, py) = static_cast<float>(r.visibility);
+      if (unsure || r.open) out.ambiguous.at(px, py) = 1.0f;
     }
   return out;
 }

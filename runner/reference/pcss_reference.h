@@ -29,4 +29,10 @@ struct PcssReference {
 PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
                                    double filter_scale, double margin, double receiver_plane_tan = 0.0);
 
+// The hard shadow (2×2 bilinear PCF, pcf_reference.h) of each screen pixel with its G-buffer
+// plane as exact_pcss_reference takes it (`receiver_plane_tan` > 0; 0: no plane): ambiguous where
+// the plane is, or where a texel lies within `margin` (relative to the magnitudes) of its threshold.
+PcssReference pcf_plane_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
+                                  double margin, double receiver_plane_tan);
+
 }  // namespace pn

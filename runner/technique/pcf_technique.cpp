@@ -13,10 +13,11 @@
 namespace pn {
 namespace {
 
-// What the pcf entry takes: its name and bias.
+// What the pcf entry takes: its name, bias and receiver plane.
 struct PcfTechniqueSettings {
   std::string name;
   float bias = 0.02f;
+  float receiver_plane_tan = 0.0f;  // 0: none; else the plane's slope clamp (gbuffer_receiver_plane.glsl)
 
   void validate() const {
     if (!std::isfinite(bias) || bias < 0.0f)
@@ -36,7 +37,8 @@ class PcfTechnique : public Technique {
     StageClock clock(*context_);
     clock.start();
     TechniqueFrame out;
-    out.visibility = pass_->run(*inputs.shadow_map, *inputs.gbuffer, size, settings_.bias, inputs.stage);
+    out.visibility = pass_->run(*inputs.shadow_map, *inputs.gbuffer, size, inputs.light, settings_.bias,
+                                settings_.receiver_plane_tan, inputs.stage);
     context_->throw_if_gl_error("pcf shade");
     clock.stage("shade");
     out.stages = clock.read();
@@ -56,10 +58,11 @@ std::unique_ptr<TechniqueConfig> pcf_config(const char* name) {
   PcfTechniqueSettings s;
   s.name = name;
   return settings_config<PcfTechniqueSettings>(
-      s, {[]() -> std::vector<std::string> { return {"bias"}; },
+      s, {[]() -> std::vector<std::string> { return {"bias", "receiver-plane"}; },
           [](PcfTechniqueSettings& settings, const std::string& key, const std::string& value) {
-            if (key != "bias") throw unknown_setting(settings.name, key, {"bias"});
-            settings.bias = setting_real(settings.name, key, value);
+            if (key == "bias") settings.bias = setting_real(settings.name, key, value);
+            else if (key == "receiver-plane") settings.receiver_plane_tan = setting_receiver_plane(settings.name, key, value);
+            else throw unknown_setting(settings.name, key, {"bias", "receiver-plane"});
           },
           [](TechniqueResources& resources, const PcfTechniqueSettings& settings) -> std::unique_ptr<Technique> {
             return std::make_unique<PcfTechnique>(resources.context(), resources.shared<PcfShadePass>(), settings);

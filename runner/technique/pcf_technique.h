@@ -11,7 +11,9 @@
 
 namespace pn {
 
-// The registry's entry; override key: bias (light-depth units, >= 0; default 0.02 as the PCSS family's).
+// The registry's entry; override keys: bias (light-depth units, >= 0; default 0.02 as the PCSS
+// family's), receiver-plane (off, on or a slope clamp's tangent: the receiver plane from the
+// G-buffer's neighbours, each of the four texels against it; default off).
 std::unique_ptr<TechniqueConfig> pcf_config(const char* name);
 
 }  // namespace pn
