@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <ctime>
 #include <iostream>
 
@@ -16,6 +17,29 @@
 #include "technique/technique_registry.h"
 
 namespace pn::cli {
+namespace {
+
+// Whether `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
+bool valid_utf8(const std::string& text) {
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    const int extra = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xE ? 2 : (c >> 3) == 0x1E ? 3 : -1;
+    if (extra < 0 || i + static_cast<size_t>(extra) >= text.size() + (extra == 0 ? 1 : 0)) return false;
+    unsigned code = extra == 0 ? c : c & (0x3F >> extra);
+    for (int k = 1; k <= extra; ++k) {
+      const unsigned char next = static_cast<unsigned char>(text[i + static_cast<size_t>(k)]);
+      if ((next >> 6) != 0x2) return false;
+      code = (code << 6) | (next & 0x3F);
+    }
+    const unsigned least[] = {0, 0x80, 0x800, 0x10000};
+    if (code < least[extra] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return false;
+    i += static_cast<size_t>(extra) + 1;
+  }
+  return true;
+}
+
+}  // namespace
+
 
 void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   struct Options {
@@ -35,43 +59,54 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::string plot;
   };
   auto opt = std::make_shared<Options>();
+  // Which benches read each option (issue 26 B18): one given to a bench that does not is refused.
+  auto applies = std::make_shared<std::vector<std::pair<CLI::Option*, std::vector<std::string>>>>();
+  const auto applies_to = [applies](CLI::Option* option, std::vector<std::string> whats) {
+    applies->emplace_back(option, std::move(whats));
+    return option;
+  };
   auto* cmd = app.add_subcommand("bench", "GPU timings (timestamp queries, medians) against baselines in the same run");
   cmd->add_option("what", opt->what, "pyramid | traversal | pipeline | sweep | frontier | cache | cascades | tables")->required();
-  auto* sizes = cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); tables: default 256 512 1024 2048 4096; pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(',');
-  auto* repeats = cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal, pipeline and tables, 3 for sweep)");
-  cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)");
-  cmd->add_option("--model", opt->pipeline.model, "pipeline: a mesh file (any format Assimp reads) on the ground instead of --scene");
-  auto* scenes = cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes); frontier: default boxes,fence,tall_blocker,spider,city")->delimiter(',');
-  auto* widths = cmd->add_option("--widths", opt->sweep.factors, "sweep, frontier: light width factors (default 1,2,4,8)")->delimiter(',');
-  auto* exact_up_to = cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep, frontier: run exact PCSS (frontier: and HQEPCSS) only at light width factors up to this (default 2; inf: at every factor)");
-  cmd->add_flag("--quick", opt->quick, "frontier: the short run for CI (boxes and tall_blocker at 128², widths 1 and 8, a configuration per technique, one round)");
-  cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(',');
-  auto* truth_samples = cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline, sweep: S for the ray-traced truth's S x S light samples (default 16)");
-  cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)");
-  cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)");
-  cmd->add_option("--receivers", opt->traversal.receivers, "traversal: receivers in the batch (default 4096)");
-  cmd->add_option("--leaf-sizes", opt->traversal.leaf_sides, "traversal: leaf sizes (default 1,2,4,8,16)")->delimiter(',');
-  cmd->add_option("--k", opt->cache.ks, "cache: shares K of moving triangles (default 0,0.1,...,1)")->delimiter(',');
-  cmd->add_option("--sources", opt->cache.sources, "cache: shadow-map sources (default full,two-map,dirty-rect)")->delimiter(',');
-  cmd->add_option("--frames", opt->cache.frames, "cache: timed frames per K (default 20, after --warmup untimed ones)");
-  cmd->add_option("--warmup", opt->cache.warmup, "cache: untimed frames first (default 3)");
-  auto* screen = cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512); cascades: the screen (default 256)");
-  cmd->add_option("--animated-scene", opt->cache.scene, "cache: moving_city | moving (default moving_city)");
-  cmd->add_option("--counts", opt->cascades.counts, "cascades: split counts at --size (default 0,1,2,3,4; 0: one map over the scene)")->delimiter(',');
-  cmd->add_option("--enlargements", opt->cascades.ks, "cascades: first-split enlargements k at --count, --size (default 1,2,4)")->delimiter(',');
-  cmd->add_option("--count", opt->cascades.count, "cascades: the split count of the size and k sweeps and the path (default 3)");
-  cmd->add_option("--size", opt->cascades.size, "cascades: the map size of the count and k sweeps and the path (default 1024)");
-  cmd->add_option("--path-frames", opt->cascades.path_frames, "cascades: frames along the camera path (default 12)");
-  cmd->add_option("--path-methods", opt->cascades.path_methods, "cascades: techniques along the camera path (default pcf,fast)")->delimiter(',');
+  auto* sizes = applies_to(cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); tables: default 256 512 1024 2048 4096; pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(','), {"pyramid", "pipeline", "sweep", "frontier", "cache", "cascades", "tables"});
+  auto* repeats = applies_to(cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal, pipeline and tables, 3 for sweep)"), {"pyramid", "traversal", "pipeline", "sweep", "frontier", "cascades", "tables"});
+  applies_to(cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)"), {"pipeline"});
+  applies_to(cmd->add_option("--model", opt->pipeline.model, "pipeline: a mesh file (any format Assimp reads) on the ground instead of --scene"), {"pipeline", "cache"});
+  auto* scenes = applies_to(cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes); frontier: default boxes,fence,tall_blocker,spider,city")->delimiter(','), {"sweep", "frontier"});
+  auto* widths = applies_to(cmd->add_option("--widths", opt->sweep.factors, "sweep, frontier: light width factors (default 1,2,4,8)")->delimiter(','), {"sweep", "frontier"});
+  auto* exact_up_to = applies_to(cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep, frontier: run exact PCSS (frontier: and HQEPCSS) only at light width factors up to this (default 2; inf: at every factor)"), {"sweep", "frontier"});
+  applies_to(cmd->add_flag("--quick", opt->quick, "frontier: the short run for CI (boxes and tall_blocker at 128², widths 1 and 8, a configuration per technique, one round)"), {"frontier"});
+  applies_to(cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(','), {"pipeline", "sweep", "frontier", "cascades"});
+  auto* truth_samples = applies_to(cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline, sweep: S for the ray-traced truth's S x S light samples (default 16)"), {"pipeline", "sweep", "frontier", "cascades"});
+  applies_to(cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)"), {"pyramid"});
+  applies_to(cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)"), {"traversal"});
+  applies_to(cmd->add_option("--receivers", opt->traversal.receivers, "traversal: receivers in the batch (default 4096)"), {"traversal"});
+  applies_to(cmd->add_option("--leaf-sizes", opt->traversal.leaf_sides, "traversal: leaf sizes (default 1,2,4,8,16)")->delimiter(','), {"traversal"});
+  applies_to(cmd->add_option("--k", opt->cache.ks, "cache: shares K of moving triangles (default 0,0.1,...,1)")->delimiter(','), {"cache"});
+  applies_to(cmd->add_option("--sources", opt->cache.sources, "cache: shadow-map sources (default full,two-map,dirty-rect)")->delimiter(','), {"cache"});
+  applies_to(cmd->add_option("--frames", opt->cache.frames, "cache: timed frames per K (default 20, after --warmup untimed ones)"), {"cache"});
+  applies_to(cmd->add_option("--warmup", opt->cache.warmup, "cache: untimed frames first (default 3)"), {"cache"});
+  auto* screen = applies_to(cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512); cascades: the screen (default 256)"), {"cache", "cascades"});
+  applies_to(cmd->add_option("--animated-scene", opt->cache.scene, "cache: moving_city | moving (default moving_city)"), {"cache"});
+  applies_to(cmd->add_option("--counts", opt->cascades.counts, "cascades: split counts at --size (default 0,1,2,3,4; 0: one map over the scene)")->delimiter(','), {"cascades"});
+  applies_to(cmd->add_option("--enlargements", opt->cascades.ks, "cascades: first-split enlargements k at --count, --size (default 1,2,4)")->delimiter(','), {"cascades"});
+  applies_to(cmd->add_option("--count", opt->cascades.count, "cascades: the split count of the size and k sweeps and the path (default 3)"), {"cascades"});
+  applies_to(cmd->add_option("--size", opt->cascades.size, "cascades: the map size of the count and k sweeps and the path (default 1024)"), {"cascades"});
+  applies_to(cmd->add_option("--path-frames", opt->cascades.path_frames, "cascades: frames along the camera path (default 12)"), {"cascades"});
+  applies_to(cmd->add_option("--path-methods", opt->cascades.path_methods, "cascades: techniques along the camera path (default pcf,fast)")->delimiter(','), {"cascades"});
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
-  cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG; cascades, frontier: theirs");
+  applies_to(cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG; cascades, frontier: theirs"), {"cache", "cascades", "frontier"});
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->callback([opt, repeats, sizes, truth_samples, screen, scenes, widths, exact_up_to, &global, &exit_code] {
+  cmd->callback([opt, applies, repeats, sizes, truth_samples, screen, scenes, widths, exact_up_to, &global, &exit_code] {
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep" &&
         opt->what != "frontier" && opt->what != "cache" && opt->what != "cascades" && opt->what != "tables")
       throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, frontier, cache, cascades, tables");
-    if (opt->quick && opt->what != "frontier") throw Error("--quick: only bench frontier has a quick run");
+    for (const auto& [option, whats] : *applies) {
+      if (option->count() == 0 || std::find(whats.begin(), whats.end(), opt->what) != whats.end()) continue;
+      std::string list;
+      for (const std::string& w : whats) list += (list.empty() ? "bench " : ", bench ") + w;
+      throw Error(option->get_name() + ": bench " + opt->what + " does not use it (it applies to " + list + ")");
+    }
     if (!opt->methods.empty()) require_list_length("methods", opt->methods.size());
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
@@ -115,10 +150,11 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (repeats->count() > 0) opt->traversal.repeats = opt->repeats;
       validate_traversal_bench_setup(opt->traversal);
     }
-    if (!opt->json.empty()) validate_output_path(opt->json);  // before the bench's minutes of work
-    if (!opt->plot.empty() && opt->what != "cache" && opt->what != "cascades" && opt->what != "frontier")
-      throw Error("--plot: only bench cache, cascades and frontier draw their plots (sweep: scripts/plot_sweep.py)");
-    if (!opt->plot.empty()) validate_output_path(opt->plot);
+    if (!opt->json.empty()) probe_output_file(opt->json);  // before the bench's minutes of work
+    if (!opt->json.empty() && !valid_utf8(opt->pipeline.model.string()))  // JSON holds UTF-8 only (issue 26 B11)
+      throw Error("--model '" + opt->pipeline.model.string() + "': the path is not UTF-8, which --json cannot record; "
+                  "expected a UTF-8 path (rename the file) or no --json");
+    if (!opt->plot.empty()) probe_output_file(opt->plot);
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "
@@ -186,7 +222,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
                                {"renderer", context->renderer()},
                                {"gl_version", context->version()},
                                {"results", results}};
-      write_file_atomically(opt->json, doc.dump(2) + "\n");
+      // Any other text that is not UTF-8 (a driver's string) is written as U+FFFD, never an error.
+      write_file_atomically(opt->json, doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     }
     exit_code = 0;
   });

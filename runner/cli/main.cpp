@@ -7,6 +7,7 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/write_file.h"
 
 namespace {
 
@@ -63,6 +64,7 @@ void refuse_empty_list_names(CLI::App& app, int argc, char** argv) {
 int main(int argc, char** argv) {
   CLI::App app{"penumbra: GLSL soft-shadow modules, linted, bundled and checked against CPU references"};
   app.require_subcommand(1);
+  pn::remove_temporaries_on_signals();  // an interrupted write leaves no temporary behind
   pn::cli::GlobalOptions global;
   int exit_code = 0;
   pn::cli::add_render_command(app, global, exit_code);

@@ -4,6 +4,7 @@
 #include "cli/commands.h"
 #include "core/bounds.h"
 #include "core/error.h"
+#include "core/write_file.h"
 #include "render/frames_job.h"
 #include "render/render_job.h"
 #include "technique/technique_registry.h"
@@ -20,22 +21,27 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--model", setup->model, "A mesh file (any format Assimp reads: glTF, OBJ, ...) placed on the ground instead of --scene");
   auto* source = cmd->add_option("--source", setup->source, "Shadow-map source: full | two-map | dirty-rect (default full; with --frames dirty-rect)");
   auto* frame_count = cmd->add_option("--frames", frames->frames, "Render this many frames of an animated scene with one technique (--methods, default fast): a lit image and a shadow map with the changed rectangles a frame, and the timing table");
-  cmd->add_option("--k", frames->k, "With --frames: share K of moving triangles, 0..1 (default 0.3)");
-  cmd->add_option("--light-scale", setup->light_scale, "Multiply the scene's light width by this (default 1): wider penumbrae");
+  auto* k = cmd->add_option("--k", frames->k, "With --frames: share K of moving triangles, 0..1 (default 0.3)");
+  auto* light_scale = cmd->add_option("--light-scale", setup->light_scale, "Multiply the scene's light width by this (default 1): wider penumbrae");
   cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 512; on cascades, each cascade's)");
-  cmd->add_option("--cascades", setup->cascades, "A scene lit by the sun (city): its cascades, 1 to 4 (default 3; 0: one map over the whole scene)");
+  auto* cascades = cmd->add_option("--cascades", setup->cascades, "A scene lit by the sun (city): its cascades, 1 to 4 (default 3; 0: one map over the whole scene)");
   cmd->add_option("--screen", setup->screen_size, "Screen size (default 512)");
-  cmd->add_option("--truth-samples", setup->truth_samples, "Ray-traced truth: S for S x S light samples per pixel (default 16)");
-  cmd->add_option("--repeats", setup->repeats, "Timed runs per technique, median reported (default 3)");
+  auto* truth_samples = cmd->add_option("--truth-samples", setup->truth_samples, "Ray-traced truth: S for S x S light samples per pixel (default 16)");
+  auto* repeats = cmd->add_option("--repeats", setup->repeats, "Timed runs per technique, median reported (default 3)");
   cmd->add_option("--methods", *methods, "Techniques (default exact,poisson,hqepcss,fast; any registry entry, with :key=value overrides)")
       ->delimiter(',');
-  cmd->add_flag("--stages", *stages, "Also print each technique's per-stage GPU times");
+  auto* stages_flag = cmd->add_flag("--stages", *stages, "Also print each technique's per-stage GPU times");
   cmd->add_option("--out", setup->out, "Directory for the PNG files (default render)");
   cmd->add_option("--glsl-root", global.glsl_root, "Render with the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   add_api_option(*cmd, global);
-  cmd->callback([setup, methods, stages, frames, scene, source, frame_count, &global, &exit_code] {
+  // Options of the plain render that --frames does not read (issue 26 B18), and --frames's own.
+  const std::vector<CLI::Option*> not_with_frames{light_scale, cascades, truth_samples, repeats, stages_flag};
+  cmd->callback([setup, methods, stages, frames, scene, source, frame_count, k, cascades, not_with_frames, &global,
+                 &exit_code] {
     if (frame_count->count() > 0) {
+      for (const CLI::Option* option : not_with_frames)
+        if (option->count() > 0) throw Error(option->get_name() + ": render --frames does not use it");
       if (scene->count() > 0) frames->scene = setup->scene;
       if (source->count() > 0) frames->source = setup->source;
       if (methods->size() > 1) throw Error("render --frames: expected one method, got " + std::to_string(methods->size()));
@@ -46,7 +52,7 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       frames->out = setup->out;
       validate_frames_setup(*frames);  // before looking for a GL context
       const Api api = chosen_api(global);
-      create_output_directory(frames->out);  // an --out that cannot be made is refused before any GL work
+      prepare_output_directory(frames->out, {});  // an --out that cannot be made or written: before any GL work
       const SourceTree tree(glsl_root_or_default(global));
       const auto context = create_context(chosen_backend(global), api);
       std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << "\n";
@@ -56,12 +62,15 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       exit_code = 0;
       return;
     }
+    if (k->count() > 0) throw Error("--k: render uses it only with --frames (the animated scene's moving share)");
     if (!methods->empty()) require_list_length("methods", methods->size());
     for (const std::string& spec : *methods) setup->methods.push_back(parse_technique(spec));
     validate_render_setup(*setup);  // bad input is reported before looking for a GL context
     const Api api = chosen_api(global);  // an unknown API likewise
     const Scene scene = load_render_scene(*setup);  // and a bad model file before anything is written
-    create_output_directory(setup->out);
+    if (cascades->count() > 0 && !scene.sun)
+      throw Error("--cascades: scene '" + scene.name + "' is not lit by the sun; only the city has cascades");
+    prepare_output_directory(setup->out, render_output_names(*setup, scene));  // made, writable, every name legal
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global), api);
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer()

@@ -1,7 +1,11 @@
 #include "core/write_file.h"
 
 #include <fcntl.h>
+#include <limits.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <csignal>
 
 #include <cerrno>
 #include <cstdio>
@@ -23,6 +27,59 @@ void write_in_place(const fs::path& path, const std::string& text) {
   if (!file) throw Error("output '" + path.string() + "': cannot be written");
   file << text;
   if (!file.flush()) throw Error("output '" + path.string() + "': write failed");
+}
+
+// The temporaries being written, for the signal handler (remove_temporaries_on_signals): a
+// fixed table of paths, each slot claimed with an atomic flag, so the handler reads only
+// memory that stays put and calls only unlink (async-signal-safe).
+constexpr int kTemporarySlots = 16;
+struct TemporarySlot {
+  std::atomic<int> state{0};  // 0 free, 1 being filled, 2 holds a path
+  char path[PATH_MAX] = {};
+};
+TemporarySlot g_temporaries[kTemporarySlots];
+
+int register_temporary(const fs::path& path) {
+  const std::string text = path.string();
+  if (text.size() >= PATH_MAX) return -1;
+  for (int i = 0; i < kTemporarySlots; ++i) {
+    int expected = 0;
+    if (!g_temporaries[i].state.compare_exchange_strong(expected, 1)) continue;
+    std::memcpy(g_temporaries[i].path, text.c_str(), text.size() + 1);
+    g_temporaries[i].state.store(2);
+    return i;
+  }
+  return -1;  // more than 16 at once: that one is not cleaned up on a signal
+}
+
+void release_temporary(int slot) {
+  if (slot >= 0) g_temporaries[slot].state.store(0);
+}
+
+extern "C" void remove_temporaries_and_reraise(int signal) {
+  for (TemporarySlot& slot : g_temporaries)
+    if (slot.state.load() == 2) ::unlink(slot.path);
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+// The OS's reason a temporary cannot be made in `directory` (empty when it can: made and removed).
+std::string cannot_write_reason(const fs::path& directory) {
+  std::random_device entropy;
+  char name[32];
+  std::snprintf(name, sizeof name, ".pn-%08x%08x.tmp", entropy(), entropy());
+  const fs::path probe = directory / name;
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) return std::strerror(errno);
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return "";
+}
+
+// The name limit of `directory`'s file system (NAME_MAX where it does not say).
+long name_limit(const fs::path& directory) {
+  const long limit = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  return limit > 0 ? limit : NAME_MAX;
 }
 
 // A temporary file of its own in the target's directory (issue 26 B7, B10): a short name
@@ -58,6 +115,65 @@ void validate_output_path(const fs::path& path) {
     throw Error("output '" + path.string() + "': its directory '" + parent.string() + "' does not exist");
 }
 
+namespace {
+
+// Each of `names` legal in `directory` (or, while it does not exist, in `existing`, its nearest
+// existing ancestor) and not there as something a write cannot replace.
+void check_output_names(const fs::path& directory, const fs::path& existing, const std::vector<std::string>& names) {
+  const long most = name_limit(existing);
+  for (const std::string& name : names) {
+    const fs::path path = directory / name;
+    if (static_cast<long>(name.size()) > most)
+      throw Error("output '" + path.string() + "': its name has " + std::to_string(name.size()) +
+                  " bytes, expected at most " + std::to_string(most) + " (the file system's limit; use a shorter method name)");
+    if (fs::absolute(path).string().size() >= PATH_MAX)
+      throw Error("output '" + path.string() + "': its path is longer than " + std::to_string(PATH_MAX - 1) + " bytes");
+    std::error_code ec;
+    const fs::file_status status = fs::symlink_status(path, ec);
+    if (fs::exists(status) && !fs::is_regular_file(status) && !fs::is_symlink(status))
+      throw Error("output '" + path.string() + "': " + (fs::is_directory(status) ? "is a directory" : "is not a regular file") +
+                  ", expected a file or nothing there");
+  }
+}
+
+}  // namespace
+
+void prepare_output_directory(const fs::path& directory, const std::vector<std::string>& names) {
+  validate_output_directory(directory);
+  std::error_code ec;
+  std::vector<fs::path> missing;  // deepest first
+  fs::path existing = fs::absolute(directory, ec);
+  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+    missing.push_back(existing), existing = existing.parent_path();
+  check_output_names(directory, existing, names);
+  fs::create_directories(directory, ec);
+  if (ec) throw Error("output directory '" + directory.string() + "': cannot be created (" + ec.message() + ")");
+  const std::string reason = cannot_write_reason(directory);
+  if (!reason.empty()) {
+    for (const fs::path& made : missing) fs::remove(made, ec);  // empty: nothing was written
+    throw Error("output directory '" + directory.string() + "': cannot be written (" + reason + ")");
+  }
+}
+
+void probe_output_file(const fs::path& path) {
+  validate_output_path(path);
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    if (::access(path.c_str(), W_OK) != 0)
+      throw Error("output '" + path.string() + "': cannot be written (" + std::strerror(errno) + ")");
+    return;
+  }
+  const fs::path directory = fs::absolute(path).parent_path();
+  check_output_names(directory, directory, {path.filename().string()});
+  const std::string reason = cannot_write_reason(directory);
+  if (!reason.empty()) throw Error("output '" + path.string() + "': cannot be written (" + reason + ")");
+}
+
+void remove_temporaries_on_signals() {
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, remove_temporaries_and_reraise);
+}
+
 void validate_output_directory(const fs::path& directory) {
   std::error_code ec;
   if (directory.empty()) throw Error("output directory '': expected a directory name");
@@ -89,6 +205,11 @@ void write_file_atomically(const fs::path& requested, const std::string& text) {
   if (fs::exists(status) && !fs::is_regular_file(status)) return write_in_place(path, text);
 
   const Temporary temporary = create_temporary(path, requested);
+  const int slot = register_temporary(temporary.path);
+  struct Release {
+    int slot;
+    ~Release() { release_temporary(slot); }
+  } release{slot};
   for (size_t done = 0; done < text.size();) {
     const ssize_t n = ::write(temporary.fd, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace pn {
 
@@ -14,6 +15,25 @@ void validate_output_path(const std::filesystem::path& path);
 // part of it lies under an existing directory. For commands that make it only once their
 // work has succeeded.
 void validate_output_directory(const std::filesystem::path& directory);
+
+// Makes `directory` (and its missing parents) ready for `names` before any long work (issue 26
+// B9, B10), or throws Error and leaves nothing made: each name fits the file system's name limit
+// (NAME_MAX) and the whole path PATH_MAX; none is there already as something other than a
+// regular file or a link (a FIFO there would block the write, a directory would refuse it); the
+// directory is created, and a temporary of its own created in it and removed (the OS's reason
+// when it cannot: read-only file system, permission denied, …) — on failure the directories it
+// made are removed again.
+void prepare_output_directory(const std::filesystem::path& directory, const std::vector<std::string>& names);
+
+// The same for one output file `path` (validate_output_path, then its directory probed for
+// its name). An existing file that is not a regular one (a device, a FIFO: written in place)
+// has to be writable.
+void probe_output_file(const std::filesystem::path& path);
+
+// SIGINT, SIGTERM and SIGHUP remove the temporaries being written (write_file_atomically) and
+// then end the process as the signal would: an interrupted run leaves no `.pn-*.tmp` behind.
+// Installed once by main; the one global state of the runner (a handler can reach no other).
+void remove_temporaries_on_signals();
 
 // Writes `text` to `path` through a temporary file of its own in the same
 // directory (`.pn-<random>.tmp`, O_EXCL) that is renamed over it, so a failure

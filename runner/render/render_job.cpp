@@ -1,5 +1,7 @@
 #include "render/render_job.h"
 
+#include "core/write_file.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <iomanip>
@@ -143,6 +145,29 @@ void create_output_directory(const std::filesystem::path& out) {
   if (ec) throw Error("output directory '" + out.string() + "': cannot be created (" + ec.message() + ")");
 }
 
+namespace {
+
+// A render's file for `stem`: "<scene>_<stem>.png" (the manifest: ".txt").
+std::string render_file_name(const std::string& scene, const std::string& stem, const char* extension = ".png") {
+  return scene + "_" + stem + extension;
+}
+
+}  // namespace
+
+std::vector<std::string> render_output_names(const RenderSetup& setup, const Scene& scene) {
+  std::vector<std::unique_ptr<TechniqueConfig>> own;
+  std::vector<std::string> names{render_file_name(scene.name, "truth_shadow"), render_file_name(scene.name, "truth_lit")};
+  const bool cascaded = scene.sun && setup.cascades > 0;
+  for (const TechniqueConfig* t : chosen_or_default_techniques(setup.methods, render_techniques(), own)) {
+    const std::string stem = file_stem(t->name());
+    for (const char* kind : {"_shadow", "_lit", "_error"}) names.push_back(render_file_name(scene.name, stem + kind));
+    if (cascaded) names.push_back(render_file_name(scene.name, stem + "_cascades"));
+  }
+  names.push_back(render_file_name(scene.name, "sheet"));
+  names.push_back(render_file_name(scene.name, "manifest", ".txt"));
+  return names;
+}
+
 RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup, const Scene& scene) {
   validate_render_setup(setup);
   std::vector<std::unique_ptr<TechniqueConfig>> own;
@@ -164,9 +189,14 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
   const Comparison& c = result.comparison;
 
   create_output_directory(setup.out);
-  const std::string prefix = scene.name + "_";
+  // The set is complete when its manifest is there (written last): the previous run's goes first,
+  // so a run that stops half-way (an error, a signal) leaves new files and no manifest.
+  const auto manifest_path = setup.out / render_file_name(scene.name, "manifest", ".txt");
+  std::error_code ec;
+  std::filesystem::remove(manifest_path, ec);
+  if (ec) throw Error("output '" + manifest_path.string() + "': cannot be removed (" + ec.message() + ")");
   const auto write = [&](const std::string& stem, auto writer, const Image& image) {
-    const auto path = setup.out / (prefix + stem + ".png");
+    const auto path = setup.out / render_file_name(scene.name, stem);
     writer(image, path);
     result.written.push_back(path);
   };
@@ -185,9 +215,13 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
                             std::to_string(setup.screen_size) + "², truth " + std::to_string(setup.truth_samples) +
                             "×" + std::to_string(setup.truth_samples) +
                             " light samples; scores on light-facing pixels: SSIM / MAE";
-  const auto sheet_path = setup.out / (prefix + "sheet.png");
+  const auto sheet_path = setup.out / render_file_name(scene.name, "sheet");
   draw_sheet(title, c).write_png(sheet_path);
   result.written.push_back(sheet_path);
+  std::string manifest;
+  for (const auto& path : result.written) manifest += path.filename().string() + "\n";
+  write_file_atomically(manifest_path, manifest);
+  result.written.push_back(manifest_path);
   return result;
 }
 

@@ -51,6 +51,12 @@ void create_output_directory(const std::filesystem::path& out);
 // (scene/model.h) or a scaled light that does not validate.
 Scene load_render_scene(const RenderSetup& setup);
 
+// The names of the files run_render writes into `out`, in order: the truth's shadow and lit
+// images, per technique its shadow, lit and error images (and on cascades its cascade overlay),
+// the sheet, and last the manifest "<scene>_manifest.txt" listing the others — there only
+// when the whole set was written. For probing `out` before any work (probe_output_directory).
+std::vector<std::string> render_output_names(const RenderSetup& setup, const Scene& scene);
+
 // Renders and scores every technique, then creates `out` and writes the PNGs and the sheet.
 // Throws Error for an invalid setup (before writing anything).
 RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup, const Scene& scene);

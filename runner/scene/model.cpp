@@ -1,6 +1,7 @@
 #include "scene/model.h"
 
 #include <algorithm>
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -10,8 +11,10 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <new>
 #include <string>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -65,12 +68,32 @@ std::size_t count_faces(const aiScene& scene, unsigned min_corners) {
   return count;
 }
 
+// Assimp's file access with the model's own rule for every file it opens (a glTF's buffers, an
+// OBJ's material library, …): a regular file or nothing. A FIFO or a device named by a model
+// would block the import or read without end; refused, it is a file Assimp cannot open.
+class RegularFilesOnly : public Assimp::DefaultIOSystem {
+ public:
+  bool Exists(const char* path) const override { return regular(path) && DefaultIOSystem::Exists(path); }
+  Assimp::IOStream* Open(const char* path, const char* mode) override {
+    return regular(path) ? DefaultIOSystem::Open(path, mode) : nullptr;
+  }
+
+ private:
+  static bool regular(const char* path) {
+    std::error_code ec;
+    return path != nullptr && fs::is_regular_file(fs::status(path, ec));
+  }
+};
+
 std::vector<glm::vec3> read_triangles(const fs::path& file, const ModelLimits& limits) {
   const std::string name = model_name(file);
   const auto unreadable = [&](const Assimp::Importer& importer) {
-    return Error(name + ": not a mesh file Assimp can read: " + one_line(importer.GetErrorString()));
+    const std::string reason = one_line(importer.GetErrorString());
+    if (reason == "std::bad_alloc") throw std::bad_alloc();  // Assimp caught the memory limit: say so
+    return Error(name + ": not a mesh file Assimp can read: " + reason);
   };
   Assimp::Importer importer;  // owns the scene it returns; Assimp logs nowhere unless a logger is created
+  importer.SetIOHandler(new RegularFilesOnly);  // the importer owns it
   // Read as is first: a file without a polygon (only vertices, points or lines) is "no triangles",
   // not the validation's "mesh contains no faces" or "mNumMeshes is 0".
   const aiScene* scene = importer.ReadFile(file.string(), 0);
@@ -110,7 +133,10 @@ std::string read_triangles_or_message(const fs::path& file, const ModelLimits& l
     return "";
   } catch (const Error& e) {
     return e.what();
-  } catch (const std::exception& e) {  // Assimp's own, std::bad_alloc: never past this function
+  } catch (const std::bad_alloc&) {  // the child's memory limit (import_memory_limit)
+    return model_name(file) + ": its import needs more than " + std::to_string(limits.max_import_bytes >> 20) +
+           " MiB of memory (the import's limit), expected a model that imports within it";
+  } catch (const std::exception& e) {  // Assimp's own: never past this function
     return model_name(file) + ": cannot be read: " + one_line(e.what());
   } catch (...) {
     return model_name(file) + ": cannot be read: unknown failure in Assimp";
@@ -127,11 +153,35 @@ bool write_all(int fd, const char* data, std::size_t size) {
   return true;
 }
 
+// The address space the child has when it starts (its share of the parent's, copied by fork).
+std::uintmax_t address_space_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::uintmax_t pages = 0;
+  statm >> pages;
+  return pages * static_cast<std::uintmax_t>(sysconf(_SC_PAGESIZE));
+}
+
+// The import child's limits (docs/reliability.md, "Models"): at most limits.max_import_bytes of
+// address space beyond what it starts with (an allocation past it fails: std::bad_alloc, one
+// line), and limits.max_import_seconds of wall-clock time (SIGALRM ends it). A file Assimp
+// expands without end (its own invalid/OutOfMemory.off, a glTF whose nodes share children)
+// is refused in seconds instead of taking the machine's memory. Sanitizer builds reserve
+// terabytes of shadow address space: they keep the time limit only.
+void limit_import(const ModelLimits& limits) {
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+  const std::uintmax_t most = address_space_bytes() + limits.max_import_bytes;
+  const rlimit memory{static_cast<rlim_t>(most), static_cast<rlim_t>(most)};
+  setrlimit(RLIMIT_AS, &memory);
+#endif
+  alarm(static_cast<unsigned>(limits.max_import_seconds));
+}
+
 // Assimp 5.2.5 (Debian 12) reads out of bounds on some malformed files: fuzz_model found a
 // 24-byte OFF file that makes it crash (docs/reliability.md, "Fuzzing"), and OSS-Fuzz lists many
 // more in its importers. So the import runs in a child process, which sends back 'T' and the
 // triangles' floats, or 'E' and the error's message: a crash inside Assimp costs the child,
-// and the parent reports the file as bad input (a hang still hangs both).
+// and the parent reports the file as bad input; the child's memory and time are limited
+// (limit_import).
 std::vector<glm::vec3> read_triangles_in_child(const fs::path& file, const ModelLimits& limits) {
   const std::string name = model_name(file);
   int pipe_fds[2];
@@ -148,6 +198,7 @@ std::vector<glm::vec3> read_triangles_in_child(const fs::path& file, const Model
     close(pipe_fds[0]);
     prctl(PR_SET_PDEATHSIG, SIGKILL);  // not left running (a hang in Assimp) when the parent dies
     if (getppid() != parent) _exit(1);
+    limit_import(limits);
     std::vector<glm::vec3> triangles;
     const std::string message = read_triangles_or_message(file, limits, triangles);
     const bool sent = message.empty()
@@ -173,6 +224,9 @@ std::vector<glm::vec3> read_triangles_in_child(const fs::path& file, const Model
   const bool exited = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   const bool whole = !reply.empty() && (reply[0] == 'E' || (reply[0] == 'T' && (reply.size() - 1) % sizeof(glm::vec3) == 0));
   if (!exited || !whole) {
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+      throw Error(name + ": its import took longer than " + std::to_string(limits.max_import_seconds) +
+                  " s (the import's time limit), expected a model that imports within it");
     const std::string how = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"
                             : WIFEXITED(status) ? "failed (exit " + std::to_string(WEXITSTATUS(status)) + ")"
                                                 : "failed";
