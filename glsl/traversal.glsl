@@ -347,7 +347,7 @@ PnTraversal pnTraverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable,
 
   int rootLevel = findMSB(max(size.x, size.y) - 1) + 1;
   int maxLevel = pnPyramidMaxLevel(pyramid);
-  int budget = clamp(nodeBudget, 1, 1 << 26);
+  int budget = clamp(nodeBudget, 1, PN_TRAVERSAL_NO_BUDGET);
   int level = rootLevel;
   uint code = 0u;
   // One iteration per node, except that a node whose children are all leaves
@@ -507,7 +507,7 @@ PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int m
   int top = min(findMSB(max(size.x, size.y) - 1) + 1, pnMipMaxLevel(mip));
   int rootLevel = top + 1;
   ivec2 rootOrigin = (regionStart >> top) << top;
-  int budget = clamp(nodeBudget, 1, 1 << 26);
+  int budget = clamp(nodeBudget, 1, PN_TRAVERSAL_NO_BUDGET);
   int level = top;
   uint code = 0u;
   // One node a step (four texels at level 1); once the budget is spent no node

@@ -118,6 +118,17 @@ TEST_CASE("only for loops bounded by construction stay unguarded") {
   CHECK(guarded("for (int i = 0; i < 8; ++i) for (;;) s++;"));     // a nested loop as the body
   CHECK(guarded("for (int i = 0; i > -8; --i) s += i;"));
   CHECK(guarded("while (s < 8) s += 1;"));
+  // Issue 26 B4: a bound past the guard's limit (here 100), literal or through macros, and a
+  // counter written through a macro the body uses.
+  CHECK_FALSE(guarded("for (int i = 0; i < 100; ++i) s += i;"));
+  CHECK(guarded("for (int i = 0; i < 101; ++i) s += i;"));
+  CHECK(guarded("for (int i = 0; i < 2000000000; ++i) s += i;"));
+  CHECK_FALSE(guarded("for (int i = 50; i < 150; ++i) s += i;"));
+  CHECK(guarded("\n#define PN_MANY (PN_HALF * 2)\n#define PN_HALF 60\n  for (int i = 0; i < PN_MANY; ++i) s += i;"));
+  CHECK_FALSE(guarded("\n#define PN_FEW (PN_HALF / 2)\n#define PN_HALF 60\n  for (int i = 0; i < PN_FEW; ++i) s += i;"));
+  CHECK(guarded("\n#define PN_RESET i = 0\n  for (int i = 0; i < 8; ++i) { PN_RESET; }"));
+  CHECK(guarded("\n#define PN_SET(x) x = 0\n  for (int i = 0; i < 8; ++i) { PN_SET(i); }"));
+  CHECK_FALSE(guarded("\n#define PN_TWO 2\n  for (int i = 0; i < 8; ++i) { s += PN_TWO; }"));
 }
 
 TEST_CASE("a #define that spells a loop keyword or pastes tokens is refused, naming its line (issue 26 B3)") {

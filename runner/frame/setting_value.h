@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,8 @@ inline float setting_real(const std::string& method, const std::string& key, con
     size_t used = 0;
     const float v = std::stof(value, &used);
     if (used == value.size()) return v;
+  } catch (const std::out_of_range&) {  // past float's range, or a nonzero value that underflows it
+    throw bad_setting_value(method, key, value, "a number float holds (0, or 1.2e-38 to 3.4e38 in magnitude)");
   } catch (const std::exception&) {
   }
   throw bad_setting_value(method, key, value, "a number");

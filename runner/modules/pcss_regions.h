@@ -14,6 +14,10 @@ enum class RegionMode {
   centred = PN_REGION_CENTRED,  // the window's side, centred on (x, y) (pnRegionApproximateCentred)
 };
 
+// The largest filter scale c (filter side = c · penumbra) a technique takes: PCSS uses 1; past a
+// few penumbrae the filter only blurs, and its cost grows as c² (exact PCSS, the scans).
+inline constexpr float kMaxFilterScale = 64.0f;
+
 // The module's loop bound (pcss_regions.h): more iterations than this refine no further.
 inline constexpr int kRefineMaxIterations = PN_REFINE_MAX_ITERATIONS;
 

@@ -26,7 +26,7 @@ struct TraversalParams {
   float bias = 0.0f;
   int leaf_side = 1;
   LeafMode leaf_mode = LeafMode::sampled;
-  int node_budget = 1 << 26;
+  int node_budget = PN_TRAVERSAL_NO_BUDGET;
   int pixel_x = 0, pixel_y = 0;
 };
 

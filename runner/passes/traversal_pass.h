@@ -30,7 +30,7 @@ struct TraversalSettings {
   float bias = 0.0f;
   int leaf_side = 1;
   LeafMode leaf_mode = LeafMode::sampled;
-  int node_budget = 1 << 26;
+  int node_budget = PN_TRAVERSAL_NO_BUDGET;
   DepthSums depth_sums = DepthSums::table;  // the mip chain's traversal
   int grid = 0;  // the mip chain: > 0 counts over pnGridRegionMip's grid instead of traversing
 };

@@ -97,7 +97,7 @@ class Recursion {
     const int hx = std::min(ox + side, region_.x + region_.width), hy = std::min(oy + side, region_.y + region_.height);
     if (lx >= hx || ly >= hy) return;  // outside the region
     const bool inside = lx == ox && ly == oy && hx == ox + side && hy == oy + side;
-    const bool spent = r_.nodes >= std::clamp(p_.node_budget, 1, 1 << 26);
+    const bool spent = r_.nodes >= std::clamp(p_.node_budget, 1, PN_TRAVERSAL_NO_BUDGET);
     if (inside && level <= max_level_) {
       ++r_.fetches;
       float lo = std::numeric_limits<float>::infinity(), hi = -lo;
@@ -199,7 +199,7 @@ class AlignedRecursion {
       ++r_.nodes;  // outside the region
       return;
     }
-    const bool spent = r_.nodes + 1 >= std::clamp(p_.node_budget, 1, 1 << 26);
+    const bool spent = r_.nodes + 1 >= std::clamp(p_.node_budget, 1, PN_TRAVERSAL_NO_BUDGET);
     ++r_.nodes;
     ++r_.fetches;
     const auto [lo, hi] = node_range(depth_, ox, oy, side);

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "core/format.h"
 
 namespace pn {
 namespace {
@@ -256,8 +257,16 @@ std::vector<glm::vec3> place_model_on_ground(const std::vector<glm::vec3>& trian
   const glm::dvec3 extent = hi - lo;
   const double longest = std::max({extent.x, extent.y, extent.z});
   const double scale = kModelFitSide / longest;
-  if (!(longest > 0) || !std::isfinite(scale))
+  if (!(longest > 0) || !std::isfinite(scale)) {
+    // Far from the origin float cannot hold a small size: 1e30 + 1 is 1e30 (issue 26).
+    const double farthest = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(lo.z), std::fabs(hi.x),
+                                      std::fabs(hi.y), std::fabs(hi.z)});
+    if (farthest >= 0x1p24)  // float's spacing there is 1 or more
+      throw Error(model_name(file) + ": zero extent at float precision (coordinates near " +
+                  format_number("%g", farthest) + " hold no size below " + format_number("%g", farthest * 0x1p-23) +
+                  "), expected a model near the origin");
     throw Error(model_name(file) + ": zero extent (every vertex at one point), expected a model with a size");
+  }
   // The origin of the placed model: the centre of its footprint, at its lowest point.
   const glm::dvec3 base(0.5 * (lo.x + hi.x), lo.y, 0.5 * (lo.z + hi.z));
   std::vector<glm::vec3> out;

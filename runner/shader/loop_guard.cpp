@@ -174,12 +174,131 @@ bool may_change(const std::string& body, const std::string& name, const std::vec
   return false;
 }
 
+// The source's object-like macros: name -> replacement text (the last #define wins; function-
+// like macros are left out: their bodies are read where they are used, below).
+using Macros = std::vector<std::pair<std::string, std::string>>;
+
+Macros object_macros(const std::string& s) {
+  Macros macros;
+  for (size_t at = s.find("#define"); at != std::string::npos; at = s.find("#define", at + 1)) {
+    size_t i = skip_space(s, at + 7);
+    const size_t e = identifier_end(s, i);
+    if (e == i || (e < s.size() && s[e] == '(')) continue;
+    const size_t line_end = s.find('\n', e);
+    std::string text = s.substr(e, (line_end == std::string::npos ? s.size() : line_end) - e);
+    const size_t comment = text.find("//");
+    if (comment != std::string::npos) text.erase(comment);
+    macros.emplace_back(s.substr(i, e - i), trimmed(text));
+  }
+  return macros;
+}
+
+const std::string* find_macro(const Macros& macros, const std::string& name) {
+  for (auto it = macros.rbegin(); it != macros.rend(); ++it)
+    if (it->first == name) return &it->second;
+  return nullptr;
+}
+
+// The value of an integer constant expression (literals, + - * / and parentheses, the source's
+// macros expanded), or -1 when it is not one this reader can evaluate or exceeds 2^40.
+class ConstantReader {
+ public:
+  ConstantReader(const Macros& macros, int depth = 0) : macros_(macros), depth_(depth) {}
+  long long read(const std::string& text) {
+    text_ = text, at_ = 0, ok_ = depth_ < 8;
+    const long long v = sum();
+    space();
+    return ok_ && at_ == text_.size() && v >= 0 && v <= (1LL << 40) ? v : -1;
+  }
+
+ private:
+  void space() { while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_])) != 0) ++at_; }
+  long long clamp(long long v) { if (v > (1LL << 40) || v < -(1LL << 40)) ok_ = false; return v; }
+  long long sum() {
+    long long v = product();
+    for (space(); ok_ && at_ < text_.size() && (text_[at_] == '+' || text_[at_] == '-'); space()) {
+      const char op = text_[at_++];
+      const long long w = product();
+      v = clamp(op == '+' ? v + w : v - w);
+    }
+    return v;
+  }
+  long long product() {
+    long long v = term();
+    for (space(); ok_ && at_ < text_.size() && (text_[at_] == '*' || text_[at_] == '/'); space()) {
+      const char op = text_[at_++];
+      const long long w = term();
+      if (op == '/' && w == 0) ok_ = false;
+      else v = clamp(op == '*' ? v * w : v / w);
+    }
+    return v;
+  }
+  long long term() {
+    space();
+    if (at_ >= text_.size()) return ok_ = false, 0;
+    const char c = text_[at_];
+    if (c == '(') {
+      ++at_;
+      const long long v = sum();
+      space();
+      if (at_ >= text_.size() || text_[at_] != ')') return ok_ = false, 0;
+      ++at_;
+      return v;
+    }
+    if (c == '-') return ++at_, -term();
+    if (std::isdigit(static_cast<unsigned char>(c)) != 0) {
+      long long v = 0;
+      while (at_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[at_])) != 0)
+        v = clamp(v * 10 + (text_[at_++] - '0'));
+      if (at_ < text_.size() && (text_[at_] == 'u' || text_[at_] == 'U')) ++at_;
+      return v;
+    }
+    const size_t e = identifier_end(text_, at_);
+    const std::string* value = e > at_ ? find_macro(macros_, text_.substr(at_, e - at_)) : nullptr;
+    if (value == nullptr) return ok_ = false, 0;
+    at_ = e;
+    const long long v = ConstantReader(macros_, depth_ + 1).read(*value);
+    if (v < 0) ok_ = false;
+    return v;
+  }
+
+  const Macros& macros_;
+  int depth_;
+  std::string text_;
+  size_t at_ = 0;
+  bool ok_ = true;
+};
+
+// Whether `body` may change `name` through a macro it uses: an object-like macro whose text
+// names it, or a function-like macro (its body unread here) — a counter reset through
+// `#define RESET i = 0` is not seen by may_change (issue 26 B4).
+bool macro_may_change(const std::string& s, const std::string& body, const std::string& name, const Macros& macros) {
+  for (size_t k = 0; k < body.size();) {
+    if (!identifier_char(body[k])) {
+      ++k;
+      continue;
+    }
+    const size_t e = identifier_end(body, k);
+    const std::string word = body.substr(k, e - k);
+    k = e;
+    if (const std::string* text = find_macro(macros, word)) {
+      for (size_t at = text->find(name); at != std::string::npos; at = text->find(name, at + 1))
+        if ((at == 0 || !identifier_char((*text)[at - 1])) &&
+            (at + name.size() >= text->size() || !identifier_char((*text)[at + name.size()])))
+          return true;
+    } else if (s.find("#define " + word + "(") != std::string::npos) {
+      return true;
+    }
+  }
+  return false;
+}
+
 // `for (T i = A; i < B; ++i) body` with B a compile-time constant, a step of ++i, i++ or
-// i += a positive literal, and a body that does not touch i: at most B - A iterations by
-// construction. Such loops stay as they are, so that the compiler still unrolls them (a
+// i += a positive literal, and a body that does not touch i (nor use a macro that may): at most
+// B - A iterations by construction — when B - A is within the guard's limit. Such loops stay as they are, so that the compiler still unrolls them (a
 // guarded loop is not unrolled, and llvmpipe caps each loop's iterations at 65535).
 bool bounded_by_construction(const std::string& s, size_t open, const Bracketed& p,
-                             const std::vector<CallArgument>& written) {
+                             const std::vector<CallArgument>& written, const Macros& macros, unsigned limit) {
   const std::string init = s.substr(open + 1, p.semicolons[0] - open - 1);
   const std::string condition = trimmed(s.substr(p.semicolons[0] + 1, p.semicolons[1] - p.semicolons[0] - 1));
   const std::string step = trimmed(s.substr(p.semicolons[1] + 1, p.close - p.semicolons[1] - 1));
@@ -193,6 +312,11 @@ bool bounded_by_construction(const std::string& s, size_t open, const Bracketed&
   if (less == std::string::npos || trimmed(condition.substr(0, less)) != name) return false;
   const size_t bound = condition.compare(less, 2, "<=") == 0 ? less + 2 : less + 1;
   if (!is_constant_bound(condition.substr(bound))) return false;
+  // A bound past the guard's limit is no bound for the guard (issue 26 B4: `i < 2000000000` ran
+  // 80 s on llvmpipe, silently capped, and failed naming no loop): guarded like any other.
+  const long long most = ConstantReader(macros).read(condition.substr(bound));
+  const long long start = ConstantReader(macros).read(init.substr(eq + 1));
+  if (most >= 0 && most - std::max(start, 0LL) > static_cast<long long>(limit)) return false;
   bool step_ok = step == "++" + name || step == name + "++";
   if (!step_ok && step.compare(0, name.size(), name) == 0) {
     const std::string rest = trimmed(step.substr(name.size()));
@@ -215,7 +339,8 @@ bool bounded_by_construction(const std::string& s, size_t open, const Bracketed&
     end = s.find(';', first);
   }
   if (end == std::string::npos) return false;
-  return !may_change(s.substr(first, end - first + 1), name, written);
+  const std::string body = s.substr(first, end - first + 1);
+  return !may_change(body, name, written) && !macro_may_change(s, body, name, macros);
 }
 
 struct Insertion {
@@ -304,6 +429,7 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
   std::vector<Insertion> edits;
   std::vector<GuardedLoop> loops;
   const std::vector<CallArgument> written = written_arguments(s);
+  const Macros macros = object_macros(s);
   for (size_t i = start; i < s.size();) {
     if (const size_t after = skip_comment(s, i); after != i) {
       i = after;
@@ -328,7 +454,7 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
       edits.push_back({parens.close, ")"});
     } else {
       if (parens.semicolons.size() != 2) continue;  // not a for header the compiler accepts
-      if (bounded_by_construction(s, open, parens, written)) continue;
+      if (bounded_by_construction(s, open, parens, written, macros, settings.iterations)) continue;
       const size_t from = parens.semicolons[0] + 1, to = parens.semicolons[1];
       const bool empty = skip_space(s, from) >= to;
       edits.push_back({from, " " + guard_call(id) + (empty ? "" : " && (")});
