@@ -21,8 +21,9 @@ const pn::ModuleCheck& pcf() { return pn::find_module_check("pcf"); }
 
 TEST_CASE("pcf window scans equal the definition: whole, in bands of 1/7/128 rows, and bounded to 64 texels a side") {
   const auto results = pn::test::run_check(pcf(), PENUMBRA_GLSL_DIR);
-  // fixtures × ((whole, bands, bounded) × (sides <= 16, > 16) × (counts, depth sum) + bilinear), and the leave-out case.
-  CHECK(results.size() == std::size(pn::fixtures::kTextureFixtures) * (3 * 2 * 2 + 1) + 1);
+  // fixtures × ((whole, bands, bounded) × (sides <= 16, > 16) × (counts, depth sum) + bilinear, without and with a
+  // receiver plane), and the leave-out case.
+  CHECK(results.size() == std::size(pn::fixtures::kTextureFixtures) * (3 * 2 * 2 + 2) + 1);
   pn::test::check_all_pass(results);
 }
 
@@ -67,8 +68,8 @@ TEST_CASE("the bundles of pcf.glsl, pcf_query.comp and pcss_scan.comp compile wi
 }
 
 TEST_CASE("negative: a bilinear PCF that weights the columns the wrong way round fails the bilinear cases, and only those") {
-  const pn::test::BrokenCopy copy("pcf.glsl", "pnPcfLitAt(depthMap, i + ivec2(1, 0), t), f.x)",
-                                  "pnPcfLitAt(depthMap, i + ivec2(1, 0), t), 1.0 - f.x)");
+  const pn::test::BrokenCopy copy("pcf.glsl", "pnPcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), f.x)",
+                                  "pnPcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), 1.0 - f.x)");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(pcf(), copy.root());
   for (const auto& r : results) {

@@ -56,18 +56,19 @@ TEST_CASE("one call: the Vogel disk runs only as its call, with up to 128 sample
     CHECK_THROWS_WITH(with(pn::vogel_pcss(), key, value).validate(), Catch::Contains("only as its one call"));
 }
 
-TEST_CASE("receiver plane: on, off or a tangent for the fast, exact and Vogel calls; refused elsewhere and when negative") {
+TEST_CASE("receiver plane: on, off or a tangent for every one call; refused for the staged passes and when negative") {
   CHECK(with(pn::vogel_pcss(), "receiver-plane", "on").receiver_plane_tan == pn::kReceiverPlaneTan);
   CHECK(with(pn::vogel_pcss(), "receiver-plane", "2.5").receiver_plane_tan == 2.5f);
   CHECK(with(with(pn::vogel_pcss(), "receiver-plane", "on"), "receiver-plane", "off").receiver_plane_tan == 0.0f);
   with(pn::vogel_pcss(), "receiver-plane", "on").validate();
   CHECK_THROWS_WITH(with(pn::vogel_pcss(), "receiver-plane", "-1").validate(),
-                    Catch::Contains("receiver plane tangent -1: expected 0 (off) or a finite number > 0"));
+                    Catch::Contains("receiver-plane=-1: expected off, on or a finite tangent >= 0"));
   with(pn::fast_pcss(), "receiver-plane", "on").validate();
   with(with(pn::exact_pcss(), "stages", "off"), "receiver-plane", "on").validate();
-  const char* refused = "receiver-plane: expected a one call that takes a receiver plane (fast, exact, poisson or vogel";
+  const char* refused = "receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss";
   with(pn::poisson_pcss(), "receiver-plane", "on").validate();
-  CHECK_THROWS_WITH(with(pn::hqepcss(), "receiver-plane", "on").validate(), Catch::Contains(refused));
+  with(with(pn::hqepcss(), "stages", "off"), "receiver-plane", "on").validate();
+  CHECK_THROWS_WITH(with(pn::hqepcss(), "receiver-plane", "on").validate(), Catch::Contains(refused));  // staged
   CHECK_THROWS_WITH(with(with(pn::fast_pcss(), "stages", "on"), "receiver-plane", "on").validate(),
                     Catch::Contains(refused));
   CHECK_THROWS_WITH(with(pn::fast_paper_pcss(), "receiver-plane", "on").validate(), Catch::Contains(refused));

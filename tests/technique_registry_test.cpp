@@ -67,7 +67,7 @@ TEST_CASE("technique registry: savsm and its ablations take their own keys and r
   CHECK_THROWS_WITH(pn::parse_technique("savsm:bleeding=1"),
                     Catch::StartsWith("method 'savsm:bleeding=1': savsm bleeding reduction 1: expected"));
   CHECK_THROWS_WITH(pn::parse_technique("savsm:scale=-1"),
-                    "method 'savsm:scale=-1': savsm filter scale -1: expected a finite number >= 0");
+                    "method 'savsm:scale=-1': savsm filter scale -1: expected 0..64 (the filter side in penumbrae)");
   CHECK_THROWS_WITH(pn::parse_technique("savsm:radius=3"),
                     Catch::StartsWith("method 'savsm:radius=3': unknown setting 'radius': expected bias, scale"));
 }

@@ -16,7 +16,7 @@ TEST_CASE("traversal: exact at leaf 1, sampled and min leaves and budgets equal 
 }
 
 TEST_CASE("negative: a traversal that counts a texel at exactly dP - bias as occluding fails the exact check") {
-  const BrokenCopy copy("traversal.glsl", "if (node.y < t) {", "if (node.y <= t) {");
+  const BrokenCopy copy("traversal.glsl", "if (node.y < t.x) {", "if (node.y <= t.x) {");
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root())) > 0);
 }

@@ -16,6 +16,11 @@ struct GlobalOptions {
   std::string api;        // empty: gl450
 };
 
+// The whole command line: parses argv, runs the command, reports every error as one line
+// `penumbra: error: …` on standard error; returns the exit code (0, 1 failed, 2 bad input,
+// 3 no context).
+int run(int argc, char** argv);
+
 void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code);

@@ -10,6 +10,7 @@
 #include "core/format.h"
 #include "core/named.h"
 #include "draw/canvas.h"
+#include "draw/font.h"
 #include "metrics/lit_image.h"
 #include "cascades/cascade_math.h"
 #include "scene/city_scene.h"
@@ -36,9 +37,15 @@ void write_rgb(const Image& image, const std::filesystem::path& path) {
   canvas.write_png(path);
 }
 
+// The error picture with its scale at its right (issue 26 B19: a picture read on its own says
+// what its colours mean): the signed map's bar from +limit to -limit, labelled.
 void write_signed(const Image& image, const std::filesystem::path& path) {
-  Canvas canvas(image.width, image.height, {0, 0, 0});
+  const Font font;
+  const int text = std::clamp(image.height / 20, 10, 16), bar = 12, margin = 6;
+  const int label = font.text_width("\u2212" + format_number("%g", kErrorLimit), text);
+  Canvas canvas(image.width + margin + bar + 4 + label + margin, image.height, {255, 255, 255});
   canvas.signed_map(flip_rows(image), 0, 0, 0, 1, kErrorLimit);
+  canvas.colour_bar(font, image.width + margin, margin, bar, image.height - 2 * margin, kErrorLimit, text, {0, 0, 0});
   canvas.write_png(path);
 }
 

@@ -6,6 +6,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <thread>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -127,6 +129,24 @@ std::vector<glm::vec3> read_triangles(const fs::path& file, const ModelLimits& l
   return out;
 }
 
+// The child's address space and resident memory now (/proc/self/statm's first two fields).
+std::uintmax_t statm_bytes(int field) {
+  std::ifstream statm("/proc/self/statm");
+  std::uintmax_t pages[2] = {0, 0};
+  statm >> pages[0] >> pages[1];
+  return pages[field] * static_cast<std::uintmax_t>(sysconf(_SC_PAGESIZE));
+}
+[[maybe_unused]] std::uintmax_t address_space_bytes() { return statm_bytes(0); }
+[[maybe_unused]] std::uintmax_t resident_bytes() { return statm_bytes(1); }
+
+// The child's exit status when the sanitizer builds' memory watchdog ends it.
+constexpr int kMemoryLimitExit = 86;
+
+std::string memory_limit_message(const fs::path& file, const ModelLimits& limits) {
+  return model_name(file) + ": its import needs more than " + std::to_string(limits.max_import_bytes >> 20) +
+         " MiB of memory (the import's limit), expected a model that imports within it";
+}
+
 // read_triangles with every exception as an Error's message: "" when it succeeded.
 std::string read_triangles_or_message(const fs::path& file, const ModelLimits& limits, std::vector<glm::vec3>& out) {
   try {
@@ -134,9 +154,8 @@ std::string read_triangles_or_message(const fs::path& file, const ModelLimits& l
     return "";
   } catch (const Error& e) {
     return e.what();
-  } catch (const std::bad_alloc&) {  // the child's memory limit (import_memory_limit)
-    return model_name(file) + ": its import needs more than " + std::to_string(limits.max_import_bytes >> 20) +
-           " MiB of memory (the import's limit), expected a model that imports within it";
+  } catch (const std::bad_alloc&) {  // the child's memory limit (limit_import)
+    return memory_limit_message(file, limits);
   } catch (const std::exception& e) {  // Assimp's own: never past this function
     return model_name(file) + ": cannot be read: " + one_line(e.what());
   } catch (...) {
@@ -154,25 +173,28 @@ bool write_all(int fd, const char* data, std::size_t size) {
   return true;
 }
 
-// The address space the child has when it starts (its share of the parent's, copied by fork).
-std::uintmax_t address_space_bytes() {
-  std::ifstream statm("/proc/self/statm");
-  std::uintmax_t pages = 0;
-  statm >> pages;
-  return pages * static_cast<std::uintmax_t>(sysconf(_SC_PAGESIZE));
-}
-
 // The import child's limits (docs/reliability.md, "Models"): at most limits.max_import_bytes of
 // address space beyond what it starts with (an allocation past it fails: std::bad_alloc, one
 // line), and limits.max_import_seconds of wall-clock time (SIGALRM ends it). A file Assimp
 // expands without end (its own invalid/OutOfMemory.off, a glTF whose nodes share children)
 // is refused in seconds instead of taking the machine's memory. Sanitizer builds reserve
-// terabytes of shadow address space: they keep the time limit only.
+// terabytes of shadow address space, which RLIMIT_AS would count: there a watchdog thread
+// bounds the resident memory instead.
 void limit_import(const ModelLimits& limits) {
 #if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
   const std::uintmax_t most = address_space_bytes() + limits.max_import_bytes;
   const rlimit memory{static_cast<rlim_t>(most), static_cast<rlim_t>(most)};
   setrlimit(RLIMIT_AS, &memory);
+#else
+  // A watchdog on the resident memory instead: the child ends itself (kMemoryLimitExit) once it
+  // holds max_import_bytes more than it started with.
+  const std::uintmax_t most = resident_bytes() + limits.max_import_bytes;
+  std::thread([most] {
+    for (;;) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      if (resident_bytes() > most) _exit(kMemoryLimitExit);
+    }
+  }).detach();
 #endif
   alarm(static_cast<unsigned>(limits.max_import_seconds));
 }
@@ -225,6 +247,7 @@ std::vector<glm::vec3> read_triangles_in_child(const fs::path& file, const Model
   const bool exited = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   const bool whole = !reply.empty() && (reply[0] == 'E' || (reply[0] == 'T' && (reply.size() - 1) % sizeof(glm::vec3) == 0));
   if (!exited || !whole) {
+    if (WIFEXITED(status) && WEXITSTATUS(status) == kMemoryLimitExit) throw Error(memory_limit_message(file, limits));
     if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
       throw Error(name + ": its import took longer than " + std::to_string(limits.max_import_seconds) +
                   " s (the import's time limit), expected a model that imports within it");
