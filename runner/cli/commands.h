@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <optional>
 
 #include "gl/context.h"
@@ -34,6 +35,11 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 // Helpers for the commands.
 std::string default_glsl_root();
 std::string glsl_root_or_default(const GlobalOptions& global);
+// The root a module or directory `path` resolves its includes under, without --glsl-root: the
+// library's glsl/ for a path inside it; else the directory itself, or the file's directory (its
+// parent for a pass under `passes/`): a user's copy of the modules is its own root. Throws Error
+// when `path` does not exist.
+std::filesystem::path root_for(const std::filesystem::path& path, const GlobalOptions& global);
 std::optional<Backend> chosen_backend(const GlobalOptions& global);  // throws Error for an unknown name
 Api chosen_api(const GlobalOptions& global);                        // likewise; default gl450
 // Adds `--api gl450|es310` to a command that makes a context.

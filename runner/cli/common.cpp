@@ -1,11 +1,27 @@
 #include "cli/commands.h"
 
+#include "core/error.h"
+
 namespace pn::cli {
 
 std::string default_glsl_root() { return PENUMBRA_GLSL_DIR; }
 
 std::string glsl_root_or_default(const GlobalOptions& global) {
   return global.glsl_root.empty() ? default_glsl_root() : global.glsl_root;
+}
+
+std::filesystem::path root_for(const std::filesystem::path& path, const GlobalOptions& global) {
+  namespace fs = std::filesystem;
+  if (!global.glsl_root.empty()) return global.glsl_root;
+  std::error_code ec;
+  const fs::path library = fs::canonical(default_glsl_root(), ec);
+  const fs::path target = fs::canonical(path, ec);
+  if (ec) throw Error("'" + path.string() + "': no such file or directory");
+  const fs::path rel = target.lexically_relative(library);
+  if (!library.empty() && !rel.empty() && *rel.begin() != "..") return library;
+  const fs::path directory = fs::is_directory(target) ? target : target.parent_path();
+  // A pass of a copy (my-copy/passes/x.comp) includes the copy's modules: the copy is the root.
+  return directory.filename() == "passes" && !fs::is_directory(target) ? directory.parent_path() : directory;
 }
 
 std::optional<Backend> chosen_backend(const GlobalOptions& global) {

@@ -8,23 +8,6 @@
 namespace fs = std::filesystem;
 
 namespace pn::cli {
-namespace {
-
-// Without --glsl-root, a path inside the library's glsl/ uses it as the root;
-// any other directory is its own root (a user's copy of the modules).
-fs::path root_for(const fs::path& path, const GlobalOptions& global) {
-  if (!global.glsl_root.empty()) return global.glsl_root;
-  std::error_code ec;
-  const fs::path library = fs::canonical(default_glsl_root(), ec);
-  const fs::path target = fs::canonical(path, ec);
-  if (ec) throw Error("'" + path.string() + "': no such file or directory");
-  const fs::path rel = target.lexically_relative(library);
-  if (!library.empty() && !rel.empty() && *rel.begin() != "..") return library;
-  return fs::is_directory(target) ? target : target.parent_path();
-}
-
-}  // namespace
-
 void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* cmd = app.add_subcommand("lint", "Compile each module and pass for GL 4.50, Vulkan SPIR-V and GLSL ES 3.10");
   auto paths = std::make_shared<std::vector<std::string>>();

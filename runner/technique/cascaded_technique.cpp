@@ -20,10 +20,10 @@ TechniqueFrame CascadedTechnique::run(const TechniqueInputs& inputs, bool with_s
   for (const TechniqueFrame& layer : layers) visibilities.push_back(&layer.visibility);
   TechniqueFrame out;
   for (size_t c = 0; c < layers.size(); ++c) {
-    for (const auto& [name, ms] : layers[c].stages) {
-      const auto same = std::find_if(out.stages.begin(), out.stages.end(), [&](const auto& s) { return s.first == name; });
-      if (same == out.stages.end()) out.stages.emplace_back(name, ms);
-      else same->second += ms;
+    for (const auto& stage : layers[c].stages) {  // not a structured binding: a lambda cannot capture one (C++17)
+      const auto same = std::find_if(out.stages.begin(), out.stages.end(), [&](const auto& s) { return s.first == stage.first; });
+      if (same == out.stages.end()) out.stages.push_back(stage);
+      else same->second += stage.second;
     }
     for (const auto& [name, value] : layers[c].stats) out.stats.emplace_back("c" + std::to_string(c) + " " + name, value);
   }
