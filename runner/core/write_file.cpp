@@ -5,9 +5,8 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <csignal>
-
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -63,18 +62,6 @@ extern "C" void remove_temporaries_and_reraise(int signal) {
   std::raise(signal);
 }
 
-// The OS's reason a temporary cannot be made in `directory` (empty when it can: made and removed).
-std::string cannot_write_reason(const fs::path& directory) {
-  std::random_device entropy;
-  char name[32];
-  std::snprintf(name, sizeof name, ".pn-%08x%08x.tmp", entropy(), entropy());
-  const fs::path probe = directory / name;
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) return std::strerror(errno);
-  ::close(fd);
-  ::unlink(probe.c_str());
-  return "";
-}
 
 // The name limit of `directory`'s file system (NAME_MAX where it does not say).
 long name_limit(const fs::path& directory) {
@@ -82,26 +69,41 @@ long name_limit(const fs::path& directory) {
   return limit > 0 ? limit : NAME_MAX;
 }
 
-// A temporary file of its own in the target's directory (issue 26 B7, B10): a short name
-// no other writer uses (two processes writing one output each rename their own), made with
-// O_EXCL, mode 0666 less the umask like any output; the name never lengthens the target's.
+// A temporary file of its own in `directory` (issue 26 B7, B10): a short name no other
+// writer uses (two processes writing one output each rename their own), made with O_EXCL,
+// mode 0666 less the umask like any output; the name never lengthens the target's. fd -1,
+// errno set, when none can be made.
 struct Temporary {
   fs::path path;
   int fd = -1;
 };
-Temporary create_temporary(const fs::path& target, const fs::path& requested) {
-  const fs::path directory = fs::absolute(target).parent_path();
+Temporary open_temporary(const fs::path& directory) {
   std::random_device entropy;
   for (int attempt = 0; attempt < 64; ++attempt) {
     char name[32];
     std::snprintf(name, sizeof name, ".pn-%08x%08x.tmp", entropy(), entropy());
     const fs::path candidate = directory / name;
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) return {candidate, fd};
-    if (errno != EEXIST)
-      throw Error("output '" + requested.string() + "': cannot be written (" + std::strerror(errno) + ")");
+    if (fd >= 0 || errno != EEXIST) return {candidate, fd};
   }
-  throw Error("output '" + requested.string() + "': cannot be written (no free temporary name)");
+  return {};  // errno: EEXIST, no free name
+}
+
+Temporary create_temporary(const fs::path& target, const fs::path& requested) {
+  const Temporary temporary = open_temporary(fs::absolute(target).parent_path());
+  if (temporary.fd < 0)
+    throw Error("output '" + requested.string() + "': cannot be written (" +
+                (errno == EEXIST ? std::string("no free temporary name") : std::strerror(errno)) + ")");
+  return temporary;
+}
+
+// The OS's reason a file cannot be made in `directory` (empty when it can: one made and removed).
+std::string cannot_write_reason(const fs::path& directory) {
+  const Temporary probe = open_temporary(directory);
+  if (probe.fd < 0) return std::strerror(errno);
+  ::close(probe.fd);
+  ::unlink(probe.path.c_str());
+  return "";
 }
 
 }  // namespace

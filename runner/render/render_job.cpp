@@ -1,7 +1,5 @@
 #include "render/render_job.h"
 
-#include "core/write_file.h"
-
 #include <algorithm>
 #include <cstdio>
 #include <iomanip>
@@ -9,6 +7,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/named.h"
+#include "core/write_file.h"
 #include "draw/canvas.h"
 #include "draw/font.h"
 #include "metrics/lit_image.h"

@@ -173,13 +173,13 @@ bool write_all(int fd, const char* data, std::size_t size) {
   return true;
 }
 
-// The import child's limits (docs/reliability.md, "Models"): at most limits.max_import_bytes of
-// address space beyond what it starts with (an allocation past it fails: std::bad_alloc, one
-// line), and limits.max_import_seconds of wall-clock time (SIGALRM ends it). A file Assimp
-// expands without end (its own invalid/OutOfMemory.off, a glTF whose nodes share children)
-// is refused in seconds instead of taking the machine's memory. Sanitizer builds reserve
-// terabytes of shadow address space, which RLIMIT_AS would count: there a watchdog thread
-// bounds the resident memory instead.
+// The import child's limits (docs/reliability.md, "The import child's limits"): at most
+// limits.max_import_bytes of address space beyond what it starts with (an allocation past it
+// fails: std::bad_alloc, one line), and limits.max_import_seconds of wall-clock time (SIGALRM
+// ends it). A file Assimp expands without end (its own invalid/OutOfMemory.off, a glTF whose
+// nodes share children) is refused in seconds instead of taking the machine's memory.
+// Sanitizer builds reserve terabytes of shadow address space, which RLIMIT_AS would count:
+// there a watchdog thread bounds the resident memory instead.
 void limit_import(const ModelLimits& limits) {
 #if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
   const std::uintmax_t most = address_space_bytes() + limits.max_import_bytes;

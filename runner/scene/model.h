@@ -34,7 +34,8 @@ inline constexpr float kModelLightWidth = 3.0f;
 struct ModelLimits {
   std::uintmax_t max_file_bytes = std::uintmax_t{1} << 30;  // 1 GiB
   std::size_t max_triangles = 2'000'000;                    // 72 MB of vertices, 3 per triangle
-  // The import child's (docs/reliability.md): memory beyond what it starts with, and wall-clock time.
+  // The import child's (docs/reliability.md, "The import child's limits"): memory beyond what it
+  // starts with, and wall-clock time.
   std::uintmax_t max_import_bytes = std::uintmax_t{4} << 30;  // 4 GiB
   int max_import_seconds = 60;
 };
