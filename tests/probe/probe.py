@@ -70,6 +70,9 @@ def make_hostile_inputs(work: pathlib.Path, glsl: pathlib.Path) -> None:
         "".join(f"v {1e30 + x} {1e30 + y} {1e30 + z}\n" for x, y, z in corners) +
         "f 1 2 4 3\nf 5 6 8 7\nf 1 2 6 5\nf 3 4 8 7\nf 1 3 7 5\nf 2 4 8 6\n")
     (work / "a_directory.obj").mkdir()
+    # A model whose name is not UTF-8 (the rows name it by a glob: m?.obj).
+    (work / "triangle.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    shutil.copy(work / "triangle.obj", os.path.join(os.fsencode(work), b"m\xff.obj"))
     # Hostile copies of the modules: an endless loop spelled through a macro; one with a decoy.
     macro = work / "macro_loop"
     shutil.copytree(glsl, macro)
