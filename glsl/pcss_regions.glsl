@@ -113,10 +113,14 @@ vec4 pnSearchStart(PnLight light, vec4 receiver) {
   return vec4(d, receiver.xy, pnLightSearchWidthTexels(light, d));
 }
 
-// One refinement step from the region's min depth: lit when no depth is
-// below the test's highest threshold over the region, else shrunk, or `done`.
-vec4 pnSearchRefineBelow(PnLight light, vec4 entry, float zmin, float highestThreshold, out bool done) {
+// One refinement step from the region's min depth zmin: lit when no depth is
+// below the receiver plane's highest threshold over the entry's region (the
+// receiver's depth minus the bias when gradient is 0), else shrunk, or `done`.
+vec4 pnSearchRefinePlane(PnLight light, int mapSize, vec4 entry, float zmin, vec2 centre, vec2 gradient, float bias,
+                         out bool done) {
   done = true;
+  PnRect r = pnEntryRect(entry, mapSize);
+  float highestThreshold = pnReceiverPlaneThresholdRange(entry.x - bias, gradient, centre, r.origin, r.origin + r.size).y;
   if (!(zmin < highestThreshold)) return vec4(entry.xyz, PN_REGION_LIT);
   float side = pnLightBlockerWindowTexels(light, entry.x, zmin);
   if (!(side < entry.w)) return entry;
@@ -131,9 +135,7 @@ vec4 pnSearchEntryPlane(sampler2DArray pyramid, PnLight light, vec4 receiver, ve
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
-    PnRect r = pnEntryRect(entry, n);
-    float highest = pnReceiverPlaneThresholdRange(entry.x - bias, gradient, receiver.xy, r.origin, r.origin + r.size).y;
-    entry = pnSearchRefineBelow(light, entry, pnSearchRegionMin(pyramid, entry), highest, done);
+    entry = pnSearchRefinePlane(light, n, entry, pnSearchRegionMin(pyramid, entry), receiver.xy, gradient, bias, done);
     if (done) break;
   }
   return entry;
@@ -151,9 +153,8 @@ vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 recei
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
     refinements += 1;
-    PnRect r = pnEntryRect(entry, mapSize);
-    float highest = pnReceiverPlaneThresholdRange(entry.x - bias, gradient, receiver.xy, r.origin, r.origin + r.size).y;
-    entry = pnSearchRefineBelow(light, entry, pnSearchRegionMinMip(mip, mapSize, entry), highest, done);
+    entry = pnSearchRefinePlane(light, mapSize, entry, pnSearchRegionMinMip(mip, mapSize, entry), receiver.xy,
+                                gradient, bias, done);
     if (done) break;
   }
   return entry;

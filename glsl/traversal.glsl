@@ -177,17 +177,31 @@ bool pnTraversalNext(inout int level, inout uint code, bool descend, int rootLev
   return level == rootLevel;
 }
 
-// One sample of a leaf [lo, lo + size) over the mip chain's level 0, at a
-// table position in [0, 1)².
-void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                         vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
-  ivec2 p = pnSampleTexel(position, lo, size);
-  float d = pnMipFetch(mip, 0, p).x;
+// One sample of depth d read at texel p: counted when it occludes its own
+// texel's threshold.
+void pnTraversalCountSample(inout float occluding, inout float depthSum, inout PnTraversal r, float d, ivec2 p,
+                            PnTraversalTest test) {
   r.fetches += 1;
   if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
     occluding += 1.0;
     depthSum += d;
   }
+}
+
+// Eq. 5 / 6: `occluding` of m samples, with their depth sum, scaled to the
+// leaf's texels.
+void pnTraversalAddSampled(inout PnTraversal r, ivec2 size, float occluding, float depthSum, int m) {
+  float texels = float(size.x * size.y);
+  r.occluders += texels * occluding / float(m);
+  r.depthSum += texels * depthSum / float(m);
+}
+
+// One sample of a leaf [lo, lo + size) over the mip chain's level 0, at a
+// table position in [0, 1)².
+void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
+                         vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
+  ivec2 p = pnSampleTexel(position, lo, size);
+  pnTraversalCountSample(occluding, depthSum, r, pnMipFetch(mip, 0, p).x, p, test);
 }
 
 // Sample i < m of a sampled leaf, its position from the table.
@@ -228,21 +242,14 @@ void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D samp
     pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 2, m, lo, size, test);
     pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 3, m, lo, size, test);
   }
-  float texels = float(size.x * size.y);
-  r.occluders += texels * occluding / float(m);
-  r.depthSum += texels * depthSum / float(m);
+  pnTraversalAddSampled(r, size, occluding, depthSum, m);
 }
 
 // One sample of a leaf [lo, lo + size) over the pyramid's level 0 (as pnTraversalSampleAt).
 void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
                          vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
   ivec2 p = pnSampleTexel(position, lo, size);
-  float d = pnPyramidFetch(pyramid, 0, p).x;
-  r.fetches += 1;
-  if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
-    occluding += 1.0;
-    depthSum += d;
-  }
+  pnTraversalCountSample(occluding, depthSum, r, pnPyramidFetch(pyramid, 0, p).x, p, test);
 }
 
 void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
@@ -275,9 +282,7 @@ void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2
     pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 2, m, lo, size, test);
     pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 3, m, lo, size, test);
   }
-  float texels = float(size.x * size.y);
-  r.occluders += texels * occluding / float(m);
-  r.depthSum += texels * depthSum / float(m);
+  pnTraversalAddSampled(r, size, occluding, depthSum, m);
 }
 
 // The test's threshold at the centre of the part [lo, hi): what a min or ramp
@@ -595,9 +600,7 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
             if (i < m) pnTraversalSampleAt(occluding, depthSum, r, mip, positions[i], lo, hi - lo, test);
           }
         }
-        float texels = float((hi.x - lo.x) * (hi.y - lo.y));
-        r.occluders += texels * occluding / float(m);
-        r.depthSum += texels * depthSum / float(m);
+        pnTraversalAddSampled(r, hi - lo, occluding, depthSum, m);
       }
     }
   }

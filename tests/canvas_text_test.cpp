@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/utf8.h"
 #include "draw/canvas.h"
 #include "draw/font.h"
 #include "temp_tree.h"
@@ -132,6 +133,17 @@ TEST_CASE("font: UTF-8 is decoded to code points; a malformed sequence becomes U
   CHECK(pn::decode_utf8("\xff" "a") == std::vector<char32_t>{0xfffd, U'a'});
   CHECK(pn::decode_utf8("\xe2\x88") == std::vector<char32_t>{0xfffd, 0xfffd});  // truncated
   CHECK(pn::decode_utf8("\xc0\xaf") == std::vector<char32_t>{0xfffd, 0xfffd});  // overlong '/'
+}
+
+TEST_CASE("valid_utf8 accepts well-formed UTF-8 and refuses what decode_utf8 replaces") {
+  CHECK(pn::valid_utf8(""));
+  CHECK(pn::valid_utf8("render/m\u00b1\u2212\U0001f600.obj"));
+  CHECK(pn::valid_utf8("\xef\xbf\xbd"));                // U+FFFD itself is a code point like any other
+  CHECK_FALSE(pn::valid_utf8("m\xff.obj"));               // a byte no sequence starts with
+  CHECK_FALSE(pn::valid_utf8("\xe2\x88"));               // truncated
+  CHECK_FALSE(pn::valid_utf8("\xc0\xaf"));               // overlong '/'
+  CHECK_FALSE(pn::valid_utf8("\xed\xa0\x80"));          // a surrogate, U+D800
+  CHECK_FALSE(pn::valid_utf8("\xf4\x90\x80\x80"));     // past U+10FFFF
 }
 
 TEST_CASE("negative: a missing font file is a one-line Error naming the path and fonts-dejavu-core") {

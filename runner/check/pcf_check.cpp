@@ -101,6 +101,17 @@ OcclusionSums sums(const PcfSums& s) {
 
 OcclusionSums sums(const PcfQueryResult& s) { return {s.occluders, s.depth_sum, s.texels}; }
 
+// The bilinear queries run on the GPU against their expected visibilities: only the bilinear
+// weights round (a few float operations on values <= 1), absolute 1e-6.
+CaseResult bilinear_result(const PcfQueryPass& pass, const GlObject& texture, const std::vector<PcfBilinearQuery>& queries,
+                           const std::vector<float>& expected, const std::string& name) {
+  const std::vector<float> observed = pass.bilinear(texture, queries);
+  Image want(static_cast<int>(expected.size()), 1, 1), got(static_cast<int>(expected.size()), 1, 1);
+  for (size_t k = 0; k < expected.size(); ++k) want.texels[k] = expected[k], got.texels[k] = observed[k];
+  const Tolerance tolerance = Tolerance::absolute(1e-6);
+  return {name, tolerance, compare(want, got, tolerance)};
+}
+
 // 2×2 bilinear PCF at positions inside, on texel centres, across the edges and outside the map,
 // and NaN / Inf; receivers at the nearest texel's depth (bias 0: a texel equal to the threshold
 // does not occlude), just before and behind it, with a bias, NaN and +Inf. The threshold is
@@ -126,12 +137,7 @@ CaseResult bilinear_case(const PcfQueryPass& pass, const GlObject& texture, cons
       expected.push_back(static_cast<float>(pcf_bilinear_reference(map, x, y, receiver - bias)));
     }
   }
-  const std::vector<float> observed = pass.bilinear(texture, queries);
-  Image want(static_cast<int>(expected.size()), 1, 1), got(static_cast<int>(expected.size()), 1, 1);
-  for (size_t k = 0; k < expected.size(); ++k) want.texels[k] = expected[k], got.texels[k] = observed[k];
-  const Tolerance tolerance = Tolerance::absolute(1e-6);
-  return {label + " 2x2 bilinear PCF (hard shadow) vs the definition in double", tolerance,
-          compare(want, got, tolerance)};
+  return bilinear_result(pass, texture, queries, expected, label + " 2x2 bilinear PCF (hard shadow) vs the definition in double");
 }
 
 // The same with a receiver plane (pnPcf's plane overload): each of the four texels against the
@@ -163,13 +169,9 @@ CaseResult bilinear_plane_case(const PcfQueryPass& pass, const GlObject& texture
     queries.push_back(q);
     expected.push_back(static_cast<float>(r.visibility));
   }
-  const std::vector<float> observed = pass.bilinear(texture, queries);
-  Image want(static_cast<int>(expected.size()), 1, 1), got(static_cast<int>(expected.size()), 1, 1);
-  for (size_t k = 0; k < expected.size(); ++k) want.texels[k] = expected[k], got.texels[k] = observed[k];
-  const Tolerance tolerance = Tolerance::absolute(1e-6);
-  return {label + " 2x2 bilinear PCF with a receiver plane vs the definition in double (" + std::to_string(open) +
-              " of 700 queries within rounding of a texel's threshold left out)",
-          tolerance, compare(want, got, tolerance)};
+  return bilinear_result(pass, texture, queries, expected,
+                         label + " 2x2 bilinear PCF with a receiver plane vs the definition in double (" +
+                             std::to_string(open) + " of 700 queries within rounding of a texel's threshold left out)");
 }
 
 }  // namespace

@@ -11,35 +11,13 @@
 #include "bench/tables_bench.h"
 #include "bench/traversal_bench.h"
 #include "cli/commands.h"
+#include "core/utf8.h"
 #include "core/bounds.h"
 #include "core/error.h"
 #include "core/write_file.h"
 #include "technique/technique_registry.h"
 
 namespace pn::cli {
-namespace {
-
-// Whether `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
-bool valid_utf8(const std::string& text) {
-  for (size_t i = 0; i < text.size();) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    const int extra = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xE ? 2 : (c >> 3) == 0x1E ? 3 : -1;
-    if (extra < 0 || i + static_cast<size_t>(extra) >= text.size() + (extra == 0 ? 1 : 0)) return false;
-    unsigned code = extra == 0 ? c : c & (0x3F >> extra);
-    for (int k = 1; k <= extra; ++k) {
-      const unsigned char next = static_cast<unsigned char>(text[i + static_cast<size_t>(k)]);
-      if ((next >> 6) != 0x2) return false;
-      code = (code << 6) | (next & 0x3F);
-    }
-    const unsigned least[] = {0, 0x80, 0x800, 0x10000};
-    if (code < least[extra] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return false;
-    i += static_cast<size_t>(extra) + 1;
-  }
-  return true;
-}
-
-}  // namespace
-
 
 void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   struct Options {

@@ -10,6 +10,7 @@
 #include <stb/stb_truetype.h>
 
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace pn {
 
@@ -72,27 +73,6 @@ std::vector<Placed> lay_out(const stbtt_fontinfo& info, const std::string& text,
 }
 
 }  // namespace
-
-std::vector<char32_t> decode_utf8(const std::string& utf8) {
-  std::vector<char32_t> out;
-  const auto byte = [&](size_t i) { return static_cast<unsigned char>(utf8[i]); };
-  for (size_t i = 0; i < utf8.size();) {
-    const unsigned char b = byte(i);
-    const int length = b < 0x80 ? 1 : (b >> 5) == 0x6 ? 2 : (b >> 4) == 0xe ? 3 : (b >> 3) == 0x1e ? 4 : 0;
-    char32_t c = length == 1 ? b : length == 2 ? (b & 0x1f) : length == 3 ? (b & 0x0f) : (b & 0x07);
-    bool ok = length > 0 && i + length <= utf8.size();
-    for (int k = 1; ok && k < length; ++k) {
-      ok = (byte(i + k) & 0xc0) == 0x80;
-      c = (c << 6) | (byte(i + k) & 0x3f);
-    }
-    // Overlong forms, surrogates and values past U+10FFFF are malformed too.
-    static constexpr char32_t kSmallest[] = {0, 0, 0x80, 0x800, 0x10000};
-    if (ok && (c < kSmallest[length] || (c >= 0xd800 && c <= 0xdfff) || c > 0x10ffff)) ok = false;
-    out.push_back(ok ? c : U'\uFFFD');
-    i += ok ? static_cast<size_t>(length) : 1;
-  }
-  return out;
-}
 
 Font::Font(const std::filesystem::path& path) : path_(path), face_(std::make_unique<Face>()) {
   std::error_code ec;

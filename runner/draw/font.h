@@ -50,7 +50,4 @@ class Font {
   std::unique_ptr<Face> face_;
 };
 
-// The code points of UTF-8 text; a malformed byte sequence becomes U+FFFD.
-std::vector<char32_t> decode_utf8(const std::string& utf8);
-
 }  // namespace pn

@@ -3,6 +3,11 @@
 // pipeline's settings and the regions' reference.
 #pragma once
 
+#include <cmath>
+#include <string>
+
+#include "core/format.h"
+
 #include <pcss_regions.h>  // glsl/pcss_regions.h: PN_REGION_*, PN_REFINE_MAX_ITERATIONS, shared with the shaders
 
 namespace pn {
@@ -17,6 +22,11 @@ enum class RegionMode {
 // The largest filter scale c (filter side = c · penumbra) a technique takes: PCSS uses 1; past a
 // few penumbrae the filter only blurs, and its cost grows as c² (exact PCSS, the scans).
 inline constexpr float kMaxFilterScale = 64.0f;
+
+// Whether `c` is a filter scale a technique takes (finite, 0..kMaxFilterScale), and what the
+// error for one that is not expects.
+inline bool valid_filter_scale(float c) { return std::isfinite(c) && c >= 0.0f && c <= kMaxFilterScale; }
+inline std::string expected_filter_scale() { return "0.." + format_number("%g", kMaxFilterScale) + " (the filter side in penumbrae)"; }
 
 // The module's loop bound (pcss_regions.h): more iterations than this refine no further.
 inline constexpr int kRefineMaxIterations = PN_REFINE_MAX_ITERATIONS;

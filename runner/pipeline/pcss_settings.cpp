@@ -14,14 +14,13 @@ void PcssSettings::validate() const {
     return Error("method '" + name + "': " + what + " " + format_number("%g", v) + ": expected " + expected);
   };
   if (!std::isfinite(bias) || bias < 0) throw bad("bias", bias, "a finite number >= 0");
-  if (!std::isfinite(filter_scale) || filter_scale < 0 || filter_scale > kMaxFilterScale)
-    throw bad("filter scale", filter_scale, ("0.." + format_number("%g", kMaxFilterScale) + " (the filter side in penumbrae)").c_str());
+  if (!valid_filter_scale(filter_scale)) throw bad("filter scale", filter_scale, expected_filter_scale().c_str());
   const std::string iterations = "0.." + std::to_string(PN_REFINE_MAX_ITERATIONS);  // pcss_regions.glsl's loop bound
   if (refine_iterations < 0 || refine_iterations > PN_REFINE_MAX_ITERATIONS)
     throw bad("refine iterations", refine_iterations, iterations.c_str());
   if (leaf_side < 1 || leaf_side > 8192) throw bad("leaf side", leaf_side, "1..8192");
-  if (node_budget < 1 || node_budget > PN_TRAVERSAL_NO_BUDGET)
-    throw bad("node budget", node_budget, "1..67108864 (2^26, traversal.h: a budget that never binds)");
+  const std::string budgets = "1.." + std::to_string(PN_TRAVERSAL_NO_BUDGET) + " (traversal.h: a budget that never binds)";
+  if (node_budget < 1 || node_budget > PN_TRAVERSAL_NO_BUDGET) throw bad("node budget", node_budget, budgets.c_str());
   if (leaf_divisor < 0 || leaf_divisor > 8192) throw bad("leaf divisor", leaf_divisor, "0 (off) or 1..8192");
   const std::string grids = "0 (off) or 1.." + std::to_string(PN_GRID_MAX_CELLS);  // traversal.h's loop bound
   if (grid < 0 || grid > PN_GRID_MAX_CELLS) throw bad("grid", grid, grids.c_str());
