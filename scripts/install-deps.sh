@@ -11,6 +11,8 @@ packages="
   python3 python3-glad python3-skimage python3-matplotlib
   libembree-dev libassimp-dev assimp-testmodels fonts-dejavu-core
   clang libfuzzer-14-dev
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
+  spirv-cross libspirv-cross-c-shared-dev
 "
 
 missing=""

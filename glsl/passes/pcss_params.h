@@ -11,17 +11,20 @@
 #include "../poisson_pcss.h"
 #include "../traversal.h"
 
+// One number for one resource of a pass, whatever its kind: Vulkan (and HLSL compiled back to
+// SPIR-V) has one binding namespace a descriptor set, where GL keeps texture units, image units
+// and buffer bindings apart (`penumbra lint` refuses a pass that reuses a number).
 // Texture units.
-#define PN_PCSS_PYRAMID_BINDING 0       // sampler2DArray: the decreased pyramid (depth_pyramid.glsl)
-#define PN_PCSS_GBUFFER_BINDING 1       // sampler2D: Step 2's G-buffer (pcss_search)
-#define PN_PCSS_SAMPLE_TABLE_BINDING 1  // sampler2D: the multi-jittered table (pcss_traverse)
-#define PN_PCSS_ENTRIES_BINDING 2       // sampler2D: the region map a pass reads, (d, x, y, s)
-#define PN_PCSS_PARENTS_BINDING 4       // sampler2D: reuse parent codes (reuse.glsl)
-#define PN_PCSS_RESULTS_BINDING 5       // sampler2D: the representatives' results; pcss_scan: the previous band
-#define PN_PCSS_DEPTH_MAP_BINDING 6     // sampler2D: the pyramid's layer 0, the sanitized map (pcf, poisson_pcss)
-#define PN_PCSS_MIP_BINDING 9           // sampler2D: the aligned min/max mip chain (minmax_mip.glsl)
-#define PN_PCSS_DEPTH_SUMS_BINDING 10   // usampler2D: the summed-area table of depth (summed_area.glsl)
-#define PN_PCSS_SHADE_GBUFFER_BINDING 3  // sampler2D: the G-buffer the one-call passes read (pcss_one_call.glsl)
+#define PN_PCSS_PYRAMID_BINDING 4       // sampler2DArray: the decreased pyramid (depth_pyramid.glsl)
+#define PN_PCSS_GBUFFER_BINDING 5       // sampler2D: Step 2's G-buffer (pcss_search)
+#define PN_PCSS_SAMPLE_TABLE_BINDING 5  // sampler2D: the multi-jittered table (pcss_traverse)
+#define PN_PCSS_ENTRIES_BINDING 6       // sampler2D: the region map a pass reads, (d, x, y, s)
+#define PN_PCSS_PARENTS_BINDING 8       // sampler2D: reuse parent codes (reuse.glsl)
+#define PN_PCSS_RESULTS_BINDING 9       // sampler2D: the representatives' results; pcss_scan: the previous band
+#define PN_PCSS_DEPTH_MAP_BINDING 10    // sampler2D: the pyramid's layer 0, the sanitized map (pcf, poisson_pcss)
+#define PN_PCSS_MIP_BINDING 11          // sampler2D: the aligned min/max mip chain (minmax_mip.glsl)
+#define PN_PCSS_DEPTH_SUMS_BINDING 12  // usampler2D: the summed-area table of depth (summed_area.glsl)
+#define PN_PCSS_SHADE_GBUFFER_BINDING 7  // sampler2D: the G-buffer the one-call passes read (pcss_one_call.glsl)
 
 // Image units (GLSL ES 3.1 guarantees 4: 0..3).
 #define PN_PCSS_FILTER_MAP_IMAGE 0    // pcss_filter: the filter-region map
@@ -37,9 +40,9 @@
 
 // Buffers.
 #define PN_PCSS_WORK_LIST_BINDING 0     // SSBO: pcss_work.glsl's list
-#define PN_PCSS_PARAMS_BINDING 7
-#define PN_PCSS_POISSON_DISK_BINDING 8          // the staged Poisson passes' disk; the one call's blocker disk
-#define PN_PCSS_POISSON_FILTER_DISK_BINDING 9   // the one call's PCF disk (pcss_one_call.glsl)
+#define PN_PCSS_PARAMS_BINDING 13
+#define PN_PCSS_POISSON_DISK_BINDING 14         // the staged Poisson passes' disk; the one call's blocker disk
+#define PN_PCSS_POISSON_FILTER_DISK_BINDING 15  // the one call's PCF disk (pcss_one_call.glsl)
 
 // How an estimating pass picks its pixels (pcss_work.glsl).
 #define PN_WORK_ALL 0     // every pixel computes

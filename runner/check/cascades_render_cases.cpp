@@ -30,7 +30,7 @@ namespace pn {
 // uniform samples, pixels without a surface) and per-cascade visibilities of seeded noise,
 // against the selection and blend in double. The weight's bound as in the selection cases.
 void blend_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  const CascadeBlendPass pass(env.context, env.tree);
+  const CascadeBlendPass pass(env.context(), env.tree);
   const float near = 0.5f, far = 400.0f;
   const int size = 64;
   for (int count = 1; count <= PN_CASCADES_MAX; ++count) {
@@ -56,17 +56,17 @@ void blend_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& resu
       view_depth.at(x, y, 3) = k % 17 == 5 ? 0.0f : 1.0f;  // some pixels see no surface
       for (Image& v : visibility) v.at(x, y) = static_cast<float>(unit(random));
     }
-    const FloatTexture view_texture = upload_float_texture(env.context, view_depth);
+    const FloatTexture view_texture = upload_float_texture(env.context(), view_depth);
     std::vector<GlObject> textures;
     std::vector<const GlObject*> pointers;
-    for (const Image& v : visibility) textures.push_back(upload_float_texture(env.context, v));
+    for (const Image& v : visibility) textures.push_back(upload_float_texture(env.context(), v));
     for (const GlObject& t : textures) pointers.push_back(&t);
     CascadeInputs inputs;
     inputs.layers.resize(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) inputs.split_far[i] = split_far[static_cast<size_t>(i)];
     inputs.view_depth = &view_texture, inputs.near = near, inputs.band = static_cast<float>(settings.band);
     inputs.fade_last = count % 2 == 0;
-    const Image observed = read_float_texture(env.context, pass.run(inputs, pointers, size));
+    const Image observed = read_float_texture(env.context(), pass.run(inputs, pointers, size));
     Image expected(size, size, 1);
     double narrowest = INFINITY;
     std::vector<double> split_far_d(split_far.begin(), split_far.end());
@@ -112,10 +112,10 @@ struct CityRig {
   static constexpr int kMap = 512;
   explicit CityRig(const CheckEnvironment& env)
       : city(make_city_scene(fixtures::kCityScenes[0], kMap)),
-        resources(env.context, env.tree),
-        gbuffer(env.context, env.tree),
-        maps(env.context, env.tree),
-        blend(env.context, env.tree) {}
+        resources(env.context(), env.tree),
+        gbuffer(env.context(), env.tree),
+        maps(env.context(), env.tree),
+        blend(env.context(), env.tree) {}
   const Scene city;
   TechniqueResources resources;
   const GBufferRenderer gbuffer;
@@ -138,18 +138,18 @@ void city_hard_shadow_cases(const CheckEnvironment& env, CityRig& rig, std::vect
   const Truth truth = trace_truth(city, kScreen, truth_settings);
   const auto pcf = parse_technique("pcf")->create(rig.resources);
   const GBufferRenderer& gbuffer = rig.gbuffer;
-  const auto full = find_shadow_map_source("full").make(env.context, env.tree, {});
-  const SceneFrame whole = render_scene_frame(env.context, *full, gbuffer, city, kScreen);
+  const auto full = find_shadow_map_source("full").make(env.context(), env.tree, {});
+  const SceneFrame whole = render_scene_frame(env.context(), *full, gbuffer, city, kScreen);
   const double whole_error = hard_shadow_mismatch(
-      read_float_texture(env.context, pcf->run(whole.inputs(), false).visibility, kScreen, kScreen, 1), truth);
+      read_float_texture(env.context(), pcf->run(whole.inputs(), false).visibility, kScreen, kScreen, 1), truth);
   std::vector<double> errors;
   for (int count = 1; count <= PN_CASCADES_MAX; ++count) {
     CascadeSettings settings;
     settings.count = count, settings.map_size = kMap;
-    const auto frame = render_cascaded_frame(env.context, rig.maps, gbuffer, city, settings, kScreen);
-    const CascadedTechnique on_cascades(*pcf, rig.blend, env.context);
+    const auto frame = render_cascaded_frame(env.context(), rig.maps, gbuffer, city, settings, kScreen);
+    const CascadedTechnique on_cascades(*pcf, rig.blend, env.context());
     errors.push_back(hard_shadow_mismatch(
-        read_float_texture(env.context, on_cascades.run(frame->inputs(city.light), false).visibility, kScreen, kScreen, 1),
+        read_float_texture(env.context(), on_cascades.run(frame->inputs(city.light), false).visibility, kScreen, kScreen, 1),
         truth));
   }
   std::string table = "whole-scene map " + format_number("%.4f", whole_error);
@@ -166,14 +166,14 @@ void city_hard_shadow_cases(const CheckEnvironment& env, CityRig& rig, std::vect
   // hard PCF's calls in fragment shaders equal their compute passes, blended.
   CascadeSettings three;
   three.count = 3, three.map_size = kMap;
-  const auto frame = render_cascaded_frame(env.context, rig.maps, gbuffer, city, three, kScreen);
+  const auto frame = render_cascaded_frame(env.context(), rig.maps, gbuffer, city, three, kScreen);
   for (const char* name : {"pcf", "fast"}) {
     const auto technique = parse_technique(name)->create(rig.resources);
-    const CascadedTechnique on_cascades(*technique, rig.blend, env.context);
+    const CascadedTechnique on_cascades(*technique, rig.blend, env.context());
     TechniqueInputs inputs = frame->inputs(city.light);
-    const Image computed = read_float_texture(env.context, on_cascades.run(inputs, false).visibility);
+    const Image computed = read_float_texture(env.context(), on_cascades.run(inputs, false).visibility);
     inputs.stage = ShadeStage::fragment;
-    const Image fragment = read_float_texture(env.context, on_cascades.run(inputs, false).visibility);
+    const Image fragment = read_float_texture(env.context(), on_cascades.run(inputs, false).visibility);
     results.push_back({std::string("city, 3 cascades: ") + name + "'s call in fragment shaders vs compute passes",
                        Tolerance::exact(), compare(computed, fragment, Tolerance::exact())});
   }
@@ -226,21 +226,21 @@ void seam_cases(const CheckEnvironment& env, CityRig& rig, std::vector<CaseResul
   const CascadeBlendPass& blend = rig.blend;
   CascadeSettings settings;
   settings.count = 3, settings.map_size = CityRig::kMap;
-  const auto frame = render_cascaded_frame(env.context, rig.maps, rig.gbuffer, city, settings, kScreen);
+  const auto frame = render_cascaded_frame(env.context(), rig.maps, rig.gbuffer, city, settings, kScreen);
   std::vector<TechniqueFrame> runs;
   for (const TechniqueInputs& layer : frame->layers.layers) runs.push_back(fast->run(layer, false));
   std::vector<const GlObject*> visibilities;
   std::vector<Image> layers;
   for (const TechniqueFrame& run : runs) {
     visibilities.push_back(&run.visibility);
-    layers.push_back(read_float_texture(env.context, run.visibility));
+    layers.push_back(read_float_texture(env.context(), run.visibility));
   }
-  const Image view_depth = read_float_texture(env.context, frame->view_depth);
+  const Image view_depth = read_float_texture(env.context(), frame->view_depth);
   SeamMeasure measures[2];
   for (int b = 0; b < 2; ++b) {
     CascadeInputs inputs = frame->layers;
     inputs.band = b == 0 ? static_cast<float>(settings.band) : 0.0f;
-    const Image out = read_float_texture(env.context, blend.run(inputs, visibilities, kScreen));
+    const Image out = read_float_texture(env.context(), blend.run(inputs, visibilities, kScreen));
     measures[b] = seam_measure(out, layers, view_depth, frame->cascades);
   }
   const std::string numbers = "band 0.1: " + format_number("%.4f", measures[0].excess) + " over " +

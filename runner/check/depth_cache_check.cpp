@@ -51,7 +51,7 @@ struct Worst {
 };
 
 void module_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  const DepthCacheQueryPass pass(env.context, env.tree);
+  const DepthCacheQueryPass pass(env.context(), env.tree);
   const auto& fx = fixtures::kTextureFixtures;
   const size_t count = std::size(fx);
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
@@ -59,7 +59,7 @@ void module_cases(const CheckEnvironment& env, std::vector<CaseResult>& results)
     for (size_t j : {i, (i + 3) % count}) {
       const Image a = generate_fixture(fx[i], kFixtureWidth, kFixtureHeight);
       const Image b = generate_fixture(fx[j], kFixtureWidth, kFixtureHeight);
-      const GlObject ta = upload_float_texture(env.context, a), tb = upload_float_texture(env.context, b);
+      const GlObject ta = upload_float_texture(env.context(), a), tb = upload_float_texture(env.context(), b);
       const Image composed = depth_cache_compose_reference(a, b);
       std::vector<DepthCacheQuery> queries;
       for (int y = 0; y < a.height; ++y)
@@ -87,11 +87,11 @@ void module_cases(const CheckEnvironment& env, std::vector<CaseResult>& results)
 }
 
 void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  const DepthCacheComposer composer(env.context, env.tree);
+  const DepthCacheComposer composer(env.context(), env.tree);
   const int n = 70;
   const Image a = generate_fixture(fixtures::kTextureFixtures[std::size(fixtures::kTextureFixtures) - 1], n, n);
   const Image b = generate_fixture(fixtures::kTextureFixtures[std::size(fixtures::kTextureFixtures) - 2], n, n);
-  const GlObject ta = upload_float_texture(env.context, a), tb = upload_float_texture(env.context, b);
+  const GlObject ta = upload_float_texture(env.context(), a), tb = upload_float_texture(env.context(), b);
   const Image composed = depth_cache_compose_reference(a, b);
   constexpr float kUntouched = -7.0f;
   SeededRandom random(0x5eed0133u);
@@ -101,10 +101,10 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
       const int x = random.uniform_int(-5, n), y = random.uniform_int(-5, n);
       list.push_back({x, y, x + random.uniform_int(1, 25), y + random.uniform_int(1, 25)});
     }
-    const FloatTexture target = upload_float_texture(env.context, Image(n, n, 1, kUntouched));
+    const FloatTexture target = upload_float_texture(env.context(), Image(n, n, 1, kUntouched));
     TexelList texels;
     const TexelRun run = texels.add(list, n, n);  // overlapping rectangles list a texel twice: harmless
-    texels.upload(env.context);
+    texels.upload(env.context());
     if (rects == 0) composer.compose(ta, tb, target, n);  // no list: the whole map
     else composer.compose(ta, tb, target, n, run, &texels);
     Image expected(n, n, 1, kUntouched);
@@ -117,7 +117,7 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
     results.push_back({"compose pass " + std::to_string(n) + "x" + std::to_string(n) + ", " +
                            (rects == 0 ? std::string("whole map") : std::to_string(rects) + " seeded rectangles' texels") +
                            ": composed there, untouched elsewhere",
-                       Tolerance::exact(), compare(expected, read_float_texture(env.context, target), Tolerance::exact())});
+                       Tolerance::exact(), compare(expected, read_float_texture(env.context(), target), Tolerance::exact())});
   }
 }
 
@@ -134,7 +134,7 @@ bool outside_map(const Box& b) {
 }  // namespace
 
 std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const MotionSequence& sequence) {
-  const Context& context = env.context;
+  const Context& context = env.context();
   const int n = sequence.map_size;
   const std::filesystem::path model = animated_scene_model("");
   AnimatedScene animation(find_animated_scene_fixture("moving"), sequence.k, n, model);

@@ -65,18 +65,18 @@ CaseResult square_case(const std::string& name, const DepthPyramidQuery& query, 
 }  // namespace
 
 std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
-  const DepthPyramidBuilder builder(env.context, env.tree);
-  const DepthPyramidQuery query(env.context, env.tree);
+  const DepthPyramidBuilder builder(env.context(), env.tree);
+  const DepthPyramidQuery query(env.context(), env.tree);
   std::vector<CaseResult> results;
 
   for (const auto& fixture : fixtures::kTextureFixtures) {
     for (int n : kLevelSizes) {
       const Image map = generate_fixture(fixture, n, n);
-      const GlObject map_texture = upload_float_texture(env.context, map);
+      const GlObject map_texture = upload_float_texture(env.context(), map);
       const DepthPyramid pyramid = builder.build(map_texture, n, n, 31);
       const float m = largest_finite_magnitude(map, FLT_MIN);
       for (int level = 0; level < pyramid.levels; ++level) {
-        const Image observed = read_pyramid_level(env.context, pyramid, level);
+        const Image observed = read_pyramid_level(env.context(), pyramid, level);
         const Image expected = pyramid_level_reference(map, level);
         const std::string name = label(fixture.name, n) + " level " + std::to_string(level);
         const Tolerance exact = Tolerance::exact();
@@ -94,7 +94,7 @@ std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
     const auto& fixture = find_fixture(name);
     for (int n : kAllSquaresSizes) {
       const Image map = generate_fixture(fixture, n, n);
-      const DepthPyramid pyramid = builder.build(upload_float_texture(env.context, map), n, n, 31);
+      const DepthPyramid pyramid = builder.build(upload_float_texture(env.context(), map), n, n, 31);
       std::vector<Query> queries;
       for (int s = 1; s <= n; ++s)
         for (int v = 0; v + s <= n; ++v)
@@ -108,7 +108,7 @@ std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
     const auto& fixture = find_fixture(name);
     for (int n : kRandomSquaresSizes) {
       const Image map = generate_fixture(fixture, n, n);
-      const GlObject map_texture = upload_float_texture(env.context, map);
+      const GlObject map_texture = upload_float_texture(env.context(), map);
       std::vector<Query> queries;
       for (int k = 0; k < kRandomSquares; ++k) {
         const int s = random.uniform_int(1, n);

@@ -88,7 +88,7 @@ std::vector<PcssSettings> one_call_settings() {
 }  // namespace
 
 std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
-  const Context& context = env.context;
+  const Context& context = env.context();
   const PcssPipeline pipeline(context, env.tree);
   FullRenderSource source(context, env.tree);
   const GBufferRenderer gbuffers(context, env.tree);

@@ -57,7 +57,7 @@ glm::mat4 reversed_z(double fov, double near_plane, double far_plane) {
 }
 
 void depth_buffer_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  const LightDepthQueryPass gpu(env.context, env.tree);
+  const LightDepthQueryPass gpu(env.device, env.tree);
   const DepthProjection projections[] = {
       {"perspective 90 deg, near 1, far 100", glm::perspective(1.5707963f, 1.0f, 1.0f, 100.0f), 1.0, 100.0},
       {"perspective 60 deg, near 0.1, far 1000", glm::perspective(1.0471976f, 1.0f, 0.1f, 1000.0f), 0.1, 1000.0},
@@ -107,7 +107,7 @@ void depth_buffer_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
 }  // namespace
 
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
-  const LightModelQueryPass gpu(env.context, env.tree);
+  const LightModelQueryPass gpu(env.device, env.tree);
   std::vector<CaseResult> results;
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   // Area lights (perspective maps), then directional lights on orthographic maps: the sun

@@ -1,5 +1,6 @@
 #include "check/module_check.h"
 
+#include "core/error.h"
 #include "core/named.h"
 
 namespace pn {
@@ -28,6 +29,12 @@ std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env);
 
+const Context& CheckEnvironment::context() const {
+  if (gl == nullptr)
+    throw Error("this case runs GL passes: it runs on a GL context only (--api gl450 or es310)", ExitCode::failed);
+  return *gl;
+}
+
 const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
       {"blur", "separable Gaussian (two 1-D passes) vs direct 2-D convolution; depth-aware vs its 1-D definition",
@@ -37,13 +44,13 @@ const std::vector<ModuleCheck>& module_checks() {
       {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
        &run_region_check},
       {"sample_table", "multi-jittered strata of the table; the 3.2 selection and scaling vs the paper's arithmetic",
-       &run_sample_table_check},
+       &run_sample_table_check, OffGl::every_case},
       {"traversal", "leaf 1 vs brute force (exact counts); sampled / min leaves and budgets vs the CPU recursion",
        &run_traversal_check},
       {"reuse", "parent links, representatives and gathered values vs explicit parent pointers and root finding",
        &run_reuse_check},
       {"light_model", "blocker-window, search-width and penumbra widths vs runner/scene/light_model.h",
-       &run_light_model_check},
+       &run_light_model_check, OffGl::every_case},
       {"shadow_map", "each scene's shadow map and G-buffer vs CPU ray casts through every texel / pixel centre",
        &run_shadow_map_check},
       {"pcss_regions", "search entries (lit decisions, refined sides), filter entries and their regions in every mode vs "
@@ -55,15 +62,15 @@ const std::vector<ModuleCheck>& module_checks() {
                     "and fragment shader vs compute pass (exact); exact and all-off vs exact PCSS brute force on the CPU",
        &run_fast_pcss_check},
       {"pcf", "brute-force window scan (whole, banded, bounded side) vs the definition in double; counts exact",
-       &run_pcf_check},
+       &run_pcf_check, OffGl::every_case},
       {"poisson_pcss", "Poisson-disk samples (parameter and constant disks, rotation) vs the definition in double",
-       &run_poisson_pcss_check},
+       &run_poisson_pcss_check, OffGl::every_case},
       {"vogel_pcss", "Vogel-disk samples (counts 1..128, turns) and the interleaved-gradient-noise rotation vs the "
                      "definition in double, within GPU sin/cos error",
-       &run_vogel_pcss_check},
+       &run_vogel_pcss_check, OffGl::every_case},
       {"receiver_plane", "receiver-plane gradient from G-buffer neighbours (edges, invalid and singular steps, clamps) "
                          "and its range over rectangles vs the definition in double",
-       &run_receiver_plane_check},
+       &run_receiver_plane_check, OffGl::every_case},
       {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
        &run_truth_check},
       {"summed_area", "64-bit fixed-point summed-area tables: depth and moment sums vs direct box sums (exact), float "
@@ -76,7 +83,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_depth_cache_check},
       {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
-       &run_cascades_check},
+       &run_cascades_check, OffGl::query_cases,
+       "the blend pass over rendered cascades and the city scene"},
       {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
               "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
        &run_vsm_check},

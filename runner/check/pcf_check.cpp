@@ -103,7 +103,7 @@ OcclusionSums sums(const PcfQueryResult& s) { return {s.occluders, s.depth_sum, 
 
 // The bilinear queries run on the GPU against their expected visibilities: only the bilinear
 // weights round (a few float operations on values <= 1), absolute 1e-6.
-CaseResult bilinear_result(const PcfQueryPass& pass, const GlObject& texture, const std::vector<PcfBilinearQuery>& queries,
+CaseResult bilinear_result(const PcfQueryPass& pass, const DeviceTexture& texture, const std::vector<PcfBilinearQuery>& queries,
                            const std::vector<float>& expected, const std::string& name) {
   const std::vector<float> observed = pass.bilinear(texture, queries);
   Image want(static_cast<int>(expected.size()), 1, 1), got(static_cast<int>(expected.size()), 1, 1);
@@ -117,7 +117,7 @@ CaseResult bilinear_result(const PcfQueryPass& pass, const GlObject& texture, co
 // does not occlude), just before and behind it, with a bias, NaN and +Inf. The threshold is
 // the same float subtraction on both sides (correctly rounded in GLSL), so only the bilinear
 // weights round: a few float operations on values <= 1, absolute 1e-6.
-CaseResult bilinear_case(const PcfQueryPass& pass, const GlObject& texture, const Image& map, const std::string& label) {
+CaseResult bilinear_case(const PcfQueryPass& pass, const DeviceTexture& texture, const Image& map, const std::string& label) {
   std::mt19937 random(0xb111);
   std::uniform_real_distribution<float> position(-3.0f, kMapSize + 3.0f);
   std::vector<std::pair<float, float>> positions{{0.5f, 0.5f}, {kMapSize - 0.5f, kMapSize - 0.5f}, {0.0f, 150.25f},
@@ -145,7 +145,7 @@ CaseResult bilinear_case(const PcfQueryPass& pass, const GlObject& texture, cons
 // outside the map. A query with a texel within rounding of its own threshold (2^-20 of the
 // magnitudes: the GPU rounds the threshold's terms in float) is left out and counted; the rest
 // within the bilinear weights' rounding, 1e-6.
-CaseResult bilinear_plane_case(const PcfQueryPass& pass, const GlObject& texture, const Image& map,
+CaseResult bilinear_plane_case(const PcfQueryPass& pass, const DeviceTexture& texture, const Image& map,
                                const std::string& label) {
   std::mt19937 random(0xb112);
   std::uniform_real_distribution<float> position(-3.0f, kMapSize + 3.0f), slope(-0.3f, 0.3f);
@@ -177,8 +177,8 @@ CaseResult bilinear_plane_case(const PcfQueryPass& pass, const GlObject& texture
 }  // namespace
 
 std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
-  const PcfQueryPass pass(env.context, env.tree);
-  const PcfQueryPass bounded(env.context, env.tree, kSmallMaxSide);
+  const PcfQueryPass pass(env.device, env.tree);
+  const PcfQueryPass bounded(env.device, env.tree, kSmallMaxSide);
   const std::vector<Window> all_windows = windows();
   std::vector<CaseResult> results;
   long queries_total = 0, left_out_total = 0;
@@ -187,7 +187,8 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
     const Image map = generate_fixture(fixture, kMapSize, kMapSize);
     for (float d : map.texels)
       if (std::isfinite(d) && d < 0.0f) throw Error(std::string("pcf check: fixture '") + fixture.name + "' has depths < 0");
-    const GlObject texture = upload_float_texture(env.context, map);
+    const std::unique_ptr<DeviceTexture> uploaded = env.device.upload(map);
+    const DeviceTexture& texture = *uploaded;
     const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
 
     struct Variant {

@@ -50,7 +50,7 @@ namespace pn {
 
 std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
   using namespace pcss_regions_cases;
-  const PcssRegionsQueryPass pass(env.context, env.tree);
+  const PcssRegionsQueryPass pass(env.context(), env.tree);
   std::vector<CaseResult> results;
   SearchTally tally;
   fixture_cases(env, pass, results, tally);

@@ -125,8 +125,8 @@ void synthetic_cases(std::vector<CaseResult>& results, const PcssRegionsQueryPas
 
 void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass, std::vector<CaseResult>& results,
                    SearchTally& tally) {
-  const DepthPyramidBuilder builder(env.context, env.tree);
-  const MinMaxMipBuilder mip_builder(env.context, env.tree);
+  const DepthPyramidBuilder builder(env.context(), env.tree);
+  const MinMaxMipBuilder mip_builder(env.context(), env.tree);
   std::string counts, refining;  // "0/1/8/100", "1/8/100"
   for (int i : iteration_counts()) {
     counts += (counts.empty() ? "" : "/") + std::to_string(i);
@@ -136,7 +136,7 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
   bool first = true;
   for (const FixtureMap& f : fixture_maps()) {
     const int n = f.map.width;
-    const GlObject texture = upload_float_texture(env.context, f.map);
+    const GlObject texture = upload_float_texture(env.context(), f.map);
     const DepthPyramid pyramid = builder.build(texture, n, n, f.max_level);
     const MinMaxMipChain mip = mip_builder.build(texture, n);
     const DepthScan scan(f.map);

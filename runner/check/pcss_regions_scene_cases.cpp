@@ -28,16 +28,16 @@ struct SceneData {
 SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int map_size = kSceneMap,
                      int screen_size = kSceneScreen) {
   const Scene scene = make_scene(find_scene_fixture(scene_name), map_size);
-  FullRenderSource source(env.context, env.tree);
-  const GBufferRenderer gbuffers(env.context, env.tree);
-  const SceneFrame frame = render_scene_frame(env.context, source, gbuffers, scene, screen_size);
+  FullRenderSource source(env.context(), env.tree);
+  const GBufferRenderer gbuffers(env.context(), env.tree);
+  const SceneFrame frame = render_scene_frame(env.context(), source, gbuffers, scene, screen_size);
   SceneData s;
   s.name = std::string(scene_name) + " " + std::to_string(map_size) + "² map, " + std::to_string(screen_size) + "² screen";
   s.light = scene.light;
-  s.map = read_float_texture(env.context, *frame.shadow_map, map_size, map_size, 1);
-  s.gbuffer = read_float_texture(env.context, frame.gbuffer);
-  s.pyramid = DepthPyramidBuilder(env.context, env.tree).build(*frame.shadow_map, map_size, map_size, 31);
-  s.mip = MinMaxMipBuilder(env.context, env.tree).build(*frame.shadow_map, map_size);
+  s.map = read_float_texture(env.context(), *frame.shadow_map, map_size, map_size, 1);
+  s.gbuffer = read_float_texture(env.context(), frame.gbuffer);
+  s.pyramid = DepthPyramidBuilder(env.context(), env.tree).build(*frame.shadow_map, map_size, map_size, 31);
+  s.mip = MinMaxMipBuilder(env.context(), env.tree).build(*frame.shadow_map, map_size);
   for (int y = 0; y < screen_size; ++y)
     for (int x = 0; x < screen_size; ++x)
       s.receivers.push_back({s.gbuffer.at(x, y, 0), s.gbuffer.at(x, y, 1), s.gbuffer.at(x, y, 2), s.gbuffer.at(x, y, 3)});
@@ -47,7 +47,7 @@ SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int ma
 }  // namespace
 
 LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode, const char* scene_name) {
-  const PcssRegionsQueryPass pass(env.context, env.tree);
+  const PcssRegionsQueryPass pass(env.context(), env.tree);
   const bool boxes = std::string(scene_name) == "boxes";
   const SceneData scene = boxes ? scene_data(env, scene_name, kBoxesMap, kBoxesScreen) : scene_data(env, scene_name);
   const PcssSettings defaults;

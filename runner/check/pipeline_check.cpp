@@ -142,7 +142,7 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
 }  // namespace
 
 std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
-  const Context& context = env.context;
+  const Context& context = env.context();
   const PcssPipeline pipeline(context, env.tree);
   FullRenderSource source(context, env.tree);
   const GBufferRenderer gbuffers(context, env.tree);

@@ -69,7 +69,7 @@ OcclusionSums sums(const PoissonPcssGpuResult& s) { return {s.occluders, s.depth
 }  // namespace
 
 std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
-  const PoissonPcssQueryPass pass(env.context, env.tree);
+  const PoissonPcssQueryPass pass(env.device, env.tree);
   const std::vector<Sample> parameter_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, kParameterDiskSeed).points;
   const std::vector<Sample> const_disk = poisson_disk(kPoissonQueryConstCount, kPoissonQueryConstSeed).points;
   std::vector<CaseResult> results;
@@ -80,7 +80,8 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
     const Image map = generate_fixture(fixture, kMapSize, kMapSize);
     for (float d : map.texels)
       if (std::isfinite(d) && d < 0.0f) throw Error(std::string("poisson_pcss check: fixture '") + fixture.name + "' has depths < 0");
-    const GlObject texture = upload_float_texture(env.context, map);
+    const std::unique_ptr<DeviceTexture> uploaded = env.device.upload(map);
+    const DeviceTexture& texture = *uploaded;
     const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
 
     for (const PoissonDiskSource source :

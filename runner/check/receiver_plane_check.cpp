@@ -46,7 +46,7 @@ Step3 step_error(const Entry4& centre, const Entry4& minus, const Entry4& plus) 
 }  // namespace
 
 std::vector<CaseResult> run_receiver_plane_check(const CheckEnvironment& env) {
-  const ReceiverPlaneQueryPass pass(env.context, env.tree);
+  const ReceiverPlaneQueryPass pass(env.device, env.tree);
   SeededRandom random(0x5eed0025u);
   std::vector<ReceiverPlaneGpuQuery> queries;
   for (int k = 0; k < 2000; ++k) {

@@ -41,7 +41,7 @@ Image region_map(int w, int h, std::uint32_t seed) {
 }  // namespace
 
 std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
-  const ReusePass pass(env.context, env.tree);
+  const ReusePass pass(env.context(), env.tree);
   const Tolerance exact = Tolerance::exact();
   std::vector<CaseResult> results;
   struct Size { int w, h; };
@@ -51,15 +51,15 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
     Image values(size.w, size.h);
     SeededRandom random(seed++);
     for (float& v : values.texels) v = random.uniform_float(0.0f, 1.0f);
-    const GlObject entry_texture = upload_float_texture(env.context, entries);
-    const GlObject value_texture = upload_float_texture(env.context, values);
+    const GlObject entry_texture = upload_float_texture(env.context(), entries);
+    const GlObject value_texture = upload_float_texture(env.context(), values);
     for (ReuseParams params : {ReuseParams{0.0f, 0.1f, 0.1f, 4}, ReuseParams{0.0f, 0.1f, 0.1f, 2},
                                ReuseParams{0.0f, 0.1f, 0.1f, 8}, ReuseParams{0.0f, 0.0f, 0.0f, 4},
                                ReuseParams{0.5f, 0.3f, 0.3f, 4}}) {
       const FloatTexture parents = pass.link(entry_texture, size.w, size.h, params);
       const FloatTexture gathered = pass.gather(parents, value_texture, size.w, size.h, params.tile);
-      const Image observed_parents = read_float_texture(env.context, parents);
-      const Image observed = read_float_texture(env.context, gathered);
+      const Image observed_parents = read_float_texture(env.context(), parents);
+      const Image observed = read_float_texture(env.context(), gathered);
 
       const std::vector<int> parent = reuse_parents(entries, params);
       const std::vector<int> root = reuse_roots(parent);

@@ -53,7 +53,7 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
       for (int side = 0; side <= 40; ++side)
         for (int i = 0; i < 16; ++i) queries.push_back({float(px), float(py), float(side), float(i)});
   const Image input = query_image(queries);
-  const std::vector<Image> observed = SampleTableQueryPass(env.context, env.tree).run(table, input);
+  const std::vector<Image> observed = SampleTableQueryPass(env.device, env.tree).run(table, input);
 
   Image expected_a(input.width, input.height, 4), expected_b(input.width, input.height, 4);
   for (int y = 0; y < input.height; ++y)
@@ -82,7 +82,7 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
       for (int set = 0; set < SampleTable::kSets; ++set)
         for (int i = 0; i < (1 << (2 * k)); ++i) cmj.push_back({float(k), float(i), float(set), float(seed)});
   const Image cmj_input = query_image(cmj);
-  const Image positions = CorrelatedMultiJitterQueryPass(env.context, env.tree).run(cmj_input);
+  const Image positions = CorrelatedMultiJitterQueryPass(env.device, env.tree).run(cmj_input);
   size_t at = 0;
   for (int seed : {1, 2, 12345})
     for (int k = 0; k <= 3; ++k) {

@@ -293,14 +293,14 @@ void push(std::vector<CaseResult>& results, const std::string& name, const Bound
 }  // namespace
 
 std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
-  const SummedAreaMomentsPass tables(env.context, env.tree);
-  const MinMaxMipBuilder mips(env.context, env.tree);
-  const SavsmPass pass(env.context, env.tree);
+  const SummedAreaMomentsPass tables(env.context(), env.tree);
+  const MinMaxMipBuilder mips(env.context(), env.tree);
+  const SavsmPass pass(env.context(), env.tree);
   std::vector<CaseResult> results;
   for (const MapCase& mc : kMaps) {
     const int n = mc.size;
     const Image map = savsm_map(n);
-    const GlObject texture = upload_float_texture(env.context, map);
+    const GlObject texture = upload_float_texture(env.context(), map);
     const MomentsTable table = tables.build(texture, MomentsTableKind::fixed, unit_range(kNear, kFar));
     const MinMaxMipChain mip = mips.build(texture, n);
     const std::vector<SavsmReceiver> rs = receivers(map, mc.receivers);

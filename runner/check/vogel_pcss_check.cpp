@@ -59,7 +59,7 @@ double noise_bound(double x, double y) {
 }  // namespace
 
 std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
-  const VogelPcssQueryPass pass(env.context, env.tree);
+  const VogelPcssQueryPass pass(env.device, env.tree);
   std::vector<CaseResult> results;
   long samples_total = 0, ambiguous_total = 0;
   BoundedElements noise;
@@ -68,7 +68,8 @@ std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
 
   for (const auto& fixture : fixtures::kTextureFixtures) {
     const Image map = generate_fixture(fixture, kMapSize, kMapSize);
-    const GlObject texture = upload_float_texture(env.context, map);
+    const std::unique_ptr<DeviceTexture> uploaded = env.device.upload(map);
+    const DeviceTexture& texture = *uploaded;
     const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
     std::vector<VogelPcssGpuQuery> gpu;
     for (const float diameter : {0.0f, 0.5f, 1.0f, 2.5f, 7.0f, 20.0f, 64.0f, 150.0f, 700.0f})

@@ -149,12 +149,12 @@ struct Gpu {
   DepthPyramidBuilder pyramid;
 
   Image read(const VsmMoments& m) const {
-    return channels_of(read_float_texture(env.context, m.texture, m.size, m.size, m.stored), 0, m.channels);
+    return channels_of(read_float_texture(env.context(), m.texture, m.size, m.size, m.stored), 0, m.channels);
   }
 
   GpuRun run(const Image& depth, const std::vector<VsmQuery>& queries, const VsmParams& params) const {
     const int n = depth.width;
-    const GlObject map = upload_float_texture(env.context, depth);
+    const GlObject map = upload_float_texture(env.context(), depth);
     const VsmMoments raw = moments.moments(map, n, n, params);
     const VsmMoments blurred = moments.blurred(raw, params);
     const DepthPyramid built = pyramid.build(map, n, n, 30);
@@ -272,8 +272,8 @@ void bleeding_cases(const Gpu& gpu, const VsmParams& params, std::vector<CaseRes
 }  // namespace
 
 std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env) {
-  const Gpu gpu{env, VsmMomentsPass(env.context, env.tree), VsmQueryPass(env.context, env.tree),
-                DepthPyramidBuilder(env.context, env.tree)};
+  const Gpu gpu{env, VsmMomentsPass(env.context(), env.tree), VsmQueryPass(env.context(), env.tree),
+                DepthPyramidBuilder(env.context(), env.tree)};
   std::vector<CaseResult> results;
   const std::vector<Map> all = maps();
   for (VsmKind kind : kKinds) {

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -7,8 +8,25 @@
 #include "core/format.h"
 #include "gl/context.h"
 #include "modules/blur.h"
+#include "vk/vulkan_device.h"
 
 namespace pn::cli {
+
+namespace {
+
+// --api vulkan | hlsl: the query-pass checks on a Vulkan device (vk/vulkan_device.h); else null.
+std::optional<PassLanguage> vulkan_language(const GlobalOptions& global) {
+  if (global.api == "vulkan") return PassLanguage::glsl;
+  if (global.api == "hlsl") return PassLanguage::hlsl;
+  return std::nullopt;
+}
+
+void print_vulkan_device(const VulkanDevice& device) {
+  std::cout << "vulkan: " << device.device_name() << " (" << device.device_type() << ", Vulkan "
+            << device.api_version() << ", " << device.driver() << "), validation " << device.validation() << "\n";
+}
+
+}  // namespace
 
 void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   struct Options {
@@ -17,6 +35,8 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::optional<double> blur_sigma, blur_depth_tolerance;
     bool blur_depth_aware = false;
     bool every_case = false;
+    bool no_validation = false;
+    std::string hlsl_root;
     DispatchBounds bounds{true};
   };
   auto opt = std::make_shared<Options>();
@@ -24,7 +44,14 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("modules", opt->modules, "Modules to check (default: all)");
   cmd->add_option("--glsl-root", global.glsl_root, "Check the modules in this directory (a copy of glsl/)");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  add_api_option(*cmd, global);
+  cmd->add_option("--api", global.api,
+                  "gl450 (OpenGL 4.5 core, the default) | es310 (OpenGL ES 3.1 on EGL) | vulkan (the query-pass "
+                  "checks on a Vulkan device, from the vulkan target's SPIR-V) | hlsl (the same from each pass's HLSL "
+                  "export, compiled back by glslang)");
+  cmd->add_option("--hlsl-root", opt->hlsl_root,
+                  "With --api hlsl: a directory of HLSL exports (X.hlsl, as `bundle glsl/passes/X.comp --target hlsl` "
+                  "writes) run instead of the generated ones");
+  cmd->add_flag("--no-validation", opt->no_validation, "With --api vulkan | hlsl: without the Khronos validation layer");
   cmd->add_option("--blur-radius", opt->blur_radius,
                   "Check blur with this radius only (0 to " + std::to_string(kBlurMaxRadius) + ")");
   cmd->add_option("--blur-sigma", opt->blur_sigma, "Check blur with this sigma only (texels, > 0)");
@@ -51,18 +78,37 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       throw Error("GPU timeout " + format_number("%g", opt->bounds.timeout_s) + ": expected 0.1..3600 seconds");
     if (opt->bounds.loop_iterations < 1 || opt->bounds.loop_iterations > (1u << 30))
       throw Error("loop limit " + std::to_string(opt->bounds.loop_iterations) + ": expected 1..1073741824");
+    const std::optional<PassLanguage> language = vulkan_language(global);
+    if (!opt->hlsl_root.empty() && language != PassLanguage::hlsl)
+      throw Error("--hlsl-root " + opt->hlsl_root + ": applies to --api hlsl only");
+    if (!opt->hlsl_root.empty() && !std::filesystem::is_directory(opt->hlsl_root))
+      throw Error("--hlsl-root " + opt->hlsl_root + ": expected a directory of HLSL exports");
+    if (language && !global.backend.empty())
+      throw Error("--backend " + global.backend + ": applies to the GL APIs (gl450, es310), not to " + global.api);
+    if (!language && opt->no_validation) throw Error("--no-validation: applies to --api vulkan | hlsl only");
     const SourceTree tree(glsl_root_or_default(global));
-    const std::optional<Backend> backend = chosen_backend(global);
-    const Api api = chosen_api(global);
-    const auto context = create_context(backend, api);
-    context->set_dispatch_bounds(opt->bounds);
-    std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer()
-              << (api == Api::gl450 ? "" : std::string(", ") + context->version()) << "\n";
-    const CheckEnvironment env{*context, tree, options};
-    const auto reports = run_checks(opt->modules, env);
+    std::vector<ModuleReport> reports;
+    if (language) {
+      VulkanSettings settings;
+      settings.language = *language;
+      settings.validation = !opt->no_validation;
+      if (!opt->hlsl_root.empty()) settings.hlsl_root = opt->hlsl_root;
+      const auto device = create_vulkan_device(settings);
+      device->set_dispatch_bounds(opt->bounds);
+      print_vulkan_device(*device);
+      reports = run_checks(opt->modules, CheckEnvironment(*device, tree, options));
+    } else {
+      const std::optional<Backend> backend = chosen_backend(global);
+      const Api api = chosen_api(global);
+      const auto context = create_context(backend, api);
+      context->set_dispatch_bounds(opt->bounds);
+      std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer()
+                << (api == Api::gl450 ? "" : std::string(", ") + context->version()) << "\n";
+      reports = run_checks(opt->modules, CheckEnvironment(*context, tree, options));
+    }
     print_report(std::cout, reports, 10, opt->every_case);
     bool pass = true;
-    for (const auto& r : reports) pass = pass && r.pass();
+    for (const auto& r : reports) pass = pass && (r.skipped || r.pass());
     exit_code = pass ? 0 : static_cast<int>(ExitCode::failed);
   });
 }
@@ -70,8 +116,20 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
 void add_info_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* cmd = app.add_subcommand("info", "Show the headless GL context: backend, vendor, renderer, version");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  add_api_option(*cmd, global);
+  cmd->add_option("--api", global.api,
+                  "gl450 (the default) | es310: the GL context; vulkan: the Vulkan device the checks' --api vulkan uses");
   cmd->callback([&global, &exit_code] {
+    if (global.api == "vulkan") {
+      if (!global.backend.empty()) throw Error("--backend " + global.backend + ": applies to gl450 and es310, not vulkan");
+      const auto device = create_vulkan_device();
+      std::cout << "api:        vulkan\n"
+                << "device:     " << device->device_name() << " (" << device->device_type() << ")\n"
+                << "version:    Vulkan " << device->api_version() << "\n"
+                << "driver:     " << device->driver() << "\n"
+                << "validation: " << device->validation() << "\n";
+      exit_code = 0;
+      return;
+    }
     const auto context = create_context(chosen_backend(global), chosen_api(global));
     std::cout << "backend:  " << backend_name(context->backend()) << "\n"
               << "api:      " << api_name(context->api()) << " (" << api_title(context->api()) << ")\n"

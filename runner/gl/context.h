@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "device/query_device.h"
 #include "shader/loop_guard.h"
 
 namespace pn {
@@ -30,16 +31,9 @@ const char* api_name(Api api);   // "gl450", "es310"
 const char* api_title(Api api);  // "OpenGL 4.5 core", "OpenGL ES 3.1"
 Api parse_api(const std::string& name);  // throws Error naming the accepted values
 
-// Bounds on GPU work, set by `penumbra check` (docs/reliability.md): every compute loop
-// guarded (shader/loop_guard.h) and every dispatch waited for with a deadline, so that a
-// module copy that never terminates fails its check instead of hanging the machine.
-struct DispatchBounds {
-  bool enabled = false;
-  unsigned loop_iterations = LoopGuardSettings{}.iterations;  // per loop and invocation
-  double timeout_s = 60.0;              // per dispatch
-};
 
-class Context {
+// A context is also an executor of the query passes (device/query_device.h; gl/query_device_gl.cpp).
+class Context : public QueryDevice {
  public:
   virtual ~Context() = default;
   Context(const Context&) = delete;
@@ -71,6 +65,16 @@ class Context {
   // Forgets pending errors that the caller reports itself (a shader compile
   // log, which the debug output would otherwise repeat).
   void discard_gl_errors() const;
+
+  // QueryDevice, in gl/query_device_gl.cpp.
+  std::string query_api() const override;
+  std::unique_ptr<QueryProgram> compile_query(const SourceTree& tree, const std::string& pass,
+                                              const std::vector<Define>& defines) const override;
+  std::unique_ptr<DeviceTexture> upload(const Image& image) const override;
+  std::unique_ptr<QueryBatch> make_batch(const std::vector<Image>& inputs, std::size_t results,
+                                         std::size_t word_results) const override;
+  void dispatch(const QueryProgram& program, const QueryBindings& bindings, const QueryBatch& batch,
+                const std::vector<QueryTexture>& textures, const QueryBlock& block) const override;
 
  protected:
   explicit Context(Backend backend, Api api = Api::gl450) : backend_(backend), api_(api) {}

@@ -8,8 +8,8 @@ namespace pn::glsl {
 
 namespace pn {
 
-CascadesQueryPass::CascadesQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/cascades_query.comp",
+CascadesQueryPass::CascadesQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/cascades_query.comp",
              {{PN_CASCADES_QUERY_QUERIES_BINDING}, {PN_CASCADES_QUERY_RESULTS_BINDING}}) {}
 
 std::vector<Query> CascadesQueryPass::run(const QueryBlock& block, const std::vector<Query>& queries) const {

@@ -11,7 +11,7 @@ namespace pn {
 
 class CascadesQueryPass {
  public:
-  CascadesQueryPass(const Context& context, const SourceTree& tree);
+  CascadesQueryPass(const QueryDevice& device, const SourceTree& tree);
   // One result per query.
   std::vector<Query> run(const QueryBlock& block, const std::vector<Query>& queries) const;
 

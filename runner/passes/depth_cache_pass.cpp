@@ -1,5 +1,7 @@
 #include "passes/depth_cache_pass.h"
 
+#include "gl/query_device_gl.h"
+
 #include "core/query_grid.h"
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
@@ -40,7 +42,8 @@ std::vector<DepthCacheResult> DepthCacheQueryPass::run(const GlObject& static_ma
   std::vector<Query> q;
   for (const DepthCacheQuery& k : queries) q.push_back({float(k.u), float(k.v), k.receiver_depth, k.bias});
   const QueryResults r = query_.run(
-      {q}, {{PN_DEPTH_CACHE_STATIC_BINDING, static_map}, {PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map}});
+      {q}, {{PN_DEPTH_CACHE_STATIC_BINDING, GlDeviceTexture(static_map)},
+          {PN_DEPTH_CACHE_DYNAMIC_BINDING, GlDeviceTexture(dynamic_map)}});
   std::vector<DepthCacheResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
     const Query v = r.at(0, k);

@@ -1,5 +1,7 @@
 #include "passes/depth_pyramid_pass.h"
 
+#include "gl/query_device_gl.h"
+
 #include <cstdint>
 #include <string>
 
@@ -94,7 +96,7 @@ DepthPyramidQuery::DepthPyramidQuery(const Context& context, const SourceTree& t
              {{PN_PYRAMID_QUERY_QUERIES_BINDING}, {PN_PYRAMID_QUERY_RESULTS_IMAGE}}) {}
 
 Image DepthPyramidQuery::run(const DepthPyramid& pyramid, const Image& queries) const {
-  return query_.run(std::vector<Image>{queries}, {{PN_PYRAMID_QUERY_PYRAMID_BINDING, pyramid.texture}}).images.front();
+  return query_.run(std::vector<Image>{queries}, {{PN_PYRAMID_QUERY_PYRAMID_BINDING, GlDeviceTexture(pyramid.texture)}}).images.front();
 }
 
 }  // namespace pn

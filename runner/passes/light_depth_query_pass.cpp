@@ -9,8 +9,8 @@ PN_STD140_SIZE(PnLightDepthParams, 64);
 
 namespace pn {
 
-LightDepthQueryPass::LightDepthQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/light_depth_query.comp",
+LightDepthQueryPass::LightDepthQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/light_depth_query.comp",
              {{PN_LIGHT_DEPTH_QUERY_QUERIES_BINDING}, {PN_LIGHT_DEPTH_QUERY_RESULTS_BINDING}}) {}
 
 Image LightDepthQueryPass::run(const glm::mat4& light_projection, const Image& queries) const {

@@ -11,7 +11,7 @@ namespace pn {
 
 class LightDepthQueryPass {
  public:
-  LightDepthQueryPass(const Context& context, const SourceTree& tree);
+  LightDepthQueryPass(const QueryDevice& device, const SourceTree& tree);
   // `queries`: RGBA (depth-buffer value, -, -, -) per texel; returns RGBA (linear depth read with
   // OpenGL's [-1, 1] clip range, with a [0, 1] clip range, 0, 0) of the same size.
   Image run(const glm::mat4& light_projection, const Image& queries) const;

@@ -13,8 +13,8 @@ PN_STD140_OFFSET(PnLightParams, mapSize, 12);
 
 namespace pn {
 
-LightModelQueryPass::LightModelQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/light_model_query.comp",
+LightModelQueryPass::LightModelQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/light_model_query.comp",
              {{PN_LIGHT_MODEL_QUERY_QUERIES_BINDING}, {PN_LIGHT_MODEL_QUERY_RESULTS_BINDING}}) {}
 
 Image LightModelQueryPass::run(const LightModel& light, const Image& queries) const {

@@ -10,7 +10,7 @@ namespace pn {
 
 class LightModelQueryPass {
  public:
-  LightModelQueryPass(const Context& context, const SourceTree& tree);
+  LightModelQueryPass(const QueryDevice& device, const SourceTree& tree);
   // `queries`: RGBA (receiver depth, blocker depth, -, -) per texel; returns RGBA (blocker window
   // texels, search width texels, penumbra world, penumbra texels) of the same size.
   Image run(const LightModel& light, const Image& queries) const;

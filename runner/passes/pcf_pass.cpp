@@ -24,17 +24,17 @@ std::vector<Define> max_side_define(int max_side) {
 
 }  // namespace
 
-PcfQueryPass::PcfQueryPass(const Context& context, const SourceTree& tree, int max_side)
-    : query_(context, tree, "passes/pcf_query.comp",
+PcfQueryPass::PcfQueryPass(const QueryDevice& device, const SourceTree& tree, int max_side)
+    : query_(device, tree, "passes/pcf_query.comp",
              {{PN_PCF_QUERY_A_BINDING, PN_PCF_QUERY_B_BINDING}, {PN_PCF_QUERY_RESULT_IMAGE}},
              max_side_define(max_side)) {}
 
-QueryResults PcfQueryPass::dispatch(const GlObject& depth_map, const std::vector<Query>& a,
+QueryResults PcfQueryPass::dispatch(const DeviceTexture& depth_map, const std::vector<Query>& a,
                                     const std::vector<Query>& b) const {
   return query_.run({a, b}, {{PN_PCF_QUERY_MAP_BINDING, depth_map}});
 }
 
-std::vector<PcfQueryResult> PcfQueryPass::run(const GlObject& depth_map, const std::vector<PcfQuery>& queries) const {
+std::vector<PcfQueryResult> PcfQueryPass::run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries) const {
   if (queries.empty()) return {};
   std::vector<Query> a, b;
   for (const PcfQuery& q : queries) {
@@ -50,7 +50,7 @@ std::vector<PcfQueryResult> PcfQueryPass::run(const GlObject& depth_map, const s
   return out;
 }
 
-std::vector<float> PcfQueryPass::bilinear(const GlObject& depth_map, const std::vector<PcfBilinearQuery>& queries) const {
+std::vector<float> PcfQueryPass::bilinear(const DeviceTexture& depth_map, const std::vector<PcfBilinearQuery>& queries) const {
   if (queries.empty()) return {};
   std::vector<Query> a, b;
   for (const PcfBilinearQuery& q : queries) {

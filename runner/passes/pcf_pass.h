@@ -35,15 +35,15 @@ struct PcfBilinearQuery {
 class PcfQueryPass {
  public:
   // max_side > 0 compiles the pass with that PN_PCF_MAX_SIDE; 0 keeps the module's default.
-  PcfQueryPass(const Context& context, const SourceTree& tree, int max_side = 0);
+  PcfQueryPass(const QueryDevice& device, const SourceTree& tree, int max_side = 0);
 
   // `depth_map` is a single-channel float texture; one result per query.
-  std::vector<PcfQueryResult> run(const GlObject& depth_map, const std::vector<PcfQuery>& queries) const;
+  std::vector<PcfQueryResult> run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries) const;
   // The 2×2 bilinear PCF visibility of each query.
-  std::vector<float> bilinear(const GlObject& depth_map, const std::vector<PcfBilinearQuery>& queries) const;
+  std::vector<float> bilinear(const DeviceTexture& depth_map, const std::vector<PcfBilinearQuery>& queries) const;
 
  private:
-  QueryResults dispatch(const GlObject& depth_map, const std::vector<Query>& a, const std::vector<Query>& b) const;
+  QueryResults dispatch(const DeviceTexture& depth_map, const std::vector<Query>& a, const std::vector<Query>& b) const;
   QueryPass query_;
 };
 

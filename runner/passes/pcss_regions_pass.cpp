@@ -1,5 +1,7 @@
 #include "passes/pcss_regions_pass.h"
 
+#include "gl/query_device_gl.h"
+
 #include <string>
 
 #include "core/error.h"
@@ -53,8 +55,8 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
   glsl::PnPcssRegionsQueryParams block{};
   set_light_fields(block, light);
   const QueryResults r = query_.run({a, b, c},
-                                    {{PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING, pyramid.texture},
-                                     {PN_PCSS_REGIONS_QUERY_MIP_BINDING, mip ? mip->texture : no_mip_}},
+                                    {{PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING, GlDeviceTexture(pyramid.texture)},
+                                     {PN_PCSS_REGIONS_QUERY_MIP_BINDING, GlDeviceTexture(mip ? mip->texture : no_mip_)}},
                                     query_block(block));
   std::vector<PcssRegionsResult> out(queries.size());
   for (size_t i = 0; i < queries.size(); ++i)

@@ -26,11 +26,11 @@ QueryBindings bindings() {
 
 }  // namespace
 
-PoissonPcssQueryPass::PoissonPcssQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/poisson_pcss_query.comp", bindings()),
-      block_query_(context, tree, "passes/poisson_pcss_query.comp", bindings(), {{"PN_QUERY_DISK_IN_BLOCK", "1"}}) {}
+PoissonPcssQueryPass::PoissonPcssQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/poisson_pcss_query.comp", bindings()),
+      block_query_(device, tree, "passes/poisson_pcss_query.comp", bindings(), {{"PN_QUERY_DISK_IN_BLOCK", "1"}}) {}
 
-std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const GlObject& depth_map,
+std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const DeviceTexture& depth_map,
                                                             const std::vector<Sample>& points, PoissonDiskSource source,
                                                             const std::vector<PoissonPcssGpuQuery>& queries) const {
   if (queries.empty()) return {};

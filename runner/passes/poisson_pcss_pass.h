@@ -36,11 +36,11 @@ struct PoissonPcssGpuResult {
 
 class PoissonPcssQueryPass {
  public:
-  PoissonPcssQueryPass(const Context& context, const SourceTree& tree);
+  PoissonPcssQueryPass(const QueryDevice& device, const SourceTree& tree);
 
   // `points` (at most PN_POISSON_MAX_SAMPLES; the rest of the block's array is zero) go into the
   // uniform block; `source` says which disk the module reads (constant: the pasted one, points unused).
-  std::vector<PoissonPcssGpuResult> run(const GlObject& depth_map, const std::vector<Sample>& points,
+  std::vector<PoissonPcssGpuResult> run(const DeviceTexture& depth_map, const std::vector<Sample>& points,
                                         PoissonDiskSource source, const std::vector<PoissonPcssGpuQuery>& queries) const;
 
  private:

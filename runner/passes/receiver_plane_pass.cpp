@@ -4,8 +4,8 @@
 
 namespace pn {
 
-ReceiverPlaneQueryPass::ReceiverPlaneQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/receiver_plane_query.comp",
+ReceiverPlaneQueryPass::ReceiverPlaneQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/receiver_plane_query.comp",
              QueryBindings{{PN_RECEIVER_PLANE_QUERY_CENTRE_BINDING, PN_RECEIVER_PLANE_QUERY_LEFT_BINDING,
                             PN_RECEIVER_PLANE_QUERY_RIGHT_BINDING, PN_RECEIVER_PLANE_QUERY_BELOW_BINDING,
                             PN_RECEIVER_PLANE_QUERY_ABOVE_BINDING, PN_RECEIVER_PLANE_QUERY_F_BINDING,

@@ -24,7 +24,7 @@ struct ReceiverPlaneGpuResult {
 
 class ReceiverPlaneQueryPass {
  public:
-  ReceiverPlaneQueryPass(const Context& context, const SourceTree& tree);
+  ReceiverPlaneQueryPass(const QueryDevice& device, const SourceTree& tree);
   std::vector<ReceiverPlaneGpuResult> run(const std::vector<ReceiverPlaneGpuQuery>& queries) const;
 
  private:

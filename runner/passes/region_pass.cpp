@@ -13,8 +13,8 @@ PN_STD140_OFFSET(PnRegionQueryParams, centred, 4);
 
 namespace pn {
 
-RegionQuery::RegionQuery(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/region_query.comp",
+RegionQuery::RegionQuery(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/region_query.comp",
              {{PN_REGION_QUERY_QUERIES_BINDING}, {PN_REGION_QUERY_RESULTS_BINDING}}) {}
 
 Image RegionQuery::run(const Image& queries, int map_size, bool centred) const {

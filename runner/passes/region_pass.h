@@ -9,7 +9,7 @@ namespace pn {
 
 class RegionQuery {
  public:
-  RegionQuery(const Context& context, const SourceTree& tree);
+  RegionQuery(const QueryDevice& device, const SourceTree& tree);
 
   // `queries` is RGBA (x, y, side, -) per texel; returns RGBA (u, v, side, level).
   // Throws Error for map_size < 1.

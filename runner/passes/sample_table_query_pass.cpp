@@ -2,23 +2,21 @@
 
 #include "passes/correlated_multi_jitter_query.h"
 #include "passes/sample_table_query.h"
-#include "passes/traversal_pass.h"
 
 namespace pn {
 
-SampleTableQueryPass::SampleTableQueryPass(const Context& context, const SourceTree& tree)
-    : context_(&context),
-      query_(context, tree, "passes/sample_table_query.comp",
+SampleTableQueryPass::SampleTableQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/sample_table_query.comp",
              {{PN_SAMPLE_TABLE_QUERY_QUERIES_BINDING},
               {PN_SAMPLE_TABLE_QUERY_RESULT_A_BINDING, PN_SAMPLE_TABLE_QUERY_RESULT_B_BINDING}}) {}
 
 std::vector<Image> SampleTableQueryPass::run(const SampleTable& table, const Image& queries) const {
-  const GlObject table_texture = upload_sample_table(*context_, table);
-  return query_.run(std::vector<Image>{queries}, {{PN_SAMPLE_TABLE_QUERY_TABLE_BINDING, table_texture}}).images;
+  const std::unique_ptr<DeviceTexture> table_texture = query_.device().upload(table.image());
+  return query_.run(std::vector<Image>{queries}, {{PN_SAMPLE_TABLE_QUERY_TABLE_BINDING, *table_texture}}).images;
 }
 
-CorrelatedMultiJitterQueryPass::CorrelatedMultiJitterQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/correlated_multi_jitter_query.comp",
+CorrelatedMultiJitterQueryPass::CorrelatedMultiJitterQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/correlated_multi_jitter_query.comp",
              {{PN_CMJ_QUERY_QUERIES_BINDING}, {PN_CMJ_QUERY_RESULTS_BINDING}}) {}
 
 Image CorrelatedMultiJitterQueryPass::run(const Image& queries) const {

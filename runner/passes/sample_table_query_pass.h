@@ -12,19 +12,18 @@ namespace pn {
 
 class SampleTableQueryPass {
  public:
-  SampleTableQueryPass(const Context& context, const SourceTree& tree);
+  SampleTableQueryPass(const QueryDevice& device, const SourceTree& tree);
   // `queries`: RGBA (pixel x, y, region side, i) per texel; returns two images of the same size:
   // (k, first column, last column, set) and (column, texel x, texel y, 0).
   std::vector<Image> run(const SampleTable& table, const Image& queries) const;
 
  private:
-  const Context* context_;
   QueryPass query_;
 };
 
 class CorrelatedMultiJitterQueryPass {
  public:
-  CorrelatedMultiJitterQueryPass(const Context& context, const SourceTree& tree);
+  CorrelatedMultiJitterQueryPass(const QueryDevice& device, const SourceTree& tree);
   // `queries`: RGBA (group k, sample index, set, seed) per texel; returns (x, y, 0, 0) of the same size.
   Image run(const Image& queries) const;
 

@@ -1,5 +1,7 @@
 #include "passes/savsm_pass.h"
 
+#include "gl/query_device_gl.h"
+
 #include <string>
 
 #include "core/error.h"
@@ -89,7 +91,7 @@ std::vector<SavsmQueryResult> SavsmPass::query(const MomentsTable& table, const 
   for (const SavsmReceiver& r : receivers) q.push_back({r.u, r.v, r.depth, 0.0f});
   const QueryPass& pass = table.kind == MomentsTableKind::fixed ? fixed_query_ : float_query_;
   const QueryResults r = pass.run(
-      {q}, {{PN_SAVSM_TABLE_BINDING, table.texture}, {PN_SAVSM_MIP_BINDING, mip}}, query_block(block));
+      {q}, {{PN_SAVSM_TABLE_BINDING, GlDeviceTexture(table.texture)}, {PN_SAVSM_MIP_BINDING, GlDeviceTexture(mip)}}, query_block(block));
   std::vector<SavsmQueryResult> out;
   for (size_t k = 0; k < receivers.size(); ++k) {
     SavsmQueryResult o;

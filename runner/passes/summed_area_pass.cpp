@@ -1,5 +1,7 @@
 #include "passes/summed_area_pass.h"
 
+#include "gl/query_device_gl.h"
+
 #include <cmath>
 #include <string>
 
@@ -127,7 +129,7 @@ std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& 
                                                          const std::vector<Rect>& rects) const {
   if (rects.empty()) return {};
   const QueryResults r =
-      query_.run(std::vector<Image>{rect_query_image(rects)}, {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture}});
+      query_.run(std::vector<Image>{rect_query_image(rects)}, {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, GlDeviceTexture(table.texture)}});
   std::vector<SummedAreaQueryResult> out;
   for (size_t k = 0; k < rects.size(); ++k) {
     const Query q = r.at(0, k);
@@ -213,7 +215,7 @@ std::vector<MomentsQueryResult> SummedAreaMomentsPass::query(const MomentsTable&
   const bool fixed = table.kind == MomentsTableKind::fixed;
   const QueryResults m = (fixed ? fixed_query_ : float_query_)
                              .run(std::vector<Image>{rect_query_image(rects)},
-                                  {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, table.texture}});
+                                  {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, GlDeviceTexture(table.texture)}});
   std::vector<MomentsQueryResult> out;
   for (size_t k = 0; k < rects.size(); ++k) {
     const Query r = m.at(0, k);

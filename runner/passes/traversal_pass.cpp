@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/query_grid.h"
+#include "gl/query_device_gl.h"
 #include "gl/std140.h"
 #include "gl/texture.h"
 
@@ -38,10 +39,10 @@ std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries) {
 }  // namespace
 
 TraversalBatch::TraversalBatch(const Context& context, const std::vector<TraversalQuery>& queries)
-    : count_(queries.size()), batch_(context, batch_inputs(queries), 2) {}
+    : count_(queries.size()), batch_(context.make_batch(batch_inputs(queries), 2, 0)) {}
 
 std::vector<TraversalResult> TraversalBatch::read() const {
-  const QueryResults r = batch_.read();
+  const QueryResults r = batch_->read();
   std::vector<TraversalResult> out;
   for (std::size_t k = 0; k < count_; ++k) {
     const Query c = r.at(0, k), d = r.at(1, k);
@@ -71,12 +72,12 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject
                                            static_cast<int>(settings.depth_sums),
                                            mip ? structure.mip->map_size : 0,
                                            settings.grid};
-  query_.dispatch(batch.batch_,
-                  {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? empty_array_ : structure.pyramid->texture},
-                   {PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? structure.mip->texture : empty_2d_},
+  query_.dispatch(*batch.batch_,
+                  {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, GlDeviceTexture(mip ? empty_array_ : structure.pyramid->texture)},
+                   {PN_TRAVERSAL_QUERY_MIP_BINDING, GlDeviceTexture(mip ? structure.mip->texture : empty_2d_)},
                    {PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING,
-                    mip && structure.depth_sums ? structure.depth_sums->texture : empty_uint_},
-                   {PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, sample_table}},
+                    GlDeviceTexture(mip && structure.depth_sums ? structure.depth_sums->texture : empty_uint_)},
+                   {PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, GlDeviceTexture(sample_table)}},
                   query_block(block));
 }
 
@@ -87,7 +88,7 @@ WindowScanPass::WindowScanPass(const Context& context, const SourceTree& tree)
 
 void WindowScanPass::dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const {
   const glsl::PnWindowScanParams block{bias};
-  query_.dispatch(batch.batch_, {{PN_WINDOW_SCAN_PYRAMID_BINDING, pyramid.texture}}, query_block(block));
+  query_.dispatch(*batch.batch_, {{PN_WINDOW_SCAN_PYRAMID_BINDING, GlDeviceTexture(pyramid.texture)}}, query_block(block));
 }
 
 }  // namespace pn

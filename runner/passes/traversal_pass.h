@@ -55,7 +55,7 @@ class TraversalBatch {
   friend class TraversalPass;
   friend class WindowScanPass;
   std::size_t count_;
-  QueryBatch batch_;  // inputs A, B, E; results C, D
+  std::unique_ptr<QueryBatch> batch_;  // inputs A, B, E; results C, D
 };
 
 class TraversalPass {

@@ -4,13 +4,13 @@
 
 namespace pn {
 
-VogelPcssQueryPass::VogelPcssQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/vogel_pcss_query.comp",
+VogelPcssQueryPass::VogelPcssQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/vogel_pcss_query.comp",
              QueryBindings{{PN_VOGEL_QUERY_A_BINDING, PN_VOGEL_QUERY_B_BINDING, PN_VOGEL_QUERY_C_BINDING},
                            {PN_VOGEL_QUERY_RESULT_IMAGE},
                            {}}) {}
 
-std::vector<VogelPcssGpuResult> VogelPcssQueryPass::run(const GlObject& depth_map,
+std::vector<VogelPcssGpuResult> VogelPcssQueryPass::run(const DeviceTexture& depth_map,
                                                         const std::vector<VogelPcssGpuQuery>& queries) const {
   if (queries.empty()) return {};
   std::vector<Query> a, b, c;

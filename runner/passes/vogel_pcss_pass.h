@@ -25,8 +25,8 @@ struct VogelPcssGpuResult {
 
 class VogelPcssQueryPass {
  public:
-  VogelPcssQueryPass(const Context& context, const SourceTree& tree);
-  std::vector<VogelPcssGpuResult> run(const GlObject& depth_map, const std::vector<VogelPcssGpuQuery>& queries) const;
+  VogelPcssQueryPass(const QueryDevice& device, const SourceTree& tree);
+  std::vector<VogelPcssGpuResult> run(const DeviceTexture& depth_map, const std::vector<VogelPcssGpuQuery>& queries) const;
 
  private:
   QueryPass query_;

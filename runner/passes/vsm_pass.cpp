@@ -1,5 +1,7 @@
 #include "passes/vsm_pass.h"
 
+#include "gl/query_device_gl.h"
+
 #include <string>
 
 #include "core/error.h"
@@ -69,7 +71,8 @@ std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyram
                                      params.min_variance,
                                      params.bleeding_reduction};
   return query_
-      .run({q}, {{PN_VSM_QUERY_MOMENTS_BINDING, moments.texture}, {PN_VSM_QUERY_PYRAMID_BINDING, pyramid.texture}},
+      .run({q}, {{PN_VSM_QUERY_MOMENTS_BINDING, GlDeviceTexture(moments.texture)},
+                 {PN_VSM_QUERY_PYRAMID_BINDING, GlDeviceTexture(pyramid.texture)}},
            query_block(block))
       .list(0, queries.size());
 }

@@ -5,6 +5,8 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv-tools/libspirv.hpp>
 
+#include "shader/spirv_cross.h"
+
 namespace pn {
 
 GlslangProcess::GlslangProcess() { glslang::InitializeProcess(); }
@@ -19,6 +21,16 @@ std::vector<Diagnostic> validate_spirv(const std::vector<uint32_t>& spirv, const
     if (level <= SPV_MSG_ERROR) out.push_back({entry, 0, "error", std::string("SPIR-V validation: ") + text});
   });
   if (!tools.Validate(spirv) && out.empty()) out.push_back({entry, 0, "error", "SPIR-V validation failed"});
+  return out;
+}
+
+// Two resources of one entry at one binding (shader/spirv_cross.h shared_bindings): an error for Vulkan.
+std::vector<Diagnostic> binding_clashes(const std::vector<uint32_t>& spirv, const std::string& entry) {
+  std::vector<Diagnostic> out;
+  for (const std::string& clash : shared_bindings(reflect_spirv(spirv)))
+    out.push_back({entry, 0, "error",
+                   clash + " share a binding: Vulkan has one binding namespace a descriptor set (GL keeps texture "
+                           "units, image units and buffer bindings apart); give each its own number"});
   return out;
 }
 
@@ -69,11 +81,57 @@ CompileResult compile_with_glslang(const GlslangProcess&, const ShaderSource& so
     options.validate = false;  // validated below, with the messages kept
     glslang::GlslangToSpv(*program.getIntermediate(stage), result.spirv, &options);
     auto invalid = validate_spirv(result.spirv, entry);
+    if (invalid.empty()) invalid = binding_clashes(result.spirv, entry);
     if (!invalid.empty()) {
       result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
       return result;
     }
   }
+  result.ok = true;
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == "error") result.ok = false;
+  return result;
+}
+
+CompileResult compile_hlsl_with_glslang(const GlslangProcess&, const std::string& text, const std::string& name,
+                                        Stage stage) {
+  const EShLanguage language = stage == Stage::vertex     ? EShLangVertex
+                               : stage == Stage::fragment ? EShLangFragment
+                                                          : EShLangCompute;
+  glslang::TShader shader(language);
+  const char* chars = text.c_str();
+  const int length = static_cast<int>(text.size());
+  const char* names[] = {name.c_str()};
+  shader.setStringsWithLengthsAndNames(&chars, &length, names, 1);
+  shader.setEntryPoint("main");
+  shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+  shader.setShiftBinding(glslang::EResSampler, kHlslSamplerBindingShift);
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
+  const LocationMap by_name = [&](int, int line) { return std::pair<std::string, int>{name, line}; };
+  CompileResult result;
+  const bool parsed = shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, messages);
+  result.diagnostics = parse_info_log(shader.getInfoLog(), by_name, name);
+  if (!parsed) return result;
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages) || !program.mapIO()) {
+    auto link = parse_info_log(program.getInfoLog(), by_name, name);
+    result.diagnostics.insert(result.diagnostics.end(), link.begin(), link.end());
+    if (result.diagnostics.empty()) result.diagnostics.push_back({name, 0, "error", "glslang could not link it"});
+    return result;
+  }
+  glslang::SpvOptions options;
+  options.validate = false;
+  // HLSL passes textures and samplers to functions by value, which Vulkan does not allow:
+  // glslang's legalization (SPIRV-Tools: inlining, opaque values propagated to their variables)
+  // turns that into legal SPIR-V, as glslangValidator does by default for HLSL.
+  options.disableOptimizer = false;
+  glslang::GlslangToSpv(*program.getIntermediate(language), result.spirv, &options);
+  auto invalid = validate_spirv(result.spirv, name);
+  if (invalid.empty()) invalid = binding_clashes(result.spirv, name);
+  result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
   result.ok = true;
   for (const Diagnostic& d : result.diagnostics)
     if (d.severity == "error") result.ok = false;

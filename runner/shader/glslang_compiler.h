@@ -29,4 +29,10 @@ struct CompileResult {
 
 CompileResult compile_with_glslang(const GlslangProcess& process, const ShaderSource& source, Target target);
 
+// HLSL (an export of shader/spirv_cross.h, or an engine's copy of one) through glslang's HLSL
+// front end to SPIR-V for Vulkan 1.0, validated: entry point `main`, register t<N>/u<N>/b<N> at
+// binding N and s<N> at N + kHlslSamplerBindingShift. `name` is the file diagnostics name.
+CompileResult compile_hlsl_with_glslang(const GlslangProcess& process, const std::string& text,
+                                        const std::string& name, Stage stage);
+
 }  // namespace pn

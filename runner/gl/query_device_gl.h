@@ -1,0 +1,58 @@
+// The OpenGL executor of the query passes (device/query_device.h): Context implements
+// QueryDevice with these. A texture a GL pass made (a pyramid, a moments table) goes into a
+// query pass as a GlDeviceTexture that borrows it.
+#pragma once
+
+#include <vector>
+
+#include "device/query_device.h"
+#include "gl/compute_program.h"
+#include "gl/objects.h"
+#include "gl/texture.h"
+
+namespace pn {
+
+class GlDeviceTexture final : public DeviceTexture {
+ public:
+  // Borrows `texture`, which must outlive this object and belong to the context it is used on.
+  explicit GlDeviceTexture(const GlObject& texture) : texture_(&texture) {}
+  explicit GlDeviceTexture(FloatTexture owned) : owned_(std::move(owned)), texture_(&owned_) {}
+  const GlObject& object() const { return *texture_; }
+
+ private:
+  FloatTexture owned_;
+  const GlObject* texture_;
+};
+
+class GlQueryProgram final : public QueryProgram {
+ public:
+  explicit GlQueryProgram(ComputeProgram program) : program_(std::move(program)) {}
+  const ComputeProgram& program() const { return program_; }
+
+ private:
+  ComputeProgram program_;
+};
+
+class GlQueryBatch final : public QueryBatch {
+ public:
+  GlQueryBatch(const Context& context, const std::vector<Image>& inputs, std::size_t results,
+               std::size_t word_results);
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  std::size_t inputs() const override { return inputs_.size(); }
+  std::size_t results() const override { return results_.size(); }
+  std::size_t word_results() const override { return word_results_.size(); }
+  QueryResults read() const override;
+
+ private:
+  friend class Context;
+  const Context* context_;
+  int width_ = 0, height_ = 0;
+  std::vector<FloatTexture> inputs_, results_;
+  std::vector<GlObject> word_results_;
+};
+
+// The batch inputs' common size; Error unless there is one and all share it.
+std::pair<int, int> query_batch_size(const std::vector<Image>& inputs);
+
+}  // namespace pn

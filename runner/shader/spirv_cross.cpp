@@ -1,0 +1,138 @@
+#include "shader/spirv_cross.h"
+
+#include <spirv_cross/spirv_cross_c.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "core/error.h"
+
+namespace pn {
+
+namespace {
+
+// One SPIRV-Cross context, destroyed with everything it made; its last error kept for the message.
+class CrossContext {
+ public:
+  CrossContext() {
+    if (spvc_context_create(&context_) != SPVC_SUCCESS) throw Error("SPIRV-Cross: no context", ExitCode::failed);
+    spvc_context_set_error_callback(
+        context_, [](void* self, const char* message) { static_cast<CrossContext*>(self)->error_ = message; }, this);
+  }
+  ~CrossContext() { spvc_context_destroy(context_); }
+  CrossContext(const CrossContext&) = delete;
+  CrossContext& operator=(const CrossContext&) = delete;
+
+  spvc_compiler compiler(const std::vector<std::uint32_t>& spirv, spvc_backend backend) {
+    spvc_parsed_ir ir = nullptr;
+    spvc_compiler compiler = nullptr;
+    check(spvc_context_parse_spirv(context_, spirv.data(), spirv.size(), &ir), "parsing SPIR-V");
+    check(spvc_context_create_compiler(context_, backend, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler),
+          "making a compiler");
+    return compiler;
+  }
+  void check(spvc_result result, const std::string& what) const {
+    if (result != SPVC_SUCCESS) throw Error("SPIRV-Cross: " + what + ": " + error_, ExitCode::failed);
+  }
+
+ private:
+  spvc_context context_ = nullptr;
+  std::string error_;
+};
+
+}  // namespace
+
+SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv) {
+  CrossContext context;
+  spvc_compiler compiler = context.compiler(spirv, SPVC_BACKEND_NONE);
+  spvc_resources resources = nullptr;
+  context.check(spvc_compiler_create_shader_resources(compiler, &resources), "reflecting resources");
+  SpirvReflection out;
+  const std::pair<spvc_resource_type, DescriptorKind> kinds[] = {
+      {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, DescriptorKind::combined_image_sampler},
+      {SPVC_RESOURCE_TYPE_SEPARATE_IMAGE, DescriptorKind::sampled_image},
+      {SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS, DescriptorKind::sampler},
+      {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, DescriptorKind::storage_image},
+      {SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, DescriptorKind::uniform_buffer},
+      {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, DescriptorKind::storage_buffer}};
+  for (const auto& [type, kind] : kinds) {
+    const spvc_reflected_resource* list = nullptr;
+    size_t count = 0;
+    context.check(spvc_resources_get_resource_list_for_type(resources, type, &list, &count), "listing resources");
+    for (size_t i = 0; i < count; ++i) {
+      SpirvBinding b;
+      b.set = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationDescriptorSet);
+      b.binding = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding);
+      b.kind = kind;
+      b.name = list[i].name;
+      if (kind == DescriptorKind::storage_image) {
+        const spvc_type image = spvc_compiler_get_type_handle(compiler, list[i].type_id);
+        const spvc_type sampled = spvc_compiler_get_type_handle(compiler, spvc_type_get_image_sampled_type(image));
+        const spvc_basetype base = spvc_type_get_basetype(sampled);
+        b.integer = base == SPVC_BASETYPE_UINT32 || base == SPVC_BASETYPE_INT32;
+      }
+      out.bindings.push_back(b);
+    }
+  }
+  for (unsigned axis = 0; axis < 3; ++axis)
+    out.local_size[axis] =
+        std::max(1u, spvc_compiler_get_execution_mode_argument_by_index(compiler, SpvExecutionModeLocalSize, axis));
+  return out;
+}
+
+namespace {
+
+const char* kind_name(DescriptorKind kind) {
+  switch (kind) {
+    case DescriptorKind::combined_image_sampler: return "sampler";
+    case DescriptorKind::sampled_image: return "texture";
+    case DescriptorKind::sampler: return "sampler state";
+    case DescriptorKind::storage_image: return "image";
+    case DescriptorKind::uniform_buffer: return "uniform block";
+    case DescriptorKind::storage_buffer: return "storage buffer";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::vector<std::string> shared_bindings(const SpirvReflection& reflection) {
+  std::vector<std::string> out;
+  const auto& all = reflection.bindings;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      if (all[i].set == all[j].set && all[i].binding == all[j].binding)
+        out.push_back("binding " + std::to_string(all[i].binding) + " of set " + std::to_string(all[i].set) + ": '" +
+                      all[i].name + "' (" + kind_name(all[i].kind) + ") and '" + all[j].name + "' (" +
+                      kind_name(all[j].kind) + ")");
+  return out;
+}
+
+const char* cross_language_name(CrossLanguage language) {
+  switch (language) {
+    case CrossLanguage::hlsl50: return "HLSL shader model 5.0";
+    case CrossLanguage::hlsl60: return "HLSL shader model 6.0";
+    case CrossLanguage::msl: return "MSL 2.0";
+  }
+  return "?";
+}
+
+std::string cross_compile(const std::vector<std::uint32_t>& spirv, CrossLanguage language) {
+  CrossContext context;
+  const bool msl = language == CrossLanguage::msl;
+  spvc_compiler compiler = context.compiler(spirv, msl ? SPVC_BACKEND_MSL : SPVC_BACKEND_HLSL);
+  spvc_compiler_options options = nullptr;
+  context.check(spvc_compiler_create_compiler_options(compiler, &options), "options");
+  if (msl)
+    context.check(spvc_compiler_options_set_uint(options, SPVC_COMPILER_OPTION_MSL_VERSION, 20000), "MSL version");
+  else
+    context.check(spvc_compiler_options_set_uint(options, SPVC_COMPILER_OPTION_HLSL_SHADER_MODEL,
+                                                 language == CrossLanguage::hlsl60 ? 60 : 50),
+                  "shader model");
+  context.check(spvc_compiler_install_compiler_options(compiler, options), "options");
+  const char* source = nullptr;
+  context.check(spvc_compiler_compile(compiler, &source), std::string("writing ") + cross_language_name(language));
+  return source;
+}
+
+}  // namespace pn

@@ -1,0 +1,791 @@
+#include "vk/vulkan_device.h"
+
+#include <vulkan/vulkan.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/format.h"
+#include "shader/flatten.h"
+#include "shader/glslang_compiler.h"
+#include "shader/loop_guard.h"
+#include "shader/spirv_cross.h"
+#include "shader/target.h"
+
+// Vulkan's create-info structs are named by their sType and then filled field by field.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
+namespace pn {
+
+namespace {
+
+// The storage buffer of the loop guard (shader/loop_guard.h) on Vulkan: below the HLSL samplers'
+// shifted bindings, above every pass's own.
+constexpr unsigned kGuardBinding = kHlslSamplerBindingShift - 1;
+
+void vk_check(VkResult result, const std::string& what) {
+  if (result != VK_SUCCESS)
+    throw Error("vulkan: " + what + " failed (VkResult " + std::to_string(static_cast<int>(result)) + ")",
+                ExitCode::failed);
+}
+
+std::string version_text(uint32_t v) {
+  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
+         std::to_string(VK_API_VERSION_PATCH(v));
+}
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool has_layer(const char* name) {
+  uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+bool has_instance_extension(const char* name) {
+  uint32_t count = 0;
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+int type_rank(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
+    default: return 4;
+  }
+}
+
+VkFormat float_format(int channels) {
+  switch (channels) {
+    case 1: return VK_FORMAT_R32_SFLOAT;
+    case 2: return VK_FORMAT_R32G32_SFLOAT;
+    default: return VK_FORMAT_R32G32B32A32_SFLOAT;  // 3 channels go up as 4, alpha 1 (GL's RGB32F reads)
+  }
+}
+
+int format_channels(int channels) { return channels == 3 ? 4 : channels; }
+
+}  // namespace
+
+struct VulkanDevice::State {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties properties{};
+  VkPhysicalDeviceMemoryProperties memory{};
+  std::string driver_name, driver_info;
+  uint32_t queue_family = 0;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkSampler sampler = VK_NULL_HANDLE;
+  VulkanSettings settings;
+  bool validation_on = false;
+  std::string validation_why;
+  DispatchBounds bounds;
+  GlslangProcess glslang;
+  mutable std::vector<std::string> messages;  // the validation layer's, since the last check
+
+  State() = default;
+  State(const State&) = delete;
+  State& operator=(const State&) = delete;
+  ~State() {
+    if (device != VK_NULL_HANDLE) {
+      vkDeviceWaitIdle(device);
+      if (sampler != VK_NULL_HANDLE) vkDestroySampler(device, sampler, nullptr);
+      if (pool != VK_NULL_HANDLE) vkDestroyCommandPool(device, pool, nullptr);
+      vkDestroyDevice(device, nullptr);
+    }
+    if (messenger != VK_NULL_HANDLE) {
+      auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+      if (destroy != nullptr) destroy(instance, messenger, nullptr);
+    }
+    if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
+  }
+
+  // Throws Error(ExitCode::failed) with the first validation message since the last call.
+  void throw_if_messages(const std::string& what) const {
+    if (messages.empty()) return;
+    std::string first = messages.front();
+    const size_t more = messages.size() - 1;
+    messages.clear();
+    throw Error(what + ": Vulkan validation: " + first + (more ? " (and " + std::to_string(more) + " more)" : ""),
+                ExitCode::failed);
+  }
+
+  uint32_t memory_type(uint32_t bits, VkMemoryPropertyFlags flags) const {
+    for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+      if ((bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & flags) == flags) return i;
+    throw Error("vulkan: no memory type with the properties a buffer or image needs", ExitCode::failed);
+  }
+
+  // Records commands into a new command buffer, submits it and waits, under the dispatch
+  // bounds' deadline. Throws Error naming `what` on a timeout or a validation message.
+  void submit(const std::string& what, const std::function<void(VkCommandBuffer)>& record) const {
+    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocate.commandPool = pool;
+    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocate.commandBufferCount = 1;
+    VkCommandBuffer commands = VK_NULL_HANDLE;
+    vk_check(vkAllocateCommandBuffers(device, &allocate, &commands), what + ": allocating commands");
+    struct Free {
+      const State* s;
+      VkCommandBuffer c;
+      ~Free() { vkFreeCommandBuffers(s->device, s->pool, 1, &c); }
+    } free_commands{this, commands};
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vk_check(vkBeginCommandBuffer(commands, &begin), what + ": recording");
+    record(commands);
+    vk_check(vkEndCommandBuffer(commands), what + ": recording");
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence = VK_NULL_HANDLE;
+    vk_check(vkCreateFence(device, &fence_info, nullptr, &fence), what + ": a fence");
+    struct DestroyFence {
+      VkDevice d;
+      VkFence f;
+      ~DestroyFence() { vkDestroyFence(d, f, nullptr); }
+    } destroy_fence{device, fence};
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    vk_check(vkQueueSubmit(queue, 1, &submit, fence), what + ": submitting");
+    const double timeout_s = bounds.enabled ? bounds.timeout_s : 3600.0;
+    const VkResult waited = vkWaitForFences(device, 1, &fence, VK_TRUE, static_cast<uint64_t>(timeout_s * 1e9));
+    if (waited == VK_TIMEOUT)
+      throw Error(what + " did not finish within " + format_number("%g", timeout_s) + " s", ExitCode::failed);
+    vk_check(waited, what + ": waiting");
+    throw_if_messages(what);
+  }
+};
+
+namespace {
+
+VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                                     VkDebugUtilsMessageTypeFlagsEXT,
+                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* state) {
+  static_cast<const VulkanDevice::State*>(state)->messages.push_back(data->pMessage ? data->pMessage : "?");
+  return VK_FALSE;
+}
+
+// A host-visible, coherent buffer, mapped for its life.
+class HostBuffer {
+ public:
+  HostBuffer(const VulkanDevice::State& s, VkDeviceSize size, VkBufferUsageFlags usage) : s_(&s), size_(size) {
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = std::max<VkDeviceSize>(size, 4);
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    vk_check(vkCreateBuffer(s.device, &info, nullptr, &buffer_), "creating a buffer");
+    VkMemoryRequirements needs;
+    vkGetBufferMemoryRequirements(s.device, buffer_, &needs);
+    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    allocate.allocationSize = needs.size;
+    allocate.memoryTypeIndex =
+        s.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    vk_check(vkAllocateMemory(s.device, &allocate, nullptr, &memory_), "allocating buffer memory");
+    vk_check(vkBindBufferMemory(s.device, buffer_, memory_, 0), "binding buffer memory");
+    vk_check(vkMapMemory(s.device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "mapping a buffer");
+  }
+  ~HostBuffer() {
+    if (memory_ != VK_NULL_HANDLE) vkFreeMemory(s_->device, memory_, nullptr);  // unmaps
+    if (buffer_ != VK_NULL_HANDLE) vkDestroyBuffer(s_->device, buffer_, nullptr);
+  }
+  HostBuffer(const HostBuffer&) = delete;
+  HostBuffer& operator=(const HostBuffer&) = delete;
+  VkBuffer buffer() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  void* data() const { return mapped_; }
+
+ private:
+  const VulkanDevice::State* s_;
+  VkDeviceSize size_;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  void* mapped_ = nullptr;
+};
+
+void image_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                   VkAccessFlags src_access, VkAccessFlags dst_access, VkPipelineStageFlags src_stage,
+                   VkPipelineStageFlags dst_stage) {
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcAccessMask = src_access;
+  barrier.dstAccessMask = dst_access;
+  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(commands, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
+VkBufferImageCopy whole_image(int width, int height) {
+  VkBufferImageCopy copy{};
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = {static_cast<uint32_t>(width), static_cast<uint32_t>(height), 1};
+  return copy;
+}
+
+}  // namespace
+
+// A 2-D image of one level on the device, with its view: sampled (an uploaded texture, in
+// SHADER_READ_ONLY_OPTIMAL) or storage (a result, in GENERAL).
+class VulkanImage final : public DeviceTexture {
+ public:
+  VulkanImage(const VulkanDevice::State& s, int width, int height, VkFormat format, bool storage)
+      : s_(&s), width_(width), height_(height), format_(format), storage_(storage) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {static_cast<uint32_t>(width), static_cast<uint32_t>(height), 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                 (storage ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_SAMPLED_BIT);
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    vk_check(vkCreateImage(s.device, &info, nullptr, &image_),
+             "creating a " + std::to_string(width) + "x" + std::to_string(height) + " image");
+    VkMemoryRequirements needs;
+    vkGetImageMemoryRequirements(s.device, image_, &needs);
+    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    allocate.allocationSize = needs.size;
+    allocate.memoryTypeIndex = s.memory_type(needs.memoryTypeBits, 0);
+    vk_check(vkAllocateMemory(s.device, &allocate, nullptr, &memory_), "allocating image memory");
+    vk_check(vkBindImageMemory(s.device, image_, memory_, 0), "binding image memory");
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = image_;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vk_check(vkCreateImageView(s.device, &view, nullptr, &view_), "creating an image view");
+  }
+  ~VulkanImage() override {
+    if (view_ != VK_NULL_HANDLE) vkDestroyImageView(s_->device, view_, nullptr);
+    if (image_ != VK_NULL_HANDLE) vkDestroyImage(s_->device, image_, nullptr);
+    if (memory_ != VK_NULL_HANDLE) vkFreeMemory(s_->device, memory_, nullptr);
+  }
+  const VulkanDevice::State* owner() const { return s_; }
+  VkImage image() const { return image_; }
+  VkImageView view() const { return view_; }
+  bool storage() const { return storage_; }
+  bool integer() const { return format_ == VK_FORMAT_R32G32B32A32_UINT; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  VkImageLayout layout() const { return storage_ ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL; }
+
+  // Fills the image with `bytes` (tightly packed texels of its format), or with zeros, and leaves it in layout().
+  void fill(const void* bytes, std::size_t size) const {
+    const std::optional<HostBuffer> staging =
+        bytes ? std::optional<HostBuffer>(std::in_place, *s_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT) : std::nullopt;
+    if (staging) std::memcpy(staging->data(), bytes, size);
+    s_->submit("uploading an image", [&](VkCommandBuffer c) {
+      image_barrier(c, image_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+      if (staging) {
+        const VkBufferImageCopy copy = whole_image(width_, height_);
+        vkCmdCopyBufferToImage(c, staging->buffer(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+      } else {
+        const VkClearColorValue zero{};
+        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(c, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+      }
+      image_barrier(c, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layout(), VK_ACCESS_TRANSFER_WRITE_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    });
+  }
+
+  // The texels back, 16 bytes a texel (a storage image's RGBA32F or RGBA32UI).
+  std::vector<std::uint32_t> read() const {
+    const std::size_t words = static_cast<std::size_t>(width_) * height_ * 4;
+    const HostBuffer staging(*s_, words * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    s_->submit("reading results back", [&](VkCommandBuffer c) {
+      image_barrier(c, image_, layout(), layout(), VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+      const VkBufferImageCopy copy = whole_image(width_, height_);
+      vkCmdCopyImageToBuffer(c, image_, layout(), staging.buffer(), 1, &copy);
+      VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+      host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+      vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0, nullptr, 0,
+                           nullptr);
+    });
+    std::vector<std::uint32_t> out(words);
+    std::memcpy(out.data(), staging.data(), words * 4);
+    return out;
+  }
+
+ private:
+  const VulkanDevice::State* s_;
+  int width_, height_;
+  VkFormat format_;
+  bool storage_;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+};
+
+namespace {
+
+std::unique_ptr<VulkanImage> upload_image(const VulkanDevice::State& s, const Image& image) {
+  if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4)
+    throw Error("vulkan: an image of " + std::to_string(image.width) + "x" + std::to_string(image.height) + "x" +
+                    std::to_string(image.channels) + ": expected a positive size and 1 to 4 channels",
+                ExitCode::failed);
+  const int channels = format_channels(image.channels);
+  std::vector<float> texels(static_cast<std::size_t>(image.width) * image.height * channels, 1.0f);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < image.channels; ++c)
+        texels[(static_cast<std::size_t>(y) * image.width + x) * channels + c] = image.at(x, y, c);
+  auto out = std::make_unique<VulkanImage>(s, image.width, image.height, float_format(image.channels), false);
+  out->fill(texels.data(), texels.size() * sizeof(float));
+  return out;
+}
+
+class VulkanQueryBatch final : public QueryBatch {
+ public:
+  VulkanQueryBatch(const VulkanDevice::State& s, const std::vector<Image>& inputs, std::size_t results,
+                   std::size_t word_results) {
+    if (inputs.empty()) throw Error("query batch: expected at least one input image");
+    width_ = inputs.front().width, height_ = inputs.front().height;
+    for (const Image& input : inputs) {
+      if (input.width != width_ || input.height != height_)
+        throw Error("query batch: input images of " + std::to_string(input.width) + "x" + std::to_string(input.height) +
+                    " and " + std::to_string(width_) + "x" + std::to_string(height_) + ": expected one size");
+      inputs_.push_back(upload_image(s, input));
+    }
+    for (std::size_t i = 0; i < results + word_results; ++i) {
+      auto image = std::make_unique<VulkanImage>(
+          s, width_, height_, i < results ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32G32B32A32_UINT, true);
+      image->fill(nullptr, 0);
+      (i < results ? results_ : word_results_).push_back(std::move(image));
+    }
+  }
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  std::size_t inputs() const override { return inputs_.size(); }
+  std::size_t results() const override { return results_.size(); }
+  std::size_t word_results() const override { return word_results_.size(); }
+  QueryResults read() const override {
+    QueryResults out;
+    for (const auto& result : results_) {
+      const std::vector<std::uint32_t> words = result->read();
+      Image image(width_, height_, 4);
+      std::memcpy(image.texels.data(), words.data(), words.size() * 4);
+      out.images.push_back(std::move(image));
+    }
+    for (const auto& result : word_results_) out.words.push_back(result->read());
+    return out;
+  }
+
+  std::vector<std::unique_ptr<VulkanImage>> inputs_, results_, word_results_;
+
+ private:
+  int width_ = 0, height_ = 0;
+};
+
+class VulkanQueryProgram final : public QueryProgram {
+ public:
+  VulkanQueryProgram(const VulkanDevice::State& s, std::string name, const std::vector<std::uint32_t>& spirv,
+                     std::vector<GuardedLoop> loops)
+      : s_(&s), name_(std::move(name)), reflection_(reflect_spirv(spirv)), loops_(std::move(loops)) {
+    VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    module_info.codeSize = spirv.size() * 4;
+    module_info.pCode = spirv.data();
+    vk_check(vkCreateShaderModule(s.device, &module_info, nullptr, &module_), name_ + ": a shader module");
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (const SpirvBinding& b : reflection_.bindings) {
+      if (b.set != 0)
+        throw Error(name_ + ": '" + b.name + "' is in descriptor set " + std::to_string(b.set) + ": expected set 0",
+                    ExitCode::failed);
+      bindings.push_back({b.binding, descriptor_type(b.kind), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    }
+    VkDescriptorSetLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    layout_info.bindingCount = static_cast<uint32_t>(bindings.size());
+    layout_info.pBindings = bindings.data();
+    vk_check(vkCreateDescriptorSetLayout(s.device, &layout_info, nullptr, &set_layout_), name_ + ": a set layout");
+    VkPipelineLayoutCreateInfo pipeline_layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    pipeline_layout_info.setLayoutCount = 1;
+    pipeline_layout_info.pSetLayouts = &set_layout_;
+    vk_check(vkCreatePipelineLayout(s.device, &pipeline_layout_info, nullptr, &pipeline_layout_),
+             name_ + ": a pipeline layout");
+    VkComputePipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipeline_info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipeline_info.stage.module = module_;
+    pipeline_info.stage.pName = "main";
+    pipeline_info.layout = pipeline_layout_;
+    vk_check(vkCreateComputePipelines(s.device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline_),
+             name_ + ": a compute pipeline");
+    s.throw_if_messages(name_);
+  }
+  ~VulkanQueryProgram() override {
+    if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(s_->device, pipeline_, nullptr);
+    if (pipeline_layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(s_->device, pipeline_layout_, nullptr);
+    if (set_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(s_->device, set_layout_, nullptr);
+    if (module_ != VK_NULL_HANDLE) vkDestroyShaderModule(s_->device, module_, nullptr);
+  }
+
+  static VkDescriptorType descriptor_type(DescriptorKind kind) {
+    switch (kind) {
+      case DescriptorKind::combined_image_sampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      case DescriptorKind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+      case DescriptorKind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
+      case DescriptorKind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+      case DescriptorKind::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+      case DescriptorKind::storage_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    }
+    return VK_DESCRIPTOR_TYPE_MAX_ENUM;
+  }
+
+  void run(const QueryBindings& bindings, const VulkanQueryBatch& batch, const std::vector<QueryTexture>& textures,
+           const QueryBlock& block, const DispatchBounds& bounds) const;
+
+ private:
+  const VulkanImage& texture_at(unsigned binding, const SpirvBinding& b, const QueryBindings& bindings,
+                                const VulkanQueryBatch& batch, const std::vector<QueryTexture>& textures) const;
+
+  const VulkanDevice::State* s_;
+  std::string name_;
+  SpirvReflection reflection_;
+  std::vector<GuardedLoop> loops_;
+  VkShaderModule module_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+const VulkanImage& VulkanQueryProgram::texture_at(unsigned binding, const SpirvBinding& b,
+                                                  const QueryBindings& bindings, const VulkanQueryBatch& batch,
+                                                  const std::vector<QueryTexture>& textures) const {
+  for (std::size_t i = 0; i < bindings.inputs.size(); ++i)
+    if (bindings.inputs[i] == binding) return *batch.inputs_[i];
+  for (const QueryTexture& t : textures)
+    if (t.binding == binding) {
+      const auto* image = dynamic_cast<const VulkanImage*>(&t.texture);
+      if (image == nullptr || image->owner() != s_)
+        throw Error(name_ + ": the texture at binding " + std::to_string(binding) + " was made on another device",
+                    ExitCode::failed);
+      return *image;
+    }
+  throw Error(name_ + ": '" + b.name + "' (binding " + std::to_string(binding) +
+                  ") is a texture the dispatch does not give",
+              ExitCode::failed);
+}
+
+void VulkanQueryProgram::run(const QueryBindings& bindings, const VulkanQueryBatch& batch,
+                             const std::vector<QueryTexture>& textures, const QueryBlock& block,
+                             const DispatchBounds& bounds) const {
+  const VulkanDevice::State& s = *s_;
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (const SpirvBinding& b : reflection_.bindings) sizes.push_back({descriptor_type(b.kind), 1});
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.maxSets = 1;
+  pool_info.poolSizeCount = static_cast<uint32_t>(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  vk_check(vkCreateDescriptorPool(s.device, &pool_info, nullptr, &pool), name_ + ": a descriptor pool");
+  struct DestroyPool {
+    VkDevice d;
+    VkDescriptorPool p;
+    ~DestroyPool() { vkDestroyDescriptorPool(d, p, nullptr); }
+  } destroy_pool{s.device, pool};
+  VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocate.descriptorPool = pool;
+  allocate.descriptorSetCount = 1;
+  allocate.pSetLayouts = &set_layout_;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  vk_check(vkAllocateDescriptorSets(s.device, &allocate, &set), name_ + ": a descriptor set");
+
+  std::optional<HostBuffer> uniform, guard;
+  std::vector<VkDescriptorImageInfo> images(reflection_.bindings.size());
+  std::vector<VkDescriptorBufferInfo> buffers(reflection_.bindings.size());
+  std::vector<VkWriteDescriptorSet> writes;
+  for (std::size_t i = 0; i < reflection_.bindings.size(); ++i) {
+    const SpirvBinding& b = reflection_.bindings[i];
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set;
+    write.dstBinding = b.binding;
+    write.descriptorCount = 1;
+    write.descriptorType = descriptor_type(b.kind);
+    const std::string where = name_ + ": '" + b.name + "' (binding " + std::to_string(b.binding) + ")";
+    switch (b.kind) {
+      case DescriptorKind::combined_image_sampler:
+      case DescriptorKind::sampled_image: {
+        const VulkanImage& image = texture_at(b.binding, b, bindings, batch, textures);
+        images[i] = {s.sampler, image.view(), image.layout()};
+        write.pImageInfo = &images[i];
+        break;
+      }
+      case DescriptorKind::sampler:
+        images[i] = {s.sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
+        write.pImageInfo = &images[i];
+        break;
+      case DescriptorKind::storage_image: {
+        const VulkanImage* image = nullptr;
+        for (std::size_t k = 0; k < bindings.results.size(); ++k)
+          if (bindings.results[k] == b.binding) image = batch.results_[k].get();
+        for (std::size_t k = 0; k < bindings.word_results.size(); ++k)
+          if (bindings.word_results[k] == b.binding) image = batch.word_results_[k].get();
+        if (image == nullptr) throw Error(where + " is an image the dispatch does not give", ExitCode::failed);
+        if (image->integer() != b.integer)
+          throw Error(where + " is an image of " + (b.integer ? "integer" : "float") + " texels: the dispatch gives " +
+                          (image->integer() ? "RGBA32UI" : "RGBA32F"),
+                      ExitCode::failed);
+        images[i] = {VK_NULL_HANDLE, image->view(), VK_IMAGE_LAYOUT_GENERAL};
+        write.pImageInfo = &images[i];
+        break;
+      }
+      case DescriptorKind::uniform_buffer:
+        if (block.data == nullptr || block.binding != b.binding)
+          throw Error(where + " is a uniform block the dispatch does not give", ExitCode::failed);
+        uniform.emplace(s, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        std::memcpy(uniform->data(), block.data, block.size);
+        buffers[i] = {uniform->buffer(), 0, block.size};
+        write.pBufferInfo = &buffers[i];
+        break;
+      case DescriptorKind::storage_buffer:
+        if (b.binding != kGuardBinding)
+          throw Error(where + " is a storage buffer: query passes have none", ExitCode::failed);
+        guard.emplace(s, sizeof(LoopGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        std::memset(guard->data(), 0, sizeof(LoopGuardState));
+        buffers[i] = {guard->buffer(), 0, sizeof(LoopGuardState)};
+        write.pBufferInfo = &buffers[i];
+        break;
+    }
+    writes.push_back(write);
+  }
+  vkUpdateDescriptorSets(s.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+
+  const auto groups = [](int n, unsigned local) { return static_cast<uint32_t>((n + local - 1) / local); };
+  s.submit(name_ + ": dispatch", [&](VkCommandBuffer c) {
+    VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT;
+    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
+    vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
+    vkCmdDispatch(c, groups(batch.width(), reflection_.local_size[0]), groups(batch.height(), reflection_.local_size[1]),
+                  1);
+    VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
+    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         0, 1, &after, 0, nullptr, 0, nullptr);
+  });
+  if (!guard) return;
+  LoopGuardState state;
+  std::memcpy(&state, guard->data(), sizeof state);
+  if (state.tripped == 0) return;
+  const std::size_t loop = state.tripped - 1;
+  const std::string where = loop < loops_.size() ? loops_[loop].file + ":" + std::to_string(loops_[loop].line) : "?";
+  throw Error(name_ + ": dispatch: the loop at " + where + " ran past " + std::to_string(bounds.loop_iterations) +
+                  " iterations in one invocation: an endless loop, or more work than a check allows (--loop-limit)",
+              ExitCode::failed);
+}
+
+std::string first_error(const CompileResult& result, const std::string& fallback) {
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == "error") return d.str();
+  return fallback;
+}
+
+}  // namespace
+
+VulkanDevice::VulkanDevice(std::unique_ptr<State> state) : state_(std::move(state)) {}
+VulkanDevice::~VulkanDevice() = default;
+
+std::string VulkanDevice::device_name() const { return state_->properties.deviceName; }
+std::string VulkanDevice::driver() const {
+  return state_->driver_name + (state_->driver_info.empty() ? "" : ", " + state_->driver_info);
+}
+std::string VulkanDevice::api_version() const { return version_text(state_->properties.apiVersion); }
+std::string VulkanDevice::device_type() const {
+  switch (state_->properties.deviceType) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
+    default: return "other";
+  }
+}
+std::string VulkanDevice::validation() const {
+  return state_->validation_on ? std::string("on (") + kValidationLayer + ")" : "off (" + state_->validation_why + ")";
+}
+void VulkanDevice::set_dispatch_bounds(const DispatchBounds& bounds) { state_->bounds = bounds; }
+
+std::string VulkanDevice::query_api() const {
+  return state_->settings.language == PassLanguage::hlsl ? "hlsl" : "vulkan";
+}
+
+std::unique_ptr<QueryProgram> VulkanDevice::compile_query(const SourceTree& tree, const std::string& pass,
+                                                          const std::vector<Define>& defines) const {
+  const State& s = *state_;
+  ShaderSource source = standalone_source(flatten(tree, tree.locate_in_root(pass)), Target::vulkan, defines);
+  std::vector<GuardedLoop> loops;
+  if (s.bounds.enabled) loops = guard_loops(source, {kGuardBinding, s.bounds.loop_iterations});
+  const CompileResult glsl = compile_with_glslang(s.glslang, source, Target::vulkan);
+  if (!glsl.ok) throw Error(pass + ": " + first_error(glsl, "glslang could not compile it for Vulkan"), ExitCode::failed);
+  if (s.settings.language == PassLanguage::glsl)
+    return std::make_unique<VulkanQueryProgram>(s, pass, glsl.spirv, std::move(loops));
+
+  // HLSL: the export of this SPIR-V, or the user's copy of the export of the pass.
+  std::string name = std::filesystem::path(pass).stem().string() + ".hlsl";
+  std::string hlsl;
+  const std::filesystem::path copy = s.settings.hlsl_root ? *s.settings.hlsl_root / name : std::filesystem::path();
+  if (s.settings.hlsl_root && defines.empty() && std::filesystem::is_regular_file(copy)) {
+    std::ifstream in(copy, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!in) throw Error(copy.string() + ": could not be read");
+    hlsl = text.str(), name = copy.string();
+    loops.clear();  // the copy has no loop guard: the deadline alone bounds it
+  } else {
+    hlsl = cross_compile(glsl.spirv, CrossLanguage::hlsl50);
+  }
+  const CompileResult back = compile_hlsl_with_glslang(s.glslang, hlsl, name, Stage::compute);
+  if (!back.ok) throw Error(name + ": " + first_error(back, "glslang could not compile the HLSL"), ExitCode::failed);
+  return std::make_unique<VulkanQueryProgram>(s, pass + " (HLSL)", back.spirv, std::move(loops));
+}
+
+std::unique_ptr<DeviceTexture> VulkanDevice::upload(const Image& image) const { return upload_image(*state_, image); }
+
+std::unique_ptr<QueryBatch> VulkanDevice::make_batch(const std::vector<Image>& inputs, std::size_t results,
+                                                     std::size_t word_results) const {
+  return std::make_unique<VulkanQueryBatch>(*state_, inputs, results, word_results);
+}
+
+void VulkanDevice::dispatch(const QueryProgram& program, const QueryBindings& bindings, const QueryBatch& batch,
+                            const std::vector<QueryTexture>& textures, const QueryBlock& block) const {
+  check_batch_bindings(bindings, batch);
+  const auto* vk_program = dynamic_cast<const VulkanQueryProgram*>(&program);
+  const auto* vk_batch = dynamic_cast<const VulkanQueryBatch*>(&batch);
+  if (vk_program == nullptr || vk_batch == nullptr)
+    throw Error("query pass: a program or batch made on another device than this Vulkan device", ExitCode::failed);
+  vk_program->run(bindings, *vk_batch, textures, block, state_->bounds);
+}
+
+std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings) {
+  auto s = std::make_unique<VulkanDevice::State>();
+  s->settings = settings;
+  const auto fail = [](const std::string& why) { return Error("no Vulkan device: " + why, ExitCode::no_context); };
+
+  const bool debug_utils = has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (!settings.validation)
+    s->validation_why = "not asked for";
+  else if (!has_layer(kValidationLayer))
+    s->validation_why = std::string(kValidationLayer) + " is not installed (Debian: vulkan-validationlayers)";
+  else if (!debug_utils)
+    s->validation_why = "no VK_EXT_debug_utils";
+  else
+    s->validation_on = true;
+
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "penumbra";
+  app.apiVersion = VK_API_VERSION_1_1;
+  VkInstanceCreateInfo instance_info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  instance_info.pApplicationInfo = &app;
+  const char* layers[] = {kValidationLayer};
+  const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+  VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messenger_info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  // Not the performance hints: a result read back from GENERAL layout is what a check does once.
+  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+  messenger_info.pfnUserCallback = on_validation_message;
+  messenger_info.pUserData = s.get();
+  if (s->validation_on) {
+    instance_info.enabledLayerCount = 1;
+    instance_info.ppEnabledLayerNames = layers;
+    instance_info.enabledExtensionCount = 1;
+    instance_info.ppEnabledExtensionNames = extensions;
+    instance_info.pNext = &messenger_info;  // messages of instance creation too
+  }
+  const VkResult made = vkCreateInstance(&instance_info, nullptr, &s->instance);
+  if (made != VK_SUCCESS)
+    throw fail("vkCreateInstance failed (VkResult " + std::to_string(static_cast<int>(made)) +
+               "): no Vulkan driver installed? (Debian: mesa-vulkan-drivers)");
+  if (s->validation_on) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(s->instance, "vkCreateDebugUtilsMessengerEXT"));
+    if (create == nullptr || create(s->instance, &messenger_info, nullptr, &s->messenger) != VK_SUCCESS)
+      throw fail("the validation layer's messenger could not be made");
+  }
+
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(s->instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(s->instance, &count, devices.data());
+  int best_rank = 99;
+  std::string seen;
+  for (VkPhysicalDevice device : devices) {
+    VkPhysicalDeviceProperties properties;
+    vkGetPhysicalDeviceProperties(device, &properties);
+    seen += std::string(seen.empty() ? "" : ", ") + properties.deviceName;
+    uint32_t families = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &families, nullptr);
+    std::vector<VkQueueFamilyProperties> family(families);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &families, family.data());
+    for (uint32_t f = 0; f < families; ++f)
+      if ((family[f].queueFlags & VK_QUEUE_COMPUTE_BIT) && type_rank(properties.deviceType) < best_rank &&
+          properties.apiVersion >= VK_API_VERSION_1_1) {
+        best_rank = type_rank(properties.deviceType);
+        s->physical = device, s->properties = properties, s->queue_family = f;
+        break;
+      }
+  }
+  if (s->physical == VK_NULL_HANDLE)
+    throw fail(devices.empty() ? "the loader found no device (Debian: mesa-vulkan-drivers for lavapipe)"
+                               : "no Vulkan 1.1 device with a compute queue among " + seen);
+  vkGetPhysicalDeviceMemoryProperties(s->physical, &s->memory);
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  if (s->properties.apiVersion >= VK_API_VERSION_1_2) properties2.pNext = &driver;
+  vkGetPhysicalDeviceProperties2(s->physical, &properties2);
+  if (properties2.pNext != nullptr) s->driver_name = driver.driverName, s->driver_info = driver.driverInfo;
+
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queue_info.queueFamilyIndex = s->queue_family;
+  queue_info.queueCount = 1;
+  queue_info.pQueuePriorities = &priority;
+  VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  device_info.queueCreateInfoCount = 1;
+  device_info.pQueueCreateInfos = &queue_info;
+  if (vkCreateDevice(s->physical, &device_info, nullptr, &s->device) != VK_SUCCESS)
+    throw fail(std::string("vkCreateDevice failed on ") + s->properties.deviceName);
+  vkGetDeviceQueue(s->device, s->queue_family, 0, &s->queue);
+  VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool_info.queueFamilyIndex = s->queue_family;
+  vk_check(vkCreateCommandPool(s->device, &pool_info, nullptr, &s->pool), "creating a command pool");
+  // The GL textures' sampling (gl/texture.h): nearest, clamped to the edge, one level.
+  VkSamplerCreateInfo sampler_info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  sampler_info.magFilter = sampler_info.minFilter = VK_FILTER_NEAREST;
+  sampler_info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  sampler_info.addressModeU = sampler_info.addressModeV = sampler_info.addressModeW =
+      VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  vk_check(vkCreateSampler(s->device, &sampler_info, nullptr, &s->sampler), "creating a sampler");
+  s->throw_if_messages("vulkan: making the device");
+  return std::unique_ptr<VulkanDevice>(new VulkanDevice(std::move(s)));
+}
+
+}  // namespace pn

@@ -1,0 +1,66 @@
+// The Vulkan executor of the query passes (device/query_device.h): `penumbra check --api vulkan`
+// runs the checks whose passes are query passes on a Vulkan device — lavapipe here, a GPU's
+// driver where one is present — from the vulkan-target SPIR-V that `lint` validates and `bundle
+// --target vulkan` writes; `--api hlsl` runs the same passes from their HLSL export (SPIRV-Cross)
+// compiled back to SPIR-V by glslang's HLSL front end. Descriptors come from the SPIR-V itself
+// (shader/spirv_cross.h): combined samplers for GLSL, texture + sampler pairs for HLSL, storage
+// images, std140 uniform blocks. With validation on (the default where the Khronos layer is
+// installed) any message of the layer is an error of the dispatch that caused it.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "device/query_device.h"
+
+namespace pn {
+
+// What the passes are compiled from on the device.
+enum class PassLanguage {
+  glsl,  // GLSL, the vulkan target (shader/target.h)
+  hlsl,  // the HLSL export of that SPIR-V (shader model 5.0), compiled back with glslang
+};
+
+struct VulkanSettings {
+  PassLanguage language = PassLanguage::glsl;
+  bool validation = true;  // the Khronos validation layer, when installed
+  // With hlsl: a directory of HLSL exports (`bundle glsl/passes/X.comp --target hlsl` as X.hlsl)
+  // used instead of the generated export of a pass compiled without extra defines.
+  std::optional<std::filesystem::path> hlsl_root;
+};
+
+class VulkanDevice final : public QueryDevice {
+ public:
+  ~VulkanDevice() override;
+  std::string device_name() const;  // "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string driver() const;       // "llvmpipe, Mesa 22.3.6 …" (driver name and info)
+  std::string api_version() const;  // "1.3.230"
+  std::string device_type() const;  // "cpu", "integrated GPU", …
+  // "on (VK_LAYER_KHRONOS_validation)" or "off (…why)".
+  std::string validation() const;
+  void set_dispatch_bounds(const DispatchBounds& bounds);
+
+  std::string query_api() const override;
+  std::unique_ptr<QueryProgram> compile_query(const SourceTree& tree, const std::string& pass,
+                                              const std::vector<Define>& defines) const override;
+  std::unique_ptr<DeviceTexture> upload(const Image& image) const override;
+  std::unique_ptr<QueryBatch> make_batch(const std::vector<Image>& inputs, std::size_t results,
+                                         std::size_t word_results) const override;
+  void dispatch(const QueryProgram& program, const QueryBindings& bindings, const QueryBatch& batch,
+                const std::vector<QueryTexture>& textures, const QueryBlock& block) const override;
+
+  struct State;  // vk/vulkan_device.cpp
+
+ private:
+  friend std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings);
+  explicit VulkanDevice(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
+// The first device with a compute queue, GPUs before CPUs. Throws Error(ExitCode::no_context)
+// naming why there is none (no loader, no driver, no device).
+std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings = {});
+
+}  // namespace pn
