@@ -249,10 +249,19 @@ uint pnSummedAreaMomentQ(float depth, vec2 unitRange) {
   return uint(roundEven(pnSummedAreaUnitDepth(depth, unitRange) * pnSummedAreaPow2(PN_SUMMED_AREA_MOMENT_BITS)));
 }
 
+// a · b as 64 bits (low, high word), exact, from 16-bit halves: what GLSL's umulExtended computes,
+// written in operations every shading language has (SPIRV-Cross writes umulExtended's SPIR-V
+// into HLSL as a call HLSL does not have, so the HLSL export could not compile).
+uvec2 pnSummedAreaMulWide(uint a, uint b) {
+  uint a0 = a & 0xFFFFu, a1 = a >> 16, b0 = b & 0xFFFFu, b1 = b >> 16;
+  uint low = a0 * b0, cross0 = a0 * b1, cross1 = a1 * b0;
+  uint middle = (low >> 16) + (cross0 & 0xFFFFu) + (cross1 & 0xFFFFu);  // < 3 · 2^16
+  return uvec2((middle << 16) | (low & 0xFFFFu), a1 * b1 + (cross0 >> 16) + (cross1 >> 16) + (middle >> 16));
+}
+
 uvec4 pnSummedAreaMomentsTexel(float depth, vec2 unitRange) {
   uint q = pnSummedAreaMomentQ(depth, unitRange);
-  uvec2 square;  // q^2 < 2^(2B + 1): exact in 64 bits
-  umulExtended(q, q, square.y, square.x);
+  uvec2 square = pnSummedAreaMulWide(q, q);  // q^2 < 2^(2B + 1): exact in 64 bits
   return uvec4(q, 0u, square);
 }
 
@@ -290,8 +299,7 @@ vec4 pnSummedAreaFloatMomentsColumnStep(sampler2D rowPrefix, int column, int y, 
 
 // (low, high) times a 32-bit m, modulo 2^64.
 uvec2 pnSummedAreaMul64(uvec2 a, uint m) {
-  uvec2 r;
-  umulExtended(a.x, m, r.y, r.x);
+  uvec2 r = pnSummedAreaMulWide(a.x, m);
   r.y += a.y * m;
   return r;
 }

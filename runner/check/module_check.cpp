@@ -42,7 +42,7 @@ const std::vector<ModuleCheck>& module_checks() {
       {"depth_pyramid", "depth_pyramid levels vs window scans (min/max exact); any-square min/max vs square scans",
        &run_depth_pyramid_check},
       {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
-       &run_region_check},
+       &run_region_check, OffGl::every_case},
       {"sample_table", "multi-jittered strata of the table; the 3.2 selection and scaling vs the paper's arithmetic",
        &run_sample_table_check, OffGl::every_case},
       {"traversal", "leaf 1 vs brute force (exact counts); sampled / min leaves and budgets vs the CPU recursion",
@@ -72,7 +72,7 @@ const std::vector<ModuleCheck>& module_checks() {
                          "and its range over rectangles vs the definition in double",
        &run_receiver_plane_check, OffGl::every_case},
       {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
-       &run_truth_check},
+       &run_truth_check, OffGl::every_case},
       {"summed_area", "64-bit fixed-point summed-area tables: depth and moment sums vs direct box sums (exact), float "
                       "sums, means and variances in bound; the float moments table's errors beside the fixed one's",
        &run_summed_area_check},
@@ -80,7 +80,8 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_minmax_mip_check},
       {"depth_cache", "min(static, dynamic) and its shadow test vs the definition; both caches over 100-frame motion "
                       "sequences vs a full render (map, mip chain, pyramid, Fast PCSS: exact)",
-       &run_depth_cache_check},
+       &run_depth_cache_check, OffGl::query_cases,
+       "the compose pass and the caches over motion sequences"},
       {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
        &run_cascades_check, OffGl::query_cases,

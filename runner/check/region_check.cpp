@@ -66,7 +66,7 @@ void add_cases(std::vector<CaseResult>& results, const std::string& name, const 
 }  // namespace
 
 std::vector<CaseResult> run_region_check(const CheckEnvironment& env) {
-  const RegionQuery pass(env.context(), env.tree);
+  const RegionQuery pass(env.device, env.tree);
   std::vector<CaseResult> results;
   for (int n : kExhaustiveSizes) {
     // Centres from half a map outside on each side; half-integer centres on the small maps.

@@ -22,7 +22,9 @@ std::optional<PassLanguage> vulkan_language(const GlobalOptions& global) {
 }
 
 void print_vulkan_device(const VulkanDevice& device) {
-  std::cout << "vulkan: " << device.device_name() << " (" << device.device_type() << ", Vulkan "
+  std::cout << (device.query_api() == "hlsl" ? "hlsl (each pass's HLSL export, compiled back by glslang) on vulkan: "
+                                              : "vulkan: ")
+            << device.device_name() << " (" << device.device_type() << ", Vulkan "
             << device.api_version() << ", " << device.driver() << "), validation " << device.validation() << "\n";
 }
 

@@ -1,7 +1,5 @@
 #include "passes/depth_cache_pass.h"
 
-#include "gl/query_device_gl.h"
-
 #include "core/query_grid.h"
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
@@ -32,18 +30,17 @@ void DepthCacheComposer::compose(const GlObject& static_map, const GlObject& dyn
   dispatch_texel_run(program_, texels ? run : TexelRun{0, 0, true}, n, n);
 }
 
-DepthCacheQueryPass::DepthCacheQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/depth_cache_query.comp",
+DepthCacheQueryPass::DepthCacheQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/depth_cache_query.comp",
              {{PN_DEPTH_CACHE_QUERIES_BINDING}, {PN_DEPTH_CACHE_RESULTS_IMAGE}}) {}
 
-std::vector<DepthCacheResult> DepthCacheQueryPass::run(const GlObject& static_map, const GlObject& dynamic_map,
+std::vector<DepthCacheResult> DepthCacheQueryPass::run(const DeviceTexture& static_map, const DeviceTexture& dynamic_map,
                                                        const std::vector<DepthCacheQuery>& queries) const {
   if (queries.empty()) return {};
   std::vector<Query> q;
   for (const DepthCacheQuery& k : queries) q.push_back({float(k.u), float(k.v), k.receiver_depth, k.bias});
   const QueryResults r = query_.run(
-      {q}, {{PN_DEPTH_CACHE_STATIC_BINDING, GlDeviceTexture(static_map)},
-          {PN_DEPTH_CACHE_DYNAMIC_BINDING, GlDeviceTexture(dynamic_map)}});
+      {q}, {{PN_DEPTH_CACHE_STATIC_BINDING, static_map}, {PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map}});
   std::vector<DepthCacheResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
     const Query v = r.at(0, k);

@@ -39,8 +39,8 @@ struct DepthCacheResult {
 
 class DepthCacheQueryPass {
  public:
-  DepthCacheQueryPass(const Context& context, const SourceTree& tree);
-  std::vector<DepthCacheResult> run(const GlObject& static_map, const GlObject& dynamic_map,
+  DepthCacheQueryPass(const QueryDevice& device, const SourceTree& tree);
+  std::vector<DepthCacheResult> run(const DeviceTexture& static_map, const DeviceTexture& dynamic_map,
                                     const std::vector<DepthCacheQuery>& queries) const;
 
  private:

@@ -42,11 +42,18 @@ class CrossContext {
 
 }  // namespace
 
-SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv) {
+SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv, bool active_only) {
   CrossContext context;
   spvc_compiler compiler = context.compiler(spirv, SPVC_BACKEND_NONE);
   spvc_resources resources = nullptr;
-  context.check(spvc_compiler_create_shader_resources(compiler, &resources), "reflecting resources");
+  if (active_only) {
+    spvc_set active = nullptr;
+    context.check(spvc_compiler_get_active_interface_variables(compiler, &active), "finding the used resources");
+    context.check(spvc_compiler_create_shader_resources_for_active_variables(compiler, &resources, active),
+                  "reflecting resources");
+  } else {
+    context.check(spvc_compiler_create_shader_resources(compiler, &resources), "reflecting resources");
+  }
   SpirvReflection out;
   const std::pair<spvc_resource_type, DescriptorKind> kinds[] = {
       {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, DescriptorKind::combined_image_sampler},
@@ -123,12 +130,28 @@ std::string cross_compile(const std::vector<std::uint32_t>& spirv, CrossLanguage
   spvc_compiler compiler = context.compiler(spirv, msl ? SPVC_BACKEND_MSL : SPVC_BACKEND_HLSL);
   spvc_compiler_options options = nullptr;
   context.check(spvc_compiler_create_compiler_options(compiler, &options), "options");
-  if (msl)
+  if (msl) {
     context.check(spvc_compiler_options_set_uint(options, SPVC_COMPILER_OPTION_MSL_VERSION, 20000), "MSL version");
-  else
+    // [[texture(N)]], [[sampler(N)]], [[buffer(N)]] at the GLSL binding N, as HLSL's registers are.
+    SpvExecutionModel model = SpvExecutionModelGLCompute;
+    const spvc_entry_point* entries = nullptr;
+    size_t entry_count = 0;
+    context.check(spvc_compiler_get_entry_points(compiler, &entries, &entry_count), "listing entry points");
+    if (entry_count > 0) model = entries[0].execution_model;
+    for (const SpirvBinding& b : reflect_spirv(spirv).bindings) {
+      spvc_msl_resource_binding binding;
+      spvc_msl_resource_binding_init(&binding);
+      binding.stage = model;
+      binding.desc_set = b.set;
+      binding.binding = b.binding;
+      binding.msl_buffer = binding.msl_texture = binding.msl_sampler = b.binding;
+      context.check(spvc_compiler_msl_add_resource_binding(compiler, &binding), "an MSL binding");
+    }
+  } else {
     context.check(spvc_compiler_options_set_uint(options, SPVC_COMPILER_OPTION_HLSL_SHADER_MODEL,
                                                  language == CrossLanguage::hlsl60 ? 60 : 50),
                   "shader model");
+  }
   context.check(spvc_compiler_install_compiler_options(compiler, options), "options");
   const char* source = nullptr;
   context.check(spvc_compiler_compile(compiler, &source), std::string("writing ") + cross_language_name(language));

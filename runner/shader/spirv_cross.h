@@ -27,8 +27,9 @@ struct SpirvReflection {
   unsigned local_size[3] = {1, 1, 1};
 };
 
+// Every resource the entry declares, or (`active_only`) those it uses: what a pipeline must bind.
 // Throws Error(ExitCode::failed) with SPIRV-Cross's message when it cannot parse `spirv`.
-SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv);
+SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv, bool active_only = false);
 
 // One line for each binding number two resources share ("binding 3 of set 0: 'pnCentre'
 // (sampler) and 'pnResult' (image)"): legal in GL, whose texture units, image units and buffer

@@ -405,7 +405,7 @@ class VulkanQueryProgram final : public QueryProgram {
  public:
   VulkanQueryProgram(const VulkanDevice::State& s, std::string name, const std::vector<std::uint32_t>& spirv,
                      std::vector<GuardedLoop> loops)
-      : s_(&s), name_(std::move(name)), reflection_(reflect_spirv(spirv)), loops_(std::move(loops)) {
+      : s_(&s), name_(std::move(name)), reflection_(reflect_spirv(spirv, true)), loops_(std::move(loops)) {
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     module_info.codeSize = spirv.size() * 4;
     module_info.pCode = spirv.data();

@@ -1,0 +1,30 @@
+// A module or pass as HLSL or MSL (`penumbra bundle --target hlsl|msl`): its GLSL for the vulkan
+// target through glslang to SPIR-V, then SPIRV-Cross. SPIR-V keeps only what an entry point
+// reaches, so a module (X.glsl, no main) is exported through its export entry, exports/X.comp:
+// a compute entry that calls each overload of the module's one call once. A pass (.comp, .frag)
+// is its own entry. The text starts with a comment saying how it was made, from which files
+// (with each one's hash and, given, the commit) and how the GLSL bindings map to the language's
+// registers.
+#pragma once
+
+#include <string>
+
+#include "shader/glslang_compiler.h"
+#include "shader/source_tree.h"
+#include "shader/spirv_cross.h"
+
+namespace pn {
+
+// The entry a module or pass is exported through, relative to the root: "exports/X.comp" for
+// X.glsl, the pass itself otherwise. Throws Error naming the module when a module has none.
+std::string export_entry(const SourceTree& tree, const std::string& module);
+
+// `provenance`: a line or two on where the files came from (the commit), put in the header.
+// Throws Error(ExitCode::failed) with the compiler's first error.
+std::string export_source(const GlslangProcess& process, const SourceTree& tree, const std::string& module,
+                          CrossLanguage language, const std::string& provenance);
+
+// FNV-1a, 64 bits, of `text`, as 16 hex digits: names a file's exact content in the header.
+std::string content_hash(const std::string& text);
+
+}  // namespace pn
