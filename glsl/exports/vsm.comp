@@ -1,16 +1,15 @@
 // exports/vsm.comp — the entry `penumbra bundle vsm.glsl --target hlsl|msl` translates
 // (runner/shader/export_source.h). SPIR-V keeps only what an entry point reaches, so this entry
-// calls pnVsm, pnEvsm2 and pnEvsm4 once per receiver of a receiver image: the export then holds the call and
-// everything it calls, with the parameters' names. Its bindings are an example; an engine calls
-// the exported function from its own shader with its own resources.
+// calls pnVsm, pnEvsm2 and pnEvsm4 once per receiver of a receiver image: the export then holds
+// the calls and everything they call, with the parameters' names. Its bindings are an example; an
+// engine calls the exported function from its own shader with its own resources.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "vsm.glsl"
 
 layout(r32f, binding = 0) writeonly uniform image2D pnVisibility;
-layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 1: with the receiver plane)
-layout(binding = 2) uniform sampler2D pnReceiverPlanes;  // (du, dv): light depth per texel
+layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 0)
 layout(binding = 3) uniform sampler2D pnMoments;       // the blurred moments (vsm.glsl)
 layout(binding = 4) uniform sampler2DArray pnPyramid;  // the depth pyramid's first levels (the bound)
 layout(std140, binding = 5) uniform PnVsmExport {

@@ -78,7 +78,7 @@ std::string export_source(const GlslangProcess& process, const SourceTree& tree,
                 ? "[[texture(N)]], [[sampler(N)]], [[buffer(N)]]; set 0\n"
                 : "register t<N> (texture), s<N> (its sampler: GLSL's combined samplers are split), u<N> (image), "
                   "b<N> (cbuffer); space 0\n";
-  for (const SpirvBinding& b : reflect_spirv(compiled.spirv).bindings) {
+  for (const SpirvBinding& b : reflect_spirv(compiled.spirv, true).bindings) {
     std::string where = kind_register(b.kind, language);
     for (size_t at; (at = where.find('N')) != std::string::npos;) where.replace(at, 1, std::to_string(b.binding));
     for (size_t at; (at = where.find("<")) != std::string::npos;) where.erase(at, 1);

@@ -3,21 +3,29 @@
 # `penumbra check MODULE --backend BACKEND` passes on the library, and fails
 # with a where / expected / observed line on a copy of GLSL_DIR in which FILE
 # has its first FROM replaced by TO (a deliberate mistake).
+# BACKEND vulkan or hlsl: the same with `--api vulkan | hlsl` (the Vulkan executor).
 # Exit 77 (skipped) when the backend gives no context.
 set -u
 penumbra=$1 backend=$2 module=$3 glsl=$4 scratch=$5 file=$6
 export PN_FROM="$7" PN_TO="$8"
-"$penumbra" info --backend "$backend" >/dev/null 2>"$scratch.err"
+case $backend in
+  vulkan|hlsl) info="--api vulkan" where="--api $backend" ;;
+  *) info="--backend $backend" where="--backend $backend" ;;
+esac
+# shellcheck disable=SC2086  # $info and $where are two words each
+"$penumbra" info $info >/dev/null 2>"$scratch.err"
 case $? in
   0) ;;
   3) echo "SKIPPED: $(cat "$scratch.err")"; exit 77 ;;
   *) cat "$scratch.err"; exit 1 ;;
 esac
-"$penumbra" check "$module" --backend "$backend" || { echo "check failed on the library's modules"; exit 1; }
+# shellcheck disable=SC2086
+"$penumbra" check "$module" $where || { echo "check failed on the library's modules"; exit 1; }
 rm -rf "$scratch" && cp -r "$glsl" "$scratch" || exit 1
 perl -0pi -e 's/\Q$ENV{PN_FROM}\E/$ENV{PN_TO}/' "$scratch/$file"
 grep -qF -- "$PN_TO" "$scratch/$file" || { echo "could not put the mistake into $file"; exit 1; }
-out=$("$penumbra" check "$module" --backend "$backend" --glsl-root "$scratch")
+# shellcheck disable=SC2086
+out=$("$penumbra" check "$module" $where --glsl-root "$scratch")
 status=$?
 rm -rf "$scratch"
 printf '%s\n' "$out"
