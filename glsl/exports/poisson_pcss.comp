@@ -18,7 +18,7 @@ layout(std140, binding = 5) uniform PnPoissonPcssDisks {
 #define PN_POISSON_FILTER_DISK pnDisks.filterPoints
 #include "poisson_pcss.glsl"
 
-layout(r32f, binding = 0) writeonly uniform image2D pnVisibility;
+layout(rgba32f, binding = 0) writeonly uniform image2D pnVisibility;
 layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 1: with the receiver plane)
 layout(binding = 2) uniform sampler2D pnReceiverPlanes;  // (du, dv): light depth per texel
 layout(binding = 3) uniform sampler2D pnDepthMap;  // the shadow map, linear depth
@@ -33,7 +33,10 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
   vec4 r = texelFetch(pnReceivers, p, 0);
   vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
-  float v = r.w != 0.0 ? pnPoissonPcss(pnDepthMap, pnExport.light, r.xyz, plane, pnExport.settings, pnExport.rotation)
-                       : pnPoissonPcss(pnDepthMap, pnExport.light, r.xyz, pnExport.settings, pnExport.rotation);
+  // filterScale 0: the shipped defaults with the block's bias (pnPoissonPcssDefaults, in the export too).
+  PnPoissonPcssSettings settings = pnPoissonPcssDefaults(pnExport.settings.bias);
+  if (pnExport.settings.filterScale > 0.0) settings = pnExport.settings;
+  float v = r.w != 0.0 ? pnPoissonPcss(pnDepthMap, pnExport.light, r.xyz, plane, settings, pnExport.rotation)
+                       : pnPoissonPcss(pnDepthMap, pnExport.light, r.xyz, settings, pnExport.rotation);
   imageStore(pnVisibility, p, vec4(v));
 }

@@ -8,7 +8,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "savsm.glsl"
 
-layout(r32f, binding = 0) writeonly uniform image2D pnVisibility;
+layout(rgba32f, binding = 0) writeonly uniform image2D pnVisibility;
 layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 0)
 layout(binding = 3) uniform PN_SAVSM_TABLE_SAMPLER pnTable;  // the moments' summed-area table (summed_area.glsl)
 layout(binding = 4) uniform sampler2D pnMip;                   // the aligned min/max mip chain (the bound)

@@ -8,7 +8,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "vogel_pcss.glsl"
 
-layout(r32f, binding = 0) writeonly uniform image2D pnVisibility;
+layout(rgba32f, binding = 0) writeonly uniform image2D pnVisibility;
 layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 1: with the receiver plane)
 layout(binding = 2) uniform sampler2D pnReceiverPlanes;  // (du, dv): light depth per texel
 layout(binding = 3) uniform sampler2D pnDepthMap;  // the shadow map, linear depth
@@ -22,7 +22,10 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
   vec4 r = texelFetch(pnReceivers, p, 0);
   vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
-  float v = r.w != 0.0 ? pnVogelPcss(pnDepthMap, pnExport.light, r.xyz, plane, p, pnExport.settings)
-                       : pnVogelPcss(pnDepthMap, pnExport.light, r.xyz, p, pnExport.settings);
+  // filterScale 0: the shipped defaults with the block's bias (pnVogelPcssDefaults, in the export too).
+  PnVogelPcssSettings settings = pnVogelPcssDefaults(pnExport.settings.bias);
+  if (pnExport.settings.filterScale > 0.0) settings = pnExport.settings;
+  float v = r.w != 0.0 ? pnVogelPcss(pnDepthMap, pnExport.light, r.xyz, plane, p, settings)
+                       : pnVogelPcss(pnDepthMap, pnExport.light, r.xyz, p, settings);
   imageStore(pnVisibility, p, vec4(v));
 }

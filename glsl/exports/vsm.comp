@@ -8,7 +8,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "vsm.glsl"
 
-layout(r32f, binding = 0) writeonly uniform image2D pnVisibility;
+layout(rgba32f, binding = 0) writeonly uniform image2D pnVisibility;
 layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 0)
 layout(binding = 3) uniform sampler2D pnMoments;       // the blurred moments (vsm.glsl)
 layout(binding = 4) uniform sampler2DArray pnPyramid;  // the depth pyramid's first levels (the bound)

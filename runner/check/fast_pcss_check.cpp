@@ -36,8 +36,6 @@ namespace pn {
 namespace {
 
 constexpr int kMap = 128, kScreen = 64;     // as the pipeline check: brute force on llvmpipe stays fast
-constexpr double kMargin = 1e-4;            // texels / relative depth: float and double may round apart
-constexpr double kFractionRounding = 1e-6;  // count / texels in float vs double
 
 // Channel `c` of a four-channel image.
 Image channel(const Image& image, int c) {
@@ -123,7 +121,7 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
           (settings.blockers == Estimator::traversal && settings.leaf_side == 1 && settings.refine_iterations == 0);
       if (!brute_force_equal) continue;
       const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, settings.bias,
-                                                           settings.filter_scale, kMargin, settings.receiver_plane_tan);
+                                                           settings.filter_scale, kPcssDecisionMargin, settings.receiver_plane_tan);
       for (const auto& [stage, image] : {std::pair<const char*, Image>{"compute pass", compute_visibility},
                                          std::pair<const char*, Image>{"fragment shader", channel(fragment, 0)}}) {
         Image observed = image;

@@ -28,6 +28,7 @@ std::vector<CaseResult> run_depth_cache_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_exports_check(const CheckEnvironment& env);
 
 const Context& CheckEnvironment::context() const {
   if (gl == nullptr)
@@ -86,6 +87,9 @@ const std::vector<ModuleCheck>& module_checks() {
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
        &run_cascades_check, OffGl::query_cases,
        "the blend pass over rendered cascades and the city scene"},
+      {"exports", "the export entries (what bundle --target hlsl|msl translates) as query passes: pnExactPcss vs exact "
+                  "PCSS brute force, pnPcf vs 2x2 bilinear PCF on the CPU, both overloads",
+       &run_exports_check, OffGl::every_case},
       {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
               "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
        &run_vsm_check},

@@ -31,8 +31,6 @@ namespace pn {
 namespace {
 
 constexpr int kMap = 128, kScreen = 64;     // small: brute force on llvmpipe stays fast
-constexpr double kMargin = 1e-4;            // texels / relative depth: float and double may round apart
-constexpr double kFractionRounding = 1e-6;  // count / texels in float vs double
 constexpr double kMinimumSsim = 0.97;       // seed 000 Table / §5.4 reports 0.9705
 
 Image read1(const Context& c, const GlObject& t, int size) { return read_float_texture(c, t, size, size, 1); }
@@ -199,7 +197,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const PcssSettings exact = exact_pcss();
     const PcssFrame exact_frame = pipeline.run(inputs, exact);
     const Image exact_visibility = read_float_texture(context, exact_frame.soft_shadow());
-    const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, exact.bias, exact.filter_scale, kMargin);
+    const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
     Image observed = exact_visibility;
     const int ambiguous = leave_out_ambiguous(reference, observed);
     results.push_back({name + ": exact PCSS vs CPU brute force (" + std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
@@ -272,7 +270,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
       for (int x = 0; x < kScreen / 2; ++x) outside.at(x, y, 0) += (y % 2 ? 3.0f : -3.0f) * kMap;
     const GlObject damaged_map = upload_float_texture(context, damaged), outside_gbuffer = upload_float_texture(context, outside);
     const TechniqueInputs bad{scene.light, kScreen, &damaged_map, &outside_gbuffer};
-    const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kMargin);
+    const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
     Image bad_observed = read_float_texture(context, pipeline.run(bad, exact).soft_shadow());
     leave_out_ambiguous(bad_reference, bad_observed);
     results.push_back({name + ": exact PCSS, NaN/+Inf texels (no occluder) and receivers outside the frustum (lit)",

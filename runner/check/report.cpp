@@ -47,7 +47,8 @@ std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, co
   }
   std::vector<ModuleReport> reports;
   for (const ModuleCheck* check : selected) {
-    ModuleReport report{check->name, {}, {}};
+    ModuleReport report;
+    report.module = check->name;
     if (env.gl == nullptr && check->off_gl != OffGl::every_case) {
       report.skipped = check->off_gl == OffGl::none;
       report.not_run = report.skipped ? "GL passes: runs on --api gl450 or es310" : check->gl_only;

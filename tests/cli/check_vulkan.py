@@ -7,8 +7,9 @@ The Vulkan executor against GL 4.5, side by side (issue 27):
   with the same cases (the same names) as on GL — all of them for the checks that run every case
   off GL, a non-empty part of them for the checks whose other cases are GL passes — and every
   other check is reported "not run (GL passes)", never as passing;
-- an HLSL copy given with --hlsl-root is what runs: pcf's export passes as written and fails with
-  one operator changed, with a where / expected / observed line.
+- an HLSL copy given with --hlsl-root is what runs: exact_pcss.glsl's export (`bundle --target
+  hlsl`, the file an engine takes) passes the exports check as written and fails with one operator
+  changed, with a where / expected / observed line.
 Exit 77 (skipped) when there is no Vulkan device.
 """
 import os
@@ -19,7 +20,7 @@ import sys
 
 CASE = re.compile(r'^([a-z_]+): (pass|FAIL) (.*?): ')
 ROW = re.compile(r'^([a-z_]+)\s+(\d+|-)\s+.*\s(pass|FAIL|not run \(GL passes\))$')
-WHERE = re.compile(r'pcf: FAIL .* at \([0-9]+, [0-9]+\)(\[[0-9]\])?: expected [-+0-9.einf]+, observed [-+0-9.einf]+')
+WHERE = re.compile(r'exports: FAIL .* at \([0-9]+, [0-9]+\)(\[[0-9]\])?: expected [-+0-9.einf]+, observed [-+0-9.einf]+')
 
 
 def run(*args):
@@ -97,28 +98,29 @@ def main():
     if len(off_gl) < 10:
         failures.append(f'only {len(off_gl)} checks ran on vulkan: {off_gl}')
 
-    # An HLSL copy is what runs: pcf's query pass exported, passing, then broken.
+    # An HLSL copy is what runs: exact_pcss.glsl's export — the file an engine takes — given with
+    # --hlsl-root passes the exports check as written, and fails with one operator changed.
     root = os.path.join(scratch, 'hlsl')
     shutil.rmtree(root, ignore_errors=True)
     os.makedirs(root)
-    export = os.path.join(root, 'pcf_query.hlsl')
-    b = run(penumbra, 'bundle', 'passes/pcf_query.comp', '--target', 'hlsl', '-o', export)
+    export = os.path.join(root, 'exact_pcss.hlsl')
+    b = run(penumbra, 'bundle', 'exact_pcss.glsl', '--target', 'hlsl', '-o', export)
     if b.returncode != 0:
         print(b.stdout + b.stderr)
         return 1
-    good = run(penumbra, 'check', 'pcf', '--api', 'hlsl', '--hlsl-root', root)
+    good = run(penumbra, 'check', 'exports', '--api', 'hlsl', '--hlsl-root', root)
     if good.returncode != 0:
-        failures.append('pcf on its exported HLSL: exit %d, expected 0\n%s' % (good.returncode, good.stdout))
+        failures.append('exports on exact_pcss.glsl\'s HLSL export: exit %d, expected 0\n%s' % (good.returncode, good.stdout))
     text = open(export).read()
-    mistake = re.sub(r'(sums\.texels \+= float\(hi\.x - lo\.x)\)', r'\1 + 1)', text, count=1)
+    mistake = text.replace('return 1.0f - pnPcfOccludedFraction(', 'return 1.0f - 0.5f * pnPcfOccludedFraction(', 1)
     if mistake == text:
-        failures.append('could not put the mistake into pcf_query.hlsl (sums.texels += float(hi.x - lo.x))')
+        failures.append('could not put the mistake into exact_pcss.hlsl (return 1.0f - pnPcfOccludedFraction()')
     else:
         open(export, 'w').write(mistake)
-        bad = run(penumbra, 'check', 'pcf', '--api', 'hlsl', '--hlsl-root', root)
+        bad = run(penumbra, 'check', 'exports', '--api', 'hlsl', '--hlsl-root', root)
         print(bad.stdout, end='')
         if bad.returncode != 1 or not WHERE.search(bad.stdout):
-            failures.append(f'pcf on a broken HLSL copy: exit {bad.returncode}, expected 1 with a where / expected / observed line')
+            failures.append(f'exports on a broken HLSL copy: exit {bad.returncode}, expected 1 with a where / expected / observed line')
     shutil.rmtree(root, ignore_errors=True)
 
     for f in failures:

@@ -1,0 +1,15 @@
+// exports.h — the bindings of the export entries the runner also runs (the exports
+// check: runner/check/exports_check.cpp). Valid as GLSL and as C++.
+
+#ifndef PENUMBRA_EXPORTS_EXPORTS_H
+#define PENUMBRA_EXPORTS_EXPORTS_H
+
+
+// Distinct across resource kinds (Vulkan and HLSL compiled back have one namespace a set).
+#define PN_EXPORT_VISIBILITY_IMAGE 0  // image2D, rgba32f: the visibility in .x
+#define PN_EXPORT_RECEIVERS_BINDING 1  // sampler2D: (u, v, light depth, 1: with the receiver plane)
+#define PN_EXPORT_PLANES_BINDING 2     // sampler2D: (du, dv), light depth per texel
+#define PN_EXPORT_DEPTH_MAP_BINDING 3  // sampler2D: the shadow map, linear light depth
+#define PN_EXPORT_PARAMS_BINDING 4
+
+#endif  // PENUMBRA_EXPORTS_EXPORTS_H

@@ -1,0 +1,108 @@
+// Cases of the exports check (issue 27): the export entries — glsl/exports/X.comp, what
+// `penumbra bundle X.glsl --target hlsl|msl` translates — run as query passes on the executor
+// under check (on `--api hlsl`, the HLSL export itself, compiled back by glslang), against the
+// CPU's definitions of the calls, for every pixel of each scene that sees a surface:
+// - pnExactPcss against exact PCSS brute force (exact_pcss_reference, double);
+// - pnPcf against 2×2 bilinear PCF (pcf_plane_reference, double);
+// each through both overloads (half the receivers through the receiverPlane one, with a zero
+// plane, which must give the same), the pixels within rounding of a decision left out and
+// counted. The shadow map and G-buffer are the CPU's ray casts (the shadow_map check holds the
+// GPU's rasterised ones to them), so the check needs nothing but the executor.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "check/compare.h"
+#include "check/module_check.h"
+#include "scenes.h"
+#include "gl/std140.h"
+#include "passes/export_pass.h"
+#include "pipeline/pcss_settings.h"
+#include "reference/pcss_reference.h"
+#include "scene/light_block.h"
+#include "scene/scene.h"
+
+namespace pn::glsl {
+#include "exports/exact_pcss.h"
+#include "exports/pcf.h"
+PN_STD140_SIZE(PnExactPcssExport, 32);
+PN_STD140_OFFSET(PnExactPcssExport, bias, 24);
+}  // namespace pn::glsl
+
+namespace pn {
+namespace {
+
+constexpr int kMap = 64, kScreen = 48;  // brute force on the CPU stays fast
+
+struct SceneImages {
+  Image map, gbuffer;
+  std::vector<ExportReceiver> receivers;  // every pixel that sees a surface, in row order
+  std::vector<std::pair<int, int>> pixels;
+};
+
+SceneImages ray_cast(const Scene& scene) {
+  SceneImages out{Image(kMap, kMap), Image(kScreen, kScreen, 4), {}, {}};
+  for (int y = 0; y < kMap; ++y)
+    for (int x = 0; x < kMap; ++x) out.map.at(x, y) = ray_cast_light_depth(scene, x, y);
+  for (int y = 0; y < kScreen; ++y)
+    for (int x = 0; x < kScreen; ++x) {
+      const Receiver r = ray_cast_receiver(scene, x, y, kScreen);
+      if (!r.valid) continue;
+      const float v[4] = {float(r.u), float(r.v), float(r.depth), 1.0f};
+      for (int c = 0; c < 4; ++c) out.gbuffer.at(x, y, c) = v[c];
+      // The G-buffer's floats, as the reference reads them; every other receiver through the plane overload.
+      out.receivers.push_back({v[0], v[1], v[2], out.receivers.size() % 2 == 1, 0.0f, 0.0f});
+      out.pixels.push_back({x, y});
+    }
+  return out;
+}
+
+CaseResult against(const std::string& name, const SceneImages& s, const PcssReference& reference,
+                   const std::vector<float>& observed) {
+  Image expected(static_cast<int>(observed.size()), 1), seen(static_cast<int>(observed.size()), 1);
+  int ambiguous = 0;
+  for (std::size_t k = 0; k < observed.size(); ++k) {
+    const auto [x, y] = s.pixels[k];
+    expected.at(static_cast<int>(k), 0) = reference.visibility.at(x, y);
+    const bool left_out = reference.ambiguous.at(x, y) != 0.0f;
+    seen.at(static_cast<int>(k), 0) = left_out ? reference.visibility.at(x, y) : observed[k];
+    ambiguous += left_out ? 1 : 0;
+  }
+  return {name + " (" + std::to_string(observed.size()) + " receivers, both overloads; " + std::to_string(ambiguous) +
+              " within rounding of a decision left out)",
+          Tolerance::absolute(kFractionRounding), compare(expected, seen, Tolerance::absolute(kFractionRounding))};
+}
+
+}  // namespace
+
+std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
+  const ExportPass exact(env.device, env.tree, "exact_pcss");
+  const ExportPass pcf(env.device, env.tree, "pcf");
+  const float bias = exact_pcss().bias;
+  std::vector<CaseResult> results;
+  for (const auto& fixture : fixtures::kScenes) {
+    const Scene scene = make_scene(fixture, kMap);
+    const SceneImages s = ray_cast(scene);
+    const std::unique_ptr<DeviceTexture> map = env.device.upload(s.map);
+    const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
+                             std::to_string(kScreen) + "² screen: ";
+    for (const float c : {1.0f, 0.5f}) {
+      glsl::PnExactPcssExport block{};
+      set_light_fields(block, scene.light);
+      block.bias = bias;
+      block.filterScale = c;
+      const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, c, kPcssDecisionMargin);
+      results.push_back(against(name + "exports/exact_pcss.comp (pnExactPcss, c " + std::to_string(c).substr(0, 3) +
+                                    ") vs exact PCSS brute force on the CPU",
+                                s, reference, exact.run(*map, s.receivers, query_block(block))));
+    }
+    const glsl::PnPcfExport block{bias};
+    const PcssReference reference =
+        pcf_plane_reference(s.map, s.gbuffer, scene.light, bias, std::ldexp(1.0, -20), 0.0);
+    results.push_back(against(name + "exports/pcf.comp (pnPcf) vs 2x2 bilinear PCF on the CPU", s, reference,
+                              pcf.run(*map, s.receivers, query_block(block))));
+  }
+  return results;
+}
+
+}  // namespace pn
