@@ -18,4 +18,14 @@ void check_batch_bindings(const QueryBindings& bindings, const QueryBatch& batch
                 " results: expected one per binding of the pass");
 }
 
+std::pair<int, int> query_batch_size(const std::vector<Image>& inputs) {
+  if (inputs.empty()) throw Error("query batch: expected at least one input image");
+  const int width = inputs.front().width, height = inputs.front().height;
+  for (const Image& input : inputs)
+    if (input.width != width || input.height != height)
+      throw Error("query batch: input images of " + std::to_string(input.width) + "x" + std::to_string(input.height) +
+                  " and " + std::to_string(width) + "x" + std::to_string(height) + ": expected one size");
+  return {width, height};
+}
+
 }  // namespace pn

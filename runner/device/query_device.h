@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/image.h"
@@ -130,5 +131,7 @@ class QueryDevice {
 
 // Error unless the batch has one image per binding (the check every executor's dispatch makes).
 void check_batch_bindings(const QueryBindings& bindings, const QueryBatch& batch);
+// The batch inputs' common size; Error unless there is one and all share it (every executor's batch).
+std::pair<int, int> query_batch_size(const std::vector<Image>& inputs);
 
 }  // namespace pn

@@ -52,7 +52,4 @@ class GlQueryBatch final : public QueryBatch {
   std::vector<GlObject> word_results_;
 };
 
-// The batch inputs' common size; Error unless there is one and all share it.
-std::pair<int, int> query_batch_size(const std::vector<Image>& inputs);
-
 }  // namespace pn

@@ -54,15 +54,8 @@ std::string export_source(const GlslangProcess& process, const SourceTree& tree,
   const FlatSource flat = flatten(tree, tree.locate_in_root(entry));
   const ShaderSource source = standalone_source(flat, Target::vulkan);
   const CompileResult compiled = compile_with_glslang(process, source, Target::vulkan);
-  if (!compiled.ok) {
-    std::string first = "glslang could not compile it for Vulkan";
-    for (const Diagnostic& d : compiled.diagnostics)
-      if (d.severity == "error") {
-        first = d.str();
-        break;
-      }
-    throw Error(entry + ": " + first, ExitCode::failed);
-  }
+  if (!compiled.ok)
+    throw Error(entry + ": " + first_error(compiled, "glslang could not compile it for Vulkan"), ExitCode::failed);
   const std::string text = cross_compile(compiled.spirv, language);
 
   std::string header = "// penumbra bundle of " + tree.display_name(tree.locate(module)) + " as " +

@@ -34,12 +34,56 @@ std::vector<Diagnostic> binding_clashes(const std::vector<uint32_t>& spirv, cons
   return out;
 }
 
+EShLanguage language_of(Stage stage) {
+  return stage == Stage::vertex ? EShLangVertex : stage == Stage::fragment ? EShLangFragment : EShLangCompute;
+}
+
+// Parses and links `shader` (its strings and environment set), then, for Vulkan, makes SPIR-V,
+// validates it and refuses bindings two resources share. `hlsl`: the registers mapped to bindings
+// (mapIO, with the shader's shifts) and glslang's legalization (SPIRV-Tools passes) run.
+CompileResult compile_shader(glslang::TShader& shader, EShLanguage language, EShMessages messages,
+                             const LocationMap& locations, const std::string& entry, bool spirv, bool hlsl) {
+  CompileResult result;
+  const bool parsed = shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, messages);
+  result.diagnostics = parse_info_log(shader.getInfoLog(), locations, entry);
+  if (!parsed) return result;
+
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages) || (hlsl && !program.mapIO())) {
+    auto link = parse_info_log(program.getInfoLog(), locations, entry);
+    result.diagnostics.insert(result.diagnostics.end(), link.begin(), link.end());
+    if (result.diagnostics.empty()) result.diagnostics.push_back({entry, 0, "error", "glslang could not link it"});
+    return result;
+  }
+  if (spirv) {
+    glslang::SpvOptions options;
+    options.validate = false;  // validated below, with the messages kept
+    options.disableOptimizer = !hlsl;
+    glslang::GlslangToSpv(*program.getIntermediate(language), result.spirv, &options);
+    auto invalid = validate_spirv(result.spirv, entry);
+    if (invalid.empty()) invalid = binding_clashes(result.spirv, entry);
+    if (!invalid.empty()) {
+      result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
+      return result;
+    }
+  }
+  result.ok = true;
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == "error") result.ok = false;
+  return result;
+}
+
 }  // namespace
 
+std::string first_error(const CompileResult& result, const std::string& fallback) {
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == "error") return d.str();
+  return fallback;
+}
+
 CompileResult compile_with_glslang(const GlslangProcess&, const ShaderSource& source, Target target) {
-  const EShLanguage stage = source.stage == Stage::vertex     ? EShLangVertex
-                            : source.stage == Stage::fragment ? EShLangFragment
-                                                              : EShLangCompute;
+  const EShLanguage stage = language_of(source.stage);
   glslang::TShader shader(stage);
   const char* text = source.text.c_str();
   const int length = static_cast<int>(source.text.size());
@@ -64,40 +108,12 @@ CompileResult compile_with_glslang(const GlslangProcess&, const ShaderSource& so
     const auto n = static_cast<size_t>(number);
     return std::pair<std::string, int>{n < source.files.size() ? source.files[n] : entry, line};
   };
-  CompileResult result;
-  const bool parsed = shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, messages);
-  result.diagnostics = parse_info_log(shader.getInfoLog(), by_file_number, entry);
-  if (!parsed) return result;
-
-  glslang::TProgram program;
-  program.addShader(&shader);
-  if (!program.link(messages)) {
-    auto link = parse_info_log(program.getInfoLog(), by_file_number, entry);
-    result.diagnostics.insert(result.diagnostics.end(), link.begin(), link.end());
-    return result;
-  }
-  if (target == Target::vulkan) {
-    glslang::SpvOptions options;
-    options.validate = false;  // validated below, with the messages kept
-    glslang::GlslangToSpv(*program.getIntermediate(stage), result.spirv, &options);
-    auto invalid = validate_spirv(result.spirv, entry);
-    if (invalid.empty()) invalid = binding_clashes(result.spirv, entry);
-    if (!invalid.empty()) {
-      result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
-      return result;
-    }
-  }
-  result.ok = true;
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == "error") result.ok = false;
-  return result;
+  return compile_shader(shader, stage, messages, by_file_number, entry, target == Target::vulkan, false);
 }
 
 CompileResult compile_hlsl_with_glslang(const GlslangProcess&, const std::string& text, const std::string& name,
                                         Stage stage) {
-  const EShLanguage language = stage == Stage::vertex     ? EShLangVertex
-                               : stage == Stage::fragment ? EShLangFragment
-                                                          : EShLangCompute;
+  const EShLanguage language = language_of(stage);
   glslang::TShader shader(language);
   const char* chars = text.c_str();
   const int length = static_cast<int>(text.size());
@@ -110,32 +126,10 @@ CompileResult compile_hlsl_with_glslang(const GlslangProcess&, const std::string
   shader.setShiftBinding(glslang::EResSampler, kHlslSamplerBindingShift);
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
   const LocationMap by_name = [&](int, int line) { return std::pair<std::string, int>{name, line}; };
-  CompileResult result;
-  const bool parsed = shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, messages);
-  result.diagnostics = parse_info_log(shader.getInfoLog(), by_name, name);
-  if (!parsed) return result;
-  glslang::TProgram program;
-  program.addShader(&shader);
-  if (!program.link(messages) || !program.mapIO()) {
-    auto link = parse_info_log(program.getInfoLog(), by_name, name);
-    result.diagnostics.insert(result.diagnostics.end(), link.begin(), link.end());
-    if (result.diagnostics.empty()) result.diagnostics.push_back({name, 0, "error", "glslang could not link it"});
-    return result;
-  }
-  glslang::SpvOptions options;
-  options.validate = false;
   // HLSL passes textures and samplers to functions by value, which Vulkan does not allow:
   // glslang's legalization (SPIRV-Tools: inlining, opaque values propagated to their variables)
   // turns that into legal SPIR-V, as glslangValidator does by default for HLSL.
-  options.disableOptimizer = false;
-  glslang::GlslangToSpv(*program.getIntermediate(language), result.spirv, &options);
-  auto invalid = validate_spirv(result.spirv, name);
-  if (invalid.empty()) invalid = binding_clashes(result.spirv, name);
-  result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
-  result.ok = true;
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == "error") result.ok = false;
-  return result;
+  return compile_shader(shader, language, messages, by_name, name, true, true);
 }
 
 }  // namespace pn

@@ -29,6 +29,9 @@ struct CompileResult {
 
 CompileResult compile_with_glslang(const GlslangProcess& process, const ShaderSource& source, Target target);
 
+// The first error of `result` as "file:line: error: message", or `fallback` when it has none.
+std::string first_error(const CompileResult& result, const std::string& fallback);
+
 // HLSL (an export of shader/spirv_cross.h, or an engine's copy of one) through glslang's HLSL
 // front end to SPIR-V for Vulkan 1.0, validated: entry point `main`, register t<N>/u<N>/b<N> at
 // binding N and s<N> at N + kHlslSamplerBindingShift. `name` is the file diagnostics name.

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/format.h"
@@ -363,14 +364,8 @@ class VulkanQueryBatch final : public QueryBatch {
  public:
   VulkanQueryBatch(const VulkanDevice::State& s, const std::vector<Image>& inputs, std::size_t results,
                    std::size_t word_results) {
-    if (inputs.empty()) throw Error("query batch: expected at least one input image");
-    width_ = inputs.front().width, height_ = inputs.front().height;
-    for (const Image& input : inputs) {
-      if (input.width != width_ || input.height != height_)
-        throw Error("query batch: input images of " + std::to_string(input.width) + "x" + std::to_string(input.height) +
-                    " and " + std::to_string(width_) + "x" + std::to_string(height_) + ": expected one size");
-      inputs_.push_back(upload_image(s, input));
-    }
+    std::tie(width_, height_) = query_batch_size(inputs);
+    for (const Image& input : inputs) inputs_.push_back(upload_image(s, input));
     for (std::size_t i = 0; i < results + word_results; ++i) {
       auto image = std::make_unique<VulkanImage>(
           s, width_, height_, i < results ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32G32B32A32_UINT, true);
@@ -601,12 +596,6 @@ void VulkanQueryProgram::run(const QueryBindings& bindings, const VulkanQueryBat
   throw Error(name_ + ": dispatch: the loop at " + where + " ran past " + std::to_string(bounds.loop_iterations) +
                   " iterations in one invocation: an endless loop, or more work than a check allows (--loop-limit)",
               ExitCode::failed);
-}
-
-std::string first_error(const CompileResult& result, const std::string& fallback) {
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == "error") return d.str();
-  return fallback;
 }
 
 }  // namespace
