@@ -10,12 +10,6 @@
 
 namespace pn {
 
-// PCSS against its brute force on the CPU (exact_pcss_reference, pcf_plane_reference): the
-// decision margin (texels for the squares' roundings, relative depth near dP - bias) within which
-// float and double may round apart, and an occluded fraction's rounding (count / texels).
-inline constexpr double kPcssDecisionMargin = 1e-4;
-inline constexpr double kFractionRounding = 1e-6;
-
 struct Tolerance {
   enum class Kind { absolute, relative, rmse };
   Kind kind = Kind::absolute;

@@ -12,8 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "check/compare.h"
 #include "check/module_check.h"
+#include "check/pcss_compare.h"
+#include "core/format.h"
 #include "scenes.h"
 #include "gl/std140.h"
 #include "passes/export_pass.h"
@@ -57,20 +58,17 @@ SceneImages ray_cast(const Scene& scene) {
   return out;
 }
 
+// The receivers' visibilities against the reference's on the screen (pixels without a surface
+// are not receivers: they keep the reference's value).
 CaseResult against(const std::string& name, const SceneImages& s, const PcssReference& reference,
                    const std::vector<float>& observed) {
-  Image expected(static_cast<int>(observed.size()), 1), seen(static_cast<int>(observed.size()), 1);
-  int ambiguous = 0;
-  for (std::size_t k = 0; k < observed.size(); ++k) {
-    const auto [x, y] = s.pixels[k];
-    expected.at(static_cast<int>(k), 0) = reference.visibility.at(x, y);
-    const bool left_out = reference.ambiguous.at(x, y) != 0.0f;
-    seen.at(static_cast<int>(k), 0) = left_out ? reference.visibility.at(x, y) : observed[k];
-    ambiguous += left_out ? 1 : 0;
-  }
+  Image seen = reference.visibility;
+  for (std::size_t k = 0; k < observed.size(); ++k) seen.at(s.pixels[k].first, s.pixels[k].second) = observed[k];
+  const int ambiguous = leave_out_ambiguous(reference, seen);
   return {name + " (" + std::to_string(observed.size()) + " receivers, both overloads; " + std::to_string(ambiguous) +
-              " within rounding of a decision left out)",
-          Tolerance::absolute(kFractionRounding), compare(expected, seen, Tolerance::absolute(kFractionRounding))};
+              " pixels within rounding of a decision left out)",
+          Tolerance::absolute(kFractionRounding),
+          compare(reference.visibility, seen, Tolerance::absolute(kFractionRounding))};
 }
 
 }  // namespace
@@ -92,7 +90,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       block.bias = bias;
       block.filterScale = c;
       const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, c, kPcssDecisionMargin);
-      results.push_back(against(name + "exports/exact_pcss.comp (pnExactPcss, c " + std::to_string(c).substr(0, 3) +
+      results.push_back(against(name + "exports/exact_pcss.comp (pnExactPcss, c " + format_number("%g", c) +
                                     ") vs exact PCSS brute force on the CPU",
                                 s, reference, exact.run(*map, s.receivers, query_block(block))));
     }

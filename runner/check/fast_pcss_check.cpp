@@ -25,6 +25,7 @@
 
 #include "cache/full_render_source.h"
 #include "check/module_check.h"
+#include "check/pcss_compare.h"
 #include "scene/scene.h"
 #include "frame/scene_frame.h"
 #include "gl/texture.h"
@@ -125,10 +126,7 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
       for (const auto& [stage, image] : {std::pair<const char*, Image>{"compute pass", compute_visibility},
                                          std::pair<const char*, Image>{"fragment shader", channel(fragment, 0)}}) {
         Image observed = image;
-        int ambiguous = 0;
-        for (int y = 0; y < kScreen; ++y)
-          for (int x = 0; x < kScreen; ++x)
-            if (reference.ambiguous.at(x, y) != 0.0f) observed.at(x, y) = reference.visibility.at(x, y), ++ambiguous;
+        const int ambiguous = leave_out_ambiguous(reference, observed);
         results.push_back({what + ", " + stage + " vs exact PCSS brute force on the CPU (" +
                                std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
                            Tolerance::absolute(kFractionRounding),

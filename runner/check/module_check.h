@@ -23,8 +23,6 @@ struct CheckOptions {
 // Where the checks run: a query device (device/query_device.h) — a GL context, or a Vulkan
 // device — and, on GL, the context itself for the checks whose passes are GL's.
 struct CheckEnvironment {
-  CheckEnvironment(const Context& gl, const SourceTree& tree, const CheckOptions& options)
-      : device(gl), gl(&gl), tree(tree), options(options) {}
   CheckEnvironment(const QueryDevice& device, const SourceTree& tree, const CheckOptions& options)
       : device(device), gl(dynamic_cast<const Context*>(&device)), tree(tree), options(options) {}
   const QueryDevice& device;  // where every query pass runs

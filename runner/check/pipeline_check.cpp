@@ -14,6 +14,7 @@
 #include "cache/full_render_source.h"
 #include "check/blur_tolerance.h"
 #include "check/module_check.h"
+#include "check/pcss_compare.h"
 #include "metrics/lit_image.h"
 #include "gl/texture.h"
 #include "passes/surface_pass.h"
@@ -40,16 +41,6 @@ Image read4(const Context& c, const GlObject& t, int size) { return read_float_t
 CaseResult scalar_case(const std::string& name, double target, double value, Tolerance tolerance) {
   Image e(1, 1, 1, static_cast<float>(target)), o(1, 1, 1, static_cast<float>(value));
   return {name, tolerance, compare(e, o, tolerance)};
-}
-
-// Pixels where float and double may decide a rounding differently take the
-// reference's value in `observed` (left out of the comparison); returns how many.
-int leave_out_ambiguous(const PcssReference& reference, Image& observed) {
-  int count = 0;
-  for (int y = 0; y < observed.height; ++y)
-    for (int x = 0; x < observed.width; ++x)
-      if (reference.ambiguous.at(x, y) != 0.0f) observed.at(x, y) = reference.visibility.at(x, y), ++count;
-  return count;
 }
 
 // Pixels that see no surface (G-buffer w = 0) must be exactly 1 (lit); elsewhere the image's own value.

@@ -13,7 +13,7 @@ struct ModuleReport {
   std::string module;
   std::vector<CaseResult> cases;
   std::string error;  // why the check stopped (a compile or link error, a GL error, a timeout); "" when it ran
-  std::string not_run;  // off GL: why the check (or which of its cases) did not run here; "" when all ran
+  std::string not_run;  // off GL: which of its cases (GL passes) did not run here; "" when all ran
   bool skipped = false;  // off GL, a check of GL passes only: nothing ran, and it is no verdict
 
   bool pass() const;

@@ -14,10 +14,13 @@ namespace pn::cli {
 
 namespace {
 
-// --api vulkan | hlsl: the query-pass checks on a Vulkan device (vk/vulkan_device.h); else null.
-std::optional<PassLanguage> vulkan_language(const GlobalOptions& global) {
+// --api vulkan | hlsl: the query-pass checks on a Vulkan device (vk/vulkan_device.h); null for the
+// GL APIs. Throws Error naming every API the command takes (`check`: hlsl too) for any other name.
+std::optional<PassLanguage> vulkan_language(const GlobalOptions& global, bool with_hlsl) {
   if (global.api == "vulkan") return PassLanguage::glsl;
-  if (global.api == "hlsl") return PassLanguage::hlsl;
+  if (global.api == "hlsl" && with_hlsl) return PassLanguage::hlsl;
+  if (!global.api.empty() && global.api != api_name(Api::gl450) && global.api != api_name(Api::es310))
+    throw Error("API '" + global.api + "': expected one of gl450, es310, vulkan" + (with_hlsl ? ", hlsl" : ""));
   return std::nullopt;
 }
 
@@ -80,7 +83,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       throw Error("GPU timeout " + format_number("%g", opt->bounds.timeout_s) + ": expected 0.1..3600 seconds");
     if (opt->bounds.loop_iterations < 1 || opt->bounds.loop_iterations > (1u << 30))
       throw Error("loop limit " + std::to_string(opt->bounds.loop_iterations) + ": expected 1..1073741824");
-    const std::optional<PassLanguage> language = vulkan_language(global);
+    const std::optional<PassLanguage> language = vulkan_language(global, true);
     if (!opt->hlsl_root.empty() && language != PassLanguage::hlsl)
       throw Error("--hlsl-root " + opt->hlsl_root + ": applies to --api hlsl only");
     if (!opt->hlsl_root.empty() && !std::filesystem::is_directory(opt->hlsl_root))
@@ -121,7 +124,7 @@ void add_info_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--api", global.api,
                   "gl450 (the default) | es310: the GL context; vulkan: the Vulkan device the checks' --api vulkan uses");
   cmd->callback([&global, &exit_code] {
-    if (global.api == "vulkan") {
+    if (vulkan_language(global, false)) {
       if (!global.backend.empty()) throw Error("--backend " + global.backend + ": applies to gl450 and es310, not vulkan");
       const auto device = create_vulkan_device();
       std::cout << "api:        vulkan\n"

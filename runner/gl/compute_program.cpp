@@ -124,12 +124,7 @@ void ComputeProgram::run(const std::string& what, const std::function<void()>& i
 
   LoopGuardState state;
   read_buffer(*context_, guard_state_, 0, sizeof state, &state);
-  if (state.tripped == 0) return;
-  const size_t loop = state.tripped - 1;
-  const std::string where = loop < loops_.size() ? loops_[loop].file + ":" + std::to_string(loops_[loop].line) : "?";
-  throw Error(name_ + ": " + what + ": the loop at " + where + " ran past " + std::to_string(bounds.loop_iterations) +
-                  " iterations in one invocation: an endless loop, or more work than a check allows (--loop-limit)",
-              ExitCode::failed);
+  throw_if_loop_tripped(state, loops_, bounds.loop_iterations, name_ + ": " + what);
 }
 
 void ComputeProgram::dispatch(int width, int height) const {

@@ -31,7 +31,6 @@ const char* api_name(Api api);   // "gl450", "es310"
 const char* api_title(Api api);  // "OpenGL 4.5 core", "OpenGL ES 3.1"
 Api parse_api(const std::string& name);  // throws Error naming the accepted values
 
-
 // A context is also an executor of the query passes (device/query_device.h; gl/query_device_gl.cpp).
 class Context : public QueryDevice {
  public:

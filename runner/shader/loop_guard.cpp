@@ -470,4 +470,14 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
   return loops;
 }
 
+void throw_if_loop_tripped(const LoopGuardState& state, const std::vector<GuardedLoop>& loops, unsigned iterations,
+                           const std::string& what) {
+  if (state.tripped == 0) return;
+  const size_t loop = state.tripped - 1;
+  const std::string where = loop < loops.size() ? loops[loop].file + ":" + std::to_string(loops[loop].line) : "?";
+  throw Error(what + ": the loop at " + where + " ran past " + std::to_string(iterations) +
+                  " iterations in one invocation: an endless loop, or more work than a check allows (--loop-limit)",
+              ExitCode::failed);
+}
+
 }  // namespace pn

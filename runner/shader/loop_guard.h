@@ -40,4 +40,10 @@ struct LoopGuardState {
   unsigned spare = 0;
 };
 
+// After a dispatch (`what`, e.g. "passes/blur.comp: dispatch") read back `state`: throws
+// Error(ExitCode::failed) naming the loop's file and line when a loop passed `iterations`.
+// Every executor reports a tripped guard with this one message.
+void throw_if_loop_tripped(const LoopGuardState& state, const std::vector<GuardedLoop>& loops, unsigned iterations,
+                           const std::string& what);
+
 }  // namespace pn

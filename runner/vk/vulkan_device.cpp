@@ -4,9 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <tuple>
 
 #include "core/error.h"
@@ -590,12 +588,7 @@ void VulkanQueryProgram::run(const QueryBindings& bindings, const VulkanQueryBat
   if (!guard) return;
   LoopGuardState state;
   std::memcpy(&state, guard->data(), sizeof state);
-  if (state.tripped == 0) return;
-  const std::size_t loop = state.tripped - 1;
-  const std::string where = loop < loops_.size() ? loops_[loop].file + ":" + std::to_string(loops_[loop].line) : "?";
-  throw Error(name_ + ": dispatch: the loop at " + where + " ran past " + std::to_string(bounds.loop_iterations) +
-                  " iterations in one invocation: an endless loop, or more work than a check allows (--loop-limit)",
-              ExitCode::failed);
+  throw_if_loop_tripped(state, loops_, bounds.loop_iterations, name_ + ": dispatch");
 }
 
 }  // namespace
@@ -641,12 +634,10 @@ std::unique_ptr<QueryProgram> VulkanDevice::compile_query(const SourceTree& tree
   std::string name = std::filesystem::path(pass).stem().string() + ".hlsl";
   std::string hlsl;
   const std::filesystem::path copy = s.settings.hlsl_root ? *s.settings.hlsl_root / name : std::filesystem::path();
-  if (s.settings.hlsl_root && defines.empty() && std::filesystem::is_regular_file(copy)) {
-    std::ifstream in(copy, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (!in) throw Error(copy.string() + ": could not be read");
-    hlsl = text.str(), name = copy.string();
+  if (s.settings.hlsl_root && defines.empty() && std::filesystem::exists(copy)) {
+    const SourceTree root(*s.settings.hlsl_root);  // read as module files are: a regular file, bounded
+    const std::filesystem::path canonical = root.locate_in_root(name);
+    hlsl = root.read(canonical), name = root.diagnostic_path(canonical);
     loops.clear();  // the copy has no loop guard: the deadline alone bounds it
   } else {
     hlsl = cross_compile(glsl.spirv, CrossLanguage::hlsl50);
