@@ -11,7 +11,7 @@
 #include "bench/cache_bench.h"
 #include "cache/object_motion.h"
 #include "core/error.h"
-#include "gl/texel_list.h"
+#include "device/texel_list.h"
 #include "reference/depth_cache_reference.h"
 #include "render/frames_job.h"
 #include "scene/animated_scene.h"

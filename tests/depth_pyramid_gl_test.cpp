@@ -29,7 +29,8 @@ TEST_CASE("depth_pyramid: a maximum level beyond floor(log2 N) is clamped; non-s
   const auto& context = pn::test::gl_context();
   const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
   const pn::DepthPyramidBuilder builder(context, tree);
-  const pn::GlObject map = pn::make_float_texture(context, 64, 64, 1);
+  const std::unique_ptr<pn::DeviceTexture> uploaded = context.upload(pn::Image(64, 64, 1));
+  const pn::DeviceTexture& map = *uploaded;
   CHECK(builder.build(map, 64, 64, 99).levels == 7);
   CHECK(builder.build(map, 64, 64, 3).levels == 4);
   CHECK_THROWS_WITH(builder.build(map, 64, 32, 99), "shadow map 64x32: expected a square map (N x N)");

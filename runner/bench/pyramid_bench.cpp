@@ -8,6 +8,7 @@
 #include "core/progress.h"
 #include "fixture/texture_fixture.h"
 #include "gl/gpu_timer.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
@@ -37,17 +38,18 @@ std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceT
   Progress progress("bench pyramid", sizes.size());
   for (int n : sizes) {
     progress.step(std::to_string(n) + "x" + std::to_string(n));
-    const GlObject map = upload_float_texture(context, generate_fixture(find_fixture("noise"), n, n));
+    const std::unique_ptr<DeviceTexture> uploaded = context.upload(generate_fixture(find_fixture("noise"), n, n));
+    const DeviceTexture& map = *uploaded;
     const DepthPyramid pyramid = pyramid_builder.build(map, n, n, max_level);  // also the warm-up
     const MinMaxMipChain chain = mip_builder.allocate(n);
     mip_builder.build_into(map, chain);
-    sums_builder.build(map);
+    sums_builder.build(gl_texture(map));
     std::vector<double> pyramid_gpu, pyramid_wall, mip_gpu, mip_wall, sums_gpu;
     // Interleaved, so that both see the same machine state.
     for (int r = 0; r < repeats; ++r) {
       const StageTime p = timer.measure([&] { pyramid_builder.build_into(map, pyramid); });
       const StageTime m = timer.measure([&] { mip_builder.build_into(map, chain); });
-      const StageTime s = timer.measure([&] { sums_builder.build(map); });
+      const StageTime s = timer.measure([&] { sums_builder.build(gl_texture(map)); });
       pyramid_gpu.push_back(p.gpu_ms), pyramid_wall.push_back(p.wall_ms), sums_gpu.push_back(s.gpu_ms);
       mip_gpu.push_back(m.gpu_ms), mip_wall.push_back(m.wall_ms);
     }

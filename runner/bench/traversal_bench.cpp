@@ -56,7 +56,7 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
 
   const int n = setup.map_size;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
-  const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(upload_float_texture(context, map), n, n, 31);
+  const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(*context.upload(map), n, n, 31);
   const GlObject table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
   const TraversalPass traversal(context, tree);
   const WindowScanPass scan(context, tree);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 
 namespace pn {
@@ -32,7 +33,8 @@ void DepthCacheSource::compose_whole(const Scene& scene, const std::vector<Verte
   if (scheme_ == CacheScheme::whole_maps) {
     dynamic_->clear(ShadowMapRenderer::far_clear());
     if (!moving.empty()) renderer_.draw(scene, *geometry_, *dynamic_, moving);
-    composer_.compose(static_->texture(), dynamic_->texture(), composed_->texture(), n);
+    composer_.compose(GlDeviceTexture(static_->texture()), GlDeviceTexture(dynamic_->texture()),
+                      GlDeviceTexture(composed_->texture(), float_shape(n, n, 1)), n);
   } else {
     composed_->copy_from(*static_);
     if (!moving.empty()) renderer_.draw(scene, *geometry_, *composed_, moving);

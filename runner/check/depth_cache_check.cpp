@@ -19,8 +19,9 @@
 #include "core/format.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
-#include "gl/texel_list.h"
+#include "device/texel_list.h"
 #include "passes/depth_cache_pass.h"
 #include "passes/gbuffer_pass.h"
 #include "passes/shadow_map_pass.h"
@@ -87,11 +88,11 @@ void module_cases(const CheckEnvironment& env, std::vector<CaseResult>& results)
 }
 
 void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  const DepthCacheComposer composer(env.context(), env.tree);
+  const DepthCacheComposer composer(env.device, env.tree);
   const int n = 70;
   const Image a = generate_fixture(fixtures::kTextureFixtures[std::size(fixtures::kTextureFixtures) - 1], n, n);
   const Image b = generate_fixture(fixtures::kTextureFixtures[std::size(fixtures::kTextureFixtures) - 2], n, n);
-  const GlObject ta = upload_float_texture(env.context(), a), tb = upload_float_texture(env.context(), b);
+  const std::unique_ptr<DeviceTexture> ta = env.device.upload(a), tb = env.device.upload(b);
   const Image composed = depth_cache_compose_reference(a, b);
   constexpr float kUntouched = -7.0f;
   SeededRandom random(0x5eed0133u);
@@ -101,12 +102,12 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
       const int x = random.uniform_int(-5, n), y = random.uniform_int(-5, n);
       list.push_back({x, y, x + random.uniform_int(1, 25), y + random.uniform_int(1, 25)});
     }
-    const FloatTexture target = upload_float_texture(env.context(), Image(n, n, 1, kUntouched));
+    const std::unique_ptr<DeviceTexture> target = env.device.upload(Image(n, n, 1, kUntouched));
     TexelList texels;
     const TexelRun run = texels.add(list, n, n);  // overlapping rectangles list a texel twice: harmless
-    texels.upload(env.context());
-    if (rects == 0) composer.compose(ta, tb, target, n);  // no list: the whole map
-    else composer.compose(ta, tb, target, n, run, &texels);
+    texels.upload(env.device);
+    if (rects == 0) composer.compose(*ta, *tb, *target, n);  // no list: the whole map
+    else composer.compose(*ta, *tb, *target, n, run, &texels);
     Image expected(n, n, 1, kUntouched);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
@@ -117,7 +118,7 @@ void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
     results.push_back({"compose pass " + std::to_string(n) + "x" + std::to_string(n) + ", " +
                            (rects == 0 ? std::string("whole map") : std::to_string(rects) + " seeded rectangles' texels") +
                            ": composed there, untouched elsewhere",
-                       Tolerance::exact(), compare(expected, read_float_texture(env.context(), target), Tolerance::exact())});
+                       Tolerance::exact(), compare(expected, env.device.read_texture(*target), Tolerance::exact())});
   }
 }
 
@@ -159,11 +160,11 @@ std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const M
     const GlObject reference = full.render(scene);
     map.add(compare(read_float_texture(context, reference, n, n, 1), read_float_texture(context, *cached.map, n, n, 1), exact), f);
 
-    const MinMaxMipChain rebuilt = mip_builder.build(reference, n);
+    const MinMaxMipChain rebuilt = mip_builder.build(GlDeviceTexture(reference), n);
     for (int level = 0; level < rebuilt.levels; ++level)
       mip.add(compare(read_mip_chain_level(context, rebuilt, level), read_mip_chain_level(context, *cached.mip, level), exact), f);
     if (f % kPyramidEvery == 0 || f + 1 == sequence.frames) {
-      const DepthPyramid whole = pyramid_builder.build(reference, n, n, 31);
+      const DepthPyramid whole = pyramid_builder.build(GlDeviceTexture(reference), n, n, 31);
       for (int level = 0; level < whole.levels; ++level)
         pyramid.add(compare(read_pyramid_level(context, whole, level), read_pyramid_level(context, *cached.pyramid, level), exact), f);
     }
@@ -213,8 +214,8 @@ std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const M
 std::vector<CaseResult> run_depth_cache_check(const CheckEnvironment& env) {
   std::vector<CaseResult> results;
   module_cases(env, results);
-  if (env.gl == nullptr) return results;  // GL passes below: module_check.cpp's gl_only
   compose_pass_cases(env, results);
+  if (env.gl == nullptr) return results;  // GL passes below: module_check.cpp's gl_only
   for (const auto& [source, k] : {std::pair{"two-map", 0.3}, std::pair{"dirty-rect", 0.3}, std::pair{"dirty-rect", 1.0}}) {
     MotionSequence s;
     s.source = source;

@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "core/seeded_random.h"
 #include "check/module_check.h"
 #include "core/query_grid.h"
 #include "fixture/texture_fixture.h"
-#include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "reference/depth_pyramid_reference.h"
 
@@ -65,18 +65,17 @@ CaseResult square_case(const std::string& name, const DepthPyramidQuery& query, 
 }  // namespace
 
 std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
-  const DepthPyramidBuilder builder(env.context(), env.tree);
-  const DepthPyramidQuery query(env.context(), env.tree);
+  const DepthPyramidBuilder builder(env.device, env.tree);
+  const DepthPyramidQuery query(env.device, env.tree);
   std::vector<CaseResult> results;
 
   for (const auto& fixture : fixtures::kTextureFixtures) {
     for (int n : kLevelSizes) {
       const Image map = generate_fixture(fixture, n, n);
-      const GlObject map_texture = upload_float_texture(env.context(), map);
-      const DepthPyramid pyramid = builder.build(map_texture, n, n, 31);
+      const DepthPyramid pyramid = builder.build(*env.device.upload(map), n, n, 31);
       const float m = largest_finite_magnitude(map, FLT_MIN);
       for (int level = 0; level < pyramid.levels; ++level) {
-        const Image observed = read_pyramid_level(env.context(), pyramid, level);
+        const Image observed = read_pyramid_level(env.device, pyramid, level);
         const Image expected = pyramid_level_reference(map, level);
         const std::string name = label(fixture.name, n) + " level " + std::to_string(level);
         const Tolerance exact = Tolerance::exact();
@@ -94,7 +93,7 @@ std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
     const auto& fixture = find_fixture(name);
     for (int n : kAllSquaresSizes) {
       const Image map = generate_fixture(fixture, n, n);
-      const DepthPyramid pyramid = builder.build(upload_float_texture(env.context(), map), n, n, 31);
+      const DepthPyramid pyramid = builder.build(*env.device.upload(map), n, n, 31);
       std::vector<Query> queries;
       for (int s = 1; s <= n; ++s)
         for (int v = 0; v + s <= n; ++v)
@@ -108,17 +107,17 @@ std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
     const auto& fixture = find_fixture(name);
     for (int n : kRandomSquaresSizes) {
       const Image map = generate_fixture(fixture, n, n);
-      const GlObject map_texture = upload_float_texture(env.context(), map);
+      const std::unique_ptr<DeviceTexture> map_texture = env.device.upload(map);
       std::vector<Query> queries;
       for (int k = 0; k < kRandomSquares; ++k) {
         const int s = random.uniform_int(1, n);
         queries.push_back({float(random.uniform_int(0, n - s)), float(random.uniform_int(0, n - s)), float(s), 0.0f});
       }
       const SquareQueries random_squares = square_queries(map, queries);
-      const DepthPyramid full = builder.build(map_texture, n, n, 31);
+      const DepthPyramid full = builder.build(*map_texture, n, n, 31);
       results.push_back(square_case(label(name, n) + " random squares", query, full, random_squares));
       // A capped pyramid (levels 0–2) answers large squares with more fetches.
-      const DepthPyramid capped = builder.build(map_texture, n, n, 2);
+      const DepthPyramid capped = builder.build(*map_texture, n, n, 2);
       results.push_back(square_case(label(name, n) + " random squares, max level 2", query, capped, random_squares));
       // Out-of-range queries are clamped, never read outside the pyramid.
       const std::vector<Query> outside{{-5, -5, 3, 0}, {float(n), float(n), 2, 0}, {0, 0, float(2 * n), 0},

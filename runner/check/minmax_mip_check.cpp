@@ -11,7 +11,6 @@
 
 #include "check/module_check.h"
 #include "fixture/texture_fixture.h"
-#include "gl/texture.h"
 #include "passes/minmax_mip_pass.h"
 #include "reference/depth_pyramid_reference.h"
 
@@ -41,17 +40,17 @@ Image expected_level(const Image& depth, int padded, int level) {
 }  // namespace
 
 std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env) {
-  const MinMaxMipBuilder builder(env.context(), env.tree);
+  const MinMaxMipBuilder builder(env.device, env.tree);
   std::vector<CaseResult> results;
   const Tolerance exact = Tolerance::exact();
   for (const auto& fixture : fixtures::kTextureFixtures)
     for (int n : kSizes) {
       const Image map = generate_fixture(fixture, n, n);
       const Image depth = sanitized_depths(map);
-      const MinMaxMipChain chain = builder.build(upload_float_texture(env.context(), map), n);
+      const MinMaxMipChain chain = builder.build(*env.device.upload(map), n);
       for (int level = 0; level < chain.levels; ++level) {
         const Image expected = expected_level(depth, chain.padded_size, level);
-        const Image observed = read_mip_chain_level(env.context(), chain, level);
+        const Image observed = read_mip_chain_level(env.device, chain, level);
         results.push_back({std::string(fixture.name) + " " + std::to_string(n) + "x" + std::to_string(n) + " (P = " +
                                std::to_string(chain.padded_size) + ") level " + std::to_string(level) +
                                ": texel (c, r) = (min, max) of nodes 2c, 2c+1",

@@ -41,7 +41,7 @@ const std::vector<ModuleCheck>& module_checks() {
       {"blur", "separable Gaussian (two 1-D passes) vs direct 2-D convolution; depth-aware vs its 1-D definition",
        &run_blur_check},
       {"depth_pyramid", "depth_pyramid levels vs window scans (min/max exact); any-square min/max vs square scans",
-       &run_depth_pyramid_check},
+       &run_depth_pyramid_check, OffGl::every_case},
       {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
        &run_region_check, OffGl::every_case},
       {"sample_table", "multi-jittered strata of the table; the 3.2 selection and scaling vs the paper's arithmetic",
@@ -78,11 +78,11 @@ const std::vector<ModuleCheck>& module_checks() {
                       "sums, means and variances in bound; the float moments table's errors beside the fixed one's",
        &run_summed_area_check},
       {"minmax_mip", "aligned min/max mip chain levels (padded to a power of two) vs node scans (exact)",
-       &run_minmax_mip_check},
+       &run_minmax_mip_check, OffGl::every_case},
       {"depth_cache", "min(static, dynamic) and its shadow test vs the definition; both caches over 100-frame motion "
                       "sequences vs a full render (map, mip chain, pyramid, Fast PCSS: exact)",
        &run_depth_cache_check, OffGl::query_cases,
-       "the compose pass and the caches over motion sequences"},
+       "the caches over motion sequences"},
       {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
        &run_cascades_check, OffGl::query_cases,

@@ -9,6 +9,7 @@
 #include "check/pcss_regions_cases.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
@@ -137,8 +138,8 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
   for (const FixtureMap& f : fixture_maps()) {
     const int n = f.map.width;
     const GlObject texture = upload_float_texture(env.context(), f.map);
-    const DepthPyramid pyramid = builder.build(texture, n, n, f.max_level);
-    const MinMaxMipChain mip = mip_builder.build(texture, n);
+    const DepthPyramid pyramid = builder.build(GlDeviceTexture(texture), n, n, f.max_level);
+    const MinMaxMipChain mip = mip_builder.build(GlDeviceTexture(texture), n);
     const DepthScan scan(f.map);
     const std::vector<RegionReceiver> receivers = fixture_receivers(f.map, seed++);
     EntryGroup groups[4];  // the three region modes over the pyramid, then the mip chain's search

@@ -4,6 +4,7 @@
 #include "cache/full_render_source.h"
 #include "check/pcss_regions_cases.h"
 #include "frame/scene_frame.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/gbuffer_pass.h"
@@ -36,8 +37,8 @@ SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int ma
   s.light = scene.light;
   s.map = read_float_texture(env.context(), *frame.shadow_map, map_size, map_size, 1);
   s.gbuffer = read_float_texture(env.context(), frame.gbuffer);
-  s.pyramid = DepthPyramidBuilder(env.context(), env.tree).build(*frame.shadow_map, map_size, map_size, 31);
-  s.mip = MinMaxMipBuilder(env.context(), env.tree).build(*frame.shadow_map, map_size);
+  s.pyramid = DepthPyramidBuilder(env.context(), env.tree).build(GlDeviceTexture(*frame.shadow_map), map_size, map_size, 31);
+  s.mip = MinMaxMipBuilder(env.context(), env.tree).build(GlDeviceTexture(*frame.shadow_map), map_size);
   for (int y = 0; y < screen_size; ++y)
     for (int x = 0; x < screen_size; ++x)
       s.receivers.push_back({s.gbuffer.at(x, y, 0), s.gbuffer.at(x, y, 1), s.gbuffer.at(x, y, 2), s.gbuffer.at(x, y, 3)});

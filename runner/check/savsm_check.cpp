@@ -49,6 +49,7 @@
 #include "core/format.h"
 #include "core/integer_hash.h"
 #include "core/query_grid.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/savsm_pass.h"
@@ -302,7 +303,7 @@ std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
     const Image map = savsm_map(n);
     const GlObject texture = upload_float_texture(env.context(), map);
     const MomentsTable table = tables.build(texture, MomentsTableKind::fixed, unit_range(kNear, kFar));
-    const MinMaxMipChain mip = mips.build(texture, n);
+    const MinMaxMipChain mip = mips.build(GlDeviceTexture(texture), n);
     const std::vector<SavsmReceiver> rs = receivers(map, mc.receivers);
     MomentsCache moments(map);
     for (const Config& config : configs()) {
@@ -314,7 +315,7 @@ std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
         light.far_plane = kFar;
         light.fov_radians = 1.0;
         light.map_size = n;
-        const std::vector<SavsmQueryResult> got = pass.query(table, mip.texture, rs, light, config.settings);
+        const std::vector<SavsmQueryResult> got = pass.query(table, *mip.texture, rs, light, config.settings);
         for (size_t k = 0; k < rs.size(); ++k)
           receiver_cases(map, moments, light, config.settings, rs[k], got[k], static_cast<int>(k), c);
       }

@@ -28,6 +28,7 @@
 #include "core/format.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/traversal_pass.h"
 #include "reference/depth_pyramid_reference.h"
@@ -137,8 +138,8 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     scene.map = generate_fixture(fixture, kMapSize, kMapSize);
     scene.depth = sanitized_depths(scene.map);
     const GlObject map_texture = upload_float_texture(env.context(), scene.map);
-    scene.pyramid = builder.build(map_texture, kMapSize, kMapSize, 31);
-    scene.mip = mip_builder.build(map_texture, kMapSize);
+    scene.pyramid = builder.build(GlDeviceTexture(map_texture), kMapSize, kMapSize, 31);
+    scene.mip = mip_builder.build(GlDeviceTexture(map_texture), kMapSize);
     scene.depth_sums = depth_sums_pass.build(map_texture);
     scene.largest = largest_finite_magnitude(scene.depth, FLT_MIN);
     // Exact: leaf side 1, power-of-two windows and exact regions, against brute force.

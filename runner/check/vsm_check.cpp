@@ -43,6 +43,7 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "fixture/texture_fixture.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/vsm_pass.h"
@@ -157,7 +158,7 @@ struct Gpu {
     const GlObject map = upload_float_texture(env.context(), depth);
     const VsmMoments raw = moments.moments(map, n, n, params);
     const VsmMoments blurred = moments.blurred(raw, params);
-    const DepthPyramid built = pyramid.build(map, n, n, 30);
+    const DepthPyramid built = pyramid.build(GlDeviceTexture(map), n, n, 30);
     return {read(raw), read(blurred), query.run(blurred, built, queries, params)};
   }
 };

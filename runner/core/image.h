@@ -45,6 +45,15 @@ inline Image channels_of(const Image& image, int first, int count) {
   return out;
 }
 
+// The top-left width × height texels of `image`.
+inline Image top_left(const Image& image, int width, int height) {
+  Image out(width, height, image.channels);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < image.channels; ++c) out.at(x, y, c) = image.at(x, y, c);
+  return out;
+}
+
 // The rows in reverse order: GL's bottom-up framebuffer rows as a top-down picture.
 inline Image flip_rows(const Image& image) {
   Image out(image.width, image.height, image.channels);

@@ -29,3 +29,22 @@ std::pair<int, int> query_batch_size(const std::vector<Image>& inputs) {
 }
 
 }  // namespace pn
+
+namespace pn {
+
+int texel_channels(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::r32f: return 1;
+    case TexelFormat::rg32f: return 2;
+    case TexelFormat::rgba32f:
+    case TexelFormat::rgba32ui: return 4;
+  }
+  return 4;
+}
+
+TextureShape float_shape(int width, int height, int channels, int levels) {
+  const TexelFormat format = channels == 1 ? TexelFormat::r32f : channels == 2 ? TexelFormat::rg32f : TexelFormat::rgba32f;
+  return {format, width, height, levels, 1, false};
+}
+
+}  // namespace pn

@@ -24,14 +24,45 @@
 
 namespace pn {
 
+// The texel formats of what passes build: float maps, moments and structures (R32F, RG32F,
+// RGBA32F) and exact sums (RGBA32UI).
+enum class TexelFormat { r32f, rg32f, rgba32f, rgba32ui };
+int texel_channels(TexelFormat format);  // 1, 2, 4, 4
+
+// A texture a pass builds: `levels` mip levels (level i is max(1, size >> i) on each side) of
+// `layers` layers; `array` makes it a 2-D array texture (sampler2DArray / image2DArray) even with
+// one layer.
+struct TextureShape {
+  TexelFormat format = TexelFormat::rgba32f;
+  int width = 0, height = 0;
+  int levels = 1, layers = 1;
+  bool array = false;
+  int level_width(int level) const { return width >> level > 0 ? width >> level : 1; }
+  int level_height(int level) const { return height >> level > 0 ? height >> level : 1; }
+};
+
 // A texture on one device, as a pass reads it (nearest filtering, clamped to the edge). Made by
-// QueryDevice::upload, or by a device's own passes (a GL pyramid: gl/query_device_gl.h).
+// QueryDevice::upload or make_texture, or by a device's own passes (a GL pass's texture:
+// gl/query_device_gl.h), which leave its shape unknown (width 0).
 class DeviceTexture {
  public:
   virtual ~DeviceTexture() = default;
-  DeviceTexture() = default;
+  explicit DeviceTexture(const TextureShape& shape = {}) : shape_(shape) {}
   DeviceTexture(const DeviceTexture&) = delete;
   DeviceTexture& operator=(const DeviceTexture&) = delete;
+  const TextureShape& shape() const { return shape_; }
+
+ private:
+  TextureShape shape_;
+};
+
+// A storage buffer on one device (a list of texels, texel_list.h).
+class DeviceBuffer {
+ public:
+  virtual ~DeviceBuffer() = default;
+  DeviceBuffer() = default;
+  DeviceBuffer(const DeviceBuffer&) = delete;
+  DeviceBuffer& operator=(const DeviceBuffer&) = delete;
 };
 
 // Where a pass reads its queries and writes its results (its header's binding numbers).
@@ -58,6 +89,25 @@ template <class Block>
 QueryBlock query_block(const Block& block) {
   return {Block::binding, &block, sizeof block};
 }
+
+// What a building pass writes: one level of a texture made by make_texture as a storage image
+// (every layer of an array texture), write-only.
+struct PassImage {
+  unsigned binding;
+  const DeviceTexture& texture;
+  int level = 0;
+};
+struct PassBuffer {
+  unsigned binding;
+  const DeviceBuffer& buffer;
+};
+// Everything one dispatch of a building pass binds (its header's binding numbers).
+struct PassResources {
+  std::vector<QueryTexture> textures;
+  std::vector<PassImage> images;
+  std::vector<PassBuffer> buffers;
+  QueryBlock block;
+};
 
 // What one dispatch wrote, read back: result k of query k at texel k of each image (query_result).
 struct QueryResults {
@@ -116,7 +166,8 @@ class QueryDevice {
   // Error(ExitCode::failed) naming the pass on a compile error.
   virtual std::unique_ptr<QueryProgram> compile_query(const SourceTree& tree, const std::string& pass,
                                                       const std::vector<Define>& defines) const = 0;
-  // `image` (1, 2 or 4 channels) as a texture the passes sample with texelFetch.
+  // `image` (1, 2 or 4 channels) as a texture the passes sample with texelFetch, or write as a
+  // storage image (its shape is float_shape of the image).
   virtual std::unique_ptr<DeviceTexture> upload(const Image& image) const = 0;
   // `inputs` all of one size (query_image of lists of one length); `results` RGBA32F and
   // `word_results` RGBA32UI images of that size. Throws Error on inputs of different sizes.
@@ -127,7 +178,34 @@ class QueryDevice {
   // Throws Error unless the batch has an image per binding, or a texture was made elsewhere.
   virtual void dispatch(const QueryProgram& program, const QueryBindings& bindings, const QueryBatch& batch,
                         const std::vector<QueryTexture>& textures, const QueryBlock& block) const = 0;
+
+  // The building passes (a mip chain, a pyramid, a summed-area table, a blur): textures they
+  // write, lists they read, and a dispatch over a grid.
+  // A texture of `shape`, its texels undefined until a pass writes them. Throws Error naming the
+  // shape past the device's limits.
+  virtual std::unique_ptr<DeviceTexture> make_texture(const TextureShape& shape) const = 0;
+  // Level `level`, layer `layer` of a texture made by make_texture: a float format as an Image of
+  // its channels, RGBA32UI as 4 words a texel.
+  virtual Image read_texture(const DeviceTexture& texture, int level = 0, int layer = 0) const = 0;
+  virtual std::vector<std::uint32_t> read_words(const DeviceTexture& texture, int level = 0, int layer = 0) const = 0;
+  // Level 0 of layer `layer` of an array texture made by make_texture, as a 2-D texture: a view
+  // where the device has them (the same texels), else a copy taken now (take it after the layer is
+  // written).
+  virtual std::unique_ptr<DeviceTexture> layer_texture(const DeviceTexture& array, int layer) const = 0;
+  // The channels of the image a pass writes `channels` floats into (2 become 4 on ES, which has
+  // no RG32F image format; the passes' shaders pick rgba32f there the same way).
+  virtual int storage_channels(int channels) const { return channels; }
+  // A storage buffer of `bytes` bytes (at least 4), and a write into it.
+  virtual std::unique_ptr<DeviceBuffer> make_buffer(std::size_t bytes) const = 0;
+  virtual void write_buffer(const DeviceBuffer& buffer, std::size_t offset, std::size_t bytes,
+                            const void* data) const = 0;
+  // Runs `program` over a width × height grid of invocations (rounded up to whole work groups)
+  // with `resources` bound, and makes its writes visible to what follows. Throws Error naming
+  // the pass for a resource its shader uses and `resources` lacks, or one made elsewhere.
+  virtual void run(const QueryProgram& program, const PassResources& resources, int width, int height) const = 0;
 };
+
+TextureShape float_shape(int width, int height, int channels, int levels = 1);  // R32F, RG32F or RGBA32F
 
 // Error unless the batch has one image per binding (the check every executor's dispatch makes).
 void check_batch_bindings(const QueryBindings& bindings, const QueryBatch& batch);

@@ -57,7 +57,7 @@ Canvas pyramid_figure(const Context& context, const SourceTree& tree) {
   const int levels[] = {0, 2, 4, 6};
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
   const DepthPyramidBuilder builder(context, tree);
-  const DepthPyramid pyramid = builder.build(upload_float_texture(context, map), n, n, 31);
+  const DepthPyramid pyramid = builder.build(*context.upload(map), n, n, 31);
   Canvas canvas(4 * n * scale + 5 * gap, 2 * n * scale + 3 * gap, kPaper);
   for (int i = 0; i < 4; ++i) {
     const Image level = read_pyramid_level(context, pyramid, levels[i]);
@@ -137,7 +137,7 @@ Canvas sample_table_figure() {
 Canvas traversal_figure(const Context& context, const SourceTree& tree) {
   const int n = 256, gap = 10;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
-  const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(upload_float_texture(context, map), n, n, 31);
+  const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(*context.upload(map), n, n, 31);
   const GlObject table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
   const auto& boxes = find_fixture("boxes");
   std::vector<TraversalQuery> queries;

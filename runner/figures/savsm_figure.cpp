@@ -12,6 +12,7 @@
 #include "figures/bleeding_panels.h"
 #include "figures/figures.h"
 #include "fixture/texture_fixture.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/savsm_pass.h"
@@ -43,7 +44,7 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   const GlObject texture = upload_float_texture(context, map);
   const MomentsTable table = SummedAreaMomentsPass(context, tree).build(texture, MomentsTableKind::fixed,
                                                                         unit_range(light.near_plane, light.far_plane));
-  const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(texture, n);
+  const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(GlDeviceTexture(texture), n);
   const SavsmPass pass(context, tree);
   std::vector<SavsmReceiver> receivers;
   for (int y = 0; y < n; ++y)
@@ -58,7 +59,7 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   Image exact(n, n);
   double excess[kShown] = {0, 0, 0};
   for (int i = 0; i < kShown; ++i) {
-    const std::vector<SavsmQueryResult> r = pass.query(table, mip.texture, receivers, light, settings[i]);
+    const std::vector<SavsmQueryResult> r = pass.query(table, *mip.texture, receivers, light, settings[i]);
     for (size_t k = 0; k < r.size(); ++k) {
       shown[i].texels[k] = r[k].visibility;
       if (i == 0) {  // the same squares in every setting (the min blocker): exact PCF over them

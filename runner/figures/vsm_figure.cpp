@@ -10,6 +10,7 @@
 #include "figures/bleeding_panels.h"
 #include "figures/figures.h"
 #include "fixture/texture_fixture.h"
+#include "gl/query_device_gl.h"
 #include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/vsm_pass.h"
@@ -26,7 +27,7 @@ Image plane_visibility(const Context& context, const SourceTree& tree, const Ima
   const GlObject texture = upload_float_texture(context, map);
   const VsmMomentsPass moments(context, tree);
   const VsmMoments blurred = moments.blurred(moments.moments(texture, n, n, params), params);
-  const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(texture, n, n, 30);
+  const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(GlDeviceTexture(texture), n, n, 30);
   std::vector<VsmQuery> queries;
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) queries.push_back({x, y, f.plane_depth, f.bias});

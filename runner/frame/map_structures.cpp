@@ -1,7 +1,7 @@
 #include "frame/map_structures.h"
 
 #include "core/error.h"
-#include "gl/texture.h"
+#include "gl/query_device_gl.h"
 #include "modules/depth_pyramid.h"
 
 namespace pn {
@@ -15,22 +15,22 @@ MapStructures::MapStructures(const Context& context, const SourceTree& tree, con
 void MapStructures::rebuild(const GlObject& map, int n) {
   if (mip_builder_) {
     if (mip_.map_size != n) mip_ = mip_builder_->allocate(n);
-    mip_builder_->build_into(map, mip_);
+    mip_builder_->build_into(GlDeviceTexture(map), mip_);
   }
   if (pyramid_builder_) {
     if (pyramid_.map_size != n) {
-      pyramid_ = pyramid_builder_->build(map, n, n, options_.pyramid_max_level);
+      pyramid_ = pyramid_builder_->build(GlDeviceTexture(map), n, n, options_.pyramid_max_level);
     } else {
-      pyramid_builder_->build_into(map, pyramid_);
-      pyramid_.level0 = texture_of_layer(*context_, pyramid_.texture, 0, n, n, 4);
+      pyramid_builder_->build_into(GlDeviceTexture(map), pyramid_);
+      pyramid_.level0 = context_->layer_texture(*pyramid_.texture, 0);
     }
   }
 }
 
 void MapStructures::update(const GlObject& map, const std::vector<TexelRect>& rects) {
   if (rects.empty()) return;
-  if (mip_builder_) mip_builder_->update_into(map, mip_, rects, texels_, options_.dilate_updates);
-  if (pyramid_builder_) pyramid_builder_->update_into(map, pyramid_, rects, texels_, options_.dilate_updates);
+  if (mip_builder_) mip_builder_->update_into(GlDeviceTexture(map), mip_, rects, texels_, options_.dilate_updates);
+  if (pyramid_builder_) pyramid_builder_->update_into(GlDeviceTexture(map), pyramid_, rects, texels_, options_.dilate_updates);
 }
 
 }  // namespace pn

@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "core/texel_rect.h"
-#include "gl/texel_list.h"
+#include "device/texel_list.h"
+#include "gl/objects.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
 
@@ -31,8 +32,8 @@ class MapStructures {
   // Only where the map changed since the last rebuild or update: `rects`.
   void update(const GlObject& map, const std::vector<TexelRect>& rects);
 
-  const MinMaxMipChain* mip() const { return mip_.texture.id() != 0 ? &mip_ : nullptr; }
-  const DepthPyramid* pyramid() const { return pyramid_.texture.id() != 0 ? &pyramid_ : nullptr; }
+  const MinMaxMipChain* mip() const { return mip_.texture ? &mip_ : nullptr; }
+  const DepthPyramid* pyramid() const { return pyramid_.texture ? &pyramid_ : nullptr; }
 
  private:
   const Context* context_;

@@ -74,6 +74,14 @@ class Context : public QueryDevice {
                                          std::size_t word_results) const override;
   void dispatch(const QueryProgram& program, const QueryBindings& bindings, const QueryBatch& batch,
                 const std::vector<QueryTexture>& textures, const QueryBlock& block) const override;
+  std::unique_ptr<DeviceTexture> make_texture(const TextureShape& shape) const override;
+  Image read_texture(const DeviceTexture& texture, int level, int layer) const override;
+  std::vector<std::uint32_t> read_words(const DeviceTexture& texture, int level, int layer) const override;
+  std::unique_ptr<DeviceTexture> layer_texture(const DeviceTexture& array, int layer) const override;
+  std::unique_ptr<DeviceBuffer> make_buffer(std::size_t bytes) const override;
+  void write_buffer(const DeviceBuffer& buffer, std::size_t offset, std::size_t bytes, const void* data) const override;
+  void run(const QueryProgram& program, const PassResources& resources, int width, int height) const override;
+  int storage_channels(int channels) const override;
 
  protected:
   explicit Context(Backend backend, Api api = Api::gl450) : backend_(backend), api_(api) {}

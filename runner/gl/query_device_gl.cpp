@@ -1,5 +1,6 @@
 #include "gl/query_device_gl.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.h"
@@ -43,6 +44,21 @@ std::unique_ptr<QueryBatch> Context::make_batch(const std::vector<Image>& inputs
 
 namespace {
 
+GLenum gl_format(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::r32f: return GL_R32F;
+    case TexelFormat::rg32f: return GL_RG32F;
+    case TexelFormat::rgba32f: return GL_RGBA32F;
+    case TexelFormat::rgba32ui: return GL_RGBA32UI;
+  }
+  return GL_RGBA32F;
+}
+
+std::string shape_text(const TextureShape& shape) {
+  return std::to_string(shape.width) + "x" + std::to_string(shape.height) + " (" + std::to_string(shape.levels) +
+         " levels, " + std::to_string(shape.layers) + " layers)";
+}
+
 template <class Made>
 const Made& made_here(const auto& object, const char* what) {
   const auto* made = dynamic_cast<const Made*>(&object);
@@ -66,6 +82,84 @@ void Context::dispatch(const QueryProgram& program, const QueryBindings& binding
   for (std::size_t i = 0; i < gl_batch.word_results_.size(); ++i)
     bind.image(bindings.word_results[i], gl_batch.word_results_[i], GL_WRITE_ONLY, GL_RGBA32UI);
   gl_program.program().dispatch(gl_batch.width_, gl_batch.height_);
+}
+
+const GlObject& gl_texture(const DeviceTexture& texture) {
+  return made_here<GlDeviceTexture>(texture, "texture").object();
+}
+
+int Context::storage_channels(int channels) const { return image_channels(*this, channels); }
+
+std::unique_ptr<DeviceTexture> Context::make_texture(const TextureShape& shape) const {
+  GLint max_size = 0, max_layers = 0;
+  gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  gl().GetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  int full_levels = 1;
+  while ((std::max(shape.width, shape.height) >> full_levels) > 0) ++full_levels;
+  if (shape.width < 1 || shape.height < 1 || shape.width > max_size || shape.height > max_size || shape.layers < 1 ||
+      shape.layers > max_layers || (shape.layers > 1 && !shape.array) || shape.levels < 1 || shape.levels > full_levels)
+    throw Error("a texture of " + shape_text(shape) + ": expected sides 1.." + std::to_string(max_size) +
+                " (GL_MAX_TEXTURE_SIZE), 1.." + std::to_string(max_layers) + " layers (an array for more than one), 1.." +
+                std::to_string(full_levels) + " levels");
+  GlObject texture = pn::make_texture(*this, shape.array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, gl_format(shape.format),
+                                      shape.width, shape.height, shape.layers, shape.levels);
+  throw_if_gl_error("allocating a texture of " + shape_text(shape));
+  return std::make_unique<GlDeviceTexture>(
+      FloatTexture(std::move(texture), shape.width, shape.height, texel_channels(shape.format)), shape);
+}
+
+Image Context::read_texture(const DeviceTexture& texture, int level, int layer) const {
+  const TextureShape& shape = texture.shape();
+  if (shape.width == 0 || shape.format == TexelFormat::rgba32ui || level < 0 || level >= shape.levels || layer < 0 ||
+      layer >= shape.layers)
+    throw Error("reading level " + std::to_string(level) + ", layer " + std::to_string(layer) +
+                " of a texture of " + shape_text(shape) + ": expected a float texture made by make_texture and a level and layer it has");
+  return read_float_texture_layer(*this, gl_texture(texture), layer, shape.level_width(level), shape.level_height(level),
+                                  texel_channels(shape.format), level);
+}
+
+std::vector<std::uint32_t> Context::read_words(const DeviceTexture& texture, int level, int layer) const {
+  const TextureShape& shape = texture.shape();
+  if (shape.format != TexelFormat::rgba32ui || level != 0 || layer != 0)
+    throw Error("reading the words of level " + std::to_string(level) + ", layer " + std::to_string(layer) +
+                " of a texture of " + shape_text(shape) + ": expected an RGBA32UI texture's level 0, layer 0");
+  return read_uint4_texture(*this, gl_texture(texture), shape.width, shape.height);
+}
+
+std::unique_ptr<DeviceTexture> Context::layer_texture(const DeviceTexture& array, int layer) const {
+  const TextureShape& shape = array.shape();
+  if (!shape.array || layer < 0 || layer >= shape.layers || shape.format == TexelFormat::rgba32ui)
+    throw Error("layer " + std::to_string(layer) + " of a texture of " + shape_text(shape) +
+                ": expected a float array texture made by make_texture and a layer it has");
+  const int channels = texel_channels(shape.format);
+  return std::make_unique<GlDeviceTexture>(FloatTexture(
+      texture_of_layer(*this, gl_texture(array), layer, shape.width, shape.height, channels), shape.width,
+      shape.height, channels));
+}
+
+std::unique_ptr<DeviceBuffer> Context::make_buffer(std::size_t bytes) const {
+  return std::make_unique<GlDeviceBuffer>(pn::make_buffer(*this, std::max<std::size_t>(bytes, 4), nullptr, GL_DYNAMIC_DRAW));
+}
+
+void Context::write_buffer(const DeviceBuffer& buffer, std::size_t offset, std::size_t bytes, const void* data) const {
+  pn::write_buffer(*this, made_here<GlDeviceBuffer>(buffer, "buffer").object(), offset, bytes, data);
+}
+
+void Context::run(const QueryProgram& program, const PassResources& resources, int width, int height) const {
+  const auto& gl_program = made_here<GlQueryProgram>(program, "program");
+  if (width <= 0 || height <= 0) return;
+  PassBindings bind(*this);
+  if (resources.block.data != nullptr) bind.uniform_data(resources.block.binding, resources.block.data, resources.block.size);
+  for (const QueryTexture& t : resources.textures) bind.texture(t.binding, gl_texture(t.texture));
+  for (const PassImage& image : resources.images) {
+    const TextureShape& shape = image.texture.shape();
+    if (shape.width == 0)
+      throw Error("storage image at binding " + std::to_string(image.binding) + ": a texture of unknown format");
+    bind.image(image.binding, gl_texture(image.texture), GL_WRITE_ONLY, gl_format(shape.format), image.level, shape.array);
+  }
+  for (const PassBuffer& b : resources.buffers)
+    bind.storage_buffer(b.binding, made_here<GlDeviceBuffer>(b.buffer, "buffer").object());
+  gl_program.program().dispatch(width, height);
 }
 
 }  // namespace pn

@@ -14,15 +14,34 @@ namespace pn {
 
 class GlDeviceTexture final : public DeviceTexture {
  public:
-  // Borrows `texture`, which must outlive this object and belong to the context it is used on.
-  explicit GlDeviceTexture(const GlObject& texture) : texture_(&texture) {}
-  explicit GlDeviceTexture(FloatTexture owned) : owned_(std::move(owned)), texture_(&owned_) {}
+  // Borrows `texture`, which must outlive this object and belong to the context it is used on;
+  // `shape` where a pass writes it as a storage image (its format) or the device reads it back.
+  explicit GlDeviceTexture(const GlObject& texture, const TextureShape& shape = {})
+      : DeviceTexture(shape), texture_(&texture) {}
+  GlDeviceTexture(GlObject&&, const TextureShape& = {}) = delete;  // would borrow a temporary
+  explicit GlDeviceTexture(FloatTexture owned)
+      : DeviceTexture(float_shape(owned.width, owned.height, owned.channels)), owned_(std::move(owned)),
+        texture_(&owned_) {}
+  GlDeviceTexture(FloatTexture owned, const TextureShape& shape)
+      : DeviceTexture(shape), owned_(std::move(owned)), texture_(&owned_) {}
   const GlObject& object() const { return *texture_; }
 
  private:
   FloatTexture owned_;
   const GlObject* texture_;
 };
+
+class GlDeviceBuffer final : public DeviceBuffer {
+ public:
+  explicit GlDeviceBuffer(GlObject buffer) : buffer_(std::move(buffer)) {}
+  const GlObject& object() const { return buffer_; }
+
+ private:
+  GlObject buffer_;
+};
+
+// The GL texture behind a DeviceTexture of a GL context. Throws Error for one made elsewhere.
+const GlObject& gl_texture(const DeviceTexture& texture);
 
 class GlQueryProgram final : public QueryProgram {
  public:

@@ -1,9 +1,7 @@
 #include "passes/depth_cache_pass.h"
 
 #include "core/query_grid.h"
-#include "gl/pass_bindings.h"
 #include "gl/std140.h"
-#include "gl/texture.h"
 
 namespace pn::glsl {
 #include "passes/depth_cache.h"
@@ -13,21 +11,22 @@ PN_STD140_OFFSET(PnDepthCacheComposeParams, texelCount, 4);
 
 namespace pn {
 
-DepthCacheComposer::DepthCacheComposer(const Context& context, const SourceTree& tree)
-    : context_(&context),
-      program_(compile_pass(context, tree, "passes/depth_cache_compose.comp")),
-      no_texels_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
+DepthCacheComposer::DepthCacheComposer(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device),
+      program_(device.compile_query(tree, "passes/depth_cache_compose.comp", {})),
+      no_texels_(device.make_buffer(2 * sizeof(int))) {}
 
-void DepthCacheComposer::compose(const GlObject& static_map, const GlObject& dynamic_map, const GlObject& composed,
-                                 int n, TexelRun run, const TexelList* texels) const {
+void DepthCacheComposer::compose(const DeviceTexture& static_map, const DeviceTexture& dynamic_map,
+                                 const DeviceTexture& composed, int n, TexelRun run, const TexelList* texels) const {
   const bool listed = texels && run.count > 0 && !run.whole;
-  PassBindings bind(*context_);
-  bind.uniform(glsl::PnDepthCacheComposeParams{run.first, listed ? run.count : 0});
-  bind.texture(PN_DEPTH_CACHE_STATIC_BINDING, static_map);
-  bind.texture(PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map);
-  bind.image(PN_DEPTH_CACHE_COMPOSED_IMAGE, composed, GL_WRITE_ONLY, GL_R32F);
-  bind.storage_buffer(PN_DEPTH_CACHE_TEXELS_BINDING, listed ? texels->buffer() : no_texels_);
-  dispatch_texel_run(program_, texels ? run : TexelRun{0, 0, true}, n, n);
+  const glsl::PnDepthCacheComposeParams block{run.first, listed ? run.count : 0};
+  const auto [width, height] = texel_run_grid(texels ? run : TexelRun{0, 0, true}, n, n);
+  device_->run(*program_,
+               {{{PN_DEPTH_CACHE_STATIC_BINDING, static_map}, {PN_DEPTH_CACHE_DYNAMIC_BINDING, dynamic_map}},
+                {{PN_DEPTH_CACHE_COMPOSED_IMAGE, composed}},
+                {{PN_DEPTH_CACHE_TEXELS_BINDING, listed ? texels->buffer() : *no_texels_}},
+                query_block(block)},
+               width, height);
 }
 
 DepthCacheQueryPass::DepthCacheQueryPass(const QueryDevice& device, const SourceTree& tree)

@@ -8,7 +8,7 @@
 
 #include "core/image.h"
 #include "gl/compute_program.h"
-#include "gl/texel_list.h"
+#include "device/texel_list.h"
 #include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
@@ -16,16 +16,16 @@ namespace pn {
 
 class DepthCacheComposer {
  public:
-  DepthCacheComposer(const Context& context, const SourceTree& tree);
+  DepthCacheComposer(const QueryDevice& device, const SourceTree& tree);
   // composed := min(static, dynamic) over the whole n×n map (no list) or the texels of `run` in
-  // `texels` (uploaded). All three maps n×n R32F.
-  void compose(const GlObject& static_map, const GlObject& dynamic_map, const GlObject& composed, int n,
+  // `texels` (uploaded). All three maps n×n R32F (`composed` of that shape: a storage image).
+  void compose(const DeviceTexture& static_map, const DeviceTexture& dynamic_map, const DeviceTexture& composed, int n,
                TexelRun run = {0, 0, true}, const TexelList* texels = nullptr) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
-  GlObject no_texels_;
+  const QueryDevice* device_;
+  std::unique_ptr<QueryProgram> program_;
+  std::unique_ptr<DeviceBuffer> no_texels_;
 };
 
 struct DepthCacheQuery {

@@ -2,13 +2,13 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
-#include "core/texel_rect.h"
-#include "gl/texel_list.h"
-
 #include "core/image.h"
-#include "gl/compute_program.h"
+#include "core/texel_rect.h"
+#include "device/query_device.h"
+#include "device/texel_list.h"
 #include "passes/query_pass.h"
 #include "shader/source_tree.h"
 
@@ -16,12 +16,12 @@ namespace pn {
 
 // A built pyramid: an N×N×levels RGBA32F array texture (see depth_pyramid.glsl).
 struct DepthPyramid {
-  GlObject texture;
+  std::unique_ptr<DeviceTexture> texture;
   int map_size = 0;
   int levels = 0;  // L + 1
-  GlObject level0;  // GL_TEXTURE_2D view of layer 0 (the sanitized map, .r): a sampler2D for pcf.glsl,
-                    // poisson_pcss.glsl and the passes that call them (a copy of the layer as
-                    // build() left it on an ES context without texture views)
+  std::unique_ptr<DeviceTexture> level0;  // layer 0 as a 2-D texture (the sanitized map, .r): a sampler2D for
+                                          // pcf.glsl, poisson_pcss.glsl and the passes that call them (a view,
+                                          // or a copy of the layer as build() left it: QueryDevice::layer_texture)
 
   // Bytes of GPU memory: 16 · N² · levels.
   static std::size_t memory_bytes(int map_size, int levels);
@@ -30,18 +30,20 @@ struct DepthPyramid {
 };
 
 // Level `level` read back: level_size(level)² texels of (min, max, mean, 0).
-Image read_pyramid_level(const Context& context, const DepthPyramid& pyramid, int level);
+Image read_pyramid_level(const QueryDevice& device, const DepthPyramid& pyramid, int level);
 
+// Builds on any executor (device/query_device.h); on GL the map is a GlDeviceTexture of a GL
+// pass's map and the pyramid's textures GL textures (gl_texture).
 class DepthPyramidBuilder {
  public:
-  DepthPyramidBuilder(const Context& context, const SourceTree& tree);
+  DepthPyramidBuilder(const QueryDevice& device, const SourceTree& tree);
 
   // Builds levels 0 … min(floor(log2 N), max_level) from an N×N R32F shadow
   // map. Throws Error for a non-square map, N < 2 or max_level < 0.
-  DepthPyramid build(const GlObject& shadow_map, int width, int height, int max_level) const;
+  DepthPyramid build(const DeviceTexture& shadow_map, int width, int height, int max_level) const;
 
   // Dispatches only, into an existing pyramid (for benchmarks).
-  void build_into(const GlObject& shadow_map, const DepthPyramid& pyramid) const;
+  void build_into(const DeviceTexture& shadow_map, const DepthPyramid& pyramid) const;
 
   // Rebuilds only what changed where the map changed in `rects` (a shadow-map cache's dirty
   // rectangles): at level i every window that holds a texel of a rectangle — each rectangle
@@ -50,20 +52,20 @@ class DepthPyramidBuilder {
   // computed twice, to the same value); then re-takes level0 (a copy where
   // the context has no views). Everything else must already be the pyramid of the map as it is
   // outside the rectangles. `dilate` false is the broken rule a check must catch.
-  void update_into(const GlObject& shadow_map, DepthPyramid& pyramid, const std::vector<TexelRect>& rects,
+  void update_into(const DeviceTexture& shadow_map, DepthPyramid& pyramid, const std::vector<TexelRect>& rects,
                    TexelList& texels, bool dilate = true) const;
 
  private:
-  void dispatch_level(const GlObject& shadow_map, const DepthPyramid& pyramid, int level, TexelRun run,
-                      const GlObject& texels) const;
-  const Context* context_;
-  ComputeProgram program_;
-  GlObject no_texels_;
+  void dispatch_level(const DeviceTexture& shadow_map, const DepthPyramid& pyramid, int level, TexelRun run,
+                      const DeviceBuffer& texels) const;
+  const QueryDevice* device_;
+  std::unique_ptr<QueryProgram> program_;
+  std::unique_ptr<DeviceBuffer> no_texels_;
 };
 
 class DepthPyramidQuery {
  public:
-  DepthPyramidQuery(const Context& context, const SourceTree& tree);
+  DepthPyramidQuery(const QueryDevice& device, const SourceTree& tree);
 
   // `queries` is RGBA (u, v, side, -) per texel; returns RGBA (min, max, 0, 0) of the same size.
   Image run(const DepthPyramid& pyramid, const Image& queries) const;

@@ -4,9 +4,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "gl/pass_bindings.h"
 #include "gl/std140.h"
-#include "gl/texture.h"
 #include "modules/depth_pyramid.h"
 
 namespace pn::glsl {
@@ -30,51 +28,45 @@ std::size_t MinMaxMipChain::memory_bytes(int map_size) {
   return 16 * texels;  // RGBA32F texels, two nodes each
 }
 
-Image read_mip_chain_level(const Context& context, const MinMaxMipChain& chain, int level) {
-  return read_float_texture_layer(context, chain.texture, 0, chain.level_width(level), chain.level_rows(level), 4, level);
+Image read_mip_chain_level(const QueryDevice& device, const MinMaxMipChain& chain, int level) {
+  return device.read_texture(*chain.texture, level);
 }
 
-MinMaxMipBuilder::MinMaxMipBuilder(const Context& context, const SourceTree& tree)
-    : context_(&context),
-      program_(compile_pass(context, tree, "passes/minmax_mip_build.comp")),
-      no_texels_(make_buffer(context, 2 * sizeof(int), nullptr)) {}
+MinMaxMipBuilder::MinMaxMipBuilder(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device),
+      program_(device.compile_query(tree, "passes/minmax_mip_build.comp", {})),
+      no_texels_(device.make_buffer(2 * sizeof(int))) {}
 
 MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
-  const auto& gl = context_->gl();
-  GLint max_size = 0;
-  gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  const int padded = MinMaxMipChain::padded_size_for(map_size);
-  if (map_size < 1 || padded > max_size)
-    throw Error("min/max mip chain of a " + std::to_string(map_size) + "² map: expected 1 <= N and its power of two <= " +
-                std::to_string(max_size) + " (GL_MAX_TEXTURE_SIZE)");
+  if (map_size < 1) throw Error("min/max mip chain of a " + std::to_string(map_size) + "² map: expected 1 <= N");
   MinMaxMipChain chain;
   chain.map_size = map_size;
-  chain.padded_size = padded;
-  chain.levels = floor_log2(padded) + 1;
-  chain.texture = make_texture(*context_, GL_TEXTURE_2D, GL_RGBA32F, padded / 2, padded, 1, chain.levels);
-  context_->throw_if_gl_error("allocating the min/max mip chain");
+  chain.padded_size = MinMaxMipChain::padded_size_for(map_size);
+  chain.levels = floor_log2(chain.padded_size) + 1;
+  chain.texture =
+      device_->make_texture({TexelFormat::rgba32f, chain.padded_size / 2, chain.padded_size, chain.levels, 1, false});
   return chain;
 }
 
-void MinMaxMipBuilder::dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TexelRun run,
-                                      const GlObject& texels) const {
+void MinMaxMipBuilder::dispatch_level(const DeviceTexture& shadow_map, const MinMaxMipChain& chain, int level,
+                                      TexelRun run, const DeviceBuffer& texels) const {
   if (!run.whole && run.count <= 0) return;
   const bool listed = run.count > 0 && !run.whole;
   const glsl::PnMipBuildParams block{level, run.first, listed ? run.count : 0};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_MINMAX_MIP_SHADOW_MAP_BINDING, shadow_map);
-  bind.texture(PN_MINMAX_MIP_READ_BINDING, chain.texture);
-  bind.image(PN_MINMAX_MIP_WRITE_BINDING, chain.texture, GL_WRITE_ONLY, GL_RGBA32F, level);
-  bind.storage_buffer(PN_MINMAX_MIP_TEXELS_BINDING, listed ? texels : no_texels_);
-  dispatch_texel_run(program_, run, chain.level_width(level), chain.level_rows(level));
+  const auto [width, height] = texel_run_grid(run, chain.level_width(level), chain.level_rows(level));
+  device_->run(*program_,
+               {{{PN_MINMAX_MIP_SHADOW_MAP_BINDING, shadow_map}, {PN_MINMAX_MIP_READ_BINDING, *chain.texture}},
+                {{PN_MINMAX_MIP_WRITE_BINDING, *chain.texture, level}},
+                {{PN_MINMAX_MIP_TEXELS_BINDING, listed ? texels : *no_texels_}},
+                query_block(block)},
+               width, height);
 }
 
-void MinMaxMipBuilder::build_into(const GlObject& shadow_map, const MinMaxMipChain& chain) const {
-  for (int level = 0; level < chain.levels; ++level) dispatch_level(shadow_map, chain, level, {0, 0, true}, no_texels_);
+void MinMaxMipBuilder::build_into(const DeviceTexture& shadow_map, const MinMaxMipChain& chain) const {
+  for (int level = 0; level < chain.levels; ++level) dispatch_level(shadow_map, chain, level, {0, 0, true}, *no_texels_);
 }
 
-void MinMaxMipBuilder::update_into(const GlObject& shadow_map, const MinMaxMipChain& chain,
+void MinMaxMipBuilder::update_into(const DeviceTexture& shadow_map, const MinMaxMipChain& chain,
                                    const std::vector<TexelRect>& rects, TexelList& texels, bool round_out) const {
   texels.clear();
   std::vector<TexelRun> runs;
@@ -91,12 +83,12 @@ void MinMaxMipBuilder::update_into(const GlObject& shadow_map, const MinMaxMipCh
     }
     runs.push_back(texels.add(at_level, chain.level_width(level), chain.level_rows(level)));
   }
-  texels.upload(*context_);
+  texels.upload(*device_);
   for (int level = 0; level < chain.levels; ++level)
     dispatch_level(shadow_map, chain, level, runs[static_cast<size_t>(level)], texels.buffer());
 }
 
-MinMaxMipChain MinMaxMipBuilder::build(const GlObject& shadow_map, int map_size) const {
+MinMaxMipChain MinMaxMipBuilder::build(const DeviceTexture& shadow_map, int map_size) const {
   MinMaxMipChain chain = allocate(map_size);
   build_into(shadow_map, chain);
   return chain;

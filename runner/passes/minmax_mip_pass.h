@@ -7,17 +7,18 @@
 #include <cstddef>
 #include <vector>
 
+#include <memory>
+
 #include "core/image.h"
 #include "core/texel_rect.h"
-#include "gl/texel_list.h"
-
-#include "gl/compute_program.h"
+#include "device/query_device.h"
+#include "device/texel_list.h"
 #include "shader/source_tree.h"
 
 namespace pn {
 
 struct MinMaxMipChain {
-  GlObject texture;  // RGBA32F, (P/2)×P, log2 P + 1 mip levels, two nodes a texel; P = the least power of two >= max(map_size, 2)
+  std::unique_ptr<DeviceTexture> texture;  // RGBA32F, (P/2)×P, log2 P + 1 mip levels, two nodes a texel; P = the least power of two >= max(map_size, 2)
   int map_size = 0;
   int padded_size = 0;  // P
   int levels = 0;
@@ -30,16 +31,18 @@ struct MinMaxMipChain {
 };
 
 // Level `level` read back as the texture holds it: texel (c, r) = nodes 2c and 2c + 1 of row r.
-Image read_mip_chain_level(const Context& context, const MinMaxMipChain& chain, int level);
+Image read_mip_chain_level(const QueryDevice& device, const MinMaxMipChain& chain, int level);
 
+// Builds on any executor (device/query_device.h); on GL the map is a GlDeviceTexture of a GL
+// pass's map and the chain's texture a GL texture (gl_texture).
 class MinMaxMipBuilder {
  public:
-  MinMaxMipBuilder(const Context& context, const SourceTree& tree);
-  // Throws Error unless 1 <= map_size <= GL_MAX_TEXTURE_SIZE's power of two.
+  MinMaxMipBuilder(const QueryDevice& device, const SourceTree& tree);
+  // Throws Error unless 1 <= map_size and its power of two is within the device's texture size.
   MinMaxMipChain allocate(int map_size) const;
-  void build_into(const GlObject& shadow_map, const MinMaxMipChain& chain) const;
+  void build_into(const DeviceTexture& shadow_map, const MinMaxMipChain& chain) const;
   // allocate + build_into, for a map_size × map_size R32F shadow map.
-  MinMaxMipChain build(const GlObject& shadow_map, int map_size) const;
+  MinMaxMipChain build(const DeviceTexture& shadow_map, int map_size) const;
 
   // Rebuilds only what changed where the map changed in `rects` (a shadow-map cache's dirty
   // rectangles): at level i the nodes holding a texel of a rectangle — each rectangle rounded out
@@ -47,15 +50,15 @@ class MinMaxMipBuilder {
   // overlap, a texel is computed twice, to the same value). Everything else of the
   // chain must already be the chain of the map as it is outside the rectangles.
   // `round_out` false rounds the rectangles' far ends in: the broken rule a check must catch.
-  void update_into(const GlObject& shadow_map, const MinMaxMipChain& chain, const std::vector<TexelRect>& rects,
+  void update_into(const DeviceTexture& shadow_map, const MinMaxMipChain& chain, const std::vector<TexelRect>& rects,
                    TexelList& texels, bool round_out = true) const;
 
  private:
-  void dispatch_level(const GlObject& shadow_map, const MinMaxMipChain& chain, int level, TexelRun run,
-                      const GlObject& texels) const;
-  const Context* context_;
-  ComputeProgram program_;
-  GlObject no_texels_;
+  void dispatch_level(const DeviceTexture& shadow_map, const MinMaxMipChain& chain, int level, TexelRun run,
+                      const DeviceBuffer& texels) const;
+  const QueryDevice* device_;
+  std::unique_ptr<QueryProgram> program_;
+  std::unique_ptr<DeviceBuffer> no_texels_;
 };
 
 }  // namespace pn

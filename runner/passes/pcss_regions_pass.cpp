@@ -25,12 +25,12 @@ static_assert(static_cast<int>(PcssRegionsQuery::Kind::search) == PN_PCSS_REGION
                   static_cast<int>(PcssRegionsQuery::Kind::search_mip) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP,
               "query kinds as pcss_regions_query.h numbers them");
 
-PcssRegionsQueryPass::PcssRegionsQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/pcss_regions_query.comp",
+PcssRegionsQueryPass::PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/pcss_regions_query.comp",
              {{PN_PCSS_REGIONS_QUERY_A_BINDING, PN_PCSS_REGIONS_QUERY_B_BINDING, PN_PCSS_REGIONS_QUERY_C_BINDING},
               {PN_PCSS_REGIONS_QUERY_ENTRY_BINDING, PN_PCSS_REGIONS_QUERY_RECT_BINDING,
                PN_PCSS_REGIONS_QUERY_WINDOW_BINDING, PN_PCSS_REGIONS_QUERY_KEY_BINDING}}),
-      no_mip_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)) {}
+      no_mip_(device.make_texture({TexelFormat::rgba32f, 1, 1})) {}
 
 std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyramid, const LightModel& light,
                                                          const std::vector<PcssRegionsQuery>& queries,
@@ -55,8 +55,8 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
   glsl::PnPcssRegionsQueryParams block{};
   set_light_fields(block, light);
   const QueryResults r = query_.run({a, b, c},
-                                    {{PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING, GlDeviceTexture(pyramid.texture)},
-                                     {PN_PCSS_REGIONS_QUERY_MIP_BINDING, GlDeviceTexture(mip ? mip->texture : no_mip_)}},
+                                    {{PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING, *pyramid.texture},
+                                     {PN_PCSS_REGIONS_QUERY_MIP_BINDING, mip ? *mip->texture : *no_mip_}},
                                     query_block(block));
   std::vector<PcssRegionsResult> out(queries.size());
   for (size_t i = 0; i < queries.size(); ++i)

@@ -36,7 +36,7 @@ struct PcssRegionsResult {
 
 class PcssRegionsQueryPass {
  public:
-  PcssRegionsQueryPass(const Context& context, const SourceTree& tree);
+  PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree);
 
   // One result per query; the light's map size must be the pyramid's N, and the mip
   // chain's when given (search_mip queries need it). Throws Error otherwise.
@@ -46,7 +46,7 @@ class PcssRegionsQueryPass {
 
  private:
   QueryPass query_;
-  GlObject no_mip_;
+  std::unique_ptr<DeviceTexture> no_mip_;  // bound where no chain is given
 };
 
 }  // namespace pn

@@ -41,7 +41,7 @@ class SavsmPass {
                      ShadeStage stage = ShadeStage::compute) const;
 
   // One result per receiver (u, v in texels, linear light depth).
-  std::vector<SavsmQueryResult> query(const MomentsTable& table, const GlObject& mip,
+  std::vector<SavsmQueryResult> query(const MomentsTable& table, const DeviceTexture& mip,
                                       const std::vector<SavsmReceiver>& receivers, const LightModel& light,
                                       const SavsmSettings& settings) const;
 

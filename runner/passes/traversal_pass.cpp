@@ -55,8 +55,8 @@ TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
     : query_(context, tree, "passes/traversal_query.comp",
              {{PN_TRAVERSAL_QUERY_A_BINDING, PN_TRAVERSAL_QUERY_B_BINDING, PN_TRAVERSAL_QUERY_PLANE_BINDING},
               {PN_TRAVERSAL_QUERY_RESULT_C_BINDING, PN_TRAVERSAL_QUERY_RESULT_D_BINDING}}),
-      empty_array_(make_placeholder_texture(context, GL_TEXTURE_2D_ARRAY, GL_RGBA32F)),
-      empty_2d_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)),
+      empty_array_(context.make_texture({TexelFormat::rgba32f, 1, 1, 1, 1, true})),
+      empty_2d_(context.make_texture({TexelFormat::rgba32f, 1, 1})),
       empty_uint_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
 
 void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject& sample_table,
@@ -73,8 +73,8 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject
                                            mip ? structure.mip->map_size : 0,
                                            settings.grid};
   query_.dispatch(*batch.batch_,
-                  {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, GlDeviceTexture(mip ? empty_array_ : structure.pyramid->texture)},
-                   {PN_TRAVERSAL_QUERY_MIP_BINDING, GlDeviceTexture(mip ? structure.mip->texture : empty_2d_)},
+                  {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? *empty_array_ : *structure.pyramid->texture},
+                   {PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? *structure.mip->texture : *empty_2d_},
                    {PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING,
                     GlDeviceTexture(mip && structure.depth_sums ? structure.depth_sums->texture : empty_uint_)},
                    {PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, GlDeviceTexture(sample_table)}},
@@ -88,7 +88,7 @@ WindowScanPass::WindowScanPass(const Context& context, const SourceTree& tree)
 
 void WindowScanPass::dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const {
   const glsl::PnWindowScanParams block{bias};
-  query_.dispatch(*batch.batch_, {{PN_WINDOW_SCAN_PYRAMID_BINDING, GlDeviceTexture(pyramid.texture)}}, query_block(block));
+  query_.dispatch(*batch.batch_, {{PN_WINDOW_SCAN_PYRAMID_BINDING, *pyramid.texture}}, query_block(block));
 }
 
 }  // namespace pn

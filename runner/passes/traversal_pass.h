@@ -71,7 +71,8 @@ class TraversalPass {
 
  private:
   QueryPass query_;
-  GlObject empty_array_, empty_2d_, empty_uint_;
+  std::unique_ptr<DeviceTexture> empty_array_, empty_2d_;  // bound where the structure is the other one
+  GlObject empty_uint_;
 };
 
 // Brute force over each query's region (every texel fetched), into the same result layout.

@@ -72,7 +72,7 @@ std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyram
                                      params.bleeding_reduction};
   return query_
       .run({q}, {{PN_VSM_QUERY_MOMENTS_BINDING, GlDeviceTexture(moments.texture)},
-                 {PN_VSM_QUERY_PYRAMID_BINDING, GlDeviceTexture(pyramid.texture)}},
+                 {PN_VSM_QUERY_PYRAMID_BINDING, *pyramid.texture}},
            query_block(block))
       .list(0, queries.size());
 }
@@ -92,7 +92,7 @@ FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& py
   PassBindings bind(*context_);
   bind.uniform(block);
   bind.texture(PN_VSM_SHADE_MOMENTS_BINDING, moments.texture);
-  bind.texture(PN_VSM_SHADE_PYRAMID_BINDING, pyramid.texture);
+  bind.texture(PN_VSM_SHADE_PYRAMID_BINDING, gl_texture(*pyramid.texture));
   bind.texture(PN_VSM_SHADE_GBUFFER_BINDING, gbuffer);
   return shade_.run(stage, {{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}}, screen_size, bind);
 }

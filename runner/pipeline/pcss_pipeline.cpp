@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "gl/query_device_gl.h"
 #include "gl/gpu_timer.h"
 #include "gl/pass_bindings.h"
 #include "gl/std140.h"
@@ -151,7 +152,7 @@ void PcssPipeline::build_structure(PcssFrame& frame, const TechniqueInputs& inpu
     if (kept && kept->map_size == n && kept->levels >= pyramid_level_count(n, max_level)) {
       frame.pyramid = kept;
     } else {
-      frame.built_pyramid = pyramid_.build(shadow_map, n, n, max_level);
+      frame.built_pyramid = pyramid_.build(GlDeviceTexture(shadow_map), n, n, max_level);
       frame.pyramid = &frame.built_pyramid;
     }
   }
@@ -159,7 +160,7 @@ void PcssPipeline::build_structure(PcssFrame& frame, const TechniqueInputs& inpu
     if (inputs.mip && inputs.mip->map_size == n) {
       frame.mip = inputs.mip;
     } else {
-      frame.built_mip = mip_.build(shadow_map, n);
+      frame.built_mip = mip_.build(GlDeviceTexture(shadow_map), n);
       frame.mip = &frame.built_mip;
     }
     if (s.blockers == Estimator::traversal && s.depth_sums == DepthSums::table)
@@ -187,13 +188,13 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
     block.leafMode = static_cast<std::int32_t>(*frame.settings.blocker_leaf_mode);
   // What every estimator reads; each dispatch below binds it in its own scope.
   const auto bind_inputs = [&](PassBindings& bind) {
-    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? frame.pyramid->texture : no_pyramid_);
-    bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? frame.mip->texture : no_mip_);
+    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? gl_texture(*frame.pyramid->texture) : no_pyramid_);
+    bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? gl_texture(*frame.mip->texture) : no_mip_);
     bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
     bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
     bind.texture(PN_PCSS_ENTRIES_BINDING, entries);
     bind.texture(PN_PCSS_PARENTS_BINDING, parents ? *parents : no_parents_);
-    bind.texture(PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid ? frame.pyramid->level0 : no_mip_);  // sampler2D of the sanitized map
+    bind.texture(PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid ? gl_texture(*frame.pyramid->level0) : no_mip_);  // sampler2D of the sanitized map
   };
 
   if (estimator == Estimator::scan) {
@@ -290,8 +291,8 @@ void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const Techni
     build_structure(frame, inputs, inputs.light.map_size);
   bind.uniform(make_block(inputs.light, s));
   bind.texture(PN_PCSS_SHADE_GBUFFER_BINDING, *inputs.gbuffer);
-  bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? frame.mip->texture : no_mip_);
-  bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? frame.pyramid->texture : no_pyramid_);
+  bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? gl_texture(*frame.mip->texture) : no_mip_);
+  bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? gl_texture(*frame.pyramid->texture) : no_pyramid_);
   bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
   bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
   bind.texture(PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map);
@@ -376,8 +377,8 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     PcssBlock search_block = block;
     search_block.writeKeys = own_search_keys ? 1 : 0;
     bind.uniform(search_block);
-    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? frame.pyramid->texture : no_pyramid_);
-    bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? frame.mip->texture : no_mip_);
+    bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? gl_texture(*frame.pyramid->texture) : no_pyramid_);
+    bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? gl_texture(*frame.mip->texture) : no_mip_);
     bind.texture(PN_PCSS_GBUFFER_BINDING, *inputs.gbuffer);
     bind.image(PN_PCSS_SEARCH_MAP_IMAGE, frame.search_map, GL_WRITE_ONLY, GL_RGBA32F);
     bind.image(PN_PCSS_SEARCH_KEYS_IMAGE, frame.search_keys, GL_WRITE_ONLY, GL_RGBA32F);

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
+#include "gl/query_device_gl.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
 #include "frame/setting_value.h"
@@ -71,10 +72,10 @@ TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool with_stat
   const GlObject* mip = &passes_->no_mip;
   if (settings_.savsm.reads_mip()) {
     if (inputs.mip != nullptr && inputs.mip->map_size == n) {
-      mip = &inputs.mip->texture;
+      mip = &gl_texture(*inputs.mip->texture);
     } else {
-      own = passes_->mip.build(*inputs.shadow_map, n);
-      mip = &own.texture;
+      own = passes_->mip.build(GlDeviceTexture(*inputs.shadow_map), n);
+      mip = &gl_texture(*own.texture);
       clock.stage("mip chain");
     }
   }

@@ -8,6 +8,7 @@
 #include "core/format.h"
 #include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
+#include "gl/query_device_gl.h"
 #include "gl/gpu_timer.h"
 
 namespace pn {
@@ -79,7 +80,7 @@ TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool with_stats)
   DepthPyramid own;
   const DepthPyramid* pyramid = inputs.pyramid;
   if (pyramid == nullptr) {
-    own = passes_->pyramid.build(*inputs.shadow_map, n, n, bound_levels(params.blur.radius));
+    own = passes_->pyramid.build(GlDeviceTexture(*inputs.shadow_map), n, n, bound_levels(params.blur.radius));
     pyramid = &own;
     clock.stage("pyramid");
   }

@@ -66,15 +66,6 @@ int type_rank(VkPhysicalDeviceType type) {
   }
 }
 
-VkFormat float_format(int channels) {
-  switch (channels) {
-    case 1: return VK_FORMAT_R32_SFLOAT;
-    case 2: return VK_FORMAT_R32G32_SFLOAT;
-    default: return VK_FORMAT_R32G32B32A32_SFLOAT;  // 3 channels go up as 4, alpha 1 (GL's RGB32F reads)
-  }
-}
-
-int format_channels(int channels) { return channels == 3 ? 4 : channels; }
 
 }  // namespace
 
@@ -217,6 +208,10 @@ class HostBuffer {
   void* mapped_ = nullptr;
 };
 
+// Every image stays in GENERAL layout from its upload on: a pass samples one level of a chain while
+// it writes the next as a storage image, and results are read back from it.
+constexpr VkImageLayout kImageLayout = VK_IMAGE_LAYOUT_GENERAL;
+
 void image_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
                    VkAccessFlags src_access, VkAccessFlags dst_access, VkPipelineStageFlags src_stage,
                    VkPipelineStageFlags dst_stage) {
@@ -227,39 +222,62 @@ void image_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, 
   barrier.dstAccessMask = dst_access;
   barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
   vkCmdPipelineBarrier(commands, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
-VkBufferImageCopy whole_image(int width, int height) {
-  VkBufferImageCopy copy{};
-  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  copy.imageExtent = {static_cast<uint32_t>(width), static_cast<uint32_t>(height), 1};
-  return copy;
+VkFormat vk_format(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::r32f: return VK_FORMAT_R32_SFLOAT;
+    case TexelFormat::rg32f: return VK_FORMAT_R32G32_SFLOAT;
+    case TexelFormat::rgba32f: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case TexelFormat::rgba32ui: return VK_FORMAT_R32G32B32A32_UINT;
+  }
+  return VK_FORMAT_R32G32B32A32_SFLOAT;
+}
+
+std::string shape_text(const TextureShape& shape) {
+  return std::to_string(shape.width) + "x" + std::to_string(shape.height) + " (" + std::to_string(shape.levels) +
+         " levels, " + std::to_string(shape.layers) + " layers)";
 }
 
 }  // namespace
 
-// A 2-D image of one level on the device, with its view: sampled (an uploaded texture, in
-// SHADER_READ_ONLY_OPTIMAL) or storage (a result, in GENERAL).
+// A 2-D image (or 2-D array) of some levels on the device, in GENERAL layout: a view of every
+// level and layer to sample, and one a level to write as a storage image.
 class VulkanImage final : public DeviceTexture {
  public:
-  VulkanImage(const VulkanDevice::State& s, int width, int height, VkFormat format, bool storage)
-      : s_(&s), width_(width), height_(height), format_(format), storage_(storage) {
+  VulkanImage(const VulkanDevice::State& s, const TextureShape& shape) : DeviceTexture(shape), s_(&s) {
+    const VkFormat format = vk_format(shape.format);
+    VkImageFormatProperties limits{};
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+    const VkResult supported = vkGetPhysicalDeviceImageFormatProperties(
+        s.physical, format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL, usage, 0, &limits);
+    int full_levels = 1;
+    while ((std::max(shape.width, shape.height) >> full_levels) > 0) ++full_levels;
+    if (supported != VK_SUCCESS || shape.width < 1 || shape.height < 1 ||
+        static_cast<uint32_t>(shape.width) > limits.maxExtent.width ||
+        static_cast<uint32_t>(shape.height) > limits.maxExtent.height || shape.layers < 1 ||
+        static_cast<uint32_t>(shape.layers) > limits.maxArrayLayers || (shape.layers > 1 && !shape.array) ||
+        shape.levels < 1 || shape.levels > full_levels)
+      throw Error("vulkan: a texture of " + shape_text(shape) + ": expected sides 1.." +
+                      std::to_string(limits.maxExtent.width) + ", 1.." + std::to_string(limits.maxArrayLayers) +
+                      " layers (an array for more than one), 1.." + std::to_string(full_levels) +
+                      " levels, and a format the device samples and stores",
+                  ExitCode::failed);
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
-    info.extent = {static_cast<uint32_t>(width), static_cast<uint32_t>(height), 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
+    info.extent = {static_cast<uint32_t>(shape.width), static_cast<uint32_t>(shape.height), 1};
+    info.mipLevels = static_cast<uint32_t>(shape.levels);
+    info.arrayLayers = static_cast<uint32_t>(shape.layers);
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                 (storage ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_SAMPLED_BIT);
+    info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    vk_check(vkCreateImage(s.device, &info, nullptr, &image_),
-             "creating a " + std::to_string(width) + "x" + std::to_string(height) + " image");
+    vk_check(vkCreateImage(s.device, &info, nullptr, &image_), "creating a " + shape_text(shape) + " image");
     VkMemoryRequirements needs;
     vkGetImageMemoryRequirements(s.device, image_, &needs);
     VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
@@ -267,28 +285,23 @@ class VulkanImage final : public DeviceTexture {
     allocate.memoryTypeIndex = s.memory_type(needs.memoryTypeBits, 0);
     vk_check(vkAllocateMemory(s.device, &allocate, nullptr, &memory_), "allocating image memory");
     vk_check(vkBindImageMemory(s.device, image_, memory_, 0), "binding image memory");
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = image_;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = format;
-    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vk_check(vkCreateImageView(s.device, &view, nullptr, &view_), "creating an image view");
+    view_ = make_view(0, shape.levels);
+    for (int level = 0; level < shape.levels; ++level) level_views_.push_back(make_view(level, 1));
   }
   ~VulkanImage() override {
+    for (VkImageView view : level_views_) vkDestroyImageView(s_->device, view, nullptr);
     if (view_ != VK_NULL_HANDLE) vkDestroyImageView(s_->device, view_, nullptr);
     if (image_ != VK_NULL_HANDLE) vkDestroyImage(s_->device, image_, nullptr);
     if (memory_ != VK_NULL_HANDLE) vkFreeMemory(s_->device, memory_, nullptr);
   }
   const VulkanDevice::State* owner() const { return s_; }
   VkImage image() const { return image_; }
-  VkImageView view() const { return view_; }
-  bool storage() const { return storage_; }
-  bool integer() const { return format_ == VK_FORMAT_R32G32B32A32_UINT; }
-  int width() const { return width_; }
-  int height() const { return height_; }
-  VkImageLayout layout() const { return storage_ ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL; }
+  VkImageView view() const { return view_; }                                   // every level and layer
+  VkImageView level_view(int level) const { return level_views_[static_cast<size_t>(level)]; }  // every layer
+  bool integer() const { return shape().format == TexelFormat::rgba32ui; }
 
-  // Fills the image with `bytes` (tightly packed texels of its format), or with zeros, and leaves it in layout().
+  // Fills level 0 of layer 0 with `bytes` (tightly packed texels of its format), or every texel
+  // with zeros, and leaves the image in GENERAL layout.
   void fill(const void* bytes, std::size_t size) const {
     const std::optional<HostBuffer> staging =
         bytes ? std::optional<HostBuffer>(std::in_place, *s_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT) : std::nullopt;
@@ -297,28 +310,35 @@ class VulkanImage final : public DeviceTexture {
       image_barrier(c, image_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
       if (staging) {
-        const VkBufferImageCopy copy = whole_image(width_, height_);
+        const VkBufferImageCopy copy = region(0, 0);
         vkCmdCopyBufferToImage(c, staging->buffer(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
       } else {
         const VkClearColorValue zero{};
-        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0,
+                                            VK_REMAINING_ARRAY_LAYERS};
         vkCmdClearColorImage(c, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
       }
-      image_barrier(c, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layout(), VK_ACCESS_TRANSFER_WRITE_BIT,
+      image_barrier(c, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kImageLayout, VK_ACCESS_TRANSFER_WRITE_BIT,
                     VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
     });
   }
 
-  // The texels back, 16 bytes a texel (a storage image's RGBA32F or RGBA32UI).
-  std::vector<std::uint32_t> read() const {
-    const std::size_t words = static_cast<std::size_t>(width_) * height_ * 4;
+  // The texels of one level and layer back, texel_channels(format) words a texel.
+  std::vector<std::uint32_t> read(int level, int layer) const {
+    const TextureShape& shape = this->shape();
+    if (level < 0 || level >= shape.levels || layer < 0 || layer >= shape.layers)
+      throw Error("vulkan: reading level " + std::to_string(level) + ", layer " + std::to_string(layer) +
+                      " of a texture of " + shape_text(shape),
+                  ExitCode::failed);
+    const std::size_t words = static_cast<std::size_t>(shape.level_width(level)) * shape.level_height(level) *
+                              static_cast<std::size_t>(texel_channels(shape.format));
     const HostBuffer staging(*s_, words * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    s_->submit("reading results back", [&](VkCommandBuffer c) {
-      image_barrier(c, image_, layout(), layout(), VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+    s_->submit("reading a texture back", [&](VkCommandBuffer c) {
+      image_barrier(c, image_, kImageLayout, kImageLayout, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-      const VkBufferImageCopy copy = whole_image(width_, height_);
-      vkCmdCopyImageToBuffer(c, image_, layout(), staging.buffer(), 1, &copy);
+      const VkBufferImageCopy copy = region(level, layer);
+      vkCmdCopyImageToBuffer(c, image_, kImageLayout, staging.buffer(), 1, &copy);
       VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
       host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
       host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -331,31 +351,69 @@ class VulkanImage final : public DeviceTexture {
   }
 
  private:
+  VkImageView make_view(int first_level, int levels) const {
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = image_;
+    view.viewType = shape().array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+    view.format = vk_format(shape().format);
+    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(first_level),
+                             static_cast<uint32_t>(levels), 0, static_cast<uint32_t>(shape().layers)};
+    VkImageView out = VK_NULL_HANDLE;
+    vk_check(vkCreateImageView(s_->device, &view, nullptr, &out), "creating an image view");
+    return out;
+  }
+  VkBufferImageCopy region(int level, int layer) const {
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(level), static_cast<uint32_t>(layer), 1};
+    copy.imageExtent = {static_cast<uint32_t>(shape().level_width(level)),
+                        static_cast<uint32_t>(shape().level_height(level)), 1};
+    return copy;
+  }
+
   const VulkanDevice::State* s_;
-  int width_, height_;
-  VkFormat format_;
-  bool storage_;
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
+  std::vector<VkImageView> level_views_;
 };
 
 namespace {
+
+// A storage buffer: host-visible, so a write is a copy into its mapping.
+class VulkanBuffer final : public DeviceBuffer {
+ public:
+  VulkanBuffer(const VulkanDevice::State& s, std::size_t bytes)
+      : buffer_(s, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT), owner_(&s) {}
+  const HostBuffer& host() const { return buffer_; }
+  const VulkanDevice::State* owner() const { return owner_; }
+
+ private:
+  HostBuffer buffer_;
+  const VulkanDevice::State* owner_;
+};
 
 std::unique_ptr<VulkanImage> upload_image(const VulkanDevice::State& s, const Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4)
     throw Error("vulkan: an image of " + std::to_string(image.width) + "x" + std::to_string(image.height) + "x" +
                     std::to_string(image.channels) + ": expected a positive size and 1 to 4 channels",
                 ExitCode::failed);
-  const int channels = format_channels(image.channels);
+  // 3 channels go up as 4, alpha 1 (GL's RGB32F reads).
+  const TextureShape shape = float_shape(image.width, image.height, image.channels);
+  const int channels = texel_channels(shape.format);
   std::vector<float> texels(static_cast<std::size_t>(image.width) * image.height * channels, 1.0f);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x)
       for (int c = 0; c < image.channels; ++c)
         texels[(static_cast<std::size_t>(y) * image.width + x) * channels + c] = image.at(x, y, c);
-  auto out = std::make_unique<VulkanImage>(s, image.width, image.height, float_format(image.channels), false);
+  auto out = std::make_unique<VulkanImage>(s, shape);
   out->fill(texels.data(), texels.size() * sizeof(float));
   return out;
+}
+
+Image float_image(const std::vector<std::uint32_t>& words, int width, int height, int channels) {
+  Image image(width, height, channels);
+  std::memcpy(image.texels.data(), words.data(), words.size() * 4);
+  return image;
 }
 
 class VulkanQueryBatch final : public QueryBatch {
@@ -365,8 +423,8 @@ class VulkanQueryBatch final : public QueryBatch {
     std::tie(width_, height_) = query_batch_size(inputs);
     for (const Image& input : inputs) inputs_.push_back(upload_image(s, input));
     for (std::size_t i = 0; i < results + word_results; ++i) {
-      auto image = std::make_unique<VulkanImage>(
-          s, width_, height_, i < results ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32G32B32A32_UINT, true);
+      const TexelFormat format = i < results ? TexelFormat::rgba32f : TexelFormat::rgba32ui;
+      auto image = std::make_unique<VulkanImage>(s, TextureShape{format, width_, height_});
       image->fill(nullptr, 0);
       (i < results ? results_ : word_results_).push_back(std::move(image));
     }
@@ -378,13 +436,8 @@ class VulkanQueryBatch final : public QueryBatch {
   std::size_t word_results() const override { return word_results_.size(); }
   QueryResults read() const override {
     QueryResults out;
-    for (const auto& result : results_) {
-      const std::vector<std::uint32_t> words = result->read();
-      Image image(width_, height_, 4);
-      std::memcpy(image.texels.data(), words.data(), words.size() * 4);
-      out.images.push_back(std::move(image));
-    }
-    for (const auto& result : word_results_) out.words.push_back(result->read());
+    for (const auto& result : results_) out.images.push_back(float_image(result->read(0, 0), width_, height_, 4));
+    for (const auto& result : word_results_) out.words.push_back(result->read(0, 0));
     return out;
   }
 
@@ -448,12 +501,19 @@ class VulkanQueryProgram final : public QueryProgram {
     return VK_DESCRIPTOR_TYPE_MAX_ENUM;
   }
 
-  void run(const QueryBindings& bindings, const VulkanQueryBatch& batch, const std::vector<QueryTexture>& textures,
-           const QueryBlock& block, const DispatchBounds& bounds) const;
+  // Binds `resources` (the loop guard besides, under bounds) and runs the pass over a width ×
+  // height grid of invocations.
+  void run(const PassResources& resources, int width, int height, const DispatchBounds& bounds) const;
 
  private:
-  const VulkanImage& texture_at(unsigned binding, const SpirvBinding& b, const QueryBindings& bindings,
-                                const VulkanQueryBatch& batch, const std::vector<QueryTexture>& textures) const;
+  template <class Made>
+  const Made& made_here(const auto& object, unsigned binding) const {
+    const auto* made = dynamic_cast<const Made*>(&object);
+    if (made == nullptr || made->owner() != s_)
+      throw Error(name_ + ": the resource at binding " + std::to_string(binding) + " was made on another device",
+                  ExitCode::failed);
+    return *made;
+  }
 
   const VulkanDevice::State* s_;
   std::string name_;
@@ -465,27 +525,9 @@ class VulkanQueryProgram final : public QueryProgram {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
-const VulkanImage& VulkanQueryProgram::texture_at(unsigned binding, const SpirvBinding& b,
-                                                  const QueryBindings& bindings, const VulkanQueryBatch& batch,
-                                                  const std::vector<QueryTexture>& textures) const {
-  for (std::size_t i = 0; i < bindings.inputs.size(); ++i)
-    if (bindings.inputs[i] == binding) return *batch.inputs_[i];
-  for (const QueryTexture& t : textures)
-    if (t.binding == binding) {
-      const auto* image = dynamic_cast<const VulkanImage*>(&t.texture);
-      if (image == nullptr || image->owner() != s_)
-        throw Error(name_ + ": the texture at binding " + std::to_string(binding) + " was made on another device",
-                    ExitCode::failed);
-      return *image;
-    }
-  throw Error(name_ + ": '" + b.name + "' (binding " + std::to_string(binding) +
-                  ") is a texture the dispatch does not give",
-              ExitCode::failed);
-}
-
-void VulkanQueryProgram::run(const QueryBindings& bindings, const VulkanQueryBatch& batch,
-                             const std::vector<QueryTexture>& textures, const QueryBlock& block,
+void VulkanQueryProgram::run(const PassResources& resources, int width, int height,
                              const DispatchBounds& bounds) const {
+  if (width <= 0 || height <= 0) return;
   const VulkanDevice::State& s = *s_;
   std::vector<VkDescriptorPoolSize> sizes;
   for (const SpirvBinding& b : reflection_.bindings) sizes.push_back({descriptor_type(b.kind), 1});
@@ -522,8 +564,11 @@ void VulkanQueryProgram::run(const QueryBindings& bindings, const VulkanQueryBat
     switch (b.kind) {
       case DescriptorKind::combined_image_sampler:
       case DescriptorKind::sampled_image: {
-        const VulkanImage& image = texture_at(b.binding, b, bindings, batch, textures);
-        images[i] = {s.sampler, image.view(), image.layout()};
+        const auto t = std::find_if(resources.textures.begin(), resources.textures.end(),
+                                    [&](const QueryTexture& t) { return t.binding == b.binding; });
+        if (t == resources.textures.end())
+          throw Error(where + " is a texture the dispatch does not give", ExitCode::failed);
+        images[i] = {s.sampler, made_here<VulkanImage>(t->texture, b.binding).view(), kImageLayout};
         write.pImageInfo = &images[i];
         break;
       }
@@ -532,34 +577,44 @@ void VulkanQueryProgram::run(const QueryBindings& bindings, const VulkanQueryBat
         write.pImageInfo = &images[i];
         break;
       case DescriptorKind::storage_image: {
-        const VulkanImage* image = nullptr;
-        for (std::size_t k = 0; k < bindings.results.size(); ++k)
-          if (bindings.results[k] == b.binding) image = batch.results_[k].get();
-        for (std::size_t k = 0; k < bindings.word_results.size(); ++k)
-          if (bindings.word_results[k] == b.binding) image = batch.word_results_[k].get();
-        if (image == nullptr) throw Error(where + " is an image the dispatch does not give", ExitCode::failed);
-        if (image->integer() != b.integer)
+        const auto found = std::find_if(resources.images.begin(), resources.images.end(),
+                                        [&](const PassImage& image) { return image.binding == b.binding; });
+        if (found == resources.images.end())
+          throw Error(where + " is an image the dispatch does not give", ExitCode::failed);
+        const VulkanImage& image = made_here<VulkanImage>(found->texture, b.binding);
+        if (image.integer() != b.integer)
           throw Error(where + " is an image of " + (b.integer ? "integer" : "float") + " texels: the dispatch gives " +
-                          (image->integer() ? "RGBA32UI" : "RGBA32F"),
+                          (image.integer() ? "RGBA32UI" : "floats"),
                       ExitCode::failed);
-        images[i] = {VK_NULL_HANDLE, image->view(), VK_IMAGE_LAYOUT_GENERAL};
+        if (found->level < 0 || found->level >= image.shape().levels)
+          throw Error(where + ": level " + std::to_string(found->level) + " of a texture of " +
+                          std::to_string(image.shape().levels) + " levels",
+                      ExitCode::failed);
+        images[i] = {VK_NULL_HANDLE, image.level_view(found->level), kImageLayout};
         write.pImageInfo = &images[i];
         break;
       }
       case DescriptorKind::uniform_buffer:
-        if (block.data == nullptr || block.binding != b.binding)
+        if (resources.block.data == nullptr || resources.block.binding != b.binding)
           throw Error(where + " is a uniform block the dispatch does not give", ExitCode::failed);
-        uniform.emplace(s, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-        std::memcpy(uniform->data(), block.data, block.size);
-        buffers[i] = {uniform->buffer(), 0, block.size};
+        uniform.emplace(s, resources.block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        std::memcpy(uniform->data(), resources.block.data, resources.block.size);
+        buffers[i] = {uniform->buffer(), 0, resources.block.size};
         write.pBufferInfo = &buffers[i];
         break;
       case DescriptorKind::storage_buffer:
-        if (b.binding != kGuardBinding)
-          throw Error(where + " is a storage buffer: query passes have none", ExitCode::failed);
-        guard.emplace(s, sizeof(LoopGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        std::memset(guard->data(), 0, sizeof(LoopGuardState));
-        buffers[i] = {guard->buffer(), 0, sizeof(LoopGuardState)};
+        if (b.binding == kGuardBinding) {
+          guard.emplace(s, sizeof(LoopGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+          std::memset(guard->data(), 0, sizeof(LoopGuardState));
+          buffers[i] = {guard->buffer(), 0, sizeof(LoopGuardState)};
+        } else {
+          const auto found = std::find_if(resources.buffers.begin(), resources.buffers.end(),
+                                          [&](const PassBuffer& buffer) { return buffer.binding == b.binding; });
+          if (found == resources.buffers.end())
+            throw Error(where + " is a storage buffer the dispatch does not give", ExitCode::failed);
+          const HostBuffer& buffer = made_here<VulkanBuffer>(found->buffer, b.binding).host();
+          buffers[i] = {buffer.buffer(), 0, VK_WHOLE_SIZE};
+        }
         write.pBufferInfo = &buffers[i];
         break;
     }
@@ -576,8 +631,7 @@ void VulkanQueryProgram::run(const QueryBindings& bindings, const VulkanQueryBat
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
     vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
-    vkCmdDispatch(c, groups(batch.width(), reflection_.local_size[0]), groups(batch.height(), reflection_.local_size[1]),
-                  1);
+    vkCmdDispatch(c, groups(width, reflection_.local_size[0]), groups(height, reflection_.local_size[1]), 1);
     VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
@@ -657,11 +711,92 @@ std::unique_ptr<QueryBatch> VulkanDevice::make_batch(const std::vector<Image>& i
 void VulkanDevice::dispatch(const QueryProgram& program, const QueryBindings& bindings, const QueryBatch& batch,
                             const std::vector<QueryTexture>& textures, const QueryBlock& block) const {
   check_batch_bindings(bindings, batch);
-  const auto* vk_program = dynamic_cast<const VulkanQueryProgram*>(&program);
   const auto* vk_batch = dynamic_cast<const VulkanQueryBatch*>(&batch);
-  if (vk_program == nullptr || vk_batch == nullptr)
-    throw Error("query pass: a program or batch made on another device than this Vulkan device", ExitCode::failed);
-  vk_program->run(bindings, *vk_batch, textures, block, state_->bounds);
+  if (vk_batch == nullptr) throw Error("query pass: a batch made on another device than this Vulkan device", ExitCode::failed);
+  PassResources resources{textures, {}, {}, block};
+  for (std::size_t i = 0; i < bindings.inputs.size(); ++i)
+    resources.textures.push_back({bindings.inputs[i], *vk_batch->inputs_[i]});
+  for (std::size_t i = 0; i < bindings.results.size(); ++i)
+    resources.images.push_back({bindings.results[i], *vk_batch->results_[i]});
+  for (std::size_t i = 0; i < bindings.word_results.size(); ++i)
+    resources.images.push_back({bindings.word_results[i], *vk_batch->word_results_[i]});
+  run(program, resources, vk_batch->width(), vk_batch->height());
+}
+
+std::unique_ptr<DeviceTexture> VulkanDevice::make_texture(const TextureShape& shape) const {
+  auto image = std::make_unique<VulkanImage>(*state_, shape);
+  image->fill(nullptr, 0);  // into GENERAL layout
+  return image;
+}
+
+namespace {
+
+const VulkanImage& vulkan_image(const VulkanDevice::State& s, const DeviceTexture& texture) {
+  const auto* image = dynamic_cast<const VulkanImage*>(&texture);
+  if (image == nullptr || image->owner() != &s)
+    throw Error("vulkan: a texture made on another device than this one", ExitCode::failed);
+  return *image;
+}
+
+}  // namespace
+
+Image VulkanDevice::read_texture(const DeviceTexture& texture, int level, int layer) const {
+  const VulkanImage& image = vulkan_image(*state_, texture);
+  if (image.integer()) throw Error("vulkan: an RGBA32UI texture read as floats: expected read_words", ExitCode::failed);
+  const TextureShape& shape = image.shape();
+  return float_image(image.read(level, layer), shape.level_width(level), shape.level_height(level),
+                     texel_channels(shape.format));
+}
+
+std::vector<std::uint32_t> VulkanDevice::read_words(const DeviceTexture& texture, int level, int layer) const {
+  const VulkanImage& image = vulkan_image(*state_, texture);
+  if (!image.integer()) throw Error("vulkan: a float texture read as words: expected read_texture", ExitCode::failed);
+  return image.read(level, layer);
+}
+
+std::unique_ptr<DeviceTexture> VulkanDevice::layer_texture(const DeviceTexture& array, int layer) const {
+  const VulkanImage& from = vulkan_image(*state_, array);
+  const TextureShape& shape = from.shape();
+  if (!shape.array || layer < 0 || layer >= shape.layers)
+    throw Error("vulkan: layer " + std::to_string(layer) + " of a texture of " + shape_text(shape) +
+                    ": expected an array texture and a layer it has",
+                ExitCode::failed);
+  auto to = std::make_unique<VulkanImage>(*state_, TextureShape{shape.format, shape.width, shape.height});
+  to->fill(nullptr, 0);
+  state_->submit("copying a layer", [&](VkCommandBuffer c) {
+    image_barrier(c, from.image(), kImageLayout, kImageLayout, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkImageCopy copy{};
+    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, static_cast<uint32_t>(layer), 1};
+    copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.extent = {static_cast<uint32_t>(shape.width), static_cast<uint32_t>(shape.height), 1};
+    vkCmdCopyImage(c, from.image(), kImageLayout, to->image(), kImageLayout, 1, &copy);
+    image_barrier(c, to->image(), kImageLayout, kImageLayout, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  });
+  return to;
+}
+
+std::unique_ptr<DeviceBuffer> VulkanDevice::make_buffer(std::size_t bytes) const {
+  return std::make_unique<VulkanBuffer>(*state_, bytes);
+}
+
+void VulkanDevice::write_buffer(const DeviceBuffer& buffer, std::size_t offset, std::size_t bytes,
+                                const void* data) const {
+  const auto* vk_buffer = dynamic_cast<const VulkanBuffer*>(&buffer);
+  if (vk_buffer == nullptr || vk_buffer->owner() != state_.get())
+    throw Error("vulkan: a buffer made on another device than this one", ExitCode::failed);
+  if (offset + bytes > vk_buffer->host().size())
+    throw Error("vulkan: writing bytes " + std::to_string(offset) + ".." + std::to_string(offset + bytes) +
+                    " of a buffer of " + std::to_string(vk_buffer->host().size()),
+                ExitCode::failed);
+  std::memcpy(static_cast<char*>(vk_buffer->host().data()) + offset, data, bytes);
+}
+
+void VulkanDevice::run(const QueryProgram& program, const PassResources& resources, int width, int height) const {
+  const auto* vk_program = dynamic_cast<const VulkanQueryProgram*>(&program);
+  if (vk_program == nullptr) throw Error("vulkan: a program compiled for another device", ExitCode::failed);
+  vk_program->run(resources, width, height, state_->bounds);
 }
 
 std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings) {

@@ -1,8 +1,8 @@
-#include "gl/texel_list.h"
+#include "device/texel_list.h"
 
 #include <algorithm>
 
-#include "gl/compute_program.h"
+#include "core/error.h"
 
 namespace pn {
 
@@ -26,20 +26,26 @@ TexelRun TexelList::add(const std::vector<TexelRect>& rects, int width, int heig
   return run;
 }
 
-void TexelList::upload(const Context& context) {
+void TexelList::upload(const QueryDevice& device) {
   const size_t bytes = std::max<size_t>(texels_.size(), 2) * sizeof(int);
-  if (capacity_ < bytes) {
+  if (capacity_ < bytes || device_ != &device) {
     capacity_ = 2 * bytes;
-    buffer_ = make_buffer(context, capacity_, nullptr, GL_DYNAMIC_DRAW);
+    buffer_ = device.make_buffer(capacity_);
+    device_ = &device;
   }
-  if (!texels_.empty()) write_buffer(context, buffer_, 0, texels_.size() * sizeof(int), texels_.data());
+  if (!texels_.empty()) device.write_buffer(*buffer_, 0, texels_.size() * sizeof(int), texels_.data());
 }
 
-void dispatch_texel_run(const ComputeProgram& program, const TexelRun& run, int width, int height) {
-  if (run.whole) return program.dispatch(width, height);
-  if (run.count <= 0) return;
+const DeviceBuffer& TexelList::buffer() const {
+  if (!buffer_) throw Error("texel list: read before its first upload");
+  return *buffer_;
+}
+
+std::pair<int, int> texel_run_grid(const TexelRun& run, int width, int height) {
+  if (run.whole) return {width, height};
+  if (run.count <= 0) return {0, 0};
   const int groups = (run.count + kTexelListGroup - 1) / kTexelListGroup;
-  program.dispatch(groups * 8, 8);  // groups × 1 work groups of 8×8
+  return {groups * 8, 8};  // groups × 1 work groups of 8×8
 }
 
 }  // namespace pn

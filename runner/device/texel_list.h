@@ -7,8 +7,11 @@
 
 #include <vector>
 
+#include <memory>
+#include <utility>
+
 #include "core/texel_rect.h"
-#include "gl/objects.h"
+#include "device/query_device.h"
 
 namespace pn {
 
@@ -29,20 +32,22 @@ class TexelList {
   // The texels of `rects` clipped to a width × height grid, rectangle after rectangle (a texel in two
   // overlapping rectangles is listed twice: merge them first, merged_rects, to list it once).
   TexelRun add(const std::vector<TexelRect>& rects, int width, int height);
-  // Uploads the list into buffer() (grown when it is too small); binds nothing.
-  void upload(const Context& context);
-  const GlObject& buffer() const { return buffer_; }
+  // Uploads the list into buffer() on `device` (grown when it is too small); binds nothing.
+  void upload(const QueryDevice& device);
+  // The list as uploaded last. Throws Error before the first upload.
+  const DeviceBuffer& buffer() const;
 
  private:
   std::vector<int> texels_;  // (x, y) pairs
-  GlObject buffer_;
-  size_t capacity_ = 0;  // bytes of buffer_
+  std::unique_ptr<DeviceBuffer> buffer_;
+  const QueryDevice* device_ = nullptr;  // where buffer_ lives
+  size_t capacity_ = 0;                  // bytes of buffer_
 };
 
-// Dispatches `program` (8×8 local size, texel_list.glsl) over a run: its listed texels, the whole
-// width × height grid for a run too long to list, nothing for an empty run. The caller has bound
-// the list and the block that carries the run (first, count; count 0 for the whole grid).
-class ComputeProgram;
-void dispatch_texel_run(const ComputeProgram& program, const TexelRun& run, int width, int height);
+// The grid of invocations that runs a pass of 8×8 work groups (texel_list.glsl) over a run: its
+// listed texels (groups × 1 groups), the whole width × height grid for a run too long to list,
+// nothing (0 × 0) for an empty run. The pass's block carries the run (first, count; count 0 for
+// the whole grid).
+std::pair<int, int> texel_run_grid(const TexelRun& run, int width, int height);
 
 }  // namespace pn
