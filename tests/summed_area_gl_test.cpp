@@ -193,9 +193,9 @@ TEST_CASE("the float moments table at 2048^2 loses the 1x1 means at its far corn
   std::vector<pn::Rect> rects;
   for (int k = 0; k < 64; ++k) rects.push_back({n - 1 - k, n - 1, 1, 1}), rects.push_back({n - 1, n - 2 - k, 1, 1});
   const pn::SummedAreaMomentsPass pass(context, tree);
-  const pn::GlObject texture = pn::upload_float_texture(context, depth);
-  const auto fixed = pass.query(pass.build(texture, pn::MomentsTableKind::fixed, unit), rects);
-  const auto floating = pass.query(pass.build(texture, pn::MomentsTableKind::floating, unit), rects);
+  const std::unique_ptr<pn::DeviceTexture> texture = context.upload(depth);
+  const auto fixed = pass.query(pass.build(*texture, n, n, pn::MomentsTableKind::fixed, unit), rects);
+  const auto floating = pass.query(pass.build(*texture, n, n, pn::MomentsTableKind::floating, unit), rects);
   double fixed_worst = 0.0, float_worst = 0.0;
   for (size_t k = 0; k < rects.size(); ++k) {
     const auto s = reference.sums(rects[k]);

@@ -43,13 +43,13 @@ std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceT
     const DepthPyramid pyramid = pyramid_builder.build(map, n, n, max_level);  // also the warm-up
     const MinMaxMipChain chain = mip_builder.allocate(n);
     mip_builder.build_into(map, chain);
-    sums_builder.build(gl_texture(map));
+    sums_builder.build(map, n, n);
     std::vector<double> pyramid_gpu, pyramid_wall, mip_gpu, mip_wall, sums_gpu;
     // Interleaved, so that both see the same machine state.
     for (int r = 0; r < repeats; ++r) {
       const StageTime p = timer.measure([&] { pyramid_builder.build_into(map, pyramid); });
       const StageTime m = timer.measure([&] { mip_builder.build_into(map, chain); });
-      const StageTime s = timer.measure([&] { sums_builder.build(gl_texture(map)); });
+      const StageTime s = timer.measure([&] { sums_builder.build(map, n, n); });
       pyramid_gpu.push_back(p.gpu_ms), pyramid_wall.push_back(p.wall_ms), sums_gpu.push_back(s.gpu_ms);
       mip_gpu.push_back(m.gpu_ms), mip_wall.push_back(m.wall_ms);
     }

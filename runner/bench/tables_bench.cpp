@@ -46,16 +46,17 @@ std::vector<TablesBenchRow> bench_tables(const Context& context, const SourceTre
     progress.step(std::to_string(n) + "x" + std::to_string(n));
     Image depth = generate_fixture(find_fixture("noise"), n, n);
     for (float& d : depth.texels) d = 20.0f + 20.0f * d;
-    const GlObject map = upload_float_texture(context, depth);
+    const std::unique_ptr<DeviceTexture> uploaded = context.upload(depth);
+    const DeviceTexture& map = *uploaded;
     // Warm-up: compiles every variant and touches every allocation path once.
-    depth_pass.build(map);
-    moments_pass.build(map, MomentsTableKind::fixed, range);
-    moments_pass.build(map, MomentsTableKind::floating, range);
+    depth_pass.build(map, n, n);
+    moments_pass.build(map, n, n, MomentsTableKind::fixed, range);
+    moments_pass.build(map, n, n, MomentsTableKind::floating, range);
     std::vector<double> depth_gpu, depth_wall, fixed_gpu, fixed_wall, float_gpu, float_wall;
     for (int r = 0; r < repeats; ++r) {  // interleaved, so that all three see the same machine state
-      const StageTime d = timer.measure([&] { depth_pass.build(map); });
-      const StageTime f = timer.measure([&] { moments_pass.build(map, MomentsTableKind::fixed, range); });
-      const StageTime g = timer.measure([&] { moments_pass.build(map, MomentsTableKind::floating, range); });
+      const StageTime d = timer.measure([&] { depth_pass.build(map, n, n); });
+      const StageTime f = timer.measure([&] { moments_pass.build(map, n, n, MomentsTableKind::fixed, range); });
+      const StageTime g = timer.measure([&] { moments_pass.build(map, n, n, MomentsTableKind::floating, range); });
       depth_gpu.push_back(d.gpu_ms), depth_wall.push_back(d.wall_ms);
       fixed_gpu.push_back(f.gpu_ms), fixed_wall.push_back(f.wall_ms);
       float_gpu.push_back(g.gpu_ms), float_wall.push_back(g.wall_ms);

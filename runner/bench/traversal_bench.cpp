@@ -57,7 +57,7 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
   const int n = setup.map_size;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
   const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(*context.upload(map), n, n, 31);
-  const GlObject table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
+  const std::unique_ptr<DeviceTexture> table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
   const TraversalPass traversal(context, tree);
   const WindowScanPass scan(context, tree);
   const GpuTimer timer(context);
@@ -91,7 +91,7 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
       TraversalBenchRow row{std::string(mode == LeafMode::sampled ? "sampled" : "min (HQEPCSS)") + " leaf " +
                                 std::to_string(leaf),
                             leaf};
-      row.gpu_ms = time_median([&] { traversal.dispatch(pyramid, table, batch, settings); });
+      row.gpu_ms = time_median([&] { traversal.dispatch(pyramid, *table, batch, settings); });
       const std::vector<TraversalResult> got = batch.read();
       double with_blockers = 0;
       for (size_t k = 0; k < got.size(); ++k) {

@@ -47,7 +47,7 @@ const std::vector<ModuleCheck>& module_checks() {
       {"sample_table", "multi-jittered strata of the table; the 3.2 selection and scaling vs the paper's arithmetic",
        &run_sample_table_check, OffGl::every_case},
       {"traversal", "leaf 1 vs brute force (exact counts); sampled / min leaves and budgets vs the CPU recursion",
-       &run_traversal_check},
+       &run_traversal_check, OffGl::every_case},
       {"reuse", "parent links, representatives and gathered values vs explicit parent pointers and root finding",
        &run_reuse_check},
       {"light_model", "blocker-window, search-width and penumbra widths vs runner/scene/light_model.h",
@@ -76,7 +76,7 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_truth_check, OffGl::every_case},
       {"summed_area", "64-bit fixed-point summed-area tables: depth and moment sums vs direct box sums (exact), float "
                       "sums, means and variances in bound; the float moments table's errors beside the fixed one's",
-       &run_summed_area_check},
+       &run_summed_area_check, OffGl::every_case},
       {"minmax_mip", "aligned min/max mip chain levels (padded to a power of two) vs node scans (exact)",
        &run_minmax_mip_check, OffGl::every_case},
       {"depth_cache", "min(static, dynamic) and its shadow test vs the definition; both caches over 100-frame motion "

@@ -302,7 +302,7 @@ std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
     const int n = mc.size;
     const Image map = savsm_map(n);
     const GlObject texture = upload_float_texture(env.context(), map);
-    const MomentsTable table = tables.build(texture, MomentsTableKind::fixed, unit_range(kNear, kFar));
+    const MomentsTable table = tables.build(GlDeviceTexture(texture), n, n, MomentsTableKind::fixed, unit_range(kNear, kFar));
     const MinMaxMipChain mip = mips.build(GlDeviceTexture(texture), n);
     const std::vector<SavsmReceiver> rs = receivers(map, mc.receivers);
     MomentsCache moments(map);

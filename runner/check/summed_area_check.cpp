@@ -141,8 +141,8 @@ void name_summed_area_worst_rect(CaseResult& r, const std::vector<Rect>& rects) 
 }
 
 std::vector<CaseResult> summed_area_depth_cases(const CheckEnvironment& env) {
-  const SummedAreaPass pass(env.context(), env.tree);
-  const SummedAreaPass wrapping(env.context(), env.tree, kWrapFractionBits);
+  const SummedAreaPass pass(env.device, env.tree);
+  const SummedAreaPass wrapping(env.device, env.tree, kWrapFractionBits);
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kTextureFixtures) {
     for (const auto& size : kSizes) {
@@ -151,8 +151,7 @@ std::vector<CaseResult> summed_area_depth_cases(const CheckEnvironment& env) {
       for (const Range& range : kRanges) {
         const Image map = in_range(raw, range);
         const SummedAreaPass& p = range.fraction_bits == kSummedAreaFractionBits ? pass : wrapping;
-        const GlObject texture = upload_float_texture(env.context(), map);
-        const SummedAreaTable table = p.build(texture);
+        const SummedAreaTable table = p.build(*env.device.upload(map), map.width, map.height);
         const std::vector<SummedAreaQueryResult> observed = p.query(table, rects);
         const SummedAreaReference reference(map, range.fraction_bits);
 

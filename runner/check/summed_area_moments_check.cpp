@@ -126,11 +126,12 @@ WorstErrors map_cases(const CheckEnvironment& env, const SummedAreaMomentsPass& 
                       std::vector<CaseResult>& results) {
   const UnitRange unit = unit_range(kNear, kFar);
   const MomentsDepthRange range{kNear, kFar, unit.offset, unit.scale};
-  const GlObject texture = upload_float_texture(env.context(), map.depth);
+  const std::unique_ptr<DeviceTexture> texture = env.device.upload(map.depth);
+  const int w = map.depth.width, h = map.depth.height;
   const std::vector<MomentsQueryResult> fixed =
-      pass.query(pass.build(texture, MomentsTableKind::fixed, unit), map.rects);
+      pass.query(pass.build(*texture, w, h, MomentsTableKind::fixed, unit), map.rects);
   const std::vector<MomentsQueryResult> floating =
-      pass.query(pass.build(texture, MomentsTableKind::floating, unit), map.rects);
+      pass.query(pass.build(*texture, w, h, MomentsTableKind::floating, unit), map.rects);
   const SummedAreaMomentsReference reference(map.depth, range, map.bits);
 
   const int n = static_cast<int>(map.rects.size());
@@ -204,8 +205,8 @@ CaseResult refusals_case(const std::string& name, const std::vector<void (*)(con
 
 std::vector<CaseResult> summed_area_moments_cases(const CheckEnvironment& env) {
   std::vector<CaseResult> results;
-  const SummedAreaMomentsPass pass(env.context(), env.tree);
-  const SummedAreaMomentsPass coarse(env.context(), env.tree, kSmallBits);
+  const SummedAreaMomentsPass pass(env.device, env.tree);
+  const SummedAreaMomentsPass coarse(env.device, env.tree, kSmallBits);
   const std::string depths = "light depth 20 + 20 v in [1, 100], +Inf where v >= 0.95";
   for (const auto& fixture : fixtures::kTextureFixtures)
     for (const auto& size : {fixtures::FixtureSize{1, 1}, {3, 5}, {17, 9}}) {
@@ -249,8 +250,8 @@ std::vector<CaseResult> summed_area_moments_cases(const CheckEnvironment& env) {
        [](const CheckEnvironment&) { unit_range(std::numeric_limits<double>::quiet_NaN(), 1.0); },
        [](const CheckEnvironment&) { unit_range(0.0, std::numeric_limits<double>::infinity()); },
        [](const CheckEnvironment&) { unit_range(0.0, 1e300); }, [](const CheckEnvironment&) { unit_range(0.0, 1e-300); },
-       [](const CheckEnvironment& e) { SummedAreaMomentsPass(e.context(), e.tree, -1); },
-       [](const CheckEnvironment& e) { SummedAreaMomentsPass(e.context(), e.tree, kSummedAreaMaxMomentBits + 1); },
+       [](const CheckEnvironment& e) { SummedAreaMomentsPass(e.device, e.tree, -1); },
+       [](const CheckEnvironment& e) { SummedAreaMomentsPass(e.device, e.tree, kSummedAreaMaxMomentBits + 1); },
        [](const CheckEnvironment&) { SummedAreaMomentsReference(Image(1, 1, 1), {0, 1, 0, 1}, -1); },
        [](const CheckEnvironment&) { SummedAreaMomentsReference(Image(1, 1, 1), {0, 1, 0, 1}, 19); }},
       env));

@@ -28,8 +28,6 @@
 #include "core/format.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
-#include "gl/query_device_gl.h"
-#include "gl/texture.h"
 #include "passes/traversal_pass.h"
 #include "reference/depth_pyramid_reference.h"
 #include "reference/traversal_reference.h"
@@ -99,12 +97,12 @@ void add_comparison(std::vector<CaseResult>& results, const std::string& name, c
 }  // namespace
 
 std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
-  const DepthPyramidBuilder builder(env.context(), env.tree);
-  const MinMaxMipBuilder mip_builder(env.context(), env.tree);
-  const SummedAreaPass depth_sums_pass(env.context(), env.tree);
-  const TraversalPass pass(env.context(), env.tree);
+  const DepthPyramidBuilder builder(env.device, env.tree);
+  const MinMaxMipBuilder mip_builder(env.device, env.tree);
+  const SummedAreaPass depth_sums_pass(env.device, env.tree);
+  const TraversalPass pass(env.device, env.tree);
   const SampleTable table = generate_sample_table(kSampleTableSeed);
-  const GlObject table_texture = upload_sample_table(env.context(), table);
+  const std::unique_ptr<DeviceTexture> table_texture = upload_sample_table(env.device, table);
   std::vector<CaseResult> results;
 
   // Both structures: the decreased pyramid (pnTraverseRegion) and the aligned mip chain (pnTraverseRegionMip).
@@ -116,9 +114,9 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
   // The GPU's results over a structure, and the CPU recursion's decisions over the same one.
   const auto observe = [&](const Structure& st, const Scene& scene, const std::vector<TraversalQuery>& queries,
                            const TraversalSettings& s) {
-    const TraversalBatch batch(env.context(), queries);
+    const TraversalBatch batch(env.device, queries);
     pass.dispatch(st.mip ? TraversalStructure{nullptr, &scene.mip, &scene.depth_sums} : TraversalStructure{&scene.pyramid},
-                  table_texture, batch, s);
+                  *table_texture, batch, s);
     return batch.read();
   };
   const auto recursion = [&](const Structure& st, const Scene& scene, const std::vector<TraversalQuery>& queries,
@@ -137,10 +135,10 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     Scene scene;
     scene.map = generate_fixture(fixture, kMapSize, kMapSize);
     scene.depth = sanitized_depths(scene.map);
-    const GlObject map_texture = upload_float_texture(env.context(), scene.map);
-    scene.pyramid = builder.build(GlDeviceTexture(map_texture), kMapSize, kMapSize, 31);
-    scene.mip = mip_builder.build(GlDeviceTexture(map_texture), kMapSize);
-    scene.depth_sums = depth_sums_pass.build(map_texture);
+    const std::unique_ptr<DeviceTexture> map_texture = env.device.upload(scene.map);
+    scene.pyramid = builder.build(*map_texture, kMapSize, kMapSize, 31);
+    scene.mip = mip_builder.build(*map_texture, kMapSize);
+    scene.depth_sums = depth_sums_pass.build(*map_texture, kMapSize, kMapSize);
     scene.largest = largest_finite_magnitude(scene.depth, FLT_MIN);
     // Exact: leaf side 1, power-of-two windows and exact regions, against brute force.
     std::vector<Rect> regions;

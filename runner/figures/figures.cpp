@@ -138,7 +138,7 @@ Canvas traversal_figure(const Context& context, const SourceTree& tree) {
   const int n = 256, gap = 10;
   const Image map = generate_fixture(find_fixture("boxes"), n, n);
   const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(*context.upload(map), n, n, 31);
-  const GlObject table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
+  const std::unique_ptr<DeviceTexture> table = upload_sample_table(context, generate_sample_table(kSampleTableSeed));
   const auto& boxes = find_fixture("boxes");
   std::vector<TraversalQuery> queries;
   for (int y = 0; y < n; ++y)
@@ -156,7 +156,7 @@ Canvas traversal_figure(const Context& context, const SourceTree& tree) {
     TraversalSettings settings;
     settings.leaf_side = leaf;
     settings.bias = 0.03f;
-    pass.dispatch(pyramid, table, batch, settings);
+    pass.dispatch(pyramid, *table, batch, settings);
     const std::vector<TraversalResult> results = batch.read();
     long most = 1;
     for (const auto& r : results) most = std::max(most, r.nodes);

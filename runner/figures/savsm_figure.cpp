@@ -42,7 +42,7 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   const Image map = generate_two_occluders(f);
   const LightModel light = two_occluder_light(n);
   const GlObject texture = upload_float_texture(context, map);
-  const MomentsTable table = SummedAreaMomentsPass(context, tree).build(texture, MomentsTableKind::fixed,
+  const MomentsTable table = SummedAreaMomentsPass(context, tree).build(GlDeviceTexture(texture), n, n, MomentsTableKind::fixed,
                                                                         unit_range(light.near_plane, light.far_plane));
   const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(GlDeviceTexture(texture), n);
   const SavsmPass pass(context, tree);

@@ -75,7 +75,7 @@ FloatTexture SavsmPass::shade(const MomentsTable& table, const GlObject& mip, co
   const glsl::PnSavsmParams block = make_block(table, light, settings);
   PassBindings bind(*context_);
   bind.uniform(block);
-  bind.texture(PN_SAVSM_TABLE_BINDING, table.texture);
+  bind.texture(PN_SAVSM_TABLE_BINDING, gl_texture(*table.texture));
   bind.texture(PN_SAVSM_MIP_BINDING, mip);
   bind.texture(PN_SAVSM_INPUT_BINDING, gbuffer);
   return shade_.run(stage, table_define(table), screen_size, bind);
@@ -91,7 +91,7 @@ std::vector<SavsmQueryResult> SavsmPass::query(const MomentsTable& table, const 
   for (const SavsmReceiver& r : receivers) q.push_back({r.u, r.v, r.depth, 0.0f});
   const QueryPass& pass = table.kind == MomentsTableKind::fixed ? fixed_query_ : float_query_;
   const QueryResults r = pass.run(
-      {q}, {{PN_SAVSM_TABLE_BINDING, GlDeviceTexture(table.texture)}, {PN_SAVSM_MIP_BINDING, mip}}, query_block(block));
+      {q}, {{PN_SAVSM_TABLE_BINDING, *table.texture}, {PN_SAVSM_MIP_BINDING, mip}}, query_block(block));
   std::vector<SavsmQueryResult> out;
   for (size_t k = 0; k < receivers.size(); ++k) {
     SavsmQueryResult o;

@@ -1,16 +1,12 @@
 #include "passes/summed_area_pass.h"
 
-#include "gl/query_device_gl.h"
-
 #include <cmath>
 #include <string>
 
 #include "core/error.h"
 #include "core/format.h"
 #include "core/query_grid.h"
-#include "gl/pass_bindings.h"
 #include "gl/std140.h"
-#include "gl/texture.h"
 #include "passes/summed_area_query.h"
 
 namespace pn::glsl {
@@ -31,18 +27,6 @@ std::vector<Define> fraction_define(int fraction_bits) {
   return {{"PN_SUMMED_AREA_FRACTION_BITS", std::to_string(fraction_bits)}};
 }
 
-// An RGBA32UI texture, nearest filtering (read with texelFetch only).
-GlObject make_uint4_texture(const Context& context, int width, int height) {
-  GLint max_size = 0;
-  context.gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  if (width > max_size || height > max_size)
-    throw Error("summed-area table " + std::to_string(width) + "x" + std::to_string(height) +
-                ": expected at most GL_MAX_TEXTURE_SIZE (" + std::to_string(max_size) + ") on each side");
-  GlObject texture = make_texture(context, GL_TEXTURE_2D, GL_RGBA32UI, width, height);
-  context.throw_if_gl_error("allocating a summed-area table");
-  return texture;
-}
-
 // The query passes' rectangles and float results, and their exact sums (`words`) where they have them.
 QueryBindings query_bindings(bool words) {
   QueryBindings b{{PN_SUMMED_AREA_QUERY_RECTS_BINDING}, {PN_SUMMED_AREA_QUERY_FLOAT_IMAGE}, {}};
@@ -50,36 +34,20 @@ QueryBindings query_bindings(bool words) {
   return b;
 }
 
-void texture_size(const Context& context, const GlObject& texture, int& width, int& height) {
-  GLint w = 0, h = 0, previous = 0;
-  const auto& gl = context.gl();
-  gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &previous);  // bind-to-query, then put back what was there
-  gl.BindTexture(GL_TEXTURE_2D, texture.id());
-  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
-  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
-  gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
-  context.throw_if_gl_error("reading a depth map's size");
-  width = w, height = h;
-}
-
 // The two build dispatches (summed_area_build.comp): one invocation per row of the table into
-// the row-prefix table, then one per column into the table.
-// The table is tw × th texels.
-void build_lines(const Context& context, const ComputeProgram& program, const GlObject& depth_map,
-                 const GlObject& row_prefix, const GlObject& table, int tw, int th, GLenum format,
-                 glsl::vec2 unit_range) {
-  {
-    PassBindings bind(context);
-    bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_ROWS, 0, unit_range});
-    bind.texture(PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map);
-    bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix, GL_WRITE_ONLY, format);
-    program.dispatch(th, 1);
-  }
-  PassBindings bind(context);
-  bind.uniform(glsl::PnSummedAreaBuildParams{PN_SUMMED_AREA_COLUMNS, 0, unit_range});
-  bind.texture(PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix);
-  bind.image(PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table, GL_WRITE_ONLY, format);
-  program.dispatch(tw, 1);
+// the row-prefix table, then one per column into the table (both of the table's shape).
+void build_lines(const QueryDevice& device, const QueryProgram& program, const DeviceTexture& depth_map,
+                 const DeviceTexture& row_prefix, const DeviceTexture& table, glsl::vec2 unit_range) {
+  const glsl::PnSummedAreaBuildParams rows{PN_SUMMED_AREA_ROWS, 0, unit_range};
+  // The pass declares both inputs and reads one a dispatch; both are bound (Vulkan binds every
+  // resource a pipeline declares).
+  const std::vector<QueryTexture> inputs{{PN_SUMMED_AREA_BUILD_MAP_BINDING, depth_map},
+                                         {PN_SUMMED_AREA_BUILD_ROWS_BINDING, row_prefix}};
+  device.run(program, {inputs, {{PN_SUMMED_AREA_BUILD_TARGET_IMAGE, row_prefix}}, {}, query_block(rows)},
+             table.shape().height, 1);
+  const glsl::PnSummedAreaBuildParams columns{PN_SUMMED_AREA_COLUMNS, 0, unit_range};
+  device.run(program, {inputs, {{PN_SUMMED_AREA_BUILD_TARGET_IMAGE, table}}, {}, query_block(columns)},
+             table.shape().width, 1);
 }
 
 // The rectangles as a query image (origin x, y, width, height), each coordinate within ±2^24
@@ -95,9 +63,8 @@ Image rect_query_image(const std::vector<Rect>& rects) {
   return query_image(q);
 }
 
-// The depth map's size, refused unless 1 to kSummedAreaMaxSide texels a side.
-void table_map_size(const Context& context, const GlObject& depth_map, int& width, int& height) {
-  texture_size(context, depth_map, width, height);
+// Refuses a depth map of other than 1 to kSummedAreaMaxSide texels a side.
+void check_map_size(int width, int height) {
   if (width < 1 || height < 1 || width > kSummedAreaMaxSide || height > kSummedAreaMaxSide)
     throw Error("summed-area table of a " + std::to_string(width) + "x" + std::to_string(height) +
                 " map: expected 1 to " + std::to_string(kSummedAreaMaxSide) + " texels a side");
@@ -109,19 +76,18 @@ std::size_t SummedAreaPass::memory_bytes(int width, int height) {
   return 16 * static_cast<std::size_t>(width + 1) * static_cast<std::size_t>(height + 1);
 }
 
-SummedAreaPass::SummedAreaPass(const Context& context, const SourceTree& tree, int fraction_bits)
-    : context_(&context),
+SummedAreaPass::SummedAreaPass(const QueryDevice& device, const SourceTree& tree, int fraction_bits)
+    : device_(&device),
       fraction_bits_(fraction_bits),
-      build_(compile_pass(context, tree, "passes/summed_area_build.comp", fraction_define(fraction_bits))),
-      query_(context, tree, "passes/summed_area_query.comp", query_bindings(true), fraction_define(fraction_bits)) {}
+      build_(device.compile_query(tree, "passes/summed_area_build.comp", fraction_define(fraction_bits))),
+      query_(device, tree, "passes/summed_area_query.comp", query_bindings(true), fraction_define(fraction_bits)) {}
 
-SummedAreaTable SummedAreaPass::build(const GlObject& depth_map) const {
-  SummedAreaTable table;
-  table_map_size(*context_, depth_map, table.width, table.height);
-  const int tw = table.width + 1, th = table.height + 1;
-  const GlObject row_prefix = make_uint4_texture(*context_, tw, th);
-  table.texture = make_uint4_texture(*context_, tw, th);
-  build_lines(*context_, build_, depth_map, row_prefix, table.texture, tw, th, GL_RGBA32UI, {0.0f, 1.0f});
+SummedAreaTable SummedAreaPass::build(const DeviceTexture& depth_map, int width, int height) const {
+  check_map_size(width, height);
+  const TextureShape shape{TexelFormat::rgba32ui, width + 1, height + 1};
+  const std::unique_ptr<DeviceTexture> row_prefix = device_->make_texture(shape);
+  SummedAreaTable table{device_->make_texture(shape), width, height};
+  build_lines(*device_, *build_, depth_map, *row_prefix, *table.texture, {0.0f, 1.0f});
   return table;
 }
 
@@ -129,7 +95,7 @@ std::vector<SummedAreaQueryResult> SummedAreaPass::query(const SummedAreaTable& 
                                                          const std::vector<Rect>& rects) const {
   if (rects.empty()) return {};
   const QueryResults r =
-      query_.run(std::vector<Image>{rect_query_image(rects)}, {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, GlDeviceTexture(table.texture)}});
+      query_.run(std::vector<Image>{rect_query_image(rects)}, {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, *table.texture}});
   std::vector<SummedAreaQueryResult> out;
   for (size_t k = 0; k < rects.size(); ++k) {
     const Query q = r.at(0, k);
@@ -160,13 +126,13 @@ UnitRange unit_range(double near_depth, double far_depth) {
   return {static_cast<float>(near_depth), scale};
 }
 
-SummedAreaMomentsPass::SummedAreaMomentsPass(const Context& context, const SourceTree& tree, int moment_bits)
-    : context_(&context),
+SummedAreaMomentsPass::SummedAreaMomentsPass(const QueryDevice& device, const SourceTree& tree, int moment_bits)
+    : device_(&device),
+      tree_(&tree),
       moment_bits_(moment_bits),
-      build_(context, tree, "passes/summed_area_build.comp"),
-      fixed_query_(context, tree, "passes/summed_area_moments_query.comp", query_bindings(true),
+      fixed_query_(device, tree, "passes/summed_area_moments_query.comp", query_bindings(true),
                    defines(MomentsTableKind::fixed, "PN_SUMMED_AREA_QUERY_KIND"), QueryCompile::on_first_use),
-      float_query_(context, tree, "passes/summed_area_moments_query.comp", query_bindings(false),
+      float_query_(device, tree, "passes/summed_area_moments_query.comp", query_bindings(false),
                    defines(MomentsTableKind::floating, "PN_SUMMED_AREA_QUERY_KIND"), QueryCompile::on_first_use) {
   if (moment_bits < 0 || moment_bits > kSummedAreaMaxMomentBits)
     throw Error("summed-area moment bits " + std::to_string(moment_bits) + ": expected 0 to " +
@@ -179,33 +145,24 @@ std::vector<Define> SummedAreaMomentsPass::defines(MomentsTableKind kind, const 
   return d;
 }
 
-std::size_t SummedAreaMomentsPass::memory_bytes(const Context& context, int width, int height, MomentsTableKind kind) {
-  const std::size_t texel = kind == MomentsTableKind::fixed ? 16 : 4 * static_cast<std::size_t>(image_channels(context, 2));
+std::size_t SummedAreaMomentsPass::memory_bytes(const QueryDevice& device, int width, int height,
+                                                MomentsTableKind kind) {
+  const std::size_t texel = kind == MomentsTableKind::fixed ? 16 : 4 * static_cast<std::size_t>(device.storage_channels(2));
   return texel * static_cast<std::size_t>(width + 1) * static_cast<std::size_t>(height + 1);
 }
 
-MomentsTable SummedAreaMomentsPass::build(const GlObject& depth_map, MomentsTableKind kind, UnitRange range) const {
-  MomentsTable table;
-  table_map_size(*context_, depth_map, table.width, table.height);
-  table.kind = kind;
-  table.range = range;
-  const int tw = table.width + 1, th = table.height + 1;
+MomentsTable SummedAreaMomentsPass::build(const DeviceTexture& depth_map, int width, int height, MomentsTableKind kind,
+                                          UnitRange range) const {
+  check_map_size(width, height);
   const bool fixed = kind == MomentsTableKind::fixed;
-  const int channels = image_channels(*context_, 2);
-  const auto make = [&]() -> GlObject {
-    if (fixed) return make_uint4_texture(*context_, tw, th);
-    GLint max_size = 0;
-    context_->gl().GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-    if (tw > max_size || th > max_size)
-      throw Error("summed-area table " + std::to_string(tw) + "x" + std::to_string(th) +
-                  ": expected at most GL_MAX_TEXTURE_SIZE (" + std::to_string(max_size) + ") on each side");
-    return make_float_texture(*context_, tw, th, channels);
-  };
-  const GLenum format = fixed ? GL_RGBA32UI : float_format(channels);
-  const ComputeProgram& program = build_.get(defines(kind, "PN_SUMMED_AREA_BUILD_KIND"));
-  const GlObject row_prefix = make();
-  table.texture = make();
-  build_lines(*context_, program, depth_map, row_prefix, table.texture, tw, th, format, {range.offset, range.scale});
+  const TextureShape shape = fixed ? TextureShape{TexelFormat::rgba32ui, width + 1, height + 1}
+                                   : float_shape(width + 1, height + 1, device_->storage_channels(2));
+  std::unique_ptr<QueryProgram>& program = build_[fixed ? 0 : 1];
+  if (!program)
+    program = device_->compile_query(*tree_, "passes/summed_area_build.comp", defines(kind, "PN_SUMMED_AREA_BUILD_KIND"));
+  const std::unique_ptr<DeviceTexture> row_prefix = device_->make_texture(shape);
+  MomentsTable table{device_->make_texture(shape), width, height, kind, range};
+  build_lines(*device_, *program, depth_map, *row_prefix, *table.texture, {range.offset, range.scale});
   return table;
 }
 
@@ -215,7 +172,7 @@ std::vector<MomentsQueryResult> SummedAreaMomentsPass::query(const MomentsTable&
   const bool fixed = table.kind == MomentsTableKind::fixed;
   const QueryResults m = (fixed ? fixed_query_ : float_query_)
                              .run(std::vector<Image>{rect_query_image(rects)},
-                                  {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, GlDeviceTexture(table.texture)}});
+                                  {{PN_SUMMED_AREA_QUERY_TABLE_BINDING, *table.texture}});
   std::vector<MomentsQueryResult> out;
   for (size_t k = 0; k < rects.size(); ++k) {
     const Query r = m.at(0, k);

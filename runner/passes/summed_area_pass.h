@@ -4,11 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
-#include "gl/compute_program.h"
-#include "gl/pass_variants.h"
 #include "core/texel_rect.h"
+#include "device/query_device.h"
 #include "modules/summed_area.h"
 #include "passes/query_pass.h"
 #include "shader/source_tree.h"
@@ -18,7 +18,7 @@ namespace pn {
 // A built table: (width + 1) × (height + 1) texels of RGBA32UI (sum low word,
 // high word, finite count, 0) for a width × height map.
 struct SummedAreaTable {
-  GlObject texture;
+  std::unique_ptr<DeviceTexture> texture;
   int width = 0, height = 0;  // the map's size
 };
 
@@ -34,11 +34,11 @@ class SummedAreaPass {
  public:
   // Compiles both passes with PN_SUMMED_AREA_FRACTION_BITS `fraction_bits` (the module's default
   // unless given). Throws Error for fraction bits outside 0..52.
-  SummedAreaPass(const Context& context, const SourceTree& tree, int fraction_bits = kSummedAreaFractionBits);
+  SummedAreaPass(const QueryDevice& device, const SourceTree& tree, int fraction_bits = kSummedAreaFractionBits);
 
-  // `depth_map`: a single-channel float texture of any size N × M, 1 <= N, M <= kSummedAreaMaxSide
-  // (and N + 1, M + 1 within GL_MAX_TEXTURE_SIZE); throws Error otherwise.
-  SummedAreaTable build(const GlObject& depth_map) const;
+  // `depth_map`: a single-channel float texture of `width` × `height` (N × M), 1 <= N, M <=
+  // kSummedAreaMaxSide (and N + 1, M + 1 within the device's texture size); throws Error otherwise.
+  SummedAreaTable build(const DeviceTexture& depth_map, int width, int height) const;
 
   // One result per rectangle (origins and sizes within ±2^24, as they travel as floats).
   std::vector<SummedAreaQueryResult> query(const SummedAreaTable& table,
@@ -51,9 +51,9 @@ class SummedAreaPass {
   static std::size_t memory_bytes(int width, int height);
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   int fraction_bits_;
-  ComputeProgram build_;
+  std::unique_ptr<QueryProgram> build_;
   QueryPass query_;
 };
 
@@ -74,7 +74,7 @@ struct UnitRange {
 UnitRange unit_range(double near_depth, double far_depth);
 
 struct MomentsTable {
-  GlObject texture;
+  std::unique_ptr<DeviceTexture> texture;
   int width = 0, height = 0;  // the map's size; the table is one larger each way
   MomentsTableKind kind = MomentsTableKind::fixed;
   UnitRange range;
@@ -91,22 +91,24 @@ class SummedAreaMomentsPass {
   // Compiles the build pass per kind and the moments query pass per kind (on first use), with
   // PN_SUMMED_AREA_MOMENT_BITS `moment_bits` (the module's default unless given; throws Error
   // outside 0..PN_SUMMED_AREA_MAX_MOMENT_BITS).
-  SummedAreaMomentsPass(const Context& context, const SourceTree& tree, int moment_bits = kSummedAreaMomentBits);
+  SummedAreaMomentsPass(const QueryDevice& device, const SourceTree& tree, int moment_bits = kSummedAreaMomentBits);
 
-  // The moments table of a single-channel float depth texture, N × M with 1 <= N, M <=
-  // kSummedAreaMaxSide; throws Error otherwise.
-  MomentsTable build(const GlObject& depth_map, MomentsTableKind kind, UnitRange range) const;
+  // The moments table of a single-channel float depth texture of `width` × `height` (N × M), 1 <=
+  // N, M <= kSummedAreaMaxSide; throws Error otherwise.
+  MomentsTable build(const DeviceTexture& depth_map, int width, int height, MomentsTableKind kind,
+                     UnitRange range) const;
   std::vector<MomentsQueryResult> query(const MomentsTable& table, const std::vector<Rect>& rects) const;
 
   int moment_bits() const { return moment_bits_; }
   // GPU memory of a width × height map's table (the row-prefix table, as large, lives only while building).
-  static std::size_t memory_bytes(const Context& context, int width, int height, MomentsTableKind kind);
+  static std::size_t memory_bytes(const QueryDevice& device, int width, int height, MomentsTableKind kind);
 
  private:
   std::vector<Define> defines(MomentsTableKind kind, const char* kind_macro) const;
-  const Context* context_;
+  const QueryDevice* device_;
+  const SourceTree* tree_;
   int moment_bits_;
-  PassVariants build_;
+  mutable std::unique_ptr<QueryProgram> build_[2];  // by kind (fixed, floating), each compiled on first use
   QueryPass fixed_query_, float_query_;  // by PN_SUMMED_AREA_QUERY_KIND, each compiled on first use
 };
 

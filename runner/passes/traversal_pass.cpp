@@ -2,9 +2,7 @@
 
 #include "core/error.h"
 #include "core/query_grid.h"
-#include "gl/query_device_gl.h"
 #include "gl/std140.h"
-#include "gl/texture.h"
 
 namespace pn::glsl {
 #include "passes/traversal_query.h"
@@ -20,8 +18,8 @@ PN_STD140_SIZE(PnWindowScanParams, 16);
 
 namespace pn {
 
-GlObject upload_sample_table(const Context& context, const SampleTable& table) {
-  return upload_float_texture(context, table.image());
+std::unique_ptr<DeviceTexture> upload_sample_table(const QueryDevice& device, const SampleTable& table) {
+  return device.upload(table.image());
 }
 
 namespace {
@@ -38,8 +36,8 @@ std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries) {
 
 }  // namespace
 
-TraversalBatch::TraversalBatch(const Context& context, const std::vector<TraversalQuery>& queries)
-    : count_(queries.size()), batch_(context.make_batch(batch_inputs(queries), 2, 0)) {}
+TraversalBatch::TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries)
+    : count_(queries.size()), batch_(device.make_batch(batch_inputs(queries), 2, 0)) {}
 
 std::vector<TraversalResult> TraversalBatch::read() const {
   const QueryResults r = batch_->read();
@@ -51,15 +49,15 @@ std::vector<TraversalResult> TraversalBatch::read() const {
   return out;
 }
 
-TraversalPass::TraversalPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/traversal_query.comp",
+TraversalPass::TraversalPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/traversal_query.comp",
              {{PN_TRAVERSAL_QUERY_A_BINDING, PN_TRAVERSAL_QUERY_B_BINDING, PN_TRAVERSAL_QUERY_PLANE_BINDING},
               {PN_TRAVERSAL_QUERY_RESULT_C_BINDING, PN_TRAVERSAL_QUERY_RESULT_D_BINDING}}),
-      empty_array_(context.make_texture({TexelFormat::rgba32f, 1, 1, 1, 1, true})),
-      empty_2d_(context.make_texture({TexelFormat::rgba32f, 1, 1})),
-      empty_uint_(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32UI)) {}
+      empty_array_(device.make_texture({TexelFormat::rgba32f, 1, 1, 1, 1, true})),
+      empty_2d_(device.make_texture({TexelFormat::rgba32f, 1, 1})),
+      empty_uint_(device.make_texture({TexelFormat::rgba32ui, 1, 1})) {}
 
-void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject& sample_table,
+void TraversalPass::dispatch(const TraversalStructure& structure, const DeviceTexture& sample_table,
                              const TraversalBatch& batch, const TraversalSettings& settings) const {
   const bool mip = structure.mip != nullptr;
   if (mip == (structure.pyramid != nullptr) || (mip && settings.depth_sums == DepthSums::table && !structure.depth_sums))
@@ -76,13 +74,13 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const GlObject
                   {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? *empty_array_ : *structure.pyramid->texture},
                    {PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? *structure.mip->texture : *empty_2d_},
                    {PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING,
-                    GlDeviceTexture(mip && structure.depth_sums ? structure.depth_sums->texture : empty_uint_)},
-                   {PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, GlDeviceTexture(sample_table)}},
+                    mip && structure.depth_sums ? *structure.depth_sums->texture : *empty_uint_},
+                   {PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, sample_table}},
                   query_block(block));
 }
 
-WindowScanPass::WindowScanPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/window_scan.comp",
+WindowScanPass::WindowScanPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/window_scan.comp",
              {{PN_WINDOW_SCAN_A_BINDING, PN_WINDOW_SCAN_B_BINDING, PN_WINDOW_SCAN_PLANE_BINDING},
               {PN_WINDOW_SCAN_RESULT_C_BINDING, PN_WINDOW_SCAN_RESULT_D_BINDING}}) {}
 

@@ -43,12 +43,12 @@ struct TraversalStructure {
   const SummedAreaTable* depth_sums = nullptr;
 };
 
-GlObject upload_sample_table(const Context& context, const SampleTable& table);
+std::unique_ptr<DeviceTexture> upload_sample_table(const QueryDevice& device, const SampleTable& table);
 
 // Queries on the GPU and their result images; read() returns one result per query.
 class TraversalBatch {
  public:
-  TraversalBatch(const Context& context, const std::vector<TraversalQuery>& queries);
+  TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries);
   std::vector<TraversalResult> read() const;
 
  private:
@@ -60,25 +60,24 @@ class TraversalBatch {
 
 class TraversalPass {
  public:
-  TraversalPass(const Context& context, const SourceTree& tree);
+  TraversalPass(const QueryDevice& device, const SourceTree& tree);
   // Throws Error unless the structure holds a pyramid or a mip chain (with depth sums when wanted).
-  void dispatch(const TraversalStructure& structure, const GlObject& sample_table, const TraversalBatch& batch,
+  void dispatch(const TraversalStructure& structure, const DeviceTexture& sample_table, const TraversalBatch& batch,
                 const TraversalSettings& settings) const;
-  void dispatch(const DepthPyramid& pyramid, const GlObject& sample_table, const TraversalBatch& batch,
+  void dispatch(const DepthPyramid& pyramid, const DeviceTexture& sample_table, const TraversalBatch& batch,
                 const TraversalSettings& settings) const {
     dispatch(TraversalStructure{&pyramid}, sample_table, batch, settings);
   }
 
  private:
   QueryPass query_;
-  std::unique_ptr<DeviceTexture> empty_array_, empty_2d_;  // bound where the structure is the other one
-  GlObject empty_uint_;
+  std::unique_ptr<DeviceTexture> empty_array_, empty_2d_, empty_uint_;  // bound where the structure has none
 };
 
 // Brute force over each query's region (every texel fetched), into the same result layout.
 class WindowScanPass {
  public:
-  WindowScanPass(const Context& context, const SourceTree& tree);
+  WindowScanPass(const QueryDevice& device, const SourceTree& tree);
   void dispatch(const DepthPyramid& pyramid, const TraversalBatch& batch, float bias) const;
 
  private:

@@ -103,11 +103,6 @@ std::vector<Define> traverse_defines(const PcssBlock& b) {
           switch_define("PN_PCSS_LEAF_MODE", b.leafMode), switch_define("PN_PCSS_DEPTH_SUMS", b.depthSums)};
 }
 
-// `t`, or `empty` where the frame did not make it: every declared sampler has a texture.
-const GlObject& made_or(const GlObject& t, const GlObject& empty) {
-  return t.id() != 0 ? t : empty;
-}
-
 }  // namespace
 
 double PcssStats::representative_fraction() const {
@@ -134,7 +129,7 @@ PcssPipeline::PcssPipeline(const Context& context, const SourceTree& tree)
       poisson_(compile_pass(context, tree, "passes/pcss_poisson.comp")),
       compact_(compile_pass(context, tree, "passes/pcss_compact.comp")),
       shade_(compile_pass(context, tree, "passes/pcss_shade.comp")),
-      sample_table_(upload_sample_table(context, generate_sample_table(kSampleTableSeed))),
+      sample_table_(upload_float_texture(context, generate_sample_table(kSampleTableSeed).image())),
       blocker_disk_(upload_disk(context, PcssSettings{}.blocker_samples, kBlockerDiskSeed)),
       filter_disk_(upload_disk(context, PcssSettings{}.filter_samples, kFilterDiskSeed)),
       no_parents_(cleared_texture(context, 1, 1)),
@@ -164,7 +159,7 @@ void PcssPipeline::build_structure(PcssFrame& frame, const TechniqueInputs& inpu
       frame.mip = &frame.built_mip;
     }
     if (s.blockers == Estimator::traversal && s.depth_sums == DepthSums::table)
-      frame.depth_sums = depth_sums_.build(shadow_map);
+      frame.depth_sums = depth_sums_.build(GlDeviceTexture(shadow_map), n, n);
   }
 }
 
@@ -190,7 +185,7 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObj
   const auto bind_inputs = [&](PassBindings& bind) {
     bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? gl_texture(*frame.pyramid->texture) : no_pyramid_);
     bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? gl_texture(*frame.mip->texture) : no_mip_);
-    bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
+    bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, frame.depth_sums.texture ? gl_texture(*frame.depth_sums.texture) : no_depth_sums_);
     bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
     bind.texture(PN_PCSS_ENTRIES_BINDING, entries);
     bind.texture(PN_PCSS_PARENTS_BINDING, parents ? *parents : no_parents_);
@@ -294,7 +289,7 @@ void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const Techni
   bind.texture(PN_PCSS_MIP_BINDING, frame.mip ? gl_texture(*frame.mip->texture) : no_mip_);
   bind.texture(PN_PCSS_PYRAMID_BINDING, frame.pyramid ? gl_texture(*frame.pyramid->texture) : no_pyramid_);
   bind.texture(PN_PCSS_SAMPLE_TABLE_BINDING, sample_table_);
-  bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, made_or(frame.depth_sums.texture, no_depth_sums_));
+  bind.texture(PN_PCSS_DEPTH_SUMS_BINDING, frame.depth_sums.texture ? gl_texture(*frame.depth_sums.texture) : no_depth_sums_);
   bind.texture(PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map);
   // Only the Poisson call reads its disks; the others bind the defaults (a Vogel count may exceed the block's).
   const bool poisson = call == OneCall::poisson;
@@ -322,7 +317,7 @@ PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inp
   prepare_one_call(frame, call, inputs, bind);
   clock.stage(call == OneCall::hqepcss                ? "pyramid"
               : call != OneCall::fast                 ? "no structure"
-              : frame.depth_sums.texture.id() != 0    ? "mip chain + sums"
+              : frame.depth_sums.texture    ? "mip chain + sums"
                                                       : "mip chain");
   frame.work = record_work ? make_float_texture(*context_, size, size, 4) : cleared_texture(*context_, 1, 4);
   bind.image(PN_PCSS_WORK_IMAGE, frame.work, GL_WRITE_ONLY, GL_RGBA32F);
@@ -360,7 +355,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   // Step 1's structure: what Steps 3-5 read.
   build_structure(frame, inputs, n);
   clock.stage(settings.structure == Structure::pyramid ? "pyramid"
-              : frame.depth_sums.texture.id() != 0 ? "mip chain + sums"
+              : frame.depth_sums.texture ? "mip chain + sums"
                                                    : "mip chain");
 
   // Step 3.

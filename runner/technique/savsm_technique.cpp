@@ -65,7 +65,7 @@ TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool with_stat
   const int n = inputs.light.map_size;
   StageClock clock(*context_);
   clock.start();
-  const MomentsTable table = passes_->table.build(*inputs.shadow_map, settings_.table,
+  const MomentsTable table = passes_->table.build(GlDeviceTexture(*inputs.shadow_map), n, n, settings_.table,
                                                   unit_range(inputs.light.near_plane, inputs.light.far_plane));
   clock.stage("table");
   MinMaxMipChain own;
