@@ -46,11 +46,11 @@ TEST_CASE("negative: the adaptive radius without a filter map is refused with pn
   const auto& context = pn::test::gl_context();
   const pn::SourceTree tree(PENUMBRA_GLSL_DIR);
   const pn::BlurPass pass(context, tree);
-  const pn::GlObject source = pn::upload_float_texture(context, pn::Image(4, 4));
+  const std::unique_ptr<pn::DeviceTexture> source = context.upload(pn::Image(4, 4));
   pn::BlurParams params;
   params.adaptive = true;
-  CHECK_THROWS_AS(pass.run(source, nullptr, 4, 4, params), pn::Error);
-  CHECK_THROWS_WITH(pass.run(source, nullptr, 4, 4, params), Catch::Contains("needs the filter-region map"));
+  CHECK_THROWS_AS(pass.run(*source, nullptr, 4, 4, params), pn::Error);
+  CHECK_THROWS_WITH(pass.run(*source, nullptr, 4, 4, params), Catch::Contains("needs the filter-region map"));
 }
 
 TEST_CASE("blur with user parameters (r 5, sigma 2.5) equals the 2-D convolution") {

@@ -19,7 +19,6 @@
 #include "check/module_check.h"
 #include "core/integer_hash.h"
 #include "fixture/texture_fixture.h"
-#include "gl/texture.h"
 #include "passes/blur_pass.h"
 #include "pcss_regions.h"  // PN_REGION_LIT
 #include "reference/blur_reference.h"
@@ -136,16 +135,16 @@ void multi_channel_cases(const CheckEnvironment& env, const BlurPass& pass, std:
       for (size_t i = 0; i < std::size(fixtures::kTextureFixtures); ++i)
         for (const auto& size : fixtures::kCheckSizes) {
           const Image source = multi_channel_source(i, size.width, size.height, channels);
-          const GlObject source_texture = upload_float_texture(env.context(), source);
+          const std::unique_ptr<DeviceTexture> source_texture = env.device.upload(source);
           Image depth;
-          GlObject depth_texture;
+          std::unique_ptr<DeviceTexture> depth_texture;
           if (c.params.depth_aware) {
             depth = generate_fixture(find_fixture(c.depth_fixture), size.width, size.height);
-            depth_texture = upload_float_texture(env.context(), depth);
+            depth_texture = env.device.upload(depth);
           }
-          const FloatTexture result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr,
-                                               size.width, size.height, c.params, nullptr, channels);
-          const Image observed = channels_of(read_float_texture(env.context(), result), 0, channels);
+          const std::unique_ptr<DeviceTexture> result =
+              pass.run(*source_texture, depth_texture.get(), size.width, size.height, c.params, nullptr, channels);
+          const Image observed = channels_of(env.device.read_texture(*result), 0, channels);
           const Image expected = c.params.depth_aware ? blur_depth_aware_reference(source, depth, c.params)
                                                       : blur_reference(source, c.params);
           for (int ch = 0; ch < channels; ++ch) {
@@ -169,27 +168,26 @@ std::vector<CaseResult> run_blur_check(const CheckEnvironment& env) {
     env.options.blur->validate();
     cases = {{*env.options.blur, env.options.blur->depth_aware ? "step_edge" : nullptr}};
   }
-  const BlurPass pass(env.context(), env.tree);
+  const BlurPass pass(env.device, env.tree);
   std::vector<CaseResult> results;
   for (const BlurCase& c : cases) {
     for (const auto& fixture : fixtures::kTextureFixtures) {
       for (const auto& size : fixtures::kCheckSizes) {
         const Image source = generate_fixture(fixture, size.width, size.height);
-        const GlObject source_texture = upload_float_texture(env.context(), source);
+        const std::unique_ptr<DeviceTexture> source_texture = env.device.upload(source);
         Image depth, map;
-        GlObject depth_texture, map_texture;
+        std::unique_ptr<DeviceTexture> depth_texture, map_texture;
         if (c.params.depth_aware) {
           depth = generate_fixture(find_fixture(c.depth_fixture), size.width, size.height);
-          depth_texture = upload_float_texture(env.context(), depth);
+          depth_texture = env.device.upload(depth);
         }
         if (c.params.adaptive) {
           map = filter_sides(size.width, size.height, c.params.pixels_per_texel, c.params.radius);
-          map_texture = upload_float_texture(env.context(), map);
+          map_texture = env.device.upload(map);
         }
-        const FloatTexture result = pass.run(source_texture, c.params.depth_aware ? &depth_texture : nullptr,
-                                             size.width, size.height, c.params,
-                                             c.params.adaptive ? &map_texture : nullptr);
-        const Image observed = read_float_texture(env.context(), result);
+        const std::unique_ptr<DeviceTexture> result = pass.run(*source_texture, depth_texture.get(), size.width,
+                                                               size.height, c.params, map_texture.get());
+        const Image observed = env.device.read_texture(*result);
         const Image expected =
             c.params.adaptive      ? blur_adaptive_reference(source, map, c.params.depth_aware ? &depth : nullptr, c.params)
             : c.params.depth_aware ? blur_depth_aware_reference(source, depth, c.params)

@@ -4,6 +4,9 @@
 // CPU's definitions of the calls, for every pixel of each scene that sees a surface:
 // - pnExactPcss against exact PCSS brute force (exact_pcss_reference, double);
 // - pnPcf against 2×2 bilinear PCF (pcf_plane_reference, double);
+// - pnFastPcss with its exact settings (no refinement, exact regions, leaf 1, the summed-area
+//   table's blocker sums: exports/fast_pcss.comp with PN_EXPORT_SUM_TABLE) against exact PCSS
+//   brute force, over the min/max mip chain and the table built on the same executor;
 // each through both overloads (half the receivers through the receiverPlane one, with a zero
 // plane, which must give the same), the pixels within rounding of a decision left out and
 // counted. The shadow map and G-buffer are the CPU's ray casts (the shadow_map check holds the
@@ -18,16 +21,23 @@
 #include "scenes.h"
 #include "gl/std140.h"
 #include "passes/export_pass.h"
+#include "passes/minmax_mip_pass.h"
+#include "passes/summed_area_pass.h"
+#include "passes/traversal_pass.h"
 #include "pipeline/pcss_settings.h"
+#include "sampling/sample_table.h"
 #include "reference/pcss_reference.h"
 #include "scene/light_block.h"
 #include "scene/scene.h"
 
 namespace pn::glsl {
 #include "exports/exact_pcss.h"
+#include "exports/fast_pcss.h"
 #include "exports/pcf.h"
 PN_STD140_SIZE(PnExactPcssExport, 32);
 PN_STD140_OFFSET(PnExactPcssExport, bias, 24);
+PN_STD140_SIZE(PnFastPcssExport, 80);
+PN_STD140_OFFSET(PnFastPcssExport, grid, 64);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -71,11 +81,33 @@ CaseResult against(const std::string& name, const SceneImages& s, const PcssRefe
           compare(reference.visibility, seen, Tolerance::absolute(kFractionRounding))};
 }
 
+// pnFastPcss's settings that make it exact PCSS (fast_pcss.glsl "Exactness"), filter scale c.
+glsl::PnFastPcssExport exact_fast_block(const LightModel& light, float bias, float c) {
+  glsl::PnFastPcssExport b{};
+  set_light_fields(b, light);
+  b.bias = bias;
+  b.filterScale = c;
+  b.refineIterations = 0;
+  b.regionMode = PN_REGION_EXACT;
+  b.leafSide = 1;
+  b.leafDivisor = 0;
+  b.leafMode = PN_LEAF_SAMPLED;
+  b.blockerLeafMode = PN_FAST_PCSS_SAME_LEAF_MODE;
+  b.nodeBudget = PN_TRAVERSAL_NO_BUDGET;
+  b.depthSums = PN_DEPTH_SUMS_TABLE;
+  b.grid = 0;
+  return b;
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss");
   const ExportPass pcf(env.device, env.tree, "pcf");
+  const ExportPass fast(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
+  const MinMaxMipBuilder mips(env.device, env.tree);
+  const SummedAreaPass sums(env.device, env.tree);
+  const std::unique_ptr<DeviceTexture> table = upload_sample_table(env.device, generate_sample_table(kSampleTableSeed));
   const float bias = exact_pcss().bias;
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
@@ -92,13 +124,25 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, c, kPcssDecisionMargin);
       results.push_back(against(name + "exports/exact_pcss.comp (pnExactPcss, c " + format_number("%g", c) +
                                     ") vs exact PCSS brute force on the CPU",
-                                s, reference, exact.run(*map, s.receivers, query_block(block))));
+                                s, reference, exact.run({{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
+                                                        query_block(block))));
     }
+    const MinMaxMipChain mip = mips.build(*map, kMap);
+    const SummedAreaTable depth_sums = sums.build(*map, kMap, kMap);
+    const glsl::PnFastPcssExport fast_block = exact_fast_block(scene.light, bias, 1.0f);
+    results.push_back(
+        against(name + "exports/fast_pcss.comp (pnFastPcss: refine 0, exact regions, leaf 1, table sums) vs exact PCSS "
+                       "brute force on the CPU",
+                s, exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kPcssDecisionMargin),
+                fast.run({{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+                          {PN_EXPORT_SAMPLE_TABLE_BINDING, *table},
+                          {PN_EXPORT_SUM_TABLE_BINDING, *depth_sums.texture}},
+                         s.receivers, query_block(fast_block))));
     const glsl::PnPcfExport block{bias};
     const PcssReference reference =
         pcf_plane_reference(s.map, s.gbuffer, scene.light, bias, std::ldexp(1.0, -20), 0.0);
     results.push_back(against(name + "exports/pcf.comp (pnPcf) vs 2x2 bilinear PCF on the CPU", s, reference,
-                              pcf.run(*map, s.receivers, query_block(block))));
+                              pcf.run({{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers, query_block(block))));
   }
   return results;
 }

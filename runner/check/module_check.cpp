@@ -39,7 +39,7 @@ const Context& CheckEnvironment::context() const {
 const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
       {"blur", "separable Gaussian (two 1-D passes) vs direct 2-D convolution; depth-aware vs its 1-D definition",
-       &run_blur_check},
+       &run_blur_check, OffGl::every_case},
       {"depth_pyramid", "depth_pyramid levels vs window scans (min/max exact); any-square min/max vs square scans",
        &run_depth_pyramid_check, OffGl::every_case},
       {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
@@ -49,14 +49,14 @@ const std::vector<ModuleCheck>& module_checks() {
       {"traversal", "leaf 1 vs brute force (exact counts); sampled / min leaves and budgets vs the CPU recursion",
        &run_traversal_check, OffGl::every_case},
       {"reuse", "parent links, representatives and gathered values vs explicit parent pointers and root finding",
-       &run_reuse_check},
+       &run_reuse_check, OffGl::every_case},
       {"light_model", "blocker-window, search-width and penumbra widths vs runner/scene/light_model.h",
        &run_light_model_check, OffGl::every_case},
       {"shadow_map", "each scene's shadow map and G-buffer vs CPU ray casts through every texel / pixel centre",
        &run_shadow_map_check},
       {"pcss_regions", "search entries (lit decisions, refined sides), filter entries and their regions in every mode vs "
                        "the CPU definition; no lit receiver a texel can shadow (exact mode)",
-       &run_pcss_regions_check},
+       &run_pcss_regions_check, OffGl::query_cases, "the scene cases (maps and G-buffers from GL raster passes)"},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
        &run_pipeline_check},
       {"fast_pcss", "pnFastPcss, pnPoissonPcss, pnExactPcss, pnHqepcss as one call: compute pass vs the staged passes "
@@ -92,10 +92,10 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_exports_check, OffGl::every_case},
       {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
               "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
-       &run_vsm_check},
+       &run_vsm_check, OffGl::every_case},
       {"savsm", "summed-area variance soft shadows: squares, blocker, filter side, moments and visibility vs the "
                 "estimate in double from brute-force moments over the same rectangles; fetches per receiver (constant)",
-       &run_savsm_check},
+       &run_savsm_check, OffGl::every_case},
   };
   return checks;
 }

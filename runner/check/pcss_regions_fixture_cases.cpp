@@ -9,8 +9,6 @@
 #include "check/pcss_regions_cases.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
-#include "gl/query_device_gl.h"
-#include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
 
@@ -126,8 +124,8 @@ void synthetic_cases(std::vector<CaseResult>& results, const PcssRegionsQueryPas
 
 void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass, std::vector<CaseResult>& results,
                    SearchTally& tally) {
-  const DepthPyramidBuilder builder(env.context(), env.tree);
-  const MinMaxMipBuilder mip_builder(env.context(), env.tree);
+  const DepthPyramidBuilder builder(env.device, env.tree);
+  const MinMaxMipBuilder mip_builder(env.device, env.tree);
   std::string counts, refining;  // "0/1/8/100", "1/8/100"
   for (int i : iteration_counts()) {
     counts += (counts.empty() ? "" : "/") + std::to_string(i);
@@ -137,9 +135,9 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
   bool first = true;
   for (const FixtureMap& f : fixture_maps()) {
     const int n = f.map.width;
-    const GlObject texture = upload_float_texture(env.context(), f.map);
-    const DepthPyramid pyramid = builder.build(GlDeviceTexture(texture), n, n, f.max_level);
-    const MinMaxMipChain mip = mip_builder.build(GlDeviceTexture(texture), n);
+    const std::unique_ptr<DeviceTexture> texture = env.device.upload(f.map);
+    const DepthPyramid pyramid = builder.build(*texture, n, n, f.max_level);
+    const MinMaxMipChain mip = mip_builder.build(*texture, n);
     const DepthScan scan(f.map);
     const std::vector<RegionReceiver> receivers = fixture_receivers(f.map, seed++);
     EntryGroup groups[4];  // the three region modes over the pyramid, then the mip chain's search

@@ -48,7 +48,7 @@ SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int ma
 }  // namespace
 
 LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mode, const char* scene_name) {
-  const PcssRegionsQueryPass pass(env.context(), env.tree);
+  const PcssRegionsQueryPass pass(env.device, env.tree);
   const bool boxes = std::string(scene_name) == "boxes";
   const SceneData scene = boxes ? scene_data(env, scene_name, kBoxesMap, kBoxesScreen) : scene_data(env, scene_name);
   const PcssSettings defaults;

@@ -11,7 +11,6 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/seeded_random.h"
-#include "gl/texture.h"
 #include "passes/reuse_pass.h"
 #include "reference/reuse_reference.h"
 #include "reuse.h"  // glsl/reuse.h: the parent codes PN_REUSE_*
@@ -41,7 +40,7 @@ Image region_map(int w, int h, std::uint32_t seed) {
 }  // namespace
 
 std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
-  const ReusePass pass(env.context(), env.tree);
+  const ReusePass pass(env.device, env.tree);
   const Tolerance exact = Tolerance::exact();
   std::vector<CaseResult> results;
   struct Size { int w, h; };
@@ -51,15 +50,15 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
     Image values(size.w, size.h);
     SeededRandom random(seed++);
     for (float& v : values.texels) v = random.uniform_float(0.0f, 1.0f);
-    const GlObject entry_texture = upload_float_texture(env.context(), entries);
-    const GlObject value_texture = upload_float_texture(env.context(), values);
+    const std::unique_ptr<DeviceTexture> entry_texture = env.device.upload(entries);
+    const std::unique_ptr<DeviceTexture> value_texture = env.device.upload(values);
     for (ReuseParams params : {ReuseParams{0.0f, 0.1f, 0.1f, 4}, ReuseParams{0.0f, 0.1f, 0.1f, 2},
                                ReuseParams{0.0f, 0.1f, 0.1f, 8}, ReuseParams{0.0f, 0.0f, 0.0f, 4},
                                ReuseParams{0.5f, 0.3f, 0.3f, 4}}) {
-      const FloatTexture parents = pass.link(entry_texture, size.w, size.h, params);
-      const FloatTexture gathered = pass.gather(parents, value_texture, size.w, size.h, params.tile);
-      const Image observed_parents = read_float_texture(env.context(), parents);
-      const Image observed = read_float_texture(env.context(), gathered);
+      const std::unique_ptr<DeviceTexture> parents = pass.link(*entry_texture, size.w, size.h, params);
+      const std::unique_ptr<DeviceTexture> gathered = pass.gather(*parents, *value_texture, size.w, size.h, params.tile);
+      const Image observed_parents = env.device.read_texture(*parents);
+      const Image observed = env.device.read_texture(*gathered);
 
       const std::vector<int> parent = reuse_parents(entries, params);
       const std::vector<int> root = reuse_roots(parent);

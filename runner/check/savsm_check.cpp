@@ -49,8 +49,6 @@
 #include "core/format.h"
 #include "core/integer_hash.h"
 #include "core/query_grid.h"
-#include "gl/query_device_gl.h"
-#include "gl/texture.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/savsm_pass.h"
 #include "passes/summed_area_pass.h"
@@ -294,16 +292,16 @@ void push(std::vector<CaseResult>& results, const std::string& name, const Bound
 }  // namespace
 
 std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
-  const SummedAreaMomentsPass tables(env.context(), env.tree);
-  const MinMaxMipBuilder mips(env.context(), env.tree);
-  const SavsmPass pass(env.context(), env.tree);
+  const SummedAreaMomentsPass tables(env.device, env.tree);
+  const MinMaxMipBuilder mips(env.device, env.tree);
+  const SavsmQueryPass pass(env.device, env.tree);
   std::vector<CaseResult> results;
   for (const MapCase& mc : kMaps) {
     const int n = mc.size;
     const Image map = savsm_map(n);
-    const GlObject texture = upload_float_texture(env.context(), map);
-    const MomentsTable table = tables.build(GlDeviceTexture(texture), n, n, MomentsTableKind::fixed, unit_range(kNear, kFar));
-    const MinMaxMipChain mip = mips.build(GlDeviceTexture(texture), n);
+    const std::unique_ptr<DeviceTexture> texture = env.device.upload(map);
+    const MomentsTable table = tables.build(*texture, n, n, MomentsTableKind::fixed, unit_range(kNear, kFar));
+    const MinMaxMipChain mip = mips.build(*texture, n);
     const std::vector<SavsmReceiver> rs = receivers(map, mc.receivers);
     MomentsCache moments(map);
     for (const Config& config : configs()) {

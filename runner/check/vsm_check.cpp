@@ -43,8 +43,6 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "fixture/texture_fixture.h"
-#include "gl/query_device_gl.h"
-#include "gl/texture.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/vsm_pass.h"
 #include "reference/vsm_reference.h"
@@ -150,15 +148,15 @@ struct Gpu {
   DepthPyramidBuilder pyramid;
 
   Image read(const VsmMoments& m) const {
-    return channels_of(read_float_texture(env.context(), m.texture, m.size, m.size, m.stored), 0, m.channels);
+    return channels_of(env.device.read_texture(*m.texture), 0, m.channels);
   }
 
   GpuRun run(const Image& depth, const std::vector<VsmQuery>& queries, const VsmParams& params) const {
     const int n = depth.width;
-    const GlObject map = upload_float_texture(env.context(), depth);
-    const VsmMoments raw = moments.moments(map, n, n, params);
+    const std::unique_ptr<DeviceTexture> map = env.device.upload(depth);
+    const VsmMoments raw = moments.moments(*map, n, n, params);
     const VsmMoments blurred = moments.blurred(raw, params);
-    const DepthPyramid built = pyramid.build(GlDeviceTexture(map), n, n, 30);
+    const DepthPyramid built = pyramid.build(*map, n, n, 30);
     return {read(raw), read(blurred), query.run(blurred, built, queries, params)};
   }
 };
@@ -273,8 +271,8 @@ void bleeding_cases(const Gpu& gpu, const VsmParams& params, std::vector<CaseRes
 }  // namespace
 
 std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env) {
-  const Gpu gpu{env, VsmMomentsPass(env.context(), env.tree), VsmQueryPass(env.context(), env.tree),
-                DepthPyramidBuilder(env.context(), env.tree)};
+  const Gpu gpu{env, VsmMomentsPass(env.device, env.tree), VsmQueryPass(env.device, env.tree),
+                DepthPyramidBuilder(env.device, env.tree)};
   std::vector<CaseResult> results;
   const std::vector<Map> all = maps();
   for (VsmKind kind : kKinds) {

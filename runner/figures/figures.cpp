@@ -39,9 +39,9 @@ Canvas blur_figure(const Context& context, const SourceTree& tree) {
     if (!std::isfinite(holes.texels[i])) source.texels[i] = holes.texels[i];
   const Image depth = generate_fixture(find_fixture("step_edge"), n, n);
   const BlurPass pass(context, tree);
-  const GlObject src = upload_float_texture(context, source), dep = upload_float_texture(context, depth);
-  const Image plain = read_float_texture(context, pass.run(src, nullptr, n, n, {3, 1.0, false, 0.0}));
-  const Image aware = read_float_texture(context, pass.run(src, &dep, n, n, {3, 1.0, true, 0.05}));
+  const std::unique_ptr<DeviceTexture> src = context.upload(source), dep = context.upload(depth);
+  const Image plain = context.read_texture(*pass.run(*src, nullptr, n, n, {3, 1.0, false, 0.0}), 0, 0);
+  const Image aware = context.read_texture(*pass.run(*src, dep.get(), n, n, {3, 1.0, true, 0.05}), 0, 0);
   Canvas canvas(3 * n * scale + 4 * gap, n * scale + 2 * gap, kPaper);
   int x = gap;
   for (const Image* image : {&std::as_const(source), &plain, &aware}) {
@@ -185,14 +185,13 @@ Canvas reuse_figure(const Context& context, const SourceTree& tree) {
       entries.at(x, y, 3) = std::exp2(std::round(3.0f + std::sin((x - y) / 15.0f)));
     }
   const ReusePass pass(context, tree);
-  const GlObject entry_texture = upload_float_texture(context, entries);
-  const GlObject values = make_float_texture(context, n, n, 1);
+  const std::unique_ptr<DeviceTexture> entry_texture = context.upload(entries);
+  const std::unique_ptr<DeviceTexture> values = context.make_texture(float_shape(n, n, 1));
   Canvas canvas(2 * n * scale + 3 * gap, n * scale + 2 * gap, kPaper);
   int column = 0;
   for (int tile : {4, 2}) {
-    const GlObject parents = pass.link(entry_texture, n, n, {0.0f, 0.1f, 0.1f, tile});
-    const FloatTexture gathered = pass.gather(parents, values, n, n, tile);
-    const Image groups = read_float_texture(context, gathered);
+    const std::unique_ptr<DeviceTexture> parents = pass.link(*entry_texture, n, n, {0.0f, 0.1f, 0.1f, tile});
+    const Image groups = context.read_texture(*pass.gather(*parents, *values, n, n, tile), 0, 0);
     const int x0 = gap + column * (n * scale + gap);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {

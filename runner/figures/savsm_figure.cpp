@@ -45,7 +45,7 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   const MomentsTable table = SummedAreaMomentsPass(context, tree).build(GlDeviceTexture(texture), n, n, MomentsTableKind::fixed,
                                                                         unit_range(light.near_plane, light.far_plane));
   const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(GlDeviceTexture(texture), n);
-  const SavsmPass pass(context, tree);
+  const SavsmQueryPass pass(context, tree);
   std::vector<SavsmReceiver> receivers;
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) receivers.push_back({x + 0.5f, y + 0.5f, f.plane_depth});

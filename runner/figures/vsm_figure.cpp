@@ -26,7 +26,7 @@ Image plane_visibility(const Context& context, const SourceTree& tree, const Ima
   const int n = map.width;
   const GlObject texture = upload_float_texture(context, map);
   const VsmMomentsPass moments(context, tree);
-  const VsmMoments blurred = moments.blurred(moments.moments(texture, n, n, params), params);
+  const VsmMoments blurred = moments.blurred(moments.moments(GlDeviceTexture(texture), n, n, params), params);
   const DepthPyramid pyramid = DepthPyramidBuilder(context, tree).build(GlDeviceTexture(texture), n, n, 30);
   std::vector<VsmQuery> queries;
   for (int y = 0; y < n; ++y)

@@ -88,6 +88,17 @@ const GlObject& gl_texture(const DeviceTexture& texture) {
   return made_here<GlDeviceTexture>(texture, "texture").object();
 }
 
+FloatTexture GlDeviceTexture::take() {
+  if (texture_ != &owned_) throw Error("a GL texture borrowed by a device texture: it has no texture of its own to give");
+  return std::move(owned_);
+}
+
+FloatTexture take_float_texture(std::unique_ptr<DeviceTexture> texture) {
+  auto* gl = dynamic_cast<GlDeviceTexture*>(texture.get());
+  if (gl == nullptr) throw Error("a texture made on another device than this GL context");
+  return gl->take();
+}
+
 int Context::storage_channels(int channels) const { return image_channels(*this, channels); }
 
 std::unique_ptr<DeviceTexture> Context::make_texture(const TextureShape& shape) const {

@@ -19,12 +19,16 @@ class GlDeviceTexture final : public DeviceTexture {
   explicit GlDeviceTexture(const GlObject& texture, const TextureShape& shape = {})
       : DeviceTexture(shape), texture_(&texture) {}
   GlDeviceTexture(GlObject&&, const TextureShape& = {}) = delete;  // would borrow a temporary
-  explicit GlDeviceTexture(FloatTexture owned)
+  // Owns `owned` (an rvalue: a FloatTexture lvalue is borrowed by the constructor above).
+  explicit GlDeviceTexture(FloatTexture&& owned)
       : DeviceTexture(float_shape(owned.width, owned.height, owned.channels)), owned_(std::move(owned)),
         texture_(&owned_) {}
-  GlDeviceTexture(FloatTexture owned, const TextureShape& shape)
+  GlDeviceTexture(FloatTexture&& owned, const TextureShape& shape)
       : DeviceTexture(shape), owned_(std::move(owned)), texture_(&owned_) {}
   const GlObject& object() const { return *texture_; }
+  // The texture this object owns, moved out (for GL code that keeps a pass's result as a
+  // FloatTexture). Throws Error for one that borrows.
+  FloatTexture take();
 
  private:
   FloatTexture owned_;
@@ -42,6 +46,8 @@ class GlDeviceBuffer final : public DeviceBuffer {
 
 // The GL texture behind a DeviceTexture of a GL context. Throws Error for one made elsewhere.
 const GlObject& gl_texture(const DeviceTexture& texture);
+// A texture made on a GL context (make_texture, upload, a pass's result) as the FloatTexture it owns.
+FloatTexture take_float_texture(std::unique_ptr<DeviceTexture> texture);
 
 class GlQueryProgram final : public QueryProgram {
  public:

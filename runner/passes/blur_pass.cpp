@@ -4,9 +4,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "gl/pass_bindings.h"
+#include "gl/pass_variants.h"
 #include "gl/std140.h"
-#include "gl/texture.h"
 
 namespace pn::glsl {
 #include "passes/blur.h"
@@ -18,8 +17,7 @@ PN_STD140_OFFSET(PnBlurPassParams, pixelsPerTexel, 28);
 
 namespace pn {
 
-BlurPass::BlurPass(const Context& context, const SourceTree& tree)
-    : context_(&context), variants_(context, tree, "passes/blur.comp") {
+BlurPass::BlurPass(const QueryDevice& device, const SourceTree& tree) : device_(&device), tree_(&tree) {
   for (int v = 0; v < 4; ++v) {  // the single-channel variants now, so a copy that does not compile fails here
     BlurParams params;
     params.depth_aware = (v & 2) != 0;
@@ -28,26 +26,30 @@ BlurPass::BlurPass(const Context& context, const SourceTree& tree)
   }
 }
 
-const ComputeProgram& BlurPass::program(const BlurParams& params, int channels) const {
+const QueryProgram& BlurPass::program(const BlurParams& params, int channels) const {
   const auto truth = [](bool b) { return std::string(b ? "true" : "false"); };
-  return variants_.get({{"PN_BLUR_PASS_DEPTH_AWARE", truth(params.depth_aware)},
-                        {"PN_BLUR_PASS_ADAPTIVE", truth(params.adaptive)},
-                        {"PN_BLUR_PASS_CHANNELS", std::to_string(channels)}});
+  const std::vector<Define> defines{{"PN_BLUR_PASS_DEPTH_AWARE", truth(params.depth_aware)},
+                                    {"PN_BLUR_PASS_ADAPTIVE", truth(params.adaptive)},
+                                    {"PN_BLUR_PASS_CHANNELS", std::to_string(channels)}};
+  std::unique_ptr<QueryProgram>& made = variants_[define_key(defines)];
+  if (!made) made = device_->compile_query(*tree_, "passes/blur.comp", defines);
+  return *made;
 }
 
-FloatTexture BlurPass::run(const GlObject& source, const GlObject* depth, int width, int height,
-                           const BlurParams& params, const GlObject* filter_map, int channels) const {
+std::unique_ptr<DeviceTexture> BlurPass::run(const DeviceTexture& source, const DeviceTexture* depth, int width,
+                                             int height, const BlurParams& params, const DeviceTexture* filter_map,
+                                             int channels) const {
   params.validate();
   if (channels != 1 && channels != 2 && channels != 4)
     throw Error("blur: " + std::to_string(channels) + " channels: expected 1, 2 or 4");
   if (params.adaptive && filter_map == nullptr)
     throw Error("blur: the adaptive radius needs the filter-region map (none given)");
-  const ComputeProgram& pass = program(params, channels);
-  const int stored = image_channels(*context_, channels);
-  GlObject temporary = make_float_texture(*context_, width, height, stored);
-  FloatTexture target = make_float_texture(*context_, width, height, stored);
+  const QueryProgram& pass = program(params, channels);
+  const TextureShape shape = float_shape(width, height, device_->storage_channels(channels));
+  const std::unique_ptr<DeviceTexture> temporary = device_->make_texture(shape);
+  std::unique_ptr<DeviceTexture> target = device_->make_texture(shape);
 
-  auto one_pass = [&](const GlObject& in, const GlObject& out, int ax, int ay) {
+  auto one_pass = [&](const DeviceTexture& in, const DeviceTexture& out, int ax, int ay) {
     const glsl::PnBlurPassParams block{{ax, ay},
                                        params.radius,
                                        static_cast<float>(params.sigma),
@@ -55,16 +57,17 @@ FloatTexture BlurPass::run(const GlObject& source, const GlObject* depth, int wi
                                        static_cast<float>(params.depth_tolerance),
                                        params.adaptive ? 1 : 0,
                                        params.pixels_per_texel};
-    PassBindings bind(*context_);
-    bind.uniform(block);
-    bind.texture(PN_BLUR_SOURCE_BINDING, in);
-    bind.texture(PN_BLUR_DEPTH_BINDING, depth != nullptr ? *depth : source);
-    bind.texture(PN_BLUR_FILTER_MAP_BINDING, params.adaptive ? *filter_map : source);
-    bind.image(PN_BLUR_TARGET_BINDING, out, GL_WRITE_ONLY, float_format(stored));
-    pass.dispatch(width, height);
+    device_->run(pass,
+                 {{{PN_BLUR_SOURCE_BINDING, in},
+                   {PN_BLUR_DEPTH_BINDING, depth != nullptr ? *depth : source},
+                   {PN_BLUR_FILTER_MAP_BINDING, params.adaptive ? *filter_map : source}},
+                  {{PN_BLUR_TARGET_BINDING, out}},
+                  {},
+                  query_block(block)},
+                 width, height);
   };
-  one_pass(source, temporary, 1, 0);
-  one_pass(temporary, target, 0, 1);
+  one_pass(source, *temporary, 1, 0);
+  one_pass(*temporary, *target, 0, 1);
   return target;
 }
 

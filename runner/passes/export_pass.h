@@ -18,10 +18,12 @@ struct ExportReceiver {
 
 class ExportPass {
  public:
-  // `module`: "pcf", "exact_pcss" (exports/<module>.comp).
-  ExportPass(const QueryDevice& device, const SourceTree& tree, const std::string& module);
-  // The call's visibility for each receiver, reading `depth_map` with the export's `block`.
-  std::vector<float> run(const DeviceTexture& depth_map, const std::vector<ExportReceiver>& receivers,
+  // `module`: "pcf", "exact_pcss", "fast_pcss" (exports/<module>.comp), compiled with `defines`.
+  ExportPass(const QueryDevice& device, const SourceTree& tree, const std::string& module,
+             const std::vector<Define>& defines = {});
+  // The call's visibility for each receiver, reading `textures` (the depth map, or the structures
+  // the call reads, at the export's bindings) with the export's `block`.
+  std::vector<float> run(const std::vector<QueryTexture>& textures, const std::vector<ExportReceiver>& receivers,
                          const QueryBlock& block) const;
 
  private:

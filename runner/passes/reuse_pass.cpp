@@ -1,8 +1,6 @@
 #include "passes/reuse_pass.h"
 
-#include "gl/pass_bindings.h"
 #include "gl/std140.h"
-#include "gl/texture.h"
 
 namespace pn::glsl {
 #include "passes/reuse_gather.h"
@@ -15,32 +13,33 @@ PN_STD140_SIZE(PnReuseGatherParams, 16);
 
 namespace pn {
 
-ReusePass::ReusePass(const Context& context, const SourceTree& tree)
-    : context_(&context),
-      link_(compile_pass(context, tree, "passes/reuse_link.comp")),
-      gather_(compile_pass(context, tree, "passes/reuse_gather.comp")) {}
+ReusePass::ReusePass(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device),
+      link_(device.compile_query(tree, "passes/reuse_link.comp", {})),
+      gather_(device.compile_query(tree, "passes/reuse_gather.comp", {})) {}
 
-FloatTexture ReusePass::link(const GlObject& entries, int width, int height, const ReuseParams& params) const {
+std::unique_ptr<DeviceTexture> ReusePass::link(const DeviceTexture& entries, int width, int height,
+                                               const ReuseParams& params) const {
   params.validate();
-  FloatTexture parents = make_float_texture(*context_, width, height, 1);
+  std::unique_ptr<DeviceTexture> parents = device_->make_texture(float_shape(width, height, 1));
   const glsl::PnReuseParams block{params.sigma1, params.sigma2, params.sigma3, params.tile};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_REUSE_LINK_ENTRIES_BINDING, entries);
-  bind.image(PN_REUSE_LINK_PARENTS_BINDING, parents, GL_WRITE_ONLY, GL_R32F);
-  link_.dispatch(width, height);
+  device_->run(*link_,
+               {{{PN_REUSE_LINK_ENTRIES_BINDING, entries}}, {{PN_REUSE_LINK_PARENTS_BINDING, *parents}}, {},
+                query_block(block)},
+               width, height);
   return parents;
 }
 
-FloatTexture ReusePass::gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const {
-  FloatTexture gathered = make_float_texture(*context_, width, height, 4);
+std::unique_ptr<DeviceTexture> ReusePass::gather(const DeviceTexture& parents, const DeviceTexture& values, int width,
+                                                 int height, int tile) const {
+  std::unique_ptr<DeviceTexture> gathered = device_->make_texture(float_shape(width, height, 4));
   const glsl::PnReuseGatherParams block{tile};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_REUSE_GATHER_PARENTS_BINDING, parents);
-  bind.texture(PN_REUSE_GATHER_VALUES_BINDING, values);
-  bind.image(PN_REUSE_GATHER_RESULT_BINDING, gathered, GL_WRITE_ONLY, GL_RGBA32F);
-  gather_.dispatch(width, height);
+  device_->run(*gather_,
+               {{{PN_REUSE_GATHER_PARENTS_BINDING, parents}, {PN_REUSE_GATHER_VALUES_BINDING, values}},
+                {{PN_REUSE_GATHER_RESULT_BINDING, *gathered}},
+                {},
+                query_block(block)},
+               width, height);
   return gathered;
 }
 

@@ -3,8 +3,9 @@
 // it takes from it.
 #pragma once
 
-#include "gl/compute_program.h"
-#include "gl/texture.h"
+#include <memory>
+
+#include "device/query_device.h"
 #include "modules/reuse.h"
 #include "shader/source_tree.h"
 
@@ -12,18 +13,21 @@ namespace pn {
 
 class ReusePass {
  public:
-  ReusePass(const Context& context, const SourceTree& tree);
+  // Runs on any executor (device/query_device.h).
+  ReusePass(const QueryDevice& device, const SourceTree& tree);
 
   // R32F parent codes (PN_REUSE_NONE, PN_REUSE_LEFT, PN_REUSE_TOP: glsl/reuse.h) of a width × height
   // RGBA32F (d, x, y, s) entry texture.
-  FloatTexture link(const GlObject& entries, int width, int height, const ReuseParams& params) const;
+  std::unique_ptr<DeviceTexture> link(const DeviceTexture& entries, int width, int height,
+                                      const ReuseParams& params) const;
 
   // RGBA32F (representative x, y, value at the representative, 0) for every pixel.
-  FloatTexture gather(const GlObject& parents, const GlObject& values, int width, int height, int tile) const;
+  std::unique_ptr<DeviceTexture> gather(const DeviceTexture& parents, const DeviceTexture& values, int width,
+                                        int height, int tile) const;
 
  private:
-  const Context* context_;
-  ComputeProgram link_, gather_;
+  const QueryDevice* device_;
+  std::unique_ptr<QueryProgram> link_, gather_;
 };
 
 }  // namespace pn

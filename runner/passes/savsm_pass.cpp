@@ -61,11 +61,12 @@ Rect rect_of(const Query& q) {
 }  // namespace
 
 SavsmPass::SavsmPass(const Context& context, const SourceTree& tree)
-    : context_(&context),
-      shade_(context, tree, "passes/savsm_shade", PN_SAVSM_VISIBILITY_IMAGE),
-      fixed_query_(context, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FIXED),
+    : context_(&context), shade_(context, tree, "passes/savsm_shade", PN_SAVSM_VISIBILITY_IMAGE) {}
+
+SavsmQueryPass::SavsmQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : fixed_query_(device, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FIXED),
                    QueryCompile::on_first_use),
-      float_query_(context, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FLOAT),
+      float_query_(device, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FLOAT),
                    QueryCompile::on_first_use) {}
 
 FloatTexture SavsmPass::shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer,
@@ -81,7 +82,7 @@ FloatTexture SavsmPass::shade(const MomentsTable& table, const GlObject& mip, co
   return shade_.run(stage, table_define(table), screen_size, bind);
 }
 
-std::vector<SavsmQueryResult> SavsmPass::query(const MomentsTable& table, const DeviceTexture& mip,
+std::vector<SavsmQueryResult> SavsmQueryPass::query(const MomentsTable& table, const DeviceTexture& mip,
                                                const std::vector<SavsmReceiver>& receivers, const LightModel& light,
                                                const SavsmSettings& settings) const {
   check_sizes(table, light);

@@ -40,14 +40,22 @@ class SavsmPass {
                      const LightModel& light, const SavsmSettings& settings,
                      ShadeStage stage = ShadeStage::compute) const;
 
+
+ private:
+  const Context* context_;
+  ShadePass shade_;  // by PN_SAVSM_TABLE
+};
+
+// savsm.glsl's pnSavsm over a batch of receivers (the check's query pass), on any executor.
+class SavsmQueryPass {
+ public:
+  SavsmQueryPass(const QueryDevice& device, const SourceTree& tree);
   // One result per receiver (u, v in texels, linear light depth).
   std::vector<SavsmQueryResult> query(const MomentsTable& table, const DeviceTexture& mip,
                                       const std::vector<SavsmReceiver>& receivers, const LightModel& light,
                                       const SavsmSettings& settings) const;
 
  private:
-  const Context* context_;
-  ShadePass shade_;  // by PN_SAVSM_TABLE
   QueryPass fixed_query_, float_query_;  // PN_SAVSM_TABLE fixed, float
 };
 

@@ -28,35 +28,37 @@ PN_STD140_OFFSET(PnVsmShadeParams, bleedingReduction, 28);
 
 namespace pn {
 
-VsmMomentsPass::VsmMomentsPass(const Context& context, const SourceTree& tree)
-    : context_(&context), variants_(context, tree, "passes/vsm_moments.comp"), blur_(context, tree) {}
+VsmMomentsPass::VsmMomentsPass(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device), tree_(&tree), blur_(device, tree) {}
 
-VsmMoments VsmMomentsPass::moments(const GlObject& depth_map, int width, int height, const VsmParams& params) const {
+VsmMoments VsmMomentsPass::moments(const DeviceTexture& depth_map, int width, int height,
+                                   const VsmParams& params) const {
   params.validate();
   validate_shadow_map_size(width, height);
-  const ComputeProgram& program = variants_.get({{"PN_VSM_MOMENTS_KIND", std::to_string(static_cast<int>(params.kind))}});
+  const int kind = static_cast<int>(params.kind);
+  std::unique_ptr<QueryProgram>& program = variants_[kind];
+  if (!program)
+    program = device_->compile_query(*tree_, "passes/vsm_moments.comp", {{"PN_VSM_MOMENTS_KIND", std::to_string(kind)}});
   const int channels = vsm_moment_channels(params.kind);
   // The shader writes rgba32f for EVSM-4 and, on ES, for every kind (no rg32f image format there).
-  const int stored = channels == 4 || context_->is_es() ? 4 : 2;
-  VsmMoments out{make_float_texture(*context_, width, height, stored), width, channels, stored};
+  const int stored = device_->storage_channels(channels);
+  VsmMoments out{device_->make_texture(float_shape(width, height, stored)), width, channels, stored};
   const glsl::PnVsmMomentsParams block{{params.near_depth, params.far_depth},
                                        {params.positive_exponent, params.negative_exponent}};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_VSM_MOMENTS_MAP_BINDING, depth_map);
-  bind.image(PN_VSM_MOMENTS_TARGET_BINDING, out.texture, GL_WRITE_ONLY, float_format(stored));
-  program.dispatch(width, height);
+  device_->run(*program,
+               {{{PN_VSM_MOMENTS_MAP_BINDING, depth_map}}, {{PN_VSM_MOMENTS_TARGET_BINDING, *out.texture}}, {},
+                query_block(block)},
+               width, height);
   return out;
 }
 
 VsmMoments VsmMomentsPass::blurred(const VsmMoments& moments, const VsmParams& params) const {
-  GlObject texture = blur_.run(moments.texture, nullptr, moments.size, moments.size, params.blur, nullptr,
-                               moments.channels);
-  return {std::move(texture), moments.size, moments.channels, image_channels(*context_, moments.channels)};
+  return {blur_.run(*moments.texture, nullptr, moments.size, moments.size, params.blur, nullptr, moments.channels),
+          moments.size, moments.channels, device_->storage_channels(moments.channels)};
 }
 
-VsmQueryPass::VsmQueryPass(const Context& context, const SourceTree& tree)
-    : query_(context, tree, "passes/vsm_query.comp", {{PN_VSM_QUERY_QUERIES_BINDING}, {PN_VSM_QUERY_RESULTS_IMAGE}}) {}
+VsmQueryPass::VsmQueryPass(const QueryDevice& device, const SourceTree& tree)
+    : query_(device, tree, "passes/vsm_query.comp", {{PN_VSM_QUERY_QUERIES_BINDING}, {PN_VSM_QUERY_RESULTS_IMAGE}}) {}
 
 std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyramid& pyramid,
                                      const std::vector<VsmQuery>& queries, const VsmParams& params) const {
@@ -71,7 +73,7 @@ std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyram
                                      params.min_variance,
                                      params.bleeding_reduction};
   return query_
-      .run({q}, {{PN_VSM_QUERY_MOMENTS_BINDING, GlDeviceTexture(moments.texture)},
+      .run({q}, {{PN_VSM_QUERY_MOMENTS_BINDING, *moments.texture},
                  {PN_VSM_QUERY_PYRAMID_BINDING, *pyramid.texture}},
            query_block(block))
       .list(0, queries.size());
@@ -91,7 +93,7 @@ FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& py
                                      params.bleeding_reduction};
   PassBindings bind(*context_);
   bind.uniform(block);
-  bind.texture(PN_VSM_SHADE_MOMENTS_BINDING, moments.texture);
+  bind.texture(PN_VSM_SHADE_MOMENTS_BINDING, gl_texture(*moments.texture));
   bind.texture(PN_VSM_SHADE_PYRAMID_BINDING, gl_texture(*pyramid.texture));
   bind.texture(PN_VSM_SHADE_GBUFFER_BINDING, gbuffer);
   return shade_.run(stage, {{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}}, screen_size, bind);

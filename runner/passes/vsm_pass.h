@@ -17,10 +17,10 @@
 
 namespace pn {
 
-// A moments texture: vsm_moment_channels(kind) floats a texel, stored as image_channels of them
-// (RGBA32F for two on ES).
+// A moments texture: vsm_moment_channels(kind) floats a texel, stored as the device's
+// storage_channels of them (RGBA32F for two on ES).
 struct VsmMoments {
-  GlObject texture;
+  std::unique_ptr<DeviceTexture> texture;
   int size = 0;
   int channels = 2;  // logical: 2 or 4
   int stored = 2;    // the texture's channels
@@ -28,18 +28,19 @@ struct VsmMoments {
 
 class VsmMomentsPass {
  public:
-  // Compiles vsm_moments.comp once per kind (on first use) and the blur pass.
-  VsmMomentsPass(const Context& context, const SourceTree& tree);
+  // Compiles vsm_moments.comp once per kind (on first use) and the blur pass; on any executor.
+  VsmMomentsPass(const QueryDevice& device, const SourceTree& tree);
 
   // The moments of every texel of an N×N R32F depth map (throws Error for a non-square map or
   // invalid params).
-  VsmMoments moments(const GlObject& depth_map, int width, int height, const VsmParams& params) const;
+  VsmMoments moments(const DeviceTexture& depth_map, int width, int height, const VsmParams& params) const;
   // The moments blurred with params.blur (blur.glsl over 2 or 4 channels).
   VsmMoments blurred(const VsmMoments& moments, const VsmParams& params) const;
 
  private:
-  const Context* context_;
-  PassVariants variants_;  // by PN_VSM_MOMENTS_KIND
+  const QueryDevice* device_;
+  const SourceTree* tree_;
+  mutable std::unique_ptr<QueryProgram> variants_[3];  // by PN_VSM_MOMENTS_KIND, each compiled on first use
   BlurPass blur_;
 };
 
@@ -51,7 +52,7 @@ struct VsmQuery {
 // (visibility, Chebyshev bound p, reduced p, depth-range bound code) per query.
 class VsmQueryPass {
  public:
-  VsmQueryPass(const Context& context, const SourceTree& tree);
+  VsmQueryPass(const QueryDevice& device, const SourceTree& tree);
   std::vector<Query> run(const VsmMoments& moments, const DepthPyramid& pyramid, const std::vector<VsmQuery>& queries,
                          const VsmParams& params) const;
 

@@ -169,7 +169,7 @@ GlObject PcssPipeline::link(const GlObject& entries, int size, int tile, const P
   params.sigma2 = s.sigma2;
   params.sigma3 = s.sigma3;
   params.tile = tile;
-  return reuse_.link(entries, size, size, params);
+  return take_float_texture(reuse_.link(GlDeviceTexture(entries), size, size, params));
 }
 
 void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const GlObject& entries, const GlObject* parents,
@@ -418,8 +418,10 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
   // Step 6.
   if (settings.blur) {
     frame.settings.blur_params.pixels_per_texel = static_cast<float>(size / static_cast<double>(n));  // adaptive radius's k
-    frame.blurred = blur_.run(frame.visibility, &frame.receiver_depth, size, size, frame.settings.blur_params,
-                              &frame.filter_map);
+    const GlDeviceTexture visibility(frame.visibility), receiver_depth(frame.receiver_depth),
+        filter_map(frame.filter_map);
+    frame.blurred = take_float_texture(
+        blur_.run(visibility, &receiver_depth, size, size, frame.settings.blur_params, &filter_map));
   }
   clock.stage("6 blur");
   frame.stages = clock.read();

@@ -73,7 +73,7 @@ TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool with_stats)
   params.far_depth = static_cast<float>(inputs.light.far_plane);
   StageClock clock(*context_);
   clock.start();
-  const VsmMoments moments = passes_->moments.moments(*inputs.shadow_map, n, n, params);
+  const VsmMoments moments = passes_->moments.moments(GlDeviceTexture(*inputs.shadow_map), n, n, params);
   clock.stage("moments");
   const VsmMoments blurred = passes_->moments.blurred(moments, params);
   clock.stage("blur");
