@@ -53,7 +53,7 @@ const std::vector<ModuleCheck>& module_checks() {
       {"light_model", "blocker-window, search-width and penumbra widths vs runner/scene/light_model.h",
        &run_light_model_check, OffGl::every_case},
       {"shadow_map", "each scene's shadow map and G-buffer vs CPU ray casts through every texel / pixel centre",
-       &run_shadow_map_check},
+       &run_shadow_map_check, OffGl::every_case},
       {"pcss_regions", "search entries (lit decisions, refined sides), filter entries and their regions in every mode vs "
                        "the CPU definition; no lit receiver a texel can shadow (exact mode)",
        &run_pcss_regions_check, OffGl::query_cases, "the scene cases (maps and G-buffers from GL raster passes)"},

@@ -22,8 +22,8 @@ constexpr double kSurface = 1e-3;   // world units: a float G-buffer value back-
 }  // namespace
 
 std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env) {
-  const ShadowMapRenderer shadow_map(env.context(), env.tree);
-  const GBufferRenderer gbuffer(env.context(), env.tree);
+  const ShadowMapRenderer shadow_map(env.device, env.tree);
+  const GBufferRenderer gbuffer(env.device, env.tree);
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
     for (int n : {100, 256}) {
@@ -32,7 +32,7 @@ std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env) {
       Image expected(n, n);
       for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) expected.at(x, y) = ray_cast_light_depth(scene, x, y);
-      const Image observed = read_float_texture(env.context(), shadow_map.render(scene));
+      const Image observed = env.device.read_texture(*shadow_map.render_texture(scene, scene.map_light()));
       for (CaseResult& c : compare_raster(name + " shadow map: light depth vs ray cast", expected, observed, kRelative,
                                           within_neighbour_range(expected, observed, kSliver),
                                           "lies within its 3x3 rays' depths"))
@@ -46,7 +46,7 @@ std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env) {
           const float v[4] = {float(r.u), float(r.v), float(r.depth), r.valid ? 1.0f : 0.0f};
           for (int c = 0; c < 4; ++c) receivers.at(x, y, c) = r.valid ? v[c] : 0.0f;
         }
-      const Image seen = read_float_texture(env.context(), gbuffer.render(scene, screen));
+      const Image seen = env.device.read_texture(*gbuffer.render_texture(scene, screen, 0.0f, scene.map_light()));
       // On a silhouette the pixel may see another surface than the ray through its
       // centre: background only if a neighbouring ray does, else a point on a box
       // that the camera sees within one pixel of the centre.

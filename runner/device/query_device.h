@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "core/image.h"
 #include "core/query_grid.h"
 #include "shader/loop_guard.h"
@@ -203,6 +205,19 @@ class QueryDevice {
   // with `resources` bound, and makes its writes visible to what follows. Throws Error naming
   // the pass for a resource its shader uses and `resources` lacks, or one made elsewhere.
   virtual void run(const QueryProgram& program, const PassResources& resources, int width, int height) const = 0;
+
+  // The raster passes (the shadow map, the G-buffer): `vertex` and `fragment` (paths under the glsl
+  // root) as one program whose vertex stage reads a world position at PN_SCENE_POSITION_LOCATION
+  // and whose fragment stage writes a `target` texel at PN_SCENE_TARGET_LOCATION
+  // (glsl/passes/scene_raster.h). Throws Error as compile_query.
+  virtual std::unique_ptr<QueryProgram> compile_raster(const SourceTree& tree, const std::string& vertex,
+                                                       const std::string& fragment, TexelFormat target) const = 0;
+  // Draws `vertices` (a triangle list) with `program` into a new size × size texture of its target
+  // format cleared to `clear`, the nearest surface kept (depth test "less"; clip-space depth -1..1
+  // as GL's), rows from the bottom as GL's framebuffer; `resources`' textures and block bound.
+  virtual std::unique_ptr<DeviceTexture> draw_triangles(const QueryProgram& program,
+                                                        const std::vector<glm::vec3>& vertices, int size,
+                                                        const float clear[4], const PassResources& resources) const = 0;
 };
 
 TextureShape float_shape(int width, int height, int channels, int levels = 1);  // R32F, RG32F or RGBA32F

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "gl/pass_bindings.h"
+#include "gl/raster_target.h"
 
 namespace pn {
 
@@ -171,6 +172,35 @@ void Context::run(const QueryProgram& program, const PassResources& resources, i
   for (const PassBuffer& b : resources.buffers)
     bind.storage_buffer(b.binding, made_here<GlDeviceBuffer>(b.buffer, "buffer").object());
   gl_program.program().dispatch(width, height);
+}
+
+const GlRasterProgram& gl_raster_program(const QueryProgram& program) {
+  return made_here<GlRasterProgram>(program, "raster program");
+}
+
+std::unique_ptr<QueryProgram> Context::compile_raster(const SourceTree& tree, const std::string& vertex,
+                                                      const std::string& fragment, TexelFormat target) const {
+  if (target == TexelFormat::rgba32ui) throw Error("raster pass " + fragment + ": expected a float target");
+  return std::make_unique<GlRasterProgram>(link_raster_pass(*this, tree, vertex, fragment, {}), target);
+}
+
+std::unique_ptr<DeviceTexture> Context::draw_triangles(const QueryProgram& program,
+                                                       const std::vector<glm::vec3>& vertices, int size,
+                                                       const float clear[4], const PassResources& resources) const {
+  const GlRasterProgram& raster = gl_raster_program(program);
+  if (!resources.images.empty() || !resources.buffers.empty())
+    throw Error("a raster pass binds textures and a block only: expected no storage images or buffers");
+  const TriangleBuffer triangles(*this, vertices);
+  RasterTarget target(*this, size, texel_channels(raster.target()));
+  target.clear(clear);
+  {
+    PassBindings bind(*this);
+    if (resources.block.data != nullptr)
+      bind.uniform_data(resources.block.binding, resources.block.data, resources.block.size);
+    for (const QueryTexture& t : resources.textures) bind.texture(t.binding, gl_texture(t.texture));
+    target.draw(raster.program(), triangles, {{0, triangles.vertex_count()}});
+  }
+  return std::make_unique<GlDeviceTexture>(target.release_texture());
 }
 
 }  // namespace pn

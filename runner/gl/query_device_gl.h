@@ -58,6 +58,20 @@ class GlQueryProgram final : public QueryProgram {
   ComputeProgram program_;
 };
 
+// A vertex + fragment program (QueryDevice::compile_raster) and the format it draws into.
+class GlRasterProgram final : public QueryProgram {
+ public:
+  GlRasterProgram(GlObject program, TexelFormat target) : program_(std::move(program)), target_(target) {}
+  const GlObject& program() const { return program_; }
+  TexelFormat target() const { return target_; }
+
+ private:
+  GlObject program_;
+  TexelFormat target_;
+};
+// The GL program of a raster program made on a GL context. Throws Error for one made elsewhere.
+const GlRasterProgram& gl_raster_program(const QueryProgram& program);
+
 class GlQueryBatch final : public QueryBatch {
  public:
   GlQueryBatch(const Context& context, const std::vector<Image>& inputs, std::size_t results,

@@ -1,6 +1,6 @@
 #include "passes/gbuffer_pass.h"
 
-#include "gl/pass_bindings.h"
+#include "gl/query_device_gl.h"
 #include "gl/std140.h"
 #include "passes/scene_draw.h"
 #include "scene/light_block.h"
@@ -18,11 +18,19 @@ PN_STD140_OFFSET(PnGBufferParams, normalOffset, 232);
 
 namespace pn {
 
-GBufferRenderer::GBufferRenderer(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(link_raster_pass(context, tree, "passes/gbuffer")) {}
+GBufferRenderer::GBufferRenderer(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device),
+      program_(device.compile_raster(tree, "passes/gbuffer.vert", "passes/gbuffer.frag", TexelFormat::rgba32f)) {}
 
 FloatTexture GBufferRenderer::render(const Scene& scene, int screen_size, float normal_offset_texels,
                                      const MapLight& light, float view_depth_lo, float view_depth_hi) const {
+  return take_float_texture(
+      render_texture(scene, screen_size, normal_offset_texels, light, view_depth_lo, view_depth_hi));
+}
+
+std::unique_ptr<DeviceTexture> GBufferRenderer::render_texture(const Scene& scene, int screen_size,
+                                                               float normal_offset_texels, const MapLight& light,
+                                                               float view_depth_lo, float view_depth_hi) const {
   glsl::PnGBufferParams block{};
   const glm::mat4 camera_view = scene.camera_view();
   block.cameraViewProjection = glsl::std140_mat4(scene.camera_projection() * camera_view);
@@ -36,9 +44,7 @@ FloatTexture GBufferRenderer::render(const Scene& scene, int screen_size, float 
   block.viewDepthLo = view_depth_lo;
   block.viewDepthHi = view_depth_hi;
   const float nothing[4] = {0, 0, 0, 0};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  return draw_scene(*context_, program_, scene, screen_size, 4, nothing);
+  return device_->draw_triangles(*program_, scene.triangles(), screen_size, nothing, {{}, {}, {}, query_block(block)});
 }
 
 }  // namespace pn

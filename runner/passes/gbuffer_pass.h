@@ -3,8 +3,9 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 
-#include "gl/compute_program.h"
+#include "device/query_device.h"
 #include "gl/texture.h"
 #include "scene/scene.h"
 #include "shader/source_tree.h"
@@ -13,7 +14,7 @@ namespace pn {
 
 class GBufferRenderer {
  public:
-  GBufferRenderer(const Context& context, const SourceTree& tree);
+  GBufferRenderer(const QueryDevice& device, const SourceTree& tree);
   // RGBA32F, rows from the bottom. normal_offset_texels > 0: the point moved
   // off its face by that many shadow-map texels first (gbuffer.frag).
   FloatTexture render(const Scene& scene, int screen_size, float normal_offset_texels = 0.0f) const {
@@ -24,10 +25,14 @@ class GBufferRenderer {
   // 0, "no surface". The camera's own view and projection as `light` make channel z the view depth.
   FloatTexture render(const Scene& scene, int screen_size, float normal_offset_texels, const MapLight& light,
                       float view_depth_lo = 0.0f, float view_depth_hi = INFINITY) const;
+  // The same on any executor, as a texture on the device (the forms above: a GL texture).
+  std::unique_ptr<DeviceTexture> render_texture(const Scene& scene, int screen_size, float normal_offset_texels,
+                                                const MapLight& light, float view_depth_lo = 0.0f,
+                                                float view_depth_hi = INFINITY) const;
 
  private:
-  const Context* context_;
-  GlObject program_;
+  const QueryDevice* device_;
+  std::unique_ptr<QueryProgram> program_;
 };
 
 }  // namespace pn

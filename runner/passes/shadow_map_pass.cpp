@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "gl/pass_bindings.h"
+#include "gl/query_device_gl.h"
 #include "gl/std140.h"
 #include "passes/scene_draw.h"
 
@@ -14,8 +15,9 @@ PN_STD140_OFFSET(PnShadowDepthParams, lightProjection, 64);
 
 namespace pn {
 
-ShadowMapRenderer::ShadowMapRenderer(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(link_raster_pass(context, tree, "passes/shadow_depth")) {}
+ShadowMapRenderer::ShadowMapRenderer(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device),
+      program_(device.compile_raster(tree, "passes/shadow_depth.vert", "passes/shadow_depth.frag", TexelFormat::r32f)) {}
 
 namespace {
 glsl::PnShadowDepthParams light_block(const MapLight& light) {
@@ -28,17 +30,22 @@ const float* ShadowMapRenderer::far_clear() {
   return far;
 }
 
+std::unique_ptr<DeviceTexture> ShadowMapRenderer::render_texture(const Scene& scene, const MapLight& light) const {
+  const glsl::PnShadowDepthParams block = light_block(light);
+  return device_->draw_triangles(*program_, scene.triangles(), light.light.map_size, far_clear(),
+                                 {{}, {}, {}, query_block(block)});
+}
+
 FloatTexture ShadowMapRenderer::render(const Scene& scene, const MapLight& light) const {
-  PassBindings bind(*context_);
-  bind.uniform(light_block(light));
-  return draw_scene(*context_, program_, scene, light.light.map_size, 1, far_clear());
+  return take_float_texture(render_texture(scene, light));
 }
 
 void ShadowMapRenderer::draw(const Scene& scene, const SceneGeometry& geometry, const RasterTarget& target,
                              const std::vector<VertexRun>& runs, const std::vector<TexelRect>& rects) const {
-  PassBindings bind(*context_);
+  const GlRasterProgram& raster = gl_raster_program(*program_);  // made on a GL context: the device is one
+  PassBindings bind(static_cast<const Context&>(*device_));
   bind.uniform(light_block(scene.map_light()));
-  target.draw(program_, geometry, runs, rects);
+  target.draw(raster.program(), geometry, runs, rects);
 }
 
 }  // namespace pn

@@ -3,7 +3,9 @@
 // +Inf where no surface is seen (SPEC §3: no occluder).
 #pragma once
 
-#include "gl/compute_program.h"
+#include <memory>
+
+#include "device/query_device.h"
 #include "gl/texture.h"
 #include "passes/scene_draw.h"
 #include "scene/scene.h"
@@ -13,23 +15,26 @@ namespace pn {
 
 class ShadowMapRenderer {
  public:
-  ShadowMapRenderer(const Context& context, const SourceTree& tree);
+  ShadowMapRenderer(const QueryDevice& device, const SourceTree& tree);
 
-  // N×N R32F texture, N = scene.light.map_size; rows from the framebuffer's bottom.
+  // N×N R32F texture on the device, N = light.light.map_size (the scene's light, or another view
+  // and projection: a cascade's); rows from the framebuffer's bottom. Any executor.
+  std::unique_ptr<DeviceTexture> render_texture(const Scene& scene, const MapLight& light) const;
+  // The same as a GL texture (the device is a GL context).
   FloatTexture render(const Scene& scene) const { return render(scene, scene.map_light()); }
-  // The same with another light's view and projection (a cascade's), N = light.light.map_size.
   FloatTexture render(const Scene& scene, const MapLight& light) const;
 
   // Into a kept N×N R32F target: `runs` of `geometry` (the scene's vertices) with the scene's
-  // light, within `rects` (everywhere for none), over what the target holds. What the caches draw.
+  // light, within `rects` (everywhere for none), over what the target holds. What the caches draw
+  // (the device is a GL context).
   void draw(const Scene& scene, const SceneGeometry& geometry, const RasterTarget& target,
             const std::vector<VertexRun>& runs, const std::vector<TexelRect>& rects = {}) const;
   // The map's clear value: +Inf, "no occluder".
   static const float* far_clear();
 
  private:
-  const Context* context_;
-  GlObject program_;
+  const QueryDevice* device_;
+  std::unique_ptr<QueryProgram> program_;
 };
 
 }  // namespace pn

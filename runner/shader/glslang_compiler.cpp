@@ -124,6 +124,9 @@ CompileResult compile_hlsl_with_glslang(const GlslangProcess&, const std::string
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
   shader.setShiftBinding(glslang::EResSampler, kHlslSamplerBindingShift);
+  // A raster stage's inputs and outputs (SPIRV-Cross's TEXCOORD<location> semantics) take locations
+  // in their order of declaration, which SPIRV-Cross keeps in location order in both stages.
+  shader.setAutoMapLocations(true);
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
   const LocationMap by_name = [&](int, int line) { return std::pair<std::string, int>{name, line}; };
   // HLSL passes textures and samplers to functions by value, which Vulkan does not allow:

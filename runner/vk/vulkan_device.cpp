@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/format.h"
+#include "passes/scene_raster.h"  // glsl/passes: the raster passes' vertex location
 #include "shader/flatten.h"
 #include "shader/glslang_compiler.h"
 #include "shader/loop_guard.h"
@@ -56,6 +57,15 @@ bool has_instance_extension(const char* name) {
                      [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
+bool has_device_extension(VkPhysicalDevice device, const char* name) {
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
 int type_rank(VkPhysicalDeviceType type) {
   switch (type) {
     case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
@@ -83,6 +93,7 @@ struct VulkanDevice::State {
   VkSampler sampler = VK_NULL_HANDLE;
   VulkanSettings settings;
   bool validation_on = false;
+  bool depth_clip_control = false;  // VK_EXT_depth_clip_control: GL's clip-space depth for raster passes
   std::string validation_why;
   DispatchBounds bounds;
   GlslangProcess glslang;
@@ -251,7 +262,8 @@ class VulkanImage final : public DeviceTexture {
     const VkFormat format = vk_format(shape.format);
     VkImageFormatProperties limits{};
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     const VkResult supported = vkGetPhysicalDeviceImageFormatProperties(
         s.physical, format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL, usage, 0, &limits);
     int full_levels = 1;
@@ -447,65 +459,97 @@ class VulkanQueryBatch final : public QueryBatch {
   int width_ = 0, height_ = 0;
 };
 
-class VulkanQueryProgram final : public QueryProgram {
+VkDescriptorType descriptor_type(DescriptorKind kind) {
+  switch (kind) {
+    case DescriptorKind::combined_image_sampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    case DescriptorKind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case DescriptorKind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
+    case DescriptorKind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    case DescriptorKind::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case DescriptorKind::storage_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  }
+  return VK_DESCRIPTOR_TYPE_MAX_ENUM;
+}
+
+VkShaderModule make_module(const VulkanDevice::State& s, const std::vector<std::uint32_t>& spirv, const std::string& name) {
+  VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  module_info.codeSize = spirv.size() * 4;
+  module_info.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  vk_check(vkCreateShaderModule(s.device, &module_info, nullptr, &module), name + ": a shader module");
+  return module;
+}
+
+// The resources of one dispatch or draw in a descriptor set of its own (a pool a set), with the
+// uniform block's buffer and the loop guard's.
+struct BoundSet {
+  const VulkanDevice::State* s = nullptr;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  std::optional<HostBuffer> uniform, guard;
+  BoundSet() = default;
+  BoundSet(const BoundSet&) = delete;
+  BoundSet& operator=(const BoundSet&) = delete;
+  ~BoundSet() {
+    if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(s->device, pool, nullptr);
+  }
+};
+
+// What a compute and a raster program share: a name, the resources its SPIR-V uses (every stage's),
+// their set layout, the pipeline layout and the pipeline.
+class VulkanProgram : public QueryProgram {
  public:
-  VulkanQueryProgram(const VulkanDevice::State& s, std::string name, const std::vector<std::uint32_t>& spirv,
-                     std::vector<GuardedLoop> loops)
-      : s_(&s), name_(std::move(name)), reflection_(reflect_spirv(spirv, true)), loops_(std::move(loops)) {
-    VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    module_info.codeSize = spirv.size() * 4;
-    module_info.pCode = spirv.data();
-    vk_check(vkCreateShaderModule(s.device, &module_info, nullptr, &module_), name_ + ": a shader module");
-    std::vector<VkDescriptorSetLayoutBinding> bindings;
-    for (const SpirvBinding& b : reflection_.bindings) {
-      if (b.set != 0)
-        throw Error(name_ + ": '" + b.name + "' is in descriptor set " + std::to_string(b.set) + ": expected set 0",
-                    ExitCode::failed);
-      bindings.push_back({b.binding, descriptor_type(b.kind), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  ~VulkanProgram() override {
+    for (VkShaderModule module : modules_) vkDestroyShaderModule(s_->device, module, nullptr);
+    if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(s_->device, pipeline_, nullptr);
+    if (pipeline_layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(s_->device, pipeline_layout_, nullptr);
+    if (set_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(s_->device, set_layout_, nullptr);
+  }
+
+ protected:
+  // `stages`: each stage's SPIR-V and its stage bit; a resource two stages use is one binding.
+  VulkanProgram(const VulkanDevice::State& s, std::string name,
+                const std::vector<std::pair<const std::vector<std::uint32_t>*, VkShaderStageFlagBits>>& stages)
+      : s_(&s), name_(std::move(name)) {
+    std::vector<VkDescriptorSetLayoutBinding> layout;
+    for (const auto& [spirv, stage] : stages) {
+      modules_.push_back(make_module(s, *spirv, name_));
+      const SpirvReflection reflection = reflect_spirv(*spirv, true);
+      if (stage == VK_SHADER_STAGE_COMPUTE_BIT) std::copy(std::begin(reflection.local_size), std::end(reflection.local_size), local_size_);
+      for (const SpirvBinding& b : reflection.bindings) {
+        if (b.set != 0)
+          throw Error(name_ + ": '" + b.name + "' is in descriptor set " + std::to_string(b.set) + ": expected set 0",
+                      ExitCode::failed);
+        const auto same = std::find_if(bindings_.begin(), bindings_.end(),
+                                       [&](const SpirvBinding& known) { return known.binding == b.binding; });
+        if (same != bindings_.end()) {
+          if (same->kind != b.kind)
+            throw Error(name_ + ": binding " + std::to_string(b.binding) + " is '" + same->name + "' in one stage and '" +
+                            b.name + "', of another kind, in another",
+                        ExitCode::failed);
+          layout[static_cast<std::size_t>(same - bindings_.begin())].stageFlags |= stage;
+          continue;
+        }
+        bindings_.push_back(b);
+        layout.push_back({b.binding, descriptor_type(b.kind), 1, static_cast<VkShaderStageFlags>(stage), nullptr});
+      }
     }
     VkDescriptorSetLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    layout_info.bindingCount = static_cast<uint32_t>(bindings.size());
-    layout_info.pBindings = bindings.data();
+    layout_info.bindingCount = static_cast<uint32_t>(layout.size());
+    layout_info.pBindings = layout.data();
     vk_check(vkCreateDescriptorSetLayout(s.device, &layout_info, nullptr, &set_layout_), name_ + ": a set layout");
     VkPipelineLayoutCreateInfo pipeline_layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pipeline_layout_info.setLayoutCount = 1;
     pipeline_layout_info.pSetLayouts = &set_layout_;
     vk_check(vkCreatePipelineLayout(s.device, &pipeline_layout_info, nullptr, &pipeline_layout_),
              name_ + ": a pipeline layout");
-    VkComputePipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    pipeline_info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipeline_info.stage.module = module_;
-    pipeline_info.stage.pName = "main";
-    pipeline_info.layout = pipeline_layout_;
-    vk_check(vkCreateComputePipelines(s.device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline_),
-             name_ + ": a compute pipeline");
-    s.throw_if_messages(name_);
-  }
-  ~VulkanQueryProgram() override {
-    if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(s_->device, pipeline_, nullptr);
-    if (pipeline_layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(s_->device, pipeline_layout_, nullptr);
-    if (set_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(s_->device, set_layout_, nullptr);
-    if (module_ != VK_NULL_HANDLE) vkDestroyShaderModule(s_->device, module_, nullptr);
   }
 
-  static VkDescriptorType descriptor_type(DescriptorKind kind) {
-    switch (kind) {
-      case DescriptorKind::combined_image_sampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-      case DescriptorKind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-      case DescriptorKind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
-      case DescriptorKind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-      case DescriptorKind::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-      case DescriptorKind::storage_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    }
-    return VK_DESCRIPTOR_TYPE_MAX_ENUM;
-  }
+  // A descriptor set holding `resources` at the bindings the SPIR-V uses (and the loop guard's
+  // buffer, cleared, where it has one). Throws Error naming a resource it uses and `resources`
+  // lacks, or one made on another device.
+  void bind(const PassResources& resources, BoundSet& out) const;
 
-  // Binds `resources` (the loop guard besides, under bounds) and runs the pass over a width ×
-  // height grid of invocations.
-  void run(const PassResources& resources, int width, int height, const DispatchBounds& bounds) const;
-
- private:
   template <class Made>
   const Made& made_here(const auto& object, unsigned binding) const {
     const auto* made = dynamic_cast<const Made*>(&object);
@@ -517,46 +561,38 @@ class VulkanQueryProgram final : public QueryProgram {
 
   const VulkanDevice::State* s_;
   std::string name_;
-  SpirvReflection reflection_;
-  std::vector<GuardedLoop> loops_;
-  VkShaderModule module_ = VK_NULL_HANDLE;
+  std::vector<SpirvBinding> bindings_;
+  std::vector<VkShaderModule> modules_;
+  unsigned local_size_[3] = {1, 1, 1};
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
-void VulkanQueryProgram::run(const PassResources& resources, int width, int height,
-                             const DispatchBounds& bounds) const {
-  if (width <= 0 || height <= 0) return;
+void VulkanProgram::bind(const PassResources& resources, BoundSet& out) const {
   const VulkanDevice::State& s = *s_;
+  out.s = s_;
   std::vector<VkDescriptorPoolSize> sizes;
-  for (const SpirvBinding& b : reflection_.bindings) sizes.push_back({descriptor_type(b.kind), 1});
+  for (const SpirvBinding& b : bindings_) sizes.push_back({descriptor_type(b.kind), 1});
+  if (sizes.empty()) return;
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = 1;
   pool_info.poolSizeCount = static_cast<uint32_t>(sizes.size());
   pool_info.pPoolSizes = sizes.data();
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  vk_check(vkCreateDescriptorPool(s.device, &pool_info, nullptr, &pool), name_ + ": a descriptor pool");
-  struct DestroyPool {
-    VkDevice d;
-    VkDescriptorPool p;
-    ~DestroyPool() { vkDestroyDescriptorPool(d, p, nullptr); }
-  } destroy_pool{s.device, pool};
+  vk_check(vkCreateDescriptorPool(s.device, &pool_info, nullptr, &out.pool), name_ + ": a descriptor pool");
   VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocate.descriptorPool = pool;
+  allocate.descriptorPool = out.pool;
   allocate.descriptorSetCount = 1;
   allocate.pSetLayouts = &set_layout_;
-  VkDescriptorSet set = VK_NULL_HANDLE;
-  vk_check(vkAllocateDescriptorSets(s.device, &allocate, &set), name_ + ": a descriptor set");
+  vk_check(vkAllocateDescriptorSets(s.device, &allocate, &out.set), name_ + ": a descriptor set");
 
-  std::optional<HostBuffer> uniform, guard;
-  std::vector<VkDescriptorImageInfo> images(reflection_.bindings.size());
-  std::vector<VkDescriptorBufferInfo> buffers(reflection_.bindings.size());
+  std::vector<VkDescriptorImageInfo> images(bindings_.size());
+  std::vector<VkDescriptorBufferInfo> buffers(bindings_.size());
   std::vector<VkWriteDescriptorSet> writes;
-  for (std::size_t i = 0; i < reflection_.bindings.size(); ++i) {
-    const SpirvBinding& b = reflection_.bindings[i];
+  for (std::size_t i = 0; i < bindings_.size(); ++i) {
+    const SpirvBinding& b = bindings_[i];
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = set;
+    write.dstSet = out.set;
     write.dstBinding = b.binding;
     write.descriptorCount = 1;
     write.descriptorType = descriptor_type(b.kind);
@@ -597,16 +633,16 @@ void VulkanQueryProgram::run(const PassResources& resources, int width, int heig
       case DescriptorKind::uniform_buffer:
         if (resources.block.data == nullptr || resources.block.binding != b.binding)
           throw Error(where + " is a uniform block the dispatch does not give", ExitCode::failed);
-        uniform.emplace(s, resources.block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-        std::memcpy(uniform->data(), resources.block.data, resources.block.size);
-        buffers[i] = {uniform->buffer(), 0, resources.block.size};
+        out.uniform.emplace(s, resources.block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        std::memcpy(out.uniform->data(), resources.block.data, resources.block.size);
+        buffers[i] = {out.uniform->buffer(), 0, resources.block.size};
         write.pBufferInfo = &buffers[i];
         break;
       case DescriptorKind::storage_buffer:
         if (b.binding == kGuardBinding) {
-          guard.emplace(s, sizeof(LoopGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-          std::memset(guard->data(), 0, sizeof(LoopGuardState));
-          buffers[i] = {guard->buffer(), 0, sizeof(LoopGuardState)};
+          out.guard.emplace(s, sizeof(LoopGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+          std::memset(out.guard->data(), 0, sizeof(LoopGuardState));
+          buffers[i] = {out.guard->buffer(), 0, sizeof(LoopGuardState)};
         } else {
           const auto found = std::find_if(resources.buffers.begin(), resources.buffers.end(),
                                           [&](const PassBuffer& buffer) { return buffer.binding == b.binding; });
@@ -621,7 +657,38 @@ void VulkanQueryProgram::run(const PassResources& resources, int width, int heig
     writes.push_back(write);
   }
   vkUpdateDescriptorSets(s.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
 
+class VulkanQueryProgram final : public VulkanProgram {
+ public:
+  VulkanQueryProgram(const VulkanDevice::State& s, std::string name, const std::vector<std::uint32_t>& spirv,
+                     std::vector<GuardedLoop> loops)
+      : VulkanProgram(s, std::move(name), {{&spirv, VK_SHADER_STAGE_COMPUTE_BIT}}), loops_(std::move(loops)) {
+    VkComputePipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipeline_info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipeline_info.stage.module = modules_.front();
+    pipeline_info.stage.pName = "main";
+    pipeline_info.layout = pipeline_layout_;
+    vk_check(vkCreateComputePipelines(s.device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline_),
+             name_ + ": a compute pipeline");
+    s.throw_if_messages(name_);
+  }
+
+  // Binds `resources` (the loop guard besides, under bounds) and runs the pass over a width ×
+  // height grid of invocations.
+  void run(const PassResources& resources, int width, int height, const DispatchBounds& bounds) const;
+
+ private:
+  std::vector<GuardedLoop> loops_;
+};
+
+void VulkanQueryProgram::run(const PassResources& resources, int width, int height,
+                             const DispatchBounds& bounds) const {
+  if (width <= 0 || height <= 0) return;
+  const VulkanDevice::State& s = *s_;
+  BoundSet bound;
+  bind(resources, bound);
   const auto groups = [](int n, unsigned local) { return static_cast<uint32_t>((n + local - 1) / local); };
   s.submit(name_ + ": dispatch", [&](VkCommandBuffer c) {
     VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -630,8 +697,9 @@ void VulkanQueryProgram::run(const PassResources& resources, int width, int heig
     vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
     vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
-    vkCmdDispatch(c, groups(width, reflection_.local_size[0]), groups(height, reflection_.local_size[1]), 1);
+    if (bound.set != VK_NULL_HANDLE)
+      vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
+    vkCmdDispatch(c, groups(width, local_size_[0]), groups(height, local_size_[1]), 1);
     VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
@@ -639,11 +707,256 @@ void VulkanQueryProgram::run(const PassResources& resources, int width, int heig
                          VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                          0, 1, &after, 0, nullptr, 0, nullptr);
   });
-  if (!guard) return;
+  if (!bound.guard) return;
   LoopGuardState state;
-  std::memcpy(&state, guard->data(), sizeof state);
+  std::memcpy(&state, bound.guard->data(), sizeof state);
   throw_if_loop_tripped(state, loops_, bounds.loop_iterations, name_ + ": dispatch");
 }
+
+
+// A D32_SFLOAT depth attachment for one draw.
+class DepthImage {
+ public:
+  DepthImage(const VulkanDevice::State& s, int size) : s_(&s) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = VK_FORMAT_D32_SFLOAT;
+    info.extent = {static_cast<uint32_t>(size), static_cast<uint32_t>(size), 1};
+    info.mipLevels = info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    vk_check(vkCreateImage(s.device, &info, nullptr, &image_), "creating a depth buffer");
+    VkMemoryRequirements needs;
+    vkGetImageMemoryRequirements(s.device, image_, &needs);
+    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    allocate.allocationSize = needs.size;
+    allocate.memoryTypeIndex = s.memory_type(needs.memoryTypeBits, 0);
+    vk_check(vkAllocateMemory(s.device, &allocate, nullptr, &memory_), "allocating a depth buffer");
+    vk_check(vkBindImageMemory(s.device, image_, memory_, 0), "binding a depth buffer");
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = image_;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = VK_FORMAT_D32_SFLOAT;
+    view.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    vk_check(vkCreateImageView(s.device, &view, nullptr, &view_), "a depth buffer's view");
+  }
+  ~DepthImage() {
+    if (view_ != VK_NULL_HANDLE) vkDestroyImageView(s_->device, view_, nullptr);
+    if (image_ != VK_NULL_HANDLE) vkDestroyImage(s_->device, image_, nullptr);
+    if (memory_ != VK_NULL_HANDLE) vkFreeMemory(s_->device, memory_, nullptr);
+  }
+  DepthImage(const DepthImage&) = delete;
+  DepthImage& operator=(const DepthImage&) = delete;
+  VkImageView view() const { return view_; }
+
+ private:
+  const VulkanDevice::State* s_;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+};
+
+// A vertex + fragment program drawing triangle lists into a `target` texture with a depth buffer,
+// in GL's conventions: clip-space depth -1..1 (VK_EXT_depth_clip_control) and NDC y = -1 at row 0,
+// so its texels are where GL's raster pass puts them.
+class VulkanRasterProgram final : public VulkanProgram {
+ public:
+  VulkanRasterProgram(const VulkanDevice::State& s, std::string name, const std::vector<std::uint32_t>& vertex,
+                      const std::vector<std::uint32_t>& fragment, TexelFormat target)
+      : VulkanProgram(s, std::move(name), {{&vertex, VK_SHADER_STAGE_VERTEX_BIT}, {&fragment, VK_SHADER_STAGE_FRAGMENT_BIT}}),
+        target_(target) {
+    if (!s.depth_clip_control)
+      throw Error(name_ + ": the Vulkan device has no VK_EXT_depth_clip_control, without which GL's clip-space depth "
+                          "(-1..1) cannot be kept",
+                  ExitCode::failed);
+    VkAttachmentDescription attachments[2] = {};
+    attachments[0].format = vk_format(target);
+    attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[0].initialLayout = kImageLayout;
+    attachments[0].finalLayout = kImageLayout;
+    attachments[1] = attachments[0];
+    attachments[1].format = VK_FORMAT_D32_SFLOAT;
+    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[1].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    const VkAttachmentReference colour{0, kImageLayout};
+    const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = 1;
+    subpass.pColorAttachments = &colour;
+    subpass.pDepthStencilAttachment = &depth;
+    VkSubpassDependency dependencies[2] = {};
+    dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[0].dstSubpass = 0;
+    dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    dependencies[0].srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT |
+                                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    dependencies[0].dstStageMask = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
+    dependencies[0].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+    dependencies[1].srcSubpass = 0;
+    dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    dependencies[1].dstStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                   VK_PIPELINE_STAGE_TRANSFER_BIT;
+    dependencies[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+    VkRenderPassCreateInfo pass_info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    pass_info.attachmentCount = 2;
+    pass_info.pAttachments = attachments;
+    pass_info.subpassCount = 1;
+    pass_info.pSubpasses = &subpass;
+    pass_info.dependencyCount = 2;
+    pass_info.pDependencies = dependencies;
+    vk_check(vkCreateRenderPass(s.device, &pass_info, nullptr, &render_pass_), name_ + ": a render pass");
+
+    VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+                                                 {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = modules_[0];
+    stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = modules_[1];
+    stages[1].pName = "main";
+    const VkVertexInputBindingDescription vertex_binding{0, 3 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
+    const VkVertexInputAttributeDescription position{PN_SCENE_POSITION_LOCATION, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertex_input.vertexBindingDescriptionCount = 1;
+    vertex_input.pVertexBindingDescriptions = &vertex_binding;
+    vertex_input.vertexAttributeDescriptionCount = 1;
+    vertex_input.pVertexAttributeDescriptions = &position;
+    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportDepthClipControlCreateInfoEXT clip{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_DEPTH_CLIP_CONTROL_CREATE_INFO_EXT};
+    clip.negativeOneToOne = VK_TRUE;
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.pNext = &clip;
+    viewport.viewportCount = viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo depth_test{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth_test.depthTestEnable = depth_test.depthWriteEnable = VK_TRUE;
+    depth_test.depthCompareOp = VK_COMPARE_OP_LESS;  // GL_LESS: the nearest surface
+    VkPipelineColorBlendAttachmentState blend{};
+    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                           VK_COLOR_COMPONENT_A_BIT;
+    VkPipelineColorBlendStateCreateInfo blending{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blending.attachmentCount = 1;
+    blending.pAttachments = &blend;
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &vertex_input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth_test;
+    info.pColorBlendState = &blending;
+    info.pDynamicState = &dynamic;
+    info.layout = pipeline_layout_;
+    info.renderPass = render_pass_;
+    vk_check(vkCreateGraphicsPipelines(s.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+             name_ + ": a graphics pipeline");
+    s.throw_if_messages(name_);
+  }
+  ~VulkanRasterProgram() override {
+    if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(s_->device, render_pass_, nullptr);
+  }
+
+  std::unique_ptr<VulkanImage> draw(const std::vector<glm::vec3>& vertices, int size, const float clear[4],
+                                    const PassResources& resources) const {
+    const VulkanDevice::State& s = *s_;
+    if (!resources.images.empty() || !resources.buffers.empty())
+      throw Error(name_ + ": a raster pass binds textures and a block only: expected no storage images or buffers",
+                  ExitCode::failed);
+    auto target = std::make_unique<VulkanImage>(s, TextureShape{target_, size, size});
+    target->fill(nullptr, 0);  // into GENERAL layout, which the render pass starts from
+    const DepthImage depth(s, size);
+    const VkImageView views[2] = {target->level_view(0), depth.view()};
+    VkFramebufferCreateInfo framebuffer_info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    framebuffer_info.renderPass = render_pass_;
+    framebuffer_info.attachmentCount = 2;
+    framebuffer_info.pAttachments = views;
+    framebuffer_info.width = framebuffer_info.height = static_cast<uint32_t>(size);
+    framebuffer_info.layers = 1;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    vk_check(vkCreateFramebuffer(s.device, &framebuffer_info, nullptr, &framebuffer), name_ + ": a framebuffer");
+    struct DestroyFramebuffer {
+      VkDevice d;
+      VkFramebuffer f;
+      ~DestroyFramebuffer() { vkDestroyFramebuffer(d, f, nullptr); }
+    } destroy_framebuffer{s.device, framebuffer};
+    HostBuffer vertex_buffer(s, vertices.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    if (!vertices.empty()) std::memcpy(vertex_buffer.data(), vertices.data(), vertices.size() * sizeof(glm::vec3));
+    BoundSet bound;
+    bind(resources, bound);
+
+    VkClearValue clears[2] = {};
+    for (int c = 0; c < 4; ++c) {
+      clears[0].color.float32[c] = clear[c];
+      if (target->integer()) clears[0].color.uint32[c] = static_cast<uint32_t>(clear[c]);
+    }
+    clears[1].depthStencil = {1.0f, 0};
+    s.submit(name_ + ": draw", [&](VkCommandBuffer c) {
+      VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+      before.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_UNIFORM_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
+      vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                           VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                           0, 1, &before, 0, nullptr, 0, nullptr);
+      VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+      begin.renderPass = render_pass_;
+      begin.framebuffer = framebuffer;
+      begin.renderArea = {{0, 0}, {static_cast<uint32_t>(size), static_cast<uint32_t>(size)}};
+      begin.clearValueCount = 2;
+      begin.pClearValues = clears;
+      vkCmdBeginRenderPass(c, &begin, VK_SUBPASS_CONTENTS_INLINE);
+      vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+      // NDC y = -1 at framebuffer row 0, as in GL: the texels lie in memory where GL's lie (GL's
+      // row 0 is the window's bottom; a Vulkan framebuffer's row 0 is the row y = 0 maps to).
+      const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+      const VkRect2D scissor{{0, 0}, {static_cast<uint32_t>(size), static_cast<uint32_t>(size)}};
+      vkCmdSetViewport(c, 0, 1, &viewport);
+      vkCmdSetScissor(c, 0, 1, &scissor);
+      if (bound.set != VK_NULL_HANDLE)
+        vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
+      const VkBuffer buffers[] = {vertex_buffer.buffer()};
+      const VkDeviceSize offsets[] = {0};
+      vkCmdBindVertexBuffers(c, 0, 1, buffers, offsets);
+      if (!vertices.empty()) vkCmdDraw(c, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
+      vkCmdEndRenderPass(c);
+    });
+    return target;
+  }
+
+ private:
+  TexelFormat target_;
+  VkRenderPass render_pass_ = VK_NULL_HANDLE;
+};
 
 }  // namespace
 
@@ -673,32 +986,62 @@ std::string VulkanDevice::query_api() const {
   return state_->settings.language == PassLanguage::hlsl ? "hlsl" : "vulkan";
 }
 
-std::unique_ptr<QueryProgram> VulkanDevice::compile_query(const SourceTree& tree, const std::string& pass,
-                                                          const std::vector<Define>& defines) const {
-  const State& s = *state_;
+namespace {
+
+// One stage of a pass as the device runs it: the vulkan target's SPIR-V, or (--api hlsl) its HLSL
+// export compiled back — or the user's copy of that export (--hlsl-root, a pass without extra
+// defines). `loops`: the loop guard's loops, put in under the dispatch bounds (compute passes);
+// emptied for a user's copy, which has no guard (the deadline alone bounds it).
+std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const SourceTree& tree, const std::string& pass,
+                                       const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
   ShaderSource source = standalone_source(flatten(tree, tree.locate_in_root(pass)), Target::vulkan, defines);
-  std::vector<GuardedLoop> loops;
-  if (s.bounds.enabled) loops = guard_loops(source, {kGuardBinding, s.bounds.loop_iterations});
+  if (loops != nullptr && s.bounds.enabled) *loops = guard_loops(source, {kGuardBinding, s.bounds.loop_iterations});
   const CompileResult glsl = compile_with_glslang(s.glslang, source, Target::vulkan);
   if (!glsl.ok) throw Error(pass + ": " + first_error(glsl, "glslang could not compile it for Vulkan"), ExitCode::failed);
-  if (s.settings.language == PassLanguage::glsl)
-    return std::make_unique<VulkanQueryProgram>(s, pass, glsl.spirv, std::move(loops));
+  if (s.settings.language == PassLanguage::glsl) return glsl.spirv;
 
-  // HLSL: the export of this SPIR-V, or the user's copy of the export of the pass.
   std::string name = std::filesystem::path(pass).stem().string() + ".hlsl";
   std::string hlsl;
   const std::filesystem::path copy = s.settings.hlsl_root ? *s.settings.hlsl_root / name : std::filesystem::path();
-  if (s.settings.hlsl_root && defines.empty() && std::filesystem::exists(copy)) {
+  if (source.stage == Stage::compute && s.settings.hlsl_root && defines.empty() && std::filesystem::exists(copy)) {
     const SourceTree root(*s.settings.hlsl_root);  // read as module files are: a regular file, bounded
     const std::filesystem::path canonical = root.locate_in_root(name);
     hlsl = root.read(canonical), name = root.diagnostic_path(canonical);
-    loops.clear();  // the copy has no loop guard: the deadline alone bounds it
+    if (loops != nullptr) loops->clear();
   } else {
     hlsl = cross_compile(glsl.spirv, CrossLanguage::hlsl50);
   }
-  const CompileResult back = compile_hlsl_with_glslang(s.glslang, hlsl, name, Stage::compute);
+  const CompileResult back = compile_hlsl_with_glslang(s.glslang, hlsl, name, source.stage);
   if (!back.ok) throw Error(name + ": " + first_error(back, "glslang could not compile the HLSL"), ExitCode::failed);
-  return std::make_unique<VulkanQueryProgram>(s, pass + " (HLSL)", back.spirv, std::move(loops));
+  return back.spirv;
+}
+
+std::string program_name(const VulkanDevice::State& s, const std::string& pass) {
+  return s.settings.language == PassLanguage::hlsl ? pass + " (HLSL)" : pass;
+}
+
+}  // namespace
+
+std::unique_ptr<QueryProgram> VulkanDevice::compile_query(const SourceTree& tree, const std::string& pass,
+                                                          const std::vector<Define>& defines) const {
+  std::vector<GuardedLoop> loops;
+  const std::vector<std::uint32_t> spirv = stage_spirv(*state_, tree, pass, defines, &loops);
+  return std::make_unique<VulkanQueryProgram>(*state_, program_name(*state_, pass), spirv, std::move(loops));
+}
+
+std::unique_ptr<QueryProgram> VulkanDevice::compile_raster(const SourceTree& tree, const std::string& vertex,
+                                                           const std::string& fragment, TexelFormat target) const {
+  return std::make_unique<VulkanRasterProgram>(*state_, program_name(*state_, fragment),
+                                               stage_spirv(*state_, tree, vertex, {}, nullptr),
+                                               stage_spirv(*state_, tree, fragment, {}, nullptr), target);
+}
+
+std::unique_ptr<DeviceTexture> VulkanDevice::draw_triangles(const QueryProgram& program,
+                                                            const std::vector<glm::vec3>& vertices, int size,
+                                                            const float clear[4], const PassResources& resources) const {
+  const auto* raster = dynamic_cast<const VulkanRasterProgram*>(&program);
+  if (raster == nullptr) throw Error("vulkan: a raster program compiled for another device", ExitCode::failed);
+  return raster->draw(vertices, size, clear, resources);
 }
 
 std::unique_ptr<DeviceTexture> VulkanDevice::upload(const Image& image) const { return upload_image(*state_, image); }
@@ -886,6 +1229,23 @@ std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& setting
   VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   device_info.queueCreateInfoCount = 1;
   device_info.pQueueCreateInfos = &queue_info;
+  // Raster passes keep GL's clip-space depth (-1..1) where the device can (every raster check needs it).
+  VkPhysicalDeviceDepthClipControlFeaturesEXT clip_control{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &clip_control;
+  const char* clip_extension = VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME;
+  if (has_device_extension(s->physical, clip_extension)) {
+    vkGetPhysicalDeviceFeatures2(s->physical, &features);
+    s->depth_clip_control = clip_control.depthClipControl == VK_TRUE;
+  }
+  if (s->depth_clip_control) {
+    clip_control.depthClipControl = VK_TRUE;
+    features.features = {};
+    device_info.pNext = &features;
+    device_info.enabledExtensionCount = 1;
+    device_info.ppEnabledExtensionNames = &clip_extension;
+  }
   if (vkCreateDevice(s->physical, &device_info, nullptr, &s->device) != VK_SUCCESS)
     throw fail(std::string("vkCreateDevice failed on ") + s->properties.deviceName);
   vkGetDeviceQueue(s->device, s->queue_family, 0, &s->queue);

@@ -57,6 +57,11 @@ class VulkanDevice final : public QueryDevice {
   std::unique_ptr<DeviceBuffer> make_buffer(std::size_t bytes) const override;
   void write_buffer(const DeviceBuffer& buffer, std::size_t offset, std::size_t bytes, const void* data) const override;
   void run(const QueryProgram& program, const PassResources& resources, int width, int height) const override;
+  std::unique_ptr<QueryProgram> compile_raster(const SourceTree& tree, const std::string& vertex,
+                                               const std::string& fragment, TexelFormat target) const override;
+  std::unique_ptr<DeviceTexture> draw_triangles(const QueryProgram& program, const std::vector<glm::vec3>& vertices,
+                                                int size, const float clear[4],
+                                                const PassResources& resources) const override;
 
   struct State;  // vk/vulkan_device.cpp
 
