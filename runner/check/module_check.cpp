@@ -56,7 +56,7 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_shadow_map_check, OffGl::every_case},
       {"pcss_regions", "search entries (lit decisions, refined sides), filter entries and their regions in every mode vs "
                        "the CPU definition; no lit receiver a texel can shadow (exact mode)",
-       &run_pcss_regions_check, OffGl::query_cases, "the scene cases (maps and G-buffers from GL raster passes)"},
+       &run_pcss_regions_check, OffGl::every_case},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
        &run_pipeline_check},
       {"fast_pcss", "pnFastPcss, pnPoissonPcss, pnExactPcss, pnHqepcss as one call: compute pass vs the staged passes "

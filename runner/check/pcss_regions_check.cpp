@@ -54,7 +54,6 @@ std::vector<CaseResult> run_pcss_regions_check(const CheckEnvironment& env) {
   std::vector<CaseResult> results;
   SearchTally tally;
   fixture_cases(env, pass, results, tally);
-  if (env.gl == nullptr) return results;  // the scenes are GL raster passes: module_check.cpp's gl_only
   scene_cases(env, pass, results, tally);
   const long searched = tally.searched, left_out = tally.left_out;
   const bool few = left_out * 100 <= searched;

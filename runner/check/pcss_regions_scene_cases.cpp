@@ -1,14 +1,12 @@
 // The pcss_regions check's cases on rendered scenes: the tall blocker's own map and
 // G-buffer in every mode, the lit-coverage property there and on the boxes'
 // far field (pcss_regions_check.cpp states the tolerances).
-#include "cache/full_render_source.h"
 #include "check/pcss_regions_cases.h"
-#include "frame/scene_frame.h"
-#include "gl/query_device_gl.h"
-#include "gl/texture.h"
+#include "scenes.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/gbuffer_pass.h"
 #include "passes/minmax_mip_pass.h"
+#include "passes/shadow_map_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "scene/scene.h"
 
@@ -29,16 +27,18 @@ struct SceneData {
 SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int map_size = kSceneMap,
                      int screen_size = kSceneScreen) {
   const Scene scene = make_scene(find_scene_fixture(scene_name), map_size);
-  FullRenderSource source(env.context(), env.tree);
-  const GBufferRenderer gbuffers(env.context(), env.tree);
-  const SceneFrame frame = render_scene_frame(env.context(), source, gbuffers, scene, screen_size);
+  // The scene's map and G-buffer as a frame renders them (render_scene_frame), on the executor.
+  const std::unique_ptr<DeviceTexture> map = ShadowMapRenderer(env.device, env.tree).render_texture(scene, scene.map_light());
+  const std::unique_ptr<DeviceTexture> gbuffer = GBufferRenderer(env.device, env.tree)
+                                                     .render_texture(scene, screen_size, fixtures::kNormalOffsetTexels,
+                                                                     scene.map_light());
   SceneData s;
   s.name = std::string(scene_name) + " " + std::to_string(map_size) + "² map, " + std::to_string(screen_size) + "² screen";
   s.light = scene.light;
-  s.map = read_float_texture(env.context(), *frame.shadow_map, map_size, map_size, 1);
-  s.gbuffer = read_float_texture(env.context(), frame.gbuffer);
-  s.pyramid = DepthPyramidBuilder(env.context(), env.tree).build(GlDeviceTexture(*frame.shadow_map), map_size, map_size, 31);
-  s.mip = MinMaxMipBuilder(env.context(), env.tree).build(GlDeviceTexture(*frame.shadow_map), map_size);
+  s.map = env.device.read_texture(*map);
+  s.gbuffer = env.device.read_texture(*gbuffer);
+  s.pyramid = DepthPyramidBuilder(env.device, env.tree).build(*map, map_size, map_size, 31);
+  s.mip = MinMaxMipBuilder(env.device, env.tree).build(*map, map_size);
   for (int y = 0; y < screen_size; ++y)
     for (int x = 0; x < screen_size; ++x)
       s.receivers.push_back({s.gbuffer.at(x, y, 0), s.gbuffer.at(x, y, 1), s.gbuffer.at(x, y, 2), s.gbuffer.at(x, y, 3)});
