@@ -45,10 +45,8 @@ std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env) {
   split_cases(gpu, results);
   selection_cases(gpu, results);
   sphere_cases(gpu, results);
-  if (env.gl != nullptr) {  // GL passes: module_check.cpp's gl_only
-    blend_pass_cases(env, results);
-    city_cases(env, results);
-  }
+  blend_pass_cases(env, results);
+  if (env.gl != nullptr) city_cases(env, results);  // GL techniques: module_check.cpp's gl_only
   stability_cases(results);
   return results;
 }

@@ -30,7 +30,7 @@ namespace pn {
 // uniform samples, pixels without a surface) and per-cascade visibilities of seeded noise,
 // against the selection and blend in double. The weight's bound as in the selection cases.
 void blend_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
-  const CascadeBlendPass pass(env.context(), env.tree);
+  const CascadeBlendPass pass(env.device, env.tree);
   const float near = 0.5f, far = 400.0f;
   const int size = 64;
   for (int count = 1; count <= PN_CASCADES_MAX; ++count) {
@@ -56,17 +56,16 @@ void blend_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& resu
       view_depth.at(x, y, 3) = k % 17 == 5 ? 0.0f : 1.0f;  // some pixels see no surface
       for (Image& v : visibility) v.at(x, y) = static_cast<float>(unit(random));
     }
-    const FloatTexture view_texture = upload_float_texture(env.context(), view_depth);
-    std::vector<GlObject> textures;
-    std::vector<const GlObject*> pointers;
-    for (const Image& v : visibility) textures.push_back(upload_float_texture(env.context(), v));
-    for (const GlObject& t : textures) pointers.push_back(&t);
+    const std::unique_ptr<DeviceTexture> view_texture = env.device.upload(view_depth);
+    std::vector<std::unique_ptr<DeviceTexture>> textures;
+    std::vector<const DeviceTexture*> pointers;
+    for (const Image& v : visibility) pointers.push_back(textures.emplace_back(env.device.upload(v)).get());
     CascadeInputs inputs;
     inputs.layers.resize(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) inputs.split_far[i] = split_far[static_cast<size_t>(i)];
-    inputs.view_depth = &view_texture, inputs.near = near, inputs.band = static_cast<float>(settings.band);
+    inputs.near = near, inputs.band = static_cast<float>(settings.band);
     inputs.fade_last = count % 2 == 0;
-    const Image observed = read_float_texture(env.context(), pass.run(inputs, pointers, size));
+    const Image observed = env.device.read_texture(*pass.blend(*view_texture, inputs, pointers, size));
     Image expected(size, size, 1);
     double narrowest = INFINITY;
     std::vector<double> split_far_d(split_far.begin(), split_far.end());

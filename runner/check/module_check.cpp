@@ -86,7 +86,7 @@ const std::vector<ModuleCheck>& module_checks() {
       {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
        &run_cascades_check, OffGl::query_cases,
-       "the blend pass over rendered cascades and the city scene"},
+       "the city scene's cascaded techniques"},
       {"exports", "the export entries (what bundle --target hlsl|msl translates) as query passes: pnExactPcss vs exact "
                   "PCSS brute force, pnPcf vs 2x2 bilinear PCF on the CPU, both overloads",
        &run_exports_check, OffGl::every_case},

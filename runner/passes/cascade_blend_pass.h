@@ -2,9 +2,10 @@
 // produced on each cascade, blended into one by view depth.
 #pragma once
 
+#include <memory>
 #include <vector>
 
-#include "gl/compute_program.h"
+#include "device/query_device.h"
 #include "gl/texture.h"
 #include "shader/source_tree.h"
 
@@ -22,16 +23,20 @@ struct CascadeBlend {
 
 class CascadeBlendPass {
  public:
-  CascadeBlendPass(const Context& context, const SourceTree& tree);
+  CascadeBlendPass(const QueryDevice& device, const SourceTree& tree);
 
-  // One screen² R32F visibility from `visibilities` (one a cascade, nearest first, screen² R32F).
+  // One screen² R32F visibility from `visibilities` (one a cascade, nearest first, screen² R32F),
+  // by `view_depth` (cascades.view_depth's texture; any executor).
+  std::unique_ptr<DeviceTexture> blend(const DeviceTexture& view_depth, const CascadeBlend& cascades,
+                                       const std::vector<const DeviceTexture*>& visibilities, int screen_size) const;
+  // The same with GL textures (the device is a GL context).
   FloatTexture run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities,
                    int screen_size) const;
 
  private:
-  const Context* context_;
-  ComputeProgram program_;
-  GlObject unused_;  // bound where a cascade is missing (1×1, never read)
+  const QueryDevice* device_;
+  std::unique_ptr<QueryProgram> program_;
+  std::unique_ptr<DeviceTexture> unused_;  // bound where a cascade is missing (1×1, never read)
 };
 
 }  // namespace pn
