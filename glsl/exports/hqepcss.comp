@@ -1,32 +1,33 @@
 // exports/hqepcss.comp — the entry `penumbra bundle hqepcss.glsl --target hlsl|msl` translates
-// (runner/shader/export_source.h). SPIR-V keeps only what an entry point reaches, so this entry
-// calls each overload of pnHqepcss once per receiver of a receiver image: the export then holds the call and
-// everything it calls, with the parameters' names. Its bindings are an example; an engine calls
-// the exported function from its own shader with its own resources.
+// (runner/shader/export_source.h), and the one the exports check runs on every API. SPIR-V keeps
+// only what an entry point reaches, so this entry calls each overload of pnHqepcss once per
+// receiver of a receiver image: the export then holds the call and everything it calls, with the
+// parameters' names. Its bindings (exports.h, hqepcss.h) are an example; an engine calls the
+// exported function from its own shader with its own resources.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+#include "hqepcss.h"
 #include "hqepcss.glsl"
 
-layout(rgba32f, binding = 0) writeonly uniform image2D pnVisibility;
-layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 1: with the receiver plane)
-layout(binding = 2) uniform sampler2D pnReceiverPlanes;  // (du, dv): light depth per texel
-layout(binding = 3) uniform sampler2DArray pnPyramid;  // the decreased depth pyramid (depth_pyramid.glsl)
-layout(binding = 4) uniform sampler2D pnDepthMap;       // the shadow map, linear depth
-layout(std140, binding = 5) uniform PnHqepcssExport {
-  PnLight light;
-  PnHqepcssSettings settings;
-} pnExport;
+layout(rgba32f, binding = PN_EXPORT_VISIBILITY_IMAGE) writeonly uniform image2D pnVisibility;
+layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+layout(binding = PN_EXPORT_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;  // the decreased depth pyramid
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;    // the shadow map, linear depth
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
   vec4 r = texelFetch(pnReceivers, p, 0);
   vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
-  // filterScale 0: the shipped defaults with the block's bias (pnHqepcssDefaults, in the export too).
-  PnHqepcssSettings settings = pnHqepcssDefaults(pnExport.settings.bias);
-  if (pnExport.settings.filterScale > 0.0) settings = pnExport.settings;
-  float v = r.w != 0.0 ? pnHqepcss(pnPyramid, pnDepthMap, pnExport.light, r.xyz, plane, settings)
-                       : pnHqepcss(pnPyramid, pnDepthMap, pnExport.light, r.xyz, settings);
+  PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+  // filterScale <= 0: the shipped defaults with the block's bias (pnHqepcssDefaults, in the export too).
+  PnHqepcssSettings settings = pnHqepcssDefaults(pnExport.bias);
+  if (pnExport.filterScale > 0.0)
+    settings = PnHqepcssSettings(pnExport.bias, pnExport.filterScale, pnExport.refineIterations, pnExport.regionMode,
+                                 pnExport.leafSide, pnExport.leafDivisor, pnExport.nodeBudget);
+  float v = r.w != 0.0 ? pnHqepcss(pnPyramid, pnDepthMap, light, r.xyz, plane, settings)
+                       : pnHqepcss(pnPyramid, pnDepthMap, light, r.xyz, settings);
   imageStore(pnVisibility, p, vec4(v));
 }

@@ -4,6 +4,8 @@
 // CPU's definitions of the calls, for every pixel of each scene that sees a surface:
 // - pnExactPcss against exact PCSS brute force (exact_pcss_reference, double);
 // - pnPcf against 2×2 bilinear PCF (pcf_plane_reference, double);
+// - pnHqepcss with its exact settings (no refinement, exact regions, leaf 1) over the decreased
+//   depth pyramid built on the executor, against exact PCSS brute force;
 // - pnFastPcss with its exact settings (no refinement, exact regions, leaf 1, the summed-area
 //   table's blocker sums: exports/fast_pcss.comp with PN_EXPORT_SUM_TABLE) against exact PCSS
 //   brute force, over the min/max mip chain and the table built on the same executor;
@@ -20,6 +22,7 @@
 #include "core/format.h"
 #include "scenes.h"
 #include "gl/std140.h"
+#include "passes/depth_pyramid_pass.h"
 #include "passes/export_pass.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/summed_area_pass.h"
@@ -33,11 +36,14 @@
 namespace pn::glsl {
 #include "exports/exact_pcss.h"
 #include "exports/fast_pcss.h"
+#include "exports/hqepcss.h"
 #include "exports/pcf.h"
 PN_STD140_SIZE(PnExactPcssExport, 32);
 PN_STD140_OFFSET(PnExactPcssExport, bias, 24);
 PN_STD140_SIZE(PnFastPcssExport, 80);
 PN_STD140_OFFSET(PnFastPcssExport, grid, 64);
+PN_STD140_SIZE(PnHqepcssExport, 64);
+PN_STD140_OFFSET(PnHqepcssExport, nodeBudget, 48);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -81,9 +87,12 @@ CaseResult against(const std::string& name, const SceneImages& s, const PcssRefe
           compare(reference.visibility, seen, Tolerance::absolute(kFractionRounding))};
 }
 
-// pnFastPcss's settings that make it exact PCSS (fast_pcss.glsl "Exactness"), filter scale c.
-glsl::PnFastPcssExport exact_fast_block(const LightModel& light, float bias, float c) {
-  glsl::PnFastPcssExport b{};
+// The settings pnFastPcss and pnHqepcss share, as they make the call exact PCSS (fast_pcss.glsl
+// "Exactness"; the fast_pcss check's "hqepcss, refine 0, leaf 1, exact regions"): no refinement,
+// exact regions, leaf 1, no budget; filter scale c.
+template <class Block>
+Block exact_settings_block(const LightModel& light, float bias, float c) {
+  Block b{};
   set_light_fields(b, light);
   b.bias = bias;
   b.filterScale = c;
@@ -91,9 +100,15 @@ glsl::PnFastPcssExport exact_fast_block(const LightModel& light, float bias, flo
   b.regionMode = PN_REGION_EXACT;
   b.leafSide = 1;
   b.leafDivisor = 0;
+  b.nodeBudget = PN_TRAVERSAL_NO_BUDGET;
+  return b;
+}
+
+// pnFastPcss's besides: the summed-area table's exact blocker sums, no grid.
+glsl::PnFastPcssExport exact_fast_block(const LightModel& light, float bias, float c) {
+  glsl::PnFastPcssExport b = exact_settings_block<glsl::PnFastPcssExport>(light, bias, c);
   b.leafMode = PN_LEAF_SAMPLED;
   b.blockerLeafMode = PN_FAST_PCSS_SAME_LEAF_MODE;
-  b.nodeBudget = PN_TRAVERSAL_NO_BUDGET;
   b.depthSums = PN_DEPTH_SUMS_TABLE;
   b.grid = 0;
   return b;
@@ -105,7 +120,9 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss");
   const ExportPass pcf(env.device, env.tree, "pcf");
   const ExportPass fast(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
+  const ExportPass hqepcss(env.device, env.tree, "hqepcss");
   const MinMaxMipBuilder mips(env.device, env.tree);
+  const DepthPyramidBuilder pyramids(env.device, env.tree);
   const SummedAreaPass sums(env.device, env.tree);
   const std::unique_ptr<DeviceTexture> table = upload_sample_table(env.device, generate_sample_table(kSampleTableSeed));
   const float bias = exact_pcss().bias;
@@ -127,13 +144,23 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                 s, reference, exact.run({{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
                                                         query_block(block))));
     }
+    const PcssReference exact_reference =
+        exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kPcssDecisionMargin);
+    const DepthPyramid pyramid = pyramids.build(*map, kMap, kMap, 31);
+    const glsl::PnHqepcssExport hqepcss_block = exact_settings_block<glsl::PnHqepcssExport>(scene.light, bias, 1.0f);
+    results.push_back(against(name + "exports/hqepcss.comp (pnHqepcss: refine 0, exact regions, leaf 1) vs exact PCSS "
+                                     "brute force on the CPU",
+                              s, exact_reference,
+                              hqepcss.run({{PN_EXPORT_PYRAMID_BINDING, *pyramid.texture},
+                                           {PN_EXPORT_DEPTH_MAP_BINDING, *map}},
+                                          s.receivers, query_block(hqepcss_block))));
     const MinMaxMipChain mip = mips.build(*map, kMap);
     const SummedAreaTable depth_sums = sums.build(*map, kMap, kMap);
     const glsl::PnFastPcssExport fast_block = exact_fast_block(scene.light, bias, 1.0f);
     results.push_back(
         against(name + "exports/fast_pcss.comp (pnFastPcss: refine 0, exact regions, leaf 1, table sums) vs exact PCSS "
                        "brute force on the CPU",
-                s, exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kPcssDecisionMargin),
+                s, exact_reference,
                 fast.run({{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
                           {PN_EXPORT_SAMPLE_TABLE_BINDING, *table},
                           {PN_EXPORT_SUM_TABLE_BINDING, *depth_sums.texture}},

@@ -219,6 +219,21 @@ class HostBuffer {
   void* mapped_ = nullptr;
 };
 
+// Device-local memory for `image`, bound to it.
+VkDeviceMemory bind_image_memory(const VulkanDevice::State& s, VkImage image, const std::string& what) {
+  VkMemoryRequirements needs;
+  vkGetImageMemoryRequirements(s.device, image, &needs);
+  VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  allocate.allocationSize = needs.size;
+  allocate.memoryTypeIndex = s.memory_type(needs.memoryTypeBits, 0);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  vk_check(vkAllocateMemory(s.device, &allocate, nullptr, &memory), "allocating " + what);
+  const VkResult bound = vkBindImageMemory(s.device, image, memory, 0);
+  if (bound != VK_SUCCESS) vkFreeMemory(s.device, memory, nullptr);
+  vk_check(bound, "binding " + what);
+  return memory;
+}
+
 // Every image stays in GENERAL layout from its upload on: a pass samples one level of a chain while
 // it writes the next as a storage image, and results are read back from it.
 constexpr VkImageLayout kImageLayout = VK_IMAGE_LAYOUT_GENERAL;
@@ -290,13 +305,7 @@ class VulkanImage final : public DeviceTexture {
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     vk_check(vkCreateImage(s.device, &info, nullptr, &image_), "creating a " + shape_text(shape) + " image");
-    VkMemoryRequirements needs;
-    vkGetImageMemoryRequirements(s.device, image_, &needs);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = needs.size;
-    allocate.memoryTypeIndex = s.memory_type(needs.memoryTypeBits, 0);
-    vk_check(vkAllocateMemory(s.device, &allocate, nullptr, &memory_), "allocating image memory");
-    vk_check(vkBindImageMemory(s.device, image_, memory_, 0), "binding image memory");
+    memory_ = bind_image_memory(s, image_, "image memory");
     view_ = make_view(0, shape.levels);
     for (int level = 0; level < shape.levels; ++level) level_views_.push_back(make_view(level, 1));
   }
@@ -728,13 +737,7 @@ class DepthImage {
     info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     vk_check(vkCreateImage(s.device, &info, nullptr, &image_), "creating a depth buffer");
-    VkMemoryRequirements needs;
-    vkGetImageMemoryRequirements(s.device, image_, &needs);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = needs.size;
-    allocate.memoryTypeIndex = s.memory_type(needs.memoryTypeBits, 0);
-    vk_check(vkAllocateMemory(s.device, &allocate, nullptr, &memory_), "allocating a depth buffer");
-    vk_check(vkBindImageMemory(s.device, image_, memory_, 0), "binding a depth buffer");
+    memory_ = bind_image_memory(s, image_, "a depth buffer");
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = image_;
     view.viewType = VK_IMAGE_VIEW_TYPE_2D;
