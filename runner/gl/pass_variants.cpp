@@ -7,12 +7,6 @@ namespace pn {
 PassVariants::PassVariants(const Context& context, const SourceTree& tree, std::string pass)
     : context_(&context), tree_(tree), pass_(std::move(pass)) {}
 
-std::string define_key(const std::vector<Define>& defines) {
-  std::string key;
-  for (const Define& d : defines) key += d.name + "=" + d.value + ";";
-  return key;
-}
-
 const ComputeProgram& PassVariants::get(const std::vector<Define>& defines) const {
   const std::string key = define_key(defines);
   auto found = programs_.find(key);

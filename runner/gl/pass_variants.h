@@ -14,9 +14,6 @@
 
 namespace pn {
 
-// The key a set of defines is kept under: "NAME=value;" for each, in order.
-std::string define_key(const std::vector<Define>& defines);
-
 class PassVariants {
  public:
   PassVariants(const Context& context, const SourceTree& tree, std::string pass);

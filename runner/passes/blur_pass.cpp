@@ -4,7 +4,6 @@
 #include <string>
 
 #include "core/error.h"
-#include "gl/pass_variants.h"
 #include "gl/std140.h"
 
 namespace pn::glsl {

@@ -8,6 +8,12 @@
 
 namespace pn {
 
+std::string define_key(const std::vector<Define>& defines) {
+  std::string key;
+  for (const Define& d : defines) key += d.name + "=" + d.value + ";";
+  return key;
+}
+
 const std::vector<Target>& all_targets() {
   static const std::vector<Target> targets{Target::gl450, Target::vulkan, Target::es310};
   return targets;

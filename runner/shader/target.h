@@ -22,6 +22,9 @@ struct Define {
   std::string value;
 };
 
+// The key a set of defines is kept under (a pass compiled once per set): "NAME=value;" for each, in order.
+std::string define_key(const std::vector<Define>& defines);
+
 // A whole shader: `#version` and (for ES) default precisions, the defines,
 // the flattened source and, when it has no main(), a minimal 1×1×1 compute
 // entry point. `files` extends the flattened file table with the entry point.
