@@ -2,7 +2,9 @@
 // module's *_query.comp runs over a batch of queries on some device — an OpenGL 4.5 or ES 3.1
 // context (gl/context.h), or a Vulkan device (vk/vulkan_device.h) — and nothing here names
 // either. A query pass (passes/query_pass.h) compiles through this interface, uploads its
-// textures through it and dispatches through it, so one check runs on every executor.
+// textures through it and dispatches through it, so one check runs on every executor. The passes
+// that build structures (textures of levels and layers, storage buffers, a dispatch over a grid)
+// and the raster passes (a triangle list drawn with depth testing) go through it the same way.
 //
 // Bindings are the numbers of glsl/passes/<pass>.h; a block is std140 bytes; the queries go up
 // as RGBA32F images (query k at texel k, core/query_grid.h), the results come back as RGBA32F
