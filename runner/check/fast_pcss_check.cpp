@@ -23,13 +23,12 @@
 #include <string>
 #include <vector>
 
-#include "cache/full_render_source.h"
 #include "check/module_check.h"
 #include "check/pcss_compare.h"
 #include "scene/scene.h"
-#include "frame/scene_frame.h"
-#include "gl/texture.h"
+#include "scenes.h"
 #include "passes/gbuffer_pass.h"
+#include "passes/shadow_map_pass.h"
 #include "pipeline/pcss_pipeline.h"
 #include "reference/pcss_reference.h"
 
@@ -87,31 +86,39 @@ std::vector<PcssSettings> one_call_settings() {
 }  // namespace
 
 std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
-  const Context& context = env.context();
-  const PcssPipeline pipeline(context, env.tree);
-  FullRenderSource source(context, env.tree);
-  const GBufferRenderer gbuffers(context, env.tree);
+  const QueryDevice& device = env.device;
+  const PcssPipeline pipeline(device, env.tree);
+  const ShadowMapRenderer maps(device, env.tree);
+  const GBufferRenderer gbuffers(device, env.tree);
+  const auto read = [&](const DeviceTexture& t) { return device.read_texture(t, 0, 0); };
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";
-    const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, kScreen);
-    const TechniqueInputs inputs = scene_frame.inputs();
-    const Image map = read_float_texture(context, *scene_frame.shadow_map, kMap, kMap, 1);
-    const Image gbuffer = read_float_texture(context, scene_frame.gbuffer);
+    // The scene's map and G-buffer as a frame renders them (render_scene_frame), on the executor.
+    const std::unique_ptr<DeviceTexture> shadow_map = maps.render_texture(scene, scene.map_light());
+    const std::unique_ptr<DeviceTexture> gbuffer_texture =
+        gbuffers.render_texture(scene, kScreen, fixtures::kNormalOffsetTexels, scene.map_light());
+    PcssInputs inputs;
+    inputs.light = scene.light;
+    inputs.screen_size = kScreen;
+    inputs.shadow_map = shadow_map.get();
+    inputs.gbuffer = gbuffer_texture.get();
+    const Image map = read(*shadow_map);
+    const Image gbuffer = read(*gbuffer_texture);
 
     for (const PcssSettings& settings : one_call_settings()) {
       const std::string what = name + ": " + settings.name;
       const PcssFrame computed = pipeline.run(inputs, settings);
-      const Image compute_work = read_float_texture(context, computed.work);
-      const Image fragment = read_float_texture(context, pipeline.run_fragment(inputs, settings));
-      const Image compute_visibility = read_float_texture(context, computed.visibility);
+      const Image compute_work = read(*computed.work);
+      const Image fragment = read(*pipeline.run_fragment(inputs, settings));
+      const Image compute_visibility = read(*computed.visibility);
       const bool plane = settings.receiver_plane_tan > 0;  // the staged passes take no plane
       if (!plane) {
         PcssSettings staged_settings = settings;
         staged_settings.staged = true;
-        const Image staged = read_float_texture(context, pipeline.run(inputs, staged_settings).soft_shadow());
+        const Image staged = read(pipeline.run(inputs, staged_settings).soft_shadow());
         results.push_back({what + ": one call in a compute pass vs the staged passes", Tolerance::exact(),
                            compare(staged, compute_visibility, Tolerance::exact())});
       }

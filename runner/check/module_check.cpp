@@ -61,7 +61,7 @@ const std::vector<ModuleCheck>& module_checks() {
        &run_pipeline_check},
       {"fast_pcss", "pnFastPcss, pnPoissonPcss, pnExactPcss, pnHqepcss as one call: compute pass vs the staged passes "
                     "and fragment shader vs compute pass (exact); exact and all-off vs exact PCSS brute force on the CPU",
-       &run_fast_pcss_check},
+       &run_fast_pcss_check, OffGl::every_case},
       {"pcf", "brute-force window scan (whole, banded, bounded side) vs the definition in double; counts exact",
        &run_pcf_check, OffGl::every_case},
       {"poisson_pcss", "Poisson-disk samples (parameter and constant disks, rotation) vs the definition in double",

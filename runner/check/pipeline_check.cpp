@@ -35,7 +35,7 @@ constexpr int kMap = 128, kScreen = 64;     // small: brute force on llvmpipe st
 constexpr double kMinimumSsim = 0.97;       // seed 000 Table / §5.4 reports 0.9705
 
 Image read1(const Context& c, const GlObject& t, int size) { return read_float_texture(c, t, size, size, 1); }
-Image read4(const Context& c, const GlObject& t, int size) { return read_float_texture(c, t, size, size, 4); }
+Image read(const QueryDevice& d, const DeviceTexture& t) { return d.read_texture(t, 0, 0); }
 
 // A scalar as a 1×1 comparison: expected `target`, observed `value`, passing within `bound`.
 CaseResult scalar_case(const std::string& name, double target, double value, Tolerance tolerance) {
@@ -93,8 +93,8 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
   const PcssSettings& s = frame.settings;
   struct Step {
     const char* what;
-    const GlObject& keys;
-    const GlObject& parents;
+    const DeviceTexture& keys;
+    const PcssFrame::Texture& parents;
     int tile;
     bool shades;  // Step 5: its representatives' results are the visibility
   };
@@ -102,9 +102,9 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
                            Step{"Step 5", frame.filter_reuse_keys(), frame.filter_parents, s.filter_tile, true}}) {
     ReuseParams params;
     params.sigma1 = s.sigma1, params.sigma2 = s.sigma2, params.sigma3 = s.sigma3, params.tile = step.tile;
-    const std::vector<int> parents = reuse_parents(read4(context, step.keys, n), params);
+    const std::vector<int> parents = reuse_parents(read(context, step.keys), params);
     const std::vector<int> roots = reuse_roots(parents);
-    const Image codes = read1(context, step.parents, n);
+    const Image codes = read(context, *step.parents);
     Image expected(n, n), tiles(n, n), same_tile(n, n, 1, 1.0f);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
@@ -119,7 +119,7 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
     out.push_back({name + ": " + step.what + " every group inside its k x k tile (1 = inside)", Tolerance::exact(),
                    compare(same_tile, tiles, Tolerance::exact())});
     if (step.shades) {
-      const Image visibility = read_float_texture(context, frame.visibility);
+      const Image visibility = read(context, *frame.visibility);
       Image of_root(n, n);
       for (int i = 0; i < n * n; ++i) of_root.at(i % n, i / n) = visibility.at(roots[i] % n, roots[i] / n);
       out.push_back({name + ": Step 5 every pixel's visibility equals its representative's", Tolerance::exact(),
@@ -187,7 +187,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
     const PcssSettings exact = exact_pcss();
     const PcssFrame exact_frame = pipeline.run(inputs, exact);
-    const Image exact_visibility = read_float_texture(context, exact_frame.soft_shadow());
+    const Image exact_visibility = read(context, exact_frame.soft_shadow());
     const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
     Image observed = exact_visibility;
     const int ambiguous = leave_out_ambiguous(reference, observed);
@@ -202,9 +202,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     PcssSettings off = fast_pcss_all_off();
     off.staged = true;  // its blocker means, Step 4's output (the one call's: the fast_pcss check)
     const PcssFrame off_frame = pipeline.run(inputs, off);
-    const Image off_visibility = read_float_texture(context, off_frame.soft_shadow());
-    const Image exact_mean = read_float_texture(context, exact_frame.blocker_mean);
-    const Image off_mean = read_float_texture(context, off_frame.blocker_mean);
+    const Image off_visibility = read(context, off_frame.soft_shadow());
+    const Image exact_mean = read(context, *exact_frame.blocker_mean);
+    const Image off_mean = read(context, *off_frame.blocker_mean);
     results.push_back({name + ": blocker mean, all improvements off vs exact PCSS", Tolerance::relative(1e-5),
                        compare(exact_mean, off_mean, Tolerance::relative(1e-5))});
     Image aligned = off_visibility;
@@ -226,27 +226,27 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // equals the CPU's depth-aware blur of its unblurred map over the G-buffer's receiver depths.
     {
       const BlurParams& blur = fast_frame.settings.blur_params;
-      const Image unblurred = read_float_texture(context, fast_frame.visibility);
+      const Image unblurred = read(context, *fast_frame.visibility);
       const Image expected = blur_depth_aware_reference(unblurred, receiver_depths(gbuffer), blur);
       const Tolerance tolerance = blur_tolerance(blur, unblurred);
       results.push_back({name + ": fast-paper's Step 6 vs the depth-aware blur over the G-buffer's receiver depths",
-                         tolerance, compare(expected, read_float_texture(context, fast_frame.blurred), tolerance)});
+                         tolerance, compare(expected, read(context, *fast_frame.blurred), tolerance)});
       PcssSettings adaptive = fast_pcss();
       adaptive.blur = true;  // fast-blur
       const PcssFrame adaptive_frame = pipeline.run(inputs, adaptive);
-      const Image adaptive_unblurred = read_float_texture(context, adaptive_frame.visibility);
+      const Image adaptive_unblurred = read(context, *adaptive_frame.visibility);
       const Image depths = receiver_depths(gbuffer);
-      const Image adaptive_expected = blur_adaptive_reference(adaptive_unblurred, read_float_texture(context, adaptive_frame.filter_map),
+      const Image adaptive_expected = blur_adaptive_reference(adaptive_unblurred, read(context, *adaptive_frame.filter_map),
                                                               &depths, adaptive_frame.settings.blur_params);
       const Tolerance adaptive_tolerance = blur_tolerance(adaptive_frame.settings.blur_params, adaptive_unblurred);
       results.push_back({name + ": fast-blur's Step 6 vs the adaptive depth-aware blur (radius from each filter side)",
                          adaptive_tolerance,
-                         compare(adaptive_expected, read_float_texture(context, adaptive_frame.blurred), adaptive_tolerance)});
+                         compare(adaptive_expected, read(context, *adaptive_frame.blurred), adaptive_tolerance)});
     }
-    const Image listed = read_float_texture(context, fast_frame.soft_shadow());
+    const Image listed = read(context, fast_frame.soft_shadow());
     PcssSettings branch = fast_paper_pcss();
     branch.skip = WorkSkip::branch;
-    const Image branched = read_float_texture(context, pipeline.run(inputs, branch).soft_shadow());
+    const Image branched = read(context, pipeline.run(inputs, branch).soft_shadow());
     results.push_back({name + ": fast-paper, representatives compacted into a list vs branching in place",
                        Tolerance::exact(), compare(listed, branched, Tolerance::exact())});
 
@@ -262,13 +262,13 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const GlObject damaged_map = upload_float_texture(context, damaged), outside_gbuffer = upload_float_texture(context, outside);
     const TechniqueInputs bad{scene.light, kScreen, &damaged_map, &outside_gbuffer};
     const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
-    Image bad_observed = read_float_texture(context, pipeline.run(bad, exact).soft_shadow());
+    Image bad_observed = read(context, pipeline.run(bad, exact).soft_shadow());
     leave_out_ambiguous(bad_reference, bad_observed);
     results.push_back({name + ": exact PCSS, NaN/+Inf texels (no occluder) and receivers outside the frustum (lit)",
                        Tolerance::absolute(kFractionRounding),
                        compare(bad_reference.visibility, bad_observed, Tolerance::absolute(kFractionRounding))});
     results.push_back(in_unit_range(name + ": Fast PCSS, NaN/+Inf texels and receivers outside the frustum: finite, in [0, 1]",
-                                    read_float_texture(context, pipeline.run(bad, fast_pcss()).soft_shadow())));
+                                    read(context, pipeline.run(bad, fast_pcss()).soft_shadow())));
 
     // A zero-size light: every region is one texel, a hard shadow.
     Scene point = scene;
@@ -278,9 +278,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     const Image hard = hard_shadow(read1(context, *point_frame.shadow_map, kMap), read_float_texture(context, point_frame.gbuffer), exact.bias);
     for (const PcssSettings& s : {exact, fast_pcss()})  // fast: exact regions, no blur
       results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
-                         compare(hard, read_float_texture(context, pipeline.run(point_inputs, s).soft_shadow()), Tolerance::exact())});
+                         compare(hard, read(context, pipeline.run(point_inputs, s).soft_shadow()), Tolerance::exact())});
     results.push_back(in_unit_range(name + ", zero-size light: fast-paper (2x2-texel windows): finite, in [0, 1]",
-                                    read_float_texture(context, pipeline.run(point_inputs, fast_paper_pcss()).soft_shadow())));
+                                    read(context, pipeline.run(point_inputs, fast_paper_pcss()).soft_shadow())));
   }
 
   // The paper's quality claim (§5.4: SSIM of the rendered pictures) on the default
@@ -290,9 +290,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, 512);
   const TechniqueInputs inputs = scene_frame.inputs();
   const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512));
-  const Image exact = read_float_texture(context, pipeline.run(inputs, exact_pcss()).soft_shadow());
+  const Image exact = read(context, pipeline.run(inputs, exact_pcss()).soft_shadow());
   for (const PcssSettings& s : {fast_pcss(), fast_paper_pcss(), hqepcss()}) {
-    const Image shadow = read_float_texture(context, pipeline.run(inputs, s).soft_shadow());
+    const Image shadow = read(context, pipeline.run(inputs, s).soft_shadow());
     char map_ssim[32];
     std::snprintf(map_ssim, sizeof map_ssim, "%.4f", ssim(exact, shadow));
     results.push_back(scalar_case(std::string(fixtures::kScenes[0].name) + " 512²: SSIM of " + s.name +

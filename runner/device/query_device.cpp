@@ -1,5 +1,7 @@
 #include "device/query_device.h"
 
+#include <limits>
+
 #include "core/error.h"
 
 namespace pn {
@@ -17,6 +19,34 @@ void check_batch_bindings(const QueryBindings& bindings, const QueryBatch& batch
                 std::to_string(batch.results() + batch.word_results()) +
                 " results: expected one per binding of the pass");
 }
+
+std::vector<QueryBlock> uniform_blocks(const PassResources& resources) {
+  std::vector<QueryBlock> out;
+  if (resources.block.data != nullptr) out.push_back(resources.block);
+  out.insert(out.end(), resources.more_blocks.begin(), resources.more_blocks.end());
+  return out;
+}
+
+namespace {
+
+// The stages of a device without timestamp queries: named, their times NaN.
+class UntimedStages final : public StageTimes {
+ public:
+  void start() override {}
+  void stage(const std::string& name) override { names_.push_back(name); }
+  std::vector<std::pair<std::string, double>> read() const override {
+    std::vector<std::pair<std::string, double>> out;
+    for (const std::string& name : names_) out.emplace_back(name, std::numeric_limits<double>::quiet_NaN());
+    return out;
+  }
+
+ private:
+  std::vector<std::string> names_;
+};
+
+}  // namespace
+
+std::unique_ptr<StageTimes> QueryDevice::stage_clock() const { return std::make_unique<UntimedStages>(); }
 
 std::pair<int, int> query_batch_size(const std::vector<Image>& inputs) {
   if (inputs.empty()) throw Error("query batch: expected at least one input image");

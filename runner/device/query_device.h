@@ -111,6 +111,23 @@ struct PassResources {
   std::vector<PassImage> images;
   std::vector<PassBuffer> buffers;
   QueryBlock block;
+  std::vector<QueryBlock> more_blocks;  // further uniform blocks (a table beside the pass's parameters)
+};
+// `block` (when it has data) and `more_blocks`: every uniform block a dispatch binds.
+std::vector<QueryBlock> uniform_blocks(const PassResources& resources);
+
+// GPU time of consecutive stages of one run, read once at the end (a device's timestamp
+// queries); NaN for every stage on a device without them.
+class StageTimes {
+ public:
+  virtual ~StageTimes() = default;
+  StageTimes() = default;
+  StageTimes(const StageTimes&) = delete;
+  StageTimes& operator=(const StageTimes&) = delete;
+  virtual void start() = 0;                        // the beginning of the first stage
+  virtual void stage(const std::string& name) = 0;  // the end of the stage `name`
+  // (name, GPU milliseconds) of every stage in order; waits for the device.
+  virtual std::vector<std::pair<std::string, double>> read() const = 0;
 };
 
 // What one dispatch wrote, read back: result k of query k at texel k of each image (query_result).
@@ -207,6 +224,15 @@ class QueryDevice {
   // with `resources` bound, and makes its writes visible to what follows. Throws Error naming
   // the pass for a resource its shader uses and `resources` lacks, or one made elsewhere.
   virtual void run(const QueryProgram& program, const PassResources& resources, int width, int height) const = 0;
+  // As run, over the work groups counted in the first three 32-bit words of `groups` (x, y, z),
+  // written by an earlier pass: a list whose length the device decided.
+  virtual void run_indirect(const QueryProgram& program, const PassResources& resources,
+                            const DeviceBuffer& groups) const = 0;
+  // Every texel of every level and layer of a texture made by make_texture or upload set to `value`.
+  virtual void clear_texture(const DeviceTexture& texture, const float value[4]) const = 0;
+  // A clock for the stages of one run (GL's and Vulkan's timestamp queries where the device has
+  // them). This default's times are all NaN ("unavailable"), never made up.
+  virtual std::unique_ptr<StageTimes> stage_clock() const;
 
   // The raster passes (the shadow map, the G-buffer): `vertex` and `fragment` (paths under the glsl
   // root) as one program whose vertex stage reads a world position at PN_SCENE_POSITION_LOCATION
@@ -214,6 +240,16 @@ class QueryDevice {
   // (glsl/passes/scene_raster.h). Throws Error as compile_query.
   virtual std::unique_ptr<QueryProgram> compile_raster(const SourceTree& tree, const std::string& vertex,
                                                        const std::string& fragment, TexelFormat target) const = 0;
+  // A fragment pass over the whole target, as a deferred lighting pass runs: `fragment` with
+  // `defines` behind passes/full_screen.vert (one triangle, no vertex input), its colour at
+  // PN_SCENE_TARGET_LOCATION, the pixel from gl_FragCoord.
+  virtual std::unique_ptr<QueryProgram> compile_full_screen(const SourceTree& tree, const std::string& fragment,
+                                                            TexelFormat target,
+                                                            const std::vector<Define>& defines) const = 0;
+  // Runs a compile_full_screen program over a new size × size texture of its target format with
+  // `resources`' textures and blocks bound: every texel is the fragment's colour.
+  virtual std::unique_ptr<DeviceTexture> draw_full_screen(const QueryProgram& program, int size,
+                                                          const PassResources& resources) const = 0;
   // Draws `vertices` (a triangle list) with `program` into a new size × size texture of its target
   // format cleared to `clear`, the nearest surface kept (depth test "less"; clip-space depth -1..1
   // as GL's), rows from the bottom as GL's framebuffer; `resources`' textures and block bound.
@@ -221,6 +257,9 @@ class QueryDevice {
                                                         const std::vector<glm::vec3>& vertices, int size,
                                                         const float clear[4], const PassResources& resources) const = 0;
 };
+
+// The vertex stage of every full-screen pass (compile_full_screen).
+inline constexpr const char* kFullScreenVertex = "passes/full_screen.vert";
 
 TextureShape float_shape(int width, int height, int channels, int levels = 1);  // R32F, RG32F or RGBA32F
 

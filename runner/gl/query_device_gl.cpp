@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "gl/gpu_timer.h"
 #include "gl/pass_bindings.h"
 #include "gl/raster_target.h"
 
@@ -157,11 +158,11 @@ void Context::write_buffer(const DeviceBuffer& buffer, std::size_t offset, std::
   pn::write_buffer(*this, made_here<GlDeviceBuffer>(buffer, "buffer").object(), offset, bytes, data);
 }
 
-void Context::run(const QueryProgram& program, const PassResources& resources, int width, int height) const {
-  const auto& gl_program = made_here<GlQueryProgram>(program, "program");
-  if (width <= 0 || height <= 0) return;
-  PassBindings bind(*this);
-  if (resources.block.data != nullptr) bind.uniform_data(resources.block.binding, resources.block.data, resources.block.size);
+namespace {
+
+// `resources` bound for one dispatch or draw (`bind` is the dispatch's scope).
+void bind_resources(PassBindings& bind, const PassResources& resources) {
+  for (const QueryBlock& block : uniform_blocks(resources)) bind.uniform_data(block.binding, block.data, block.size);
   for (const QueryTexture& t : resources.textures) bind.texture(t.binding, gl_texture(t.texture));
   for (const PassImage& image : resources.images) {
     const TextureShape& shape = image.texture.shape();
@@ -171,8 +172,48 @@ void Context::run(const QueryProgram& program, const PassResources& resources, i
   }
   for (const PassBuffer& b : resources.buffers)
     bind.storage_buffer(b.binding, made_here<GlDeviceBuffer>(b.buffer, "buffer").object());
+}
+
+// StageClock (gl/gpu_timer.h) behind the device's interface.
+class GlStageTimes final : public StageTimes {
+ public:
+  explicit GlStageTimes(const Context& context) : clock_(context) {}
+  void start() override { clock_.start(); }
+  void stage(const std::string& name) override { clock_.stage(name); }
+  std::vector<std::pair<std::string, double>> read() const override { return clock_.read(); }
+
+ private:
+  StageClock clock_;
+};
+
+}  // namespace
+
+void Context::run(const QueryProgram& program, const PassResources& resources, int width, int height) const {
+  const auto& gl_program = made_here<GlQueryProgram>(program, "program");
+  if (width <= 0 || height <= 0) return;
+  PassBindings bind(*this);
+  bind_resources(bind, resources);
   gl_program.program().dispatch(width, height);
 }
+
+void Context::run_indirect(const QueryProgram& program, const PassResources& resources,
+                           const DeviceBuffer& groups) const {
+  const auto& gl_program = made_here<GlQueryProgram>(program, "program");
+  PassBindings bind(*this);
+  bind_resources(bind, resources);
+  gl_program.program().dispatch_indirect(made_here<GlDeviceBuffer>(groups, "buffer").object());
+}
+
+void Context::clear_texture(const DeviceTexture& texture, const float value[4]) const {
+  const TextureShape& shape = texture.shape();
+  if (shape.width == 0) throw Error("clearing a texture of unknown shape: expected one made by make_texture or upload");
+  for (int level = 0; level < shape.levels; ++level)
+    for (int layer = 0; layer < shape.layers; ++layer)
+      clear_texture_layer(*this, gl_texture(texture), level, shape.array ? layer : 0,
+                          shape.format == TexelFormat::rgba32ui, value);
+}
+
+std::unique_ptr<StageTimes> Context::stage_clock() const { return std::make_unique<GlStageTimes>(*this); }
 
 const GlRasterProgram& gl_raster_program(const QueryProgram& program) {
   return made_here<GlRasterProgram>(program, "raster program");
@@ -195,10 +236,28 @@ std::unique_ptr<DeviceTexture> Context::draw_triangles(const QueryProgram& progr
   target.clear(clear);
   {
     PassBindings bind(*this);
-    if (resources.block.data != nullptr)
-      bind.uniform_data(resources.block.binding, resources.block.data, resources.block.size);
-    for (const QueryTexture& t : resources.textures) bind.texture(t.binding, gl_texture(t.texture));
+    bind_resources(bind, resources);
     target.draw(raster.program(), triangles, {{0, triangles.vertex_count()}});
+  }
+  return std::make_unique<GlDeviceTexture>(target.release_texture());
+}
+
+std::unique_ptr<QueryProgram> Context::compile_full_screen(const SourceTree& tree, const std::string& fragment,
+                                                           TexelFormat target, const std::vector<Define>& defines) const {
+  if (target == TexelFormat::rgba32ui) throw Error("full-screen pass " + fragment + ": expected a float target");
+  return std::make_unique<GlRasterProgram>(link_raster_pass(*this, tree, kFullScreenVertex, fragment, defines), target);
+}
+
+std::unique_ptr<DeviceTexture> Context::draw_full_screen(const QueryProgram& program, int size,
+                                                         const PassResources& resources) const {
+  const GlRasterProgram& raster = gl_raster_program(program);
+  if (!resources.images.empty() || !resources.buffers.empty())
+    throw Error("a full-screen pass binds textures and blocks only: expected no storage images or buffers");
+  RasterTarget target(*this, size, texel_channels(raster.target()));
+  {
+    PassBindings bind(*this);
+    bind_resources(bind, resources);
+    target.draw_full_screen(raster.program());
   }
   return std::make_unique<GlDeviceTexture>(target.release_texture());
 }

@@ -174,11 +174,22 @@ GlObject make_placeholder_texture(const Context& context, GLenum target, GLenum 
 }
 
 void clear_float_texture(const Context& context, const GlObject& texture, const float value[4]) {
+  clear_texture_layer(context, texture, 0, 0, false, value);
+}
+
+void clear_texture_layer(const Context& context, const GlObject& texture, int level, int layer, bool integer,
+                         const float value[4]) {
   {
-    const AttachedFramebuffer target(context, GL_DRAW_FRAMEBUFFER, texture, 0, 0);
-    context.gl().ClearBufferfv(GL_COLOR, 0, value);
+    const AttachedFramebuffer target(context, GL_DRAW_FRAMEBUFFER, texture, level, layer);
+    if (integer) {
+      const GLuint words[4] = {static_cast<GLuint>(value[0]), static_cast<GLuint>(value[1]),
+                               static_cast<GLuint>(value[2]), static_cast<GLuint>(value[3])};
+      context.gl().ClearBufferuiv(GL_COLOR, 0, words);
+    } else {
+      context.gl().ClearBufferfv(GL_COLOR, 0, value);
+    }
   }
-  context.throw_if_gl_error("clearing a float texture");
+  context.throw_if_gl_error("clearing a texture");
 }
 
 Image read_float_texture(const Context& context, const FloatTexture& texture) {

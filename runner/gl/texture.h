@@ -51,6 +51,10 @@ Image read_float_texture(const Context& context, const GlObject& texture, int wi
 // Sets every texel of level 0 of a 2-D float texture (R32F, RG32F, RGBA32F) to `value` (its
 // first channels), through a framebuffer.
 void clear_float_texture(const Context& context, const GlObject& texture, const float value[4]);
+// Level `level`, layer `layer` (of a 2-D array; 0 otherwise) of a float or (`integer`) RGBA32UI
+// texture set to `value` (whole numbers for RGBA32UI), through a framebuffer.
+void clear_texture_layer(const Context& context, const GlObject& texture, int level, int layer, bool integer,
+                         const float value[4]);
 
 // Immutable-storage 2-D array texture, `layers` layers of width × height floats.
 GlObject make_float_texture_array(const Context& context, int width, int height, int layers, int channels);

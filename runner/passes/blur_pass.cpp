@@ -16,7 +16,8 @@ PN_STD140_OFFSET(PnBlurPassParams, pixelsPerTexel, 28);
 
 namespace pn {
 
-BlurPass::BlurPass(const QueryDevice& device, const SourceTree& tree) : device_(&device), tree_(&tree) {
+BlurPass::BlurPass(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device), variants_(device, tree, "passes/blur.comp") {
   for (int v = 0; v < 4; ++v) {  // the single-channel variants now, so a copy that does not compile fails here
     BlurParams params;
     params.depth_aware = (v & 2) != 0;
@@ -30,9 +31,7 @@ const QueryProgram& BlurPass::program(const BlurParams& params, int channels) co
   const std::vector<Define> defines{{"PN_BLUR_PASS_DEPTH_AWARE", truth(params.depth_aware)},
                                     {"PN_BLUR_PASS_ADAPTIVE", truth(params.adaptive)},
                                     {"PN_BLUR_PASS_CHANNELS", std::to_string(channels)}};
-  std::unique_ptr<QueryProgram>& made = variants_[define_key(defines)];
-  if (!made) made = device_->compile_query(*tree_, "passes/blur.comp", defines);
-  return *made;
+  return variants_.get(defines);
 }
 
 std::unique_ptr<DeviceTexture> BlurPass::run(const DeviceTexture& source, const DeviceTexture* depth, int width,

@@ -2,11 +2,11 @@
 // that blur an R32F, RG32F or RGBA32F texture with glsl/blur.glsl.
 #pragma once
 
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "device/program_variants.h"
 #include "device/query_device.h"
 #include "modules/blur.h"
 #include "shader/source_tree.h"
@@ -35,9 +35,7 @@ class BlurPass {
  private:
   const QueryProgram& program(const BlurParams& params, int channels) const;
   const QueryDevice* device_;
-  const SourceTree* tree_;
-  // blur.comp by its PN_BLUR_PASS_* switches (define_key), each compiled on first use.
-  mutable std::map<std::string, std::unique_ptr<QueryProgram>> variants_;
+  ProgramVariants variants_;  // blur.comp by its PN_BLUR_PASS_* switches
 };
 
 }  // namespace pn

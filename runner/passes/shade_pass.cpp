@@ -19,7 +19,7 @@ FloatTexture ShadePass::run(ShadeStage stage, const std::vector<Define>& defines
   const std::string key = define_key(defines);
   auto found = fragment_.find(key);
   if (found == fragment_.end())
-    found = fragment_.emplace(key, link_raster_pass(*context_, tree_, "passes/full_screen.vert", stem_ + ".frag", defines))
+    found = fragment_.emplace(key, link_raster_pass(*context_, tree_, kFullScreenVertex, stem_ + ".frag", defines))
                 .first;
   RasterTarget target(*context_, size, fragment_channels);
   target.draw_full_screen(found->second);

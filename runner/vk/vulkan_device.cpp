@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <list>
 #include <tuple>
 
 #include "core/error.h"
@@ -404,7 +405,7 @@ namespace {
 class VulkanBuffer final : public DeviceBuffer {
  public:
   VulkanBuffer(const VulkanDevice::State& s, std::size_t bytes)
-      : buffer_(s, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT), owner_(&s) {}
+      : buffer_(s, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT), owner_(&s) {}
   const HostBuffer& host() const { return buffer_; }
   const VulkanDevice::State* owner() const { return owner_; }
 
@@ -495,7 +496,8 @@ struct BoundSet {
   const VulkanDevice::State* s = nullptr;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkDescriptorSet set = VK_NULL_HANDLE;
-  std::optional<HostBuffer> uniform, guard;
+  std::list<HostBuffer> uniforms;  // one a uniform block
+  std::optional<HostBuffer> guard;
   BoundSet() = default;
   BoundSet(const BoundSet&) = delete;
   BoundSet& operator=(const BoundSet&) = delete;
@@ -639,14 +641,18 @@ void VulkanProgram::bind(const PassResources& resources, BoundSet& out) const {
         write.pImageInfo = &images[i];
         break;
       }
-      case DescriptorKind::uniform_buffer:
-        if (resources.block.data == nullptr || resources.block.binding != b.binding)
+      case DescriptorKind::uniform_buffer: {
+        const std::vector<QueryBlock> blocks = uniform_blocks(resources);
+        const auto block = std::find_if(blocks.begin(), blocks.end(),
+                                        [&](const QueryBlock& block) { return block.binding == b.binding; });
+        if (block == blocks.end())
           throw Error(where + " is a uniform block the dispatch does not give", ExitCode::failed);
-        out.uniform.emplace(s, resources.block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-        std::memcpy(out.uniform->data(), resources.block.data, resources.block.size);
-        buffers[i] = {out.uniform->buffer(), 0, resources.block.size};
+        HostBuffer& uniform = out.uniforms.emplace_back(s, block->size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        std::memcpy(uniform.data(), block->data, block->size);
+        buffers[i] = {uniform.buffer(), 0, block->size};
         write.pBufferInfo = &buffers[i];
         break;
+      }
       case DescriptorKind::storage_buffer:
         if (b.binding == kGuardBinding) {
           out.guard.emplace(s, sizeof(LoopGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -685,30 +691,36 @@ class VulkanQueryProgram final : public VulkanProgram {
   }
 
   // Binds `resources` (the loop guard besides, under bounds) and runs the pass over a width ×
-  // height grid of invocations.
-  void run(const PassResources& resources, int width, int height, const DispatchBounds& bounds) const;
+  // height grid of invocations, or (`groups`) over the work groups counted in that buffer.
+  void run(const PassResources& resources, int width, int height, const DispatchBounds& bounds,
+           const HostBuffer* groups = nullptr) const;
 
  private:
   std::vector<GuardedLoop> loops_;
 };
 
-void VulkanQueryProgram::run(const PassResources& resources, int width, int height,
-                             const DispatchBounds& bounds) const {
-  if (width <= 0 || height <= 0) return;
+void VulkanQueryProgram::run(const PassResources& resources, int width, int height, const DispatchBounds& bounds,
+                             const HostBuffer* groups) const {
+  if (groups == nullptr && (width <= 0 || height <= 0)) return;
   const VulkanDevice::State& s = *s_;
   BoundSet bound;
   bind(resources, bound);
-  const auto groups = [](int n, unsigned local) { return static_cast<uint32_t>((n + local - 1) / local); };
+  const auto group_count = [](int n, unsigned local) { return static_cast<uint32_t>((n + local - 1) / local); };
   s.submit(name_ + ": dispatch", [&](VkCommandBuffer c) {
     VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT;
+    before.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT |
+                           VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
     vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &before, 0,
+                         nullptr, 0, nullptr);
     vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     if (bound.set != VK_NULL_HANDLE)
       vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
-    vkCmdDispatch(c, groups(width, local_size_[0]), groups(height, local_size_[1]), 1);
+    if (groups != nullptr)
+      vkCmdDispatchIndirect(c, groups->buffer(), 0);
+    else
+      vkCmdDispatch(c, group_count(width, local_size_[0]), group_count(height, local_size_[1]), 1);
     VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
@@ -766,10 +778,12 @@ class DepthImage {
 // so its texels are where GL's raster pass puts them.
 class VulkanRasterProgram final : public VulkanProgram {
  public:
+  // `positions`: the vertex stage reads a world position a vertex (a triangle list); else it makes
+  // its own (full_screen.vert: three vertices, no vertex input).
   VulkanRasterProgram(const VulkanDevice::State& s, std::string name, const std::vector<std::uint32_t>& vertex,
-                      const std::vector<std::uint32_t>& fragment, TexelFormat target)
+                      const std::vector<std::uint32_t>& fragment, TexelFormat target, bool positions)
       : VulkanProgram(s, std::move(name), {{&vertex, VK_SHADER_STAGE_VERTEX_BIT}, {&fragment, VK_SHADER_STAGE_FRAGMENT_BIT}}),
-        target_(target) {
+        target_(target), positions_(positions) {
     if (!s.depth_clip_control)
       throw Error(name_ + ": the Vulkan device has no VK_EXT_depth_clip_control, without which GL's clip-space depth "
                           "(-1..1) cannot be kept",
@@ -836,9 +850,9 @@ class VulkanRasterProgram final : public VulkanProgram {
     const VkVertexInputBindingDescription vertex_binding{0, 3 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
     const VkVertexInputAttributeDescription position{PN_SCENE_POSITION_LOCATION, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertex_input.vertexBindingDescriptionCount = 1;
+    vertex_input.vertexBindingDescriptionCount = positions ? 1 : 0;
     vertex_input.pVertexBindingDescriptions = &vertex_binding;
-    vertex_input.vertexAttributeDescriptionCount = 1;
+    vertex_input.vertexAttributeDescriptionCount = positions ? 1 : 0;
     vertex_input.pVertexAttributeDescriptions = &position;
     VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
@@ -889,9 +903,12 @@ class VulkanRasterProgram final : public VulkanProgram {
     if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(s_->device, render_pass_, nullptr);
   }
 
+  // Draws `vertices` (a program with positions) or its own full-screen triangle (one without).
   std::unique_ptr<VulkanImage> draw(const std::vector<glm::vec3>& vertices, int size, const float clear[4],
                                     const PassResources& resources) const {
     const VulkanDevice::State& s = *s_;
+    if (!positions_ && !vertices.empty())
+      throw Error(name_ + ": a full-screen pass makes its own vertices: expected none", ExitCode::failed);
     if (!resources.images.empty() || !resources.buffers.empty())
       throw Error(name_ + ": a raster pass binds textures and a block only: expected no storage images or buffers",
                   ExitCode::failed);
@@ -912,7 +929,8 @@ class VulkanRasterProgram final : public VulkanProgram {
       VkFramebuffer f;
       ~DestroyFramebuffer() { vkDestroyFramebuffer(d, f, nullptr); }
     } destroy_framebuffer{s.device, framebuffer};
-    HostBuffer vertex_buffer(s, vertices.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    HostBuffer vertex_buffer(s, std::max<std::size_t>(vertices.size(), 1) * sizeof(glm::vec3),
+                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     if (!vertices.empty()) std::memcpy(vertex_buffer.data(), vertices.data(), vertices.size() * sizeof(glm::vec3));
     BoundSet bound;
     bind(resources, bound);
@@ -947,10 +965,14 @@ class VulkanRasterProgram final : public VulkanProgram {
       vkCmdSetScissor(c, 0, 1, &scissor);
       if (bound.set != VK_NULL_HANDLE)
         vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
-      const VkBuffer buffers[] = {vertex_buffer.buffer()};
-      const VkDeviceSize offsets[] = {0};
-      vkCmdBindVertexBuffers(c, 0, 1, buffers, offsets);
-      if (!vertices.empty()) vkCmdDraw(c, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
+      if (positions_) {
+        const VkBuffer buffers[] = {vertex_buffer.buffer()};
+        const VkDeviceSize offsets[] = {0};
+        vkCmdBindVertexBuffers(c, 0, 1, buffers, offsets);
+        if (!vertices.empty()) vkCmdDraw(c, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
+      } else {
+        vkCmdDraw(c, 3, 1, 0, 0);
+      }
       vkCmdEndRenderPass(c);
     });
     return target;
@@ -958,6 +980,7 @@ class VulkanRasterProgram final : public VulkanProgram {
 
  private:
   TexelFormat target_;
+  bool positions_;
   VkRenderPass render_pass_ = VK_NULL_HANDLE;
 };
 
@@ -1036,7 +1059,23 @@ std::unique_ptr<QueryProgram> VulkanDevice::compile_raster(const SourceTree& tre
                                                            const std::string& fragment, TexelFormat target) const {
   return std::make_unique<VulkanRasterProgram>(*state_, program_name(*state_, fragment),
                                                stage_spirv(*state_, tree, vertex, {}, nullptr),
-                                               stage_spirv(*state_, tree, fragment, {}, nullptr), target);
+                                               stage_spirv(*state_, tree, fragment, {}, nullptr), target, true);
+}
+
+std::unique_ptr<QueryProgram> VulkanDevice::compile_full_screen(const SourceTree& tree, const std::string& fragment,
+                                                                TexelFormat target,
+                                                                const std::vector<Define>& defines) const {
+  return std::make_unique<VulkanRasterProgram>(*state_, program_name(*state_, fragment),
+                                               stage_spirv(*state_, tree, kFullScreenVertex, {}, nullptr),
+                                               stage_spirv(*state_, tree, fragment, defines, nullptr), target, false);
+}
+
+std::unique_ptr<DeviceTexture> VulkanDevice::draw_full_screen(const QueryProgram& program, int size,
+                                                              const PassResources& resources) const {
+  const auto* raster = dynamic_cast<const VulkanRasterProgram*>(&program);
+  if (raster == nullptr) throw Error("vulkan: a raster program compiled for another device", ExitCode::failed);
+  const float clear[4] = {0, 0, 0, 0};
+  return raster->draw({}, size, clear, resources);
 }
 
 std::unique_ptr<DeviceTexture> VulkanDevice::draw_triangles(const QueryProgram& program,
@@ -1143,6 +1182,41 @@ void VulkanDevice::run(const QueryProgram& program, const PassResources& resourc
   const auto* vk_program = dynamic_cast<const VulkanQueryProgram*>(&program);
   if (vk_program == nullptr) throw Error("vulkan: a program compiled for another device", ExitCode::failed);
   vk_program->run(resources, width, height, state_->bounds);
+}
+
+void VulkanDevice::run_indirect(const QueryProgram& program, const PassResources& resources,
+                                const DeviceBuffer& groups) const {
+  const auto* vk_program = dynamic_cast<const VulkanQueryProgram*>(&program);
+  if (vk_program == nullptr) throw Error("vulkan: a program compiled for another device", ExitCode::failed);
+  const auto* vk_groups = dynamic_cast<const VulkanBuffer*>(&groups);
+  if (vk_groups == nullptr || vk_groups->owner() != state_.get())
+    throw Error("vulkan: a buffer made on another device than this one", ExitCode::failed);
+  if (vk_groups->host().size() < 3 * sizeof(std::uint32_t))
+    throw Error("vulkan: an indirect dispatch's buffer of " + std::to_string(vk_groups->host().size()) +
+                    " bytes: expected at least 12 (the group counts x, y, z)",
+                ExitCode::failed);
+  vk_program->run(resources, 0, 0, state_->bounds, &vk_groups->host());
+}
+
+void VulkanDevice::clear_texture(const DeviceTexture& texture, const float value[4]) const {
+  const VulkanImage& image = vulkan_image(*state_, texture);
+  const TextureShape& shape = image.shape();
+  VkClearColorValue colour{};
+  for (int c = 0; c < 4; ++c) {
+    colour.float32[c] = value[c];
+    if (image.integer()) colour.uint32[c] = static_cast<uint32_t>(value[c]);
+  }
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, static_cast<uint32_t>(shape.levels), 0,
+                                      static_cast<uint32_t>(shape.layers)};
+  state_->submit("clearing a texture", [&](VkCommandBuffer c) {
+    image_barrier(c, image.image(), kImageLayout, kImageLayout, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT);
+    vkCmdClearColorImage(c, image.image(), kImageLayout, &colour, 1, &range);
+    image_barrier(c, image.image(), kImageLayout, kImageLayout, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+  });
 }
 
 std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings) {

@@ -57,8 +57,16 @@ class VulkanDevice final : public QueryDevice {
   std::unique_ptr<DeviceBuffer> make_buffer(std::size_t bytes) const override;
   void write_buffer(const DeviceBuffer& buffer, std::size_t offset, std::size_t bytes, const void* data) const override;
   void run(const QueryProgram& program, const PassResources& resources, int width, int height) const override;
+  void run_indirect(const QueryProgram& program, const PassResources& resources,
+                    const DeviceBuffer& groups) const override;
+  void clear_texture(const DeviceTexture& texture, const float value[4]) const override;
   std::unique_ptr<QueryProgram> compile_raster(const SourceTree& tree, const std::string& vertex,
                                                const std::string& fragment, TexelFormat target) const override;
+  std::unique_ptr<QueryProgram> compile_full_screen(const SourceTree& tree, const std::string& fragment,
+                                                    TexelFormat target,
+                                                    const std::vector<Define>& defines) const override;
+  std::unique_ptr<DeviceTexture> draw_full_screen(const QueryProgram& program, int size,
+                                                  const PassResources& resources) const override;
   std::unique_ptr<DeviceTexture> draw_triangles(const QueryProgram& program, const std::vector<glm::vec3>& vertices,
                                                 int size, const float clear[4],
                                                 const PassResources& resources) const override;
