@@ -23,12 +23,11 @@
 #include <string>
 #include <vector>
 
+#include "check/device_scene.h"
 #include "check/module_check.h"
 #include "check/pcss_compare.h"
 #include "scene/scene.h"
 #include "scenes.h"
-#include "passes/gbuffer_pass.h"
-#include "passes/shadow_map_pass.h"
 #include "pipeline/pcss_pipeline.h"
 #include "reference/pcss_reference.h"
 
@@ -88,25 +87,15 @@ std::vector<PcssSettings> one_call_settings() {
 std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
   const QueryDevice& device = env.device;
   const PcssPipeline pipeline(device, env.tree);
-  const ShadowMapRenderer maps(device, env.tree);
-  const GBufferRenderer gbuffers(device, env.tree);
   const auto read = [&](const DeviceTexture& t) { return device.read_texture(t, 0, 0); };
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";
-    // The scene's map and G-buffer as a frame renders them (render_scene_frame), on the executor.
-    const std::unique_ptr<DeviceTexture> shadow_map = maps.render_texture(scene, scene.map_light());
-    const std::unique_ptr<DeviceTexture> gbuffer_texture =
-        gbuffers.render_texture(scene, kScreen, fixtures::kNormalOffsetTexels, scene.map_light());
-    PcssInputs inputs;
-    inputs.light = scene.light;
-    inputs.screen_size = kScreen;
-    inputs.shadow_map = shadow_map.get();
-    inputs.gbuffer = gbuffer_texture.get();
-    const Image map = read(*shadow_map);
-    const Image gbuffer = read(*gbuffer_texture);
+    const DeviceSceneFrame frame = render_device_frame(env, scene, kScreen);
+    const PcssInputs& inputs = frame.inputs;
+    const Image map = read(*frame.shadow_map), gbuffer = read(*frame.gbuffer);
 
     for (const PcssSettings& settings : one_call_settings()) {
       const std::string what = name + ": " + settings.name;

@@ -58,7 +58,7 @@ const std::vector<ModuleCheck>& module_checks() {
                        "the CPU definition; no lit receiver a texel can shadow (exact mode)",
        &run_pcss_regions_check, OffGl::every_case},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
-       &run_pipeline_check},
+       &run_pipeline_check, OffGl::query_cases, "the registry's techniques (GL's technique seam)"},
       {"fast_pcss", "pnFastPcss, pnPoissonPcss, pnExactPcss, pnHqepcss as one call: compute pass vs the staged passes "
                     "and fragment shader vs compute pass (exact); exact and all-off vs exact PCSS brute force on the CPU",
        &run_fast_pcss_check, OffGl::every_case},

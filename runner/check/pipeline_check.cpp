@@ -9,10 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
-#include "cache/full_render_source.h"
 #include "check/blur_tolerance.h"
+#include "check/device_scene.h"
 #include "check/module_check.h"
 #include "check/pcss_compare.h"
 #include "metrics/lit_image.h"
@@ -34,7 +35,6 @@ namespace {
 constexpr int kMap = 128, kScreen = 64;     // small: brute force on llvmpipe stays fast
 constexpr double kMinimumSsim = 0.97;       // seed 000 Table / §5.4 reports 0.9705
 
-Image read1(const Context& c, const GlObject& t, int size) { return read_float_texture(c, t, size, size, 1); }
 Image read(const QueryDevice& d, const DeviceTexture& t) { return d.read_texture(t, 0, 0); }
 
 // A scalar as a 1×1 comparison: expected `target`, observed `value`, passing within `bound`.
@@ -88,7 +88,7 @@ Image hard_shadow(const Image& shadow_map, const Image& gbuffer, double bias) {
 // parent codes against the CPU's parents of the same link keys, exactly; every
 // group inside one k×k tile; and, for Step 5, every pixel's visibility equal to
 // its representative's.
-void reuse_cases(const Context& context, const std::string& name, const PcssFrame& frame, std::vector<CaseResult>& out) {
+void reuse_cases(const QueryDevice& context, const std::string& name, const PcssFrame& frame, std::vector<CaseResult>& out) {
   const int n = frame.size;
   const PcssSettings& s = frame.settings;
   struct Step {
@@ -128,61 +128,73 @@ void reuse_cases(const Context& context, const std::string& name, const PcssFram
   }
 }
 
+// Every registry entry through the technique seam (GL's: the techniques run on a GL context),
+// and the hard shadow with the G-buffer's receiver planes, on the scene's own maps.
+void technique_cases(const Context& context, TechniqueResources& resources, const std::string& name,
+                     const Scene& scene, const DeviceSceneFrame& frame, const Image& map, const Image& gbuffer,
+                     std::vector<CaseResult>& results) {
+  TechniqueInputs inputs;
+  inputs.light = scene.light;
+  inputs.screen_size = frame.inputs.screen_size;
+  inputs.shadow_map = &gl_texture(*frame.shadow_map);
+  inputs.gbuffer = &gl_texture(*frame.gbuffer);
+  // Every registry entry: a visibility image, finite and in [0, 1],
+  // exactly 1 where the pixel sees no surface (no shadow on the sky).
+  for (const TechniqueEntry& entry : technique_registry()) {
+    const std::unique_ptr<Technique> technique = entry.make()->create(resources);
+    const Image visibility = read_float_texture(context, technique->run(inputs, true).visibility);
+    results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]", visibility));
+    results.push_back(sky_stays_lit(name + ": technique '" + entry.name + "': pixels that see no surface stay lit",
+                                    gbuffer, visibility));
+    // Its one call in a fragment shader (a full-screen triangle reading the G-buffer, as a deferred
+    // lighting pass runs it) against the runner's path: the same arithmetic, equal on llvmpipe.
+    if (!technique->has_one_call()) continue;
+    TechniqueInputs fragment_inputs = inputs;
+    fragment_inputs.stage = ShadeStage::fragment;
+    results.push_back({name + ": technique '" + entry.name + "': its one call in a fragment shader vs its own path",
+                       Tolerance::exact(),
+                       compare(visibility, read_float_texture(context, technique->run(fragment_inputs, false).visibility),
+                               Tolerance::exact())});
+  }
+
+  // The hard shadow with the receiver plane from the G-buffer (pcf:receiver-plane=on) in both stages
+  // against the CPU's bilinear PCF with the same planes, ambiguous pixels left out.
+  {
+    const std::unique_ptr<Technique> pcf = parse_technique("pcf:receiver-plane=on:bias=0.01")->create(resources);
+    const PcssReference reference = pcf_plane_reference(map, gbuffer, scene.light, 0.01, std::ldexp(1.0, -20),
+                                                        kReceiverPlaneTan);
+    TechniqueInputs fragment_inputs = inputs;
+    fragment_inputs.stage = ShadeStage::fragment;
+    for (const TechniqueInputs* stage : {&inputs, &fragment_inputs}) {
+      Image observed = read_float_texture(context, pcf->run(*stage, false).visibility);
+      const int ambiguous = leave_out_ambiguous(reference, observed);
+      results.push_back({name + ": pcf:receiver-plane=on:bias=0.01, " +
+                             (stage->stage == ShadeStage::fragment ? "fragment shader" : "compute pass") +
+                             ", vs 2x2 bilinear PCF with the G-buffer's planes on the CPU (" +
+                             std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
+                         Tolerance::absolute(kFractionRounding),
+                         compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
-  const Context& context = env.context();
+  const QueryDevice& context = env.device;
   const PcssPipeline pipeline(context, env.tree);
-  FullRenderSource source(context, env.tree);
-  const GBufferRenderer gbuffers(context, env.tree);
-  TechniqueResources resources(context, env.tree);
+  std::optional<TechniqueResources> resources;  // the registry's techniques: GL's
+  if (env.gl != nullptr) resources.emplace(*env.gl, env.tree);
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";
-    const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, kScreen);
-    const TechniqueInputs inputs = scene_frame.inputs();
-    const Image map = read1(context, *scene_frame.shadow_map, kMap), gbuffer = read_float_texture(context, scene_frame.gbuffer);
+    const DeviceSceneFrame frame = render_device_frame(env, scene, kScreen);
+    const PcssInputs& inputs = frame.inputs;
+    const Image map = read(context, *frame.shadow_map), gbuffer = read(context, *frame.gbuffer);
 
-    // Every registry entry through the technique seam: a visibility image, finite and in [0, 1],
-    // exactly 1 where the pixel sees no surface (no shadow on the sky).
-    for (const TechniqueEntry& entry : technique_registry()) {
-      const std::unique_ptr<Technique> technique = entry.make()->create(resources);
-      const Image visibility = read_float_texture(context, technique->run(inputs, true).visibility);
-      results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]", visibility));
-      results.push_back(sky_stays_lit(name + ": technique '" + entry.name + "': pixels that see no surface stay lit",
-                                      gbuffer, visibility));
-      // Its one call in a fragment shader (a full-screen triangle reading the G-buffer, as a deferred
-      // lighting pass runs it) against the runner's path: the same arithmetic, equal on llvmpipe.
-      if (!technique->has_one_call()) continue;
-      TechniqueInputs fragment_inputs = inputs;
-      fragment_inputs.stage = ShadeStage::fragment;
-      results.push_back({name + ": technique '" + entry.name + "': its one call in a fragment shader vs its own path",
-                         Tolerance::exact(),
-                         compare(visibility, read_float_texture(context, technique->run(fragment_inputs, false).visibility),
-                                 Tolerance::exact())});
-    }
-
-    // The hard shadow with the receiver plane from the G-buffer (pcf:receiver-plane=on) in both stages
-    // against the CPU's bilinear PCF with the same planes, ambiguous pixels left out.
-    {
-      const std::unique_ptr<Technique> pcf = parse_technique("pcf:receiver-plane=on:bias=0.01")->create(resources);
-      const PcssReference reference = pcf_plane_reference(map, gbuffer, scene.light, 0.01, std::ldexp(1.0, -20),
-                                                          kReceiverPlaneTan);
-      TechniqueInputs fragment_inputs = inputs;
-      fragment_inputs.stage = ShadeStage::fragment;
-      for (const TechniqueInputs* stage : {&inputs, static_cast<const TechniqueInputs*>(&fragment_inputs)}) {
-        Image observed = read_float_texture(context, pcf->run(*stage, false).visibility);
-        const int ambiguous = leave_out_ambiguous(reference, observed);
-        results.push_back({name + ": pcf:receiver-plane=on:bias=0.01, " +
-                               (stage->stage == ShadeStage::fragment ? "fragment shader" : "compute pass") +
-                               ", vs 2x2 bilinear PCF with the G-buffer's planes on the CPU (" +
-                               std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
-                           Tolerance::absolute(kFractionRounding),
-                           compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
-      }
-    }
+    if (env.gl != nullptr) technique_cases(*env.gl, *resources, name, scene, frame, map, gbuffer, results);
 
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
     const PcssSettings exact = exact_pcss();
@@ -259,8 +271,10 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     Image outside = gbuffer;
     for (int y = 0; y < kScreen; ++y)
       for (int x = 0; x < kScreen / 2; ++x) outside.at(x, y, 0) += (y % 2 ? 3.0f : -3.0f) * kMap;
-    const GlObject damaged_map = upload_float_texture(context, damaged), outside_gbuffer = upload_float_texture(context, outside);
-    const TechniqueInputs bad{scene.light, kScreen, &damaged_map, &outside_gbuffer};
+    const std::unique_ptr<DeviceTexture> damaged_map = context.upload(damaged), outside_gbuffer = context.upload(outside);
+    PcssInputs bad = inputs;
+    bad.shadow_map = damaged_map.get();
+    bad.gbuffer = outside_gbuffer.get();
     const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
     Image bad_observed = read(context, pipeline.run(bad, exact).soft_shadow());
     leave_out_ambiguous(bad_reference, bad_observed);
@@ -273,9 +287,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     // A zero-size light: every region is one texel, a hard shadow.
     Scene point = scene;
     point.light.width = 0.0;
-    const SceneFrame point_frame = render_scene_frame(context, source, gbuffers, point, kScreen);
-    const TechniqueInputs point_inputs = point_frame.inputs();
-    const Image hard = hard_shadow(read1(context, *point_frame.shadow_map, kMap), read_float_texture(context, point_frame.gbuffer), exact.bias);
+    const DeviceSceneFrame point_frame = render_device_frame(env, point, kScreen);
+    const PcssInputs& point_inputs = point_frame.inputs;
+    const Image hard = hard_shadow(read(context, *point_frame.shadow_map), read(context, *point_frame.gbuffer), exact.bias);
     for (const PcssSettings& s : {exact, fast_pcss()})  // fast: exact regions, no blur
       results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
                          compare(hard, read(context, pipeline.run(point_inputs, s).soft_shadow()), Tolerance::exact())});
@@ -287,9 +301,9 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   // scene at 512²: the lit images' SSIM is held to 0.97; the soft-shadow maps'
   // own SSIM, lower (docs/pipeline.md says why), is printed with it.
   const Scene scene = make_scene(fixtures::kScenes[0], 512);
-  const SceneFrame scene_frame = render_scene_frame(context, source, gbuffers, scene, 512);
-  const TechniqueInputs inputs = scene_frame.inputs();
-  const Image surface = read_float_texture(context, SurfaceRenderer(context, env.tree).render(scene, 512));
+  const DeviceSceneFrame frame = render_device_frame(env, scene, 512);
+  const PcssInputs& inputs = frame.inputs;
+  const Image surface = read(context, *SurfaceRenderer(context, env.tree).render_texture(scene, 512));
   const Image exact = read(context, pipeline.run(inputs, exact_pcss()).soft_shadow());
   for (const PcssSettings& s : {fast_pcss(), fast_paper_pcss(), hqepcss()}) {
     const Image shadow = read(context, pipeline.run(inputs, s).soft_shadow());

@@ -3,9 +3,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "gl/pass_bindings.h"
+#include "gl/query_device_gl.h"
 #include "gl/std140.h"
-#include "passes/scene_draw.h"
 
 namespace pn::glsl {
 #include "passes/surface.h"
@@ -16,10 +15,15 @@ PN_STD140_OFFSET(PnSurfaceParams, boxAlbedo, 144);
 
 namespace pn {
 
-SurfaceRenderer::SurfaceRenderer(const Context& context, const SourceTree& tree)
-    : context_(&context), program_(link_raster_pass(context, tree, "passes/surface")) {}
+SurfaceRenderer::SurfaceRenderer(const QueryDevice& device, const SourceTree& tree)
+    : device_(&device),
+      program_(device.compile_raster(tree, "passes/surface.vert", "passes/surface.frag", TexelFormat::rgba32f)) {}
 
 FloatTexture SurfaceRenderer::render(const Scene& scene, int screen_size) const {
+  return take_float_texture(render_texture(scene, screen_size));
+}
+
+std::unique_ptr<DeviceTexture> SurfaceRenderer::render_texture(const Scene& scene, int screen_size) const {
   if (screen_size < 1) throw Error("screen size " + std::to_string(screen_size) + ": expected at least 1");
   if (scene.boxes.empty()) throw Error("scene '" + scene.name + "': expected a ground box (boxes[0])");
   const auto point = [](const glm::vec3& v) { return glsl::std140_vec4(glm::vec4(v, 0.0f)); };
@@ -33,9 +37,7 @@ FloatTexture SurfaceRenderer::render(const Scene& scene, int screen_size) const 
   block.groundAlbedo = point(kGroundAlbedo);
   block.boxAlbedo = point(kBoxAlbedo);
   const float nothing[4] = {0, 0, 0, 0};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  return draw_scene(*context_, program_, scene, screen_size, 4, nothing);
+  return device_->draw_triangles(*program_, scene.triangles(), screen_size, nothing, {{}, {}, {}, query_block(block)});
 }
 
 }  // namespace pn

@@ -1,0 +1,22 @@
+// A scene's shadow map and G-buffer rendered on the check's executor (GL, Vulkan, HLSL), as a
+// frame renders them (frame/scene_frame.h's render_scene_frame: the full render, the G-buffer's
+// normal offset), and the pipeline's inputs over them.
+#pragma once
+
+#include <memory>
+
+#include "check/module_check.h"
+#include "pipeline/pcss_pipeline.h"
+#include "scene/scene.h"
+
+namespace pn {
+
+struct DeviceSceneFrame {
+  std::unique_ptr<DeviceTexture> shadow_map;  // N×N R32F
+  std::unique_ptr<DeviceTexture> gbuffer;     // screen² RGBA32F
+  PcssInputs inputs;                          // the two, the scene's light, the screen size
+};
+
+DeviceSceneFrame render_device_frame(const CheckEnvironment& env, const Scene& scene, int screen_size);
+
+}  // namespace pn
