@@ -73,7 +73,8 @@ CacheBench bench_cache(const Context& context, const SourceTree& tree, const Cac
         if (f == 0) bench.triangles = static_cast<int>(scene.triangles().size() / 3);
         const bool timed = f >= setup.warmup;
         if (timed) moving += animation.moving_share(f);
-        const GlObject gbuffer = gbuffers.render(scene, setup.screen, fixtures::kNormalOffsetTexels);
+        const std::unique_ptr<DeviceTexture> gbuffer =
+            gbuffers.render_texture(scene, setup.screen, fixtures::kNormalOffsetTexels, scene.map_light());
         // Each frame starts with the next source in turn, and each source's stage starts on an idle
         // GPU: work left by the one before (llvmpipe frees the textures of a technique's frame at
         // its next flush) is nobody's stage. Measured: without both, whichever source ran second
@@ -86,7 +87,7 @@ CacheBench bench_cache(const Context& context, const SourceTree& tree, const Cac
           const SourcedMap& sourced = sources[s]->render(scene);
           clock.stage("shadow map");
           const double stage_ms = clock.read().front().second;
-          const TechniqueInputs inputs{scene.light, setup.screen, sourced.map, &gbuffer, sourced.mip, sourced.pyramid};
+          const TechniqueInputs inputs{scene.light, setup.screen, sourced.map, gbuffer.get(), sourced.mip, sourced.pyramid};
           const double technique_ms = fast->run(inputs, false).total_ms();
           if (!timed) continue;
           map_ms[s].push_back(stage_ms);

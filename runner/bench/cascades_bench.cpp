@@ -168,8 +168,7 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
       const auto frame = render_cascaded_frame(context, maps, gbuffer, scene,
                                                cascade_settings(setup.count, setup.size, 1.0, stable), n, &fitted);
       for (size_t m = 0; m < rows.size(); ++m) {
-        Image v = read_float_texture(
-            context, CascadedTechnique(*path_methods[m], blend, context).run(frame->inputs(scene.light), false).visibility, n, n, 1);
+        Image v = context.read_texture(*CascadedTechnique(*path_methods[m], blend, context).run(frame->inputs(scene.light), false).visibility, 0, 0);
         rows[m].method = path_configs[m]->name();
         rows[m].stable = stable;
         rows[m].mean_error += scorer.score(v).light_facing.mae / setup.path_frames;

@@ -118,7 +118,8 @@ const SourcedMap& DepthCacheSource::render(const Scene& scene) {
       }
     }
   }
-  out_.map = &composed_->texture();
+  map_ = std::make_unique<GlDeviceTexture>(composed_->texture(), float_shape(n, n, 1));
+  out_.map = map_.get();
   out_.mip = structures_.mip();
   out_.pyramid = structures_.pyramid();
   return out_;

@@ -57,6 +57,7 @@ class DepthCacheSource : public ShadowMapSource {
   ObjectMotion motion_;
   std::optional<SceneGeometry> geometry_;
   std::optional<RasterTarget> static_, dynamic_, composed_;  // dynamic_: whole_maps only
+  std::unique_ptr<DeviceTexture> map_;  // composed_'s texture as the frame's map
   SourcedMap out_;
 };
 

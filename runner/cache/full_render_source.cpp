@@ -1,5 +1,7 @@
 #include "cache/full_render_source.h"
 
+#include "gl/query_device_gl.h"
+
 namespace pn {
 
 FullRenderSource::FullRenderSource(const Context& context, const SourceTree& tree, const SourceOptions& options)
@@ -14,7 +16,8 @@ const SourcedMap& FullRenderSource::render(const Scene& scene) {
   target_->clear(ShadowMapRenderer::far_clear());
   renderer_.draw(scene, *geometry_, *target_, {{0, geometry_->vertex_count()}});
   structures_.rebuild(target_->texture(), n);
-  out_.map = &target_->texture();
+  map_ = std::make_unique<GlDeviceTexture>(target_->texture(), float_shape(n, n, 1));
+  out_.map = map_.get();
   out_.mip = structures_.mip();
   out_.pyramid = structures_.pyramid();
   out_.changed = out_.redrawn = {TexelRect::square(n)};

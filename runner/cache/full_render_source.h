@@ -1,6 +1,7 @@
 // The simplest shadow-map source: every triangle drawn into the map each frame.
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "frame/shadow_map_source.h"
@@ -21,6 +22,7 @@ class FullRenderSource : public ShadowMapSource {
   MapStructures structures_;
   std::optional<SceneGeometry> geometry_;
   std::optional<RasterTarget> target_;
+  std::unique_ptr<DeviceTexture> map_;  // target_'s texture as the frame's map
   SourcedMap out_;
 };
 

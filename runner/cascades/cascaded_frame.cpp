@@ -3,7 +3,6 @@
 #include <string>
 
 #include "core/error.h"
-#include "gl/gpu_timer.h"
 #include "passes/shadow_map_pass.h"
 #include "scenes.h"
 
@@ -41,7 +40,7 @@ MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_
   return out;
 }
 
-std::unique_ptr<CascadedFrame> render_cascaded_frame(const Context& context, const ShadowMapRenderer& maps,
+std::unique_ptr<CascadedFrame> render_cascaded_frame(const QueryDevice& device, const ShadowMapRenderer& maps,
                                                      const GBufferRenderer& gbuffer, const Scene& scene,
                                                      const CascadeSettings& settings, int screen_size,
                                                      const SceneCamera* fit_camera) {
@@ -53,30 +52,31 @@ std::unique_ptr<CascadedFrame> render_cascaded_frame(const Context& context, con
   auto frame = std::make_unique<CascadedFrame>();
   frame->screen_size = screen_size;
   frame->cascades = fit_cascades(settings, camera, scene.sun->direction, lo, hi);
-  StageClock clock(context);
-  clock.start();
+  const std::unique_ptr<StageTimes> clock = device.stage_clock();
+  clock->start();
   for (const Cascade& c : frame->cascades) {
     frame->lights.push_back(cascade_map_light(c, *scene.sun, settings.map_size));
-    frame->maps.push_back(maps.render(scene, frame->lights.back()));
+    frame->maps.push_back(maps.render_texture(scene, frame->lights.back()));
   }
-  clock.stage("cascade maps");
-  frame->shadow_map_ms = clock.read().front().second;
+  clock->stage("cascade maps");
+  frame->shadow_map_ms = clock->read().front().second;
   for (size_t i = 0; i < frame->cascades.size(); ++i)
-    frame->gbuffers.push_back(gbuffer.render(scene, screen_size, fixtures::kNormalOffsetTexels, frame->lights[i],
-                                             frame->cascades[i].fit_near, frame->cascades[i].split_far));
+    frame->gbuffers.push_back(gbuffer.render_texture(scene, screen_size, fixtures::kNormalOffsetTexels,
+                                                     frame->lights[i], frame->cascades[i].fit_near,
+                                                     frame->cascades[i].split_far));
   MapLight camera_light{scene.camera_view(), scene.camera_projection(), scene.light};
-  frame->view_depth = gbuffer.render(scene, screen_size, 0.0f, camera_light);
+  frame->view_depth = gbuffer.render_texture(scene, screen_size, 0.0f, camera_light);
   CascadeInputs& layers = frame->layers;
   for (size_t i = 0; i < frame->cascades.size(); ++i) {
     TechniqueInputs layer;
     layer.light = frame->lights[i].light;
     layer.screen_size = screen_size;
-    layer.shadow_map = &frame->maps[i];
-    layer.gbuffer = &frame->gbuffers[i];
+    layer.shadow_map = frame->maps[i].get();
+    layer.gbuffer = frame->gbuffers[i].get();
     layers.layers.push_back(layer);
     layers.split_far[i] = frame->cascades[i].split_far;
   }
-  layers.view_depth = &frame->view_depth;
+  layers.view_depth = frame->view_depth.get();
   layers.near = static_cast<float>(camera.near_plane);
   layers.band = static_cast<float>(settings.band);
   layers.fade_last = false;  // the camera's far plane ends the view: nothing to fade into

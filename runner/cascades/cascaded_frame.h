@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "cascades/cascade_fit.h"
-#include "gl/texture.h"
 #include "passes/gbuffer_pass.h"
 #include "passes/shadow_map_pass.h"
 #include "scene/scene.h"
@@ -20,9 +19,9 @@ namespace pn {
 struct CascadedFrame {
   std::vector<Cascade> cascades;
   std::vector<MapLight> lights;     // each cascade's view, projection and light model
-  std::vector<FloatTexture> maps;       // N×N R32F linear light depth
-  std::vector<FloatTexture> gbuffers;   // screen² RGBA32F
-  FloatTexture view_depth;              // screen² RGBA32F: the camera's own G-buffer (z: view depth)
+  std::vector<std::unique_ptr<DeviceTexture>> maps;      // N×N R32F linear light depth
+  std::vector<std::unique_ptr<DeviceTexture>> gbuffers;  // screen² RGBA32F
+  std::unique_ptr<DeviceTexture> view_depth;             // screen² RGBA32F: the camera's own G-buffer (z: view depth)
   CascadeInputs layers;             // points into the above: the frame is not copied or moved
   double shadow_map_ms = 0.0;       // every cascade's map, GPU time
   int screen_size = 0;
@@ -45,7 +44,7 @@ MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_
 // Throws Error for a scene without a sun, bad settings or a screen size outside 1..8192.
 // `fit_camera`: the camera the cascades are fitted to, when it is not the scene's (which the
 // G-buffers still see through): how bench cascades watches cascades move under a still view.
-std::unique_ptr<CascadedFrame> render_cascaded_frame(const Context& context, const ShadowMapRenderer& maps,
+std::unique_ptr<CascadedFrame> render_cascaded_frame(const QueryDevice& device, const ShadowMapRenderer& maps,
                                                      const GBufferRenderer& gbuffer, const Scene& scene,
                                                      const CascadeSettings& settings, int screen_size,
                                                      const SceneCamera* fit_camera = nullptr);

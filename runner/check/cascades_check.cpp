@@ -46,7 +46,7 @@ std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env) {
   selection_cases(gpu, results);
   sphere_cases(gpu, results);
   blend_pass_cases(env, results);
-  if (env.gl != nullptr) city_cases(env, results);  // GL techniques: module_check.cpp's gl_only
+  city_cases(env, results);
   stability_cases(results);
   return results;
 }

@@ -10,15 +10,13 @@
 #include "cascades/cascade_math.h"
 #include "cascades/cascaded_frame.h"
 #include "check/cascades_cases.h"
+#include "check/device_scene.h"
 #include "core/format.h"
-#include "gl/texture.h"
 #include "passes/cascade_blend_pass.h"
 #include "passes/shadow_map_pass.h"
 #include "reference/cascades_reference.h"
 #include "scene/city_scene.h"
 #include "technique/cascaded_technique.h"
-#include "frame/scene_frame.h"
-#include "technique/shadow_map_sources.h"
 #include "technique/technique_registry.h"
 #include "truth/ray_traced_truth.h"
 
@@ -111,10 +109,10 @@ struct CityRig {
   static constexpr int kMap = 512;
   explicit CityRig(const CheckEnvironment& env)
       : city(make_city_scene(fixtures::kCityScenes[0], kMap)),
-        resources(env.context(), env.tree),
-        gbuffer(env.context(), env.tree),
-        maps(env.context(), env.tree),
-        blend(env.context(), env.tree) {}
+        resources(env.device, env.tree),
+        gbuffer(env.device, env.tree),
+        maps(env.device, env.tree),
+        blend(env.device, env.tree) {}
   const Scene city;
   TechniqueResources resources;
   const GBufferRenderer gbuffer;
@@ -137,18 +135,16 @@ void city_hard_shadow_cases(const CheckEnvironment& env, CityRig& rig, std::vect
   const Truth truth = trace_truth(city, kScreen, truth_settings);
   const auto pcf = parse_technique("pcf")->create(rig.resources);
   const GBufferRenderer& gbuffer = rig.gbuffer;
-  const auto full = find_shadow_map_source("full").make(env.context(), env.tree, {});
-  const SceneFrame whole = render_scene_frame(env.context(), *full, gbuffer, city, kScreen);
-  const double whole_error = hard_shadow_mismatch(
-      read_float_texture(env.context(), pcf->run(whole.inputs(), false).visibility, kScreen, kScreen, 1), truth);
+  const DeviceSceneFrame whole = render_device_frame(env, city, kScreen);
+  const double whole_error = hard_shadow_mismatch(env.device.read_texture(*pcf->run(whole.inputs, false).visibility), truth);
   std::vector<double> errors;
   for (int count = 1; count <= PN_CASCADES_MAX; ++count) {
     CascadeSettings settings;
     settings.count = count, settings.map_size = kMap;
-    const auto frame = render_cascaded_frame(env.context(), rig.maps, gbuffer, city, settings, kScreen);
-    const CascadedTechnique on_cascades(*pcf, rig.blend, env.context());
+    const auto frame = render_cascaded_frame(env.device, rig.maps, gbuffer, city, settings, kScreen);
+    const CascadedTechnique on_cascades(*pcf, rig.blend, env.device);
     errors.push_back(hard_shadow_mismatch(
-        read_float_texture(env.context(), on_cascades.run(frame->inputs(city.light), false).visibility, kScreen, kScreen, 1),
+        env.device.read_texture(*on_cascades.run(frame->inputs(city.light), false).visibility),
         truth));
   }
   std::string table = "whole-scene map " + format_number("%.4f", whole_error);
@@ -165,14 +161,14 @@ void city_hard_shadow_cases(const CheckEnvironment& env, CityRig& rig, std::vect
   // hard PCF's calls in fragment shaders equal their compute passes, blended.
   CascadeSettings three;
   three.count = 3, three.map_size = kMap;
-  const auto frame = render_cascaded_frame(env.context(), rig.maps, gbuffer, city, three, kScreen);
+  const auto frame = render_cascaded_frame(env.device, rig.maps, gbuffer, city, three, kScreen);
   for (const char* name : {"pcf", "fast"}) {
     const auto technique = parse_technique(name)->create(rig.resources);
-    const CascadedTechnique on_cascades(*technique, rig.blend, env.context());
+    const CascadedTechnique on_cascades(*technique, rig.blend, env.device);
     TechniqueInputs inputs = frame->inputs(city.light);
-    const Image computed = read_float_texture(env.context(), on_cascades.run(inputs, false).visibility);
+    const Image computed = env.device.read_texture(*on_cascades.run(inputs, false).visibility);
     inputs.stage = ShadeStage::fragment;
-    const Image fragment = read_float_texture(env.context(), on_cascades.run(inputs, false).visibility);
+    const Image fragment = env.device.read_texture(*on_cascades.run(inputs, false).visibility);
     results.push_back({std::string("city, 3 cascades: ") + name + "'s call in fragment shaders vs compute passes",
                        Tolerance::exact(), compare(computed, fragment, Tolerance::exact())});
   }
@@ -225,21 +221,21 @@ void seam_cases(const CheckEnvironment& env, CityRig& rig, std::vector<CaseResul
   const CascadeBlendPass& blend = rig.blend;
   CascadeSettings settings;
   settings.count = 3, settings.map_size = CityRig::kMap;
-  const auto frame = render_cascaded_frame(env.context(), rig.maps, rig.gbuffer, city, settings, kScreen);
+  const auto frame = render_cascaded_frame(env.device, rig.maps, rig.gbuffer, city, settings, kScreen);
   std::vector<TechniqueFrame> runs;
   for (const TechniqueInputs& layer : frame->layers.layers) runs.push_back(fast->run(layer, false));
-  std::vector<const GlObject*> visibilities;
+  std::vector<const DeviceTexture*> visibilities;
   std::vector<Image> layers;
   for (const TechniqueFrame& run : runs) {
-    visibilities.push_back(&run.visibility);
-    layers.push_back(read_float_texture(env.context(), run.visibility));
+    visibilities.push_back(run.visibility.get());
+    layers.push_back(env.device.read_texture(*run.visibility));
   }
-  const Image view_depth = read_float_texture(env.context(), frame->view_depth);
+  const Image view_depth = env.device.read_texture(*frame->view_depth);
   SeamMeasure measures[2];
   for (int b = 0; b < 2; ++b) {
     CascadeInputs inputs = frame->layers;
     inputs.band = b == 0 ? static_cast<float>(settings.band) : 0.0f;
-    const Image out = read_float_texture(env.context(), blend.run(inputs, visibilities, kScreen));
+    const Image out = env.device.read_texture(*blend.blend(inputs, visibilities, kScreen));
     measures[b] = seam_measure(out, layers, view_depth, frame->cascades);
   }
   const std::string numbers = "band 0.1: " + format_number("%.4f", measures[0].excess) + " over " +

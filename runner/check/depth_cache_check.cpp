@@ -157,21 +157,22 @@ std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const M
   for (int f = 0; f < sequence.frames; ++f) {
     const Scene scene = animation.frame(f);
     const SourcedMap& cached = cache->render(scene);
-    const GlObject reference = full.render(scene);
-    map.add(compare(read_float_texture(context, reference, n, n, 1), read_float_texture(context, *cached.map, n, n, 1), exact), f);
+    const std::unique_ptr<DeviceTexture> reference = full.render_texture(scene, scene.map_light());
+    map.add(compare(context.read_texture(*reference, 0, 0), context.read_texture(*cached.map, 0, 0), exact), f);
 
-    const MinMaxMipChain rebuilt = mip_builder.build(GlDeviceTexture(reference), n);
+    const MinMaxMipChain rebuilt = mip_builder.build(*reference, n);
     for (int level = 0; level < rebuilt.levels; ++level)
       mip.add(compare(read_mip_chain_level(context, rebuilt, level), read_mip_chain_level(context, *cached.mip, level), exact), f);
     if (f % kPyramidEvery == 0 || f + 1 == sequence.frames) {
-      const DepthPyramid whole = pyramid_builder.build(GlDeviceTexture(reference), n, n, 31);
+      const DepthPyramid whole = pyramid_builder.build(*reference, n, n, 31);
       for (int level = 0; level < whole.levels; ++level)
         pyramid.add(compare(read_pyramid_level(context, whole, level), read_pyramid_level(context, *cached.pyramid, level), exact), f);
     }
     if (f % kFastEvery == kFastEvery - 1) {
-      const GlObject gbuffer = gbuffers.render(scene, kFastScreen, fixtures::kNormalOffsetTexels);
-      const TechniqueInputs on_cache{scene.light, kFastScreen, cached.map, &gbuffer, cached.mip, cached.pyramid};
-      const TechniqueInputs on_full{scene.light, kFastScreen, &reference, &gbuffer};
+      const std::unique_ptr<DeviceTexture> gbuffer =
+          gbuffers.render_texture(scene, kFastScreen, fixtures::kNormalOffsetTexels, scene.map_light());
+      const TechniqueInputs on_cache{scene.light, kFastScreen, cached.map, gbuffer.get(), cached.mip, cached.pyramid};
+      const TechniqueInputs on_full{scene.light, kFastScreen, reference.get(), gbuffer.get()};
       const Image a = context.read_texture(pipeline.run(on_full, fast_pcss()).soft_shadow(), 0, 0);
       const Image b = context.read_texture(pipeline.run(on_cache, fast_pcss()).soft_shadow(), 0, 0);
       fast.add(compare(a, b, exact), f);

@@ -14,7 +14,7 @@ namespace pn {
 struct DeviceSceneFrame {
   std::unique_ptr<DeviceTexture> shadow_map;  // N×N R32F
   std::unique_ptr<DeviceTexture> gbuffer;     // screen² RGBA32F
-  PcssInputs inputs;                          // the two, the scene's light, the screen size
+  TechniqueInputs inputs;                          // the two, the scene's light, the screen size
 };
 
 DeviceSceneFrame render_device_frame(const CheckEnvironment& env, const Scene& scene, int screen_size);

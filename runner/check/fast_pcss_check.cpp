@@ -94,7 +94,7 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";
     const DeviceSceneFrame frame = render_device_frame(env, scene, kScreen);
-    const PcssInputs& inputs = frame.inputs;
+    const TechniqueInputs& inputs = frame.inputs;
     const Image map = read(*frame.shadow_map), gbuffer = read(*frame.gbuffer);
 
     for (const PcssSettings& settings : one_call_settings()) {

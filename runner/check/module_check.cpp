@@ -58,7 +58,7 @@ const std::vector<ModuleCheck>& module_checks() {
                        "the CPU definition; no lit receiver a texel can shadow (exact mode)",
        &run_pcss_regions_check, OffGl::every_case},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
-       &run_pipeline_check, OffGl::query_cases, "the registry's techniques (GL's technique seam)"},
+       &run_pipeline_check, OffGl::every_case},
       {"fast_pcss", "pnFastPcss, pnPoissonPcss, pnExactPcss, pnHqepcss as one call: compute pass vs the staged passes "
                     "and fragment shader vs compute pass (exact); exact and all-off vs exact PCSS brute force on the CPU",
        &run_fast_pcss_check, OffGl::every_case},
@@ -85,8 +85,7 @@ const std::vector<ModuleCheck>& module_checks() {
        "the caches over motion sequences"},
       {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
-       &run_cascades_check, OffGl::query_cases,
-       "the city scene's cascaded techniques"},
+       &run_cascades_check, OffGl::every_case},
       {"exports", "the export entries (what bundle --target hlsl|msl translates) as query passes: pnExactPcss vs exact "
                   "PCSS brute force, pnPcf vs 2x2 bilinear PCF on the CPU, both overloads",
        &run_exports_check, OffGl::every_case},

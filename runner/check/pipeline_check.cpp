@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <string>
 
 #include "check/blur_tolerance.h"
@@ -128,21 +127,16 @@ void reuse_cases(const QueryDevice& context, const std::string& name, const Pcss
   }
 }
 
-// Every registry entry through the technique seam (GL's: the techniques run on a GL context),
-// and the hard shadow with the G-buffer's receiver planes, on the scene's own maps.
-void technique_cases(const Context& context, TechniqueResources& resources, const std::string& name,
-                     const Scene& scene, const DeviceSceneFrame& frame, const Image& map, const Image& gbuffer,
+// Every registry entry through the technique seam, and the hard shadow with the G-buffer's
+// receiver planes, on the scene's own maps.
+void technique_cases(const QueryDevice& context, TechniqueResources& resources, const std::string& name,
+                     const Scene& scene, const TechniqueInputs& inputs, const Image& map, const Image& gbuffer,
                      std::vector<CaseResult>& results) {
-  TechniqueInputs inputs;
-  inputs.light = scene.light;
-  inputs.screen_size = frame.inputs.screen_size;
-  inputs.shadow_map = &gl_texture(*frame.shadow_map);
-  inputs.gbuffer = &gl_texture(*frame.gbuffer);
   // Every registry entry: a visibility image, finite and in [0, 1],
   // exactly 1 where the pixel sees no surface (no shadow on the sky).
   for (const TechniqueEntry& entry : technique_registry()) {
     const std::unique_ptr<Technique> technique = entry.make()->create(resources);
-    const Image visibility = read_float_texture(context, technique->run(inputs, true).visibility);
+    const Image visibility = context.read_texture(*technique->run(inputs, true).visibility, 0, 0);
     results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]", visibility));
     results.push_back(sky_stays_lit(name + ": technique '" + entry.name + "': pixels that see no surface stay lit",
                                     gbuffer, visibility));
@@ -153,7 +147,7 @@ void technique_cases(const Context& context, TechniqueResources& resources, cons
     fragment_inputs.stage = ShadeStage::fragment;
     results.push_back({name + ": technique '" + entry.name + "': its one call in a fragment shader vs its own path",
                        Tolerance::exact(),
-                       compare(visibility, read_float_texture(context, technique->run(fragment_inputs, false).visibility),
+                       compare(visibility, context.read_texture(*technique->run(fragment_inputs, false).visibility, 0, 0),
                                Tolerance::exact())});
   }
 
@@ -165,8 +159,8 @@ void technique_cases(const Context& context, TechniqueResources& resources, cons
                                                         kReceiverPlaneTan);
     TechniqueInputs fragment_inputs = inputs;
     fragment_inputs.stage = ShadeStage::fragment;
-    for (const TechniqueInputs* stage : {&inputs, &fragment_inputs}) {
-      Image observed = read_float_texture(context, pcf->run(*stage, false).visibility);
+    for (const TechniqueInputs* stage : {&inputs, static_cast<const TechniqueInputs*>(&fragment_inputs)}) {
+      Image observed = context.read_texture(*pcf->run(*stage, false).visibility, 0, 0);
       const int ambiguous = leave_out_ambiguous(reference, observed);
       results.push_back({name + ": pcf:receiver-plane=on:bias=0.01, " +
                              (stage->stage == ShadeStage::fragment ? "fragment shader" : "compute pass") +
@@ -183,18 +177,17 @@ void technique_cases(const Context& context, TechniqueResources& resources, cons
 std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const QueryDevice& context = env.device;
   const PcssPipeline pipeline(context, env.tree);
-  std::optional<TechniqueResources> resources;  // the registry's techniques: GL's
-  if (env.gl != nullptr) resources.emplace(*env.gl, env.tree);
+  TechniqueResources resources(context, env.tree);
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";
     const DeviceSceneFrame frame = render_device_frame(env, scene, kScreen);
-    const PcssInputs& inputs = frame.inputs;
+    const TechniqueInputs& inputs = frame.inputs;
     const Image map = read(context, *frame.shadow_map), gbuffer = read(context, *frame.gbuffer);
 
-    if (env.gl != nullptr) technique_cases(*env.gl, *resources, name, scene, frame, map, gbuffer, results);
+    technique_cases(context, resources, name, scene, inputs, map, gbuffer, results);
 
     // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
     const PcssSettings exact = exact_pcss();
@@ -272,7 +265,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     for (int y = 0; y < kScreen; ++y)
       for (int x = 0; x < kScreen / 2; ++x) outside.at(x, y, 0) += (y % 2 ? 3.0f : -3.0f) * kMap;
     const std::unique_ptr<DeviceTexture> damaged_map = context.upload(damaged), outside_gbuffer = context.upload(outside);
-    PcssInputs bad = inputs;
+    TechniqueInputs bad = inputs;
     bad.shadow_map = damaged_map.get();
     bad.gbuffer = outside_gbuffer.get();
     const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
@@ -288,7 +281,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     Scene point = scene;
     point.light.width = 0.0;
     const DeviceSceneFrame point_frame = render_device_frame(env, point, kScreen);
-    const PcssInputs& point_inputs = point_frame.inputs;
+    const TechniqueInputs& point_inputs = point_frame.inputs;
     const Image hard = hard_shadow(read(context, *point_frame.shadow_map), read(context, *point_frame.gbuffer), exact.bias);
     for (const PcssSettings& s : {exact, fast_pcss()})  // fast: exact regions, no blur
       results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
@@ -302,7 +295,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   // own SSIM, lower (docs/pipeline.md says why), is printed with it.
   const Scene scene = make_scene(fixtures::kScenes[0], 512);
   const DeviceSceneFrame frame = render_device_frame(env, scene, 512);
-  const PcssInputs& inputs = frame.inputs;
+  const TechniqueInputs& inputs = frame.inputs;
   const Image surface = read(context, *SurfaceRenderer(context, env.tree).render_texture(scene, 512));
   const Image exact = read(context, pipeline.run(inputs, exact_pcss()).soft_shadow());
   for (const PcssSettings& s : {fast_pcss(), fast_paper_pcss(), hqepcss()}) {

@@ -1,5 +1,6 @@
-// One pass compiled on one device per set of compile-time switches (defines), each on first use
-// and kept: the executor-neutral twin of gl/pass_variants.h.
+// One pass compiled on one device once per set of #defines it is asked for: a pass whose
+// switches are compile-time constants in each program, so a driver that runs every side of a
+// branch it cannot prove uniform (llvmpipe) runs only the taken one. Compiled on first use, kept.
 #pragma once
 
 #include <map>

@@ -22,12 +22,9 @@ Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree) {
   PcssSettings fast = fast_pcss();
   fast.staged = true;  // the steps' own maps, drawn one by one
   const PcssFrame frame = pipeline.run(scene_frame.inputs(), fast);
-  const auto read = [&](const GlObject& t, int size, int channels) {
-    return flip_rows(read_float_texture(context, t, size, size, channels));
-  };
-  const Image map = read(*scene_frame.shadow_map, n, 1), gbuffer = read(scene_frame.gbuffer, n, 4);
-  const auto read_frame = [&](const DeviceTexture& t) { return flip_rows(context.read_texture(t, 0, 0)); };
-  const Image search = read_frame(*frame.search_map), filter = read_frame(*frame.filter_map);
+  const auto read = [&](const DeviceTexture& t) { return flip_rows(context.read_texture(t, 0, 0)); };
+  const Image map = read(*scene_frame.shadow_map), gbuffer = read(*scene_frame.gbuffer);
+  const Image search = read(*frame.search_map), filter = read(*frame.filter_map);
   // Region sides on a log scale from 1 to 64 texels; lit entries (s < 0) white.
   const auto sides = [&](const Image& entries) {
     Image out(n, n, 1, 1.0f);
@@ -42,8 +39,8 @@ Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree) {
   canvas.grey(gbuffer, 2, n + gap, 0, 1, 10.0f, 20.0f, {255, 255, 255});      // 2: receivers' light depth
   canvas.grey(sides(search), 0, 2 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 3: search side
   canvas.grey(sides(filter), 0, 3 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 4: filter side
-  canvas.grey(read_frame(*frame.visibility), 0, 4 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 5
-  canvas.grey(read_frame(frame.soft_shadow()), 0, 5 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 6
+  canvas.grey(read(*frame.visibility), 0, 4 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 5
+  canvas.grey(read(frame.soft_shadow()), 0, 5 * (n + gap), 0, 1, 0.0f, 1.0f, {255, 0, 255});  // 6
   return canvas;
 }
 

@@ -8,22 +8,22 @@
 
 namespace pn {
 
-SceneFrame render_scene_frame(const Context& context, ShadowMapSource& source, const GBufferRenderer& gbuffer,
+SceneFrame render_scene_frame(const QueryDevice& device, ShadowMapSource& source, const GBufferRenderer& gbuffer,
                               const Scene& scene, int screen_size) {
   if (screen_size < 1 || screen_size > 8192)
     throw Error("screen size " + std::to_string(screen_size) + ": expected 1..8192");
   SceneFrame frame;
   frame.light = scene.light;
   frame.screen_size = screen_size;
-  StageClock clock(context);
-  clock.start();
+  const std::unique_ptr<StageTimes> clock = device.stage_clock();
+  clock->start();
   const SourcedMap& sourced = source.render(scene);
-  clock.stage("shadow map");
+  clock->stage("shadow map");
   frame.shadow_map = sourced.map;
   frame.mip = sourced.mip;
   frame.pyramid = sourced.pyramid;
-  frame.shadow_map_ms = clock.read().front().second;
-  frame.gbuffer = gbuffer.render(scene, screen_size, fixtures::kNormalOffsetTexels);
+  frame.shadow_map_ms = clock->read().front().second;
+  frame.gbuffer = gbuffer.render_texture(scene, screen_size, fixtures::kNormalOffsetTexels, scene.map_light());
   return frame;
 }
 

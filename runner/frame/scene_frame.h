@@ -3,7 +3,8 @@
 // technique over it (a warm-up, then medians of repeated runs).
 #pragma once
 
-#include "gl/texture.h"
+#include <memory>
+
 #include "passes/gbuffer_pass.h"
 #include "frame/shadow_map_source.h"
 #include "frame/technique.h"
@@ -14,18 +15,18 @@ namespace pn {
 struct SceneFrame {
   LightModel light;
   int screen_size = 0;
-  const GlObject* shadow_map = nullptr;
+  const DeviceTexture* shadow_map = nullptr;
   const MinMaxMipChain* mip = nullptr;    // when the source keeps them (SourceOptions)
   const DepthPyramid* pyramid = nullptr;
-  FloatTexture gbuffer;
+  std::unique_ptr<DeviceTexture> gbuffer;
   double shadow_map_ms = 0.0;  // the source's GPU time for this frame (not part of a technique's total)
 
-  TechniqueInputs inputs() const { return {light, screen_size, shadow_map, &gbuffer, mip, pyramid}; }
+  TechniqueInputs inputs() const { return {light, screen_size, shadow_map, gbuffer.get(), mip, pyramid}; }
 };
 
 // Throws Error for a screen size outside 1..8192. The G-buffer's receivers
 // are moved fixtures::kNormalOffsetTexels off their faces (gbuffer.frag).
-SceneFrame render_scene_frame(const Context& context, ShadowMapSource& source, const GBufferRenderer& gbuffer,
+SceneFrame render_scene_frame(const QueryDevice& device, ShadowMapSource& source, const GBufferRenderer& gbuffer,
                               const Scene& scene, int screen_size);
 
 // Repeated runs of one technique: the last frame (with stats), medians of the GPU times.

@@ -8,14 +8,14 @@
 
 #include "core/texel_rect.h"
 #include "frame/map_structures.h"
-#include "gl/objects.h"
+#include "device/query_device.h"
 #include "scene/scene.h"
 
 namespace pn {
 
 // What a source hands a frame, borrowed from the source: valid until its next render.
 struct SourcedMap {
-  const GlObject* map = nullptr;          // N×N R32F linear light depth, +Inf where empty, N = scene.light.map_size
+  const DeviceTexture* map = nullptr;     // N×N R32F linear light depth, +Inf where empty, N = scene.light.map_size
   const MinMaxMipChain* mip = nullptr;    // the map's structures when the source keeps them (SourceOptions), else null
   const DepthPyramid* pyramid = nullptr;
   std::vector<TexelRect> changed;         // where the map may differ from the previous frame's (the whole map: anywhere)

@@ -13,8 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "gl/objects.h"
-#include "gl/texture.h"
+#include "device/query_device.h"
 #include "passes/cascade_blend_pass.h"
 #include "passes/shade_pass.h"
 #include "scene/light_model.h"
@@ -30,8 +29,8 @@ struct CascadeInputs;   // below
 struct TechniqueInputs {
   LightModel light;
   int screen_size = 0;
-  const GlObject* shadow_map = nullptr;  // N×N R32F linear light depth, +Inf where empty (N = light.map_size)
-  const GlObject* gbuffer = nullptr;     // screen² RGBA32F (u, v in texels, light depth, valid), rows from the bottom
+  const DeviceTexture* shadow_map = nullptr;  // N×N R32F linear light depth, +Inf where empty (N = light.map_size)
+  const DeviceTexture* gbuffer = nullptr;     // screen² RGBA32F (u, v in texels, light depth, valid), rows from the bottom
   // The map's structures when the source keeps them up to date (a cache updates them where the map
   // changed); null: a technique that reads one builds its own from shadow_map.
   const MinMaxMipChain* mip = nullptr;
@@ -54,13 +53,13 @@ struct CascadeInputs : CascadeBlend {
 using NamedValues = std::vector<std::pair<std::string, double>>;
 
 struct TechniqueFrame {
-  FloatTexture visibility;  // screen² R32F, rows from the bottom: 1 lit, 0 in shadow
+  std::unique_ptr<DeviceTexture> visibility;  // screen² R32F, rows from the bottom: 1 lit, 0 in shadow
   NamedValues stages;   // GPU ms per stage, in order (timestamps between them)
   NamedValues stats;    // what the frame did (e.g. "representatives", "work/px"); filled when asked
   double total_ms() const;
 };
 
-// A configured technique, bound to one GL context.
+// A configured technique, bound to one device (a GL context, a Vulkan device).
 class Technique {
  public:
   virtual ~Technique() = default;
@@ -72,29 +71,29 @@ class Technique {
   virtual bool has_one_call() const { return true; }
 };
 
-// GL resources that techniques of one family share (compiled passes, tables),
-// built once per context on first use and owned here, not in globals.
+// Device resources that techniques of one family share (compiled passes, tables),
+// built once per device on first use and owned here, not in globals.
 class TechniqueResources {
  public:
-  TechniqueResources(const Context& context, const SourceTree& tree) : context_(&context), tree_(&tree) {}
-  const Context& context() const { return *context_; }
+  TechniqueResources(const QueryDevice& device, const SourceTree& tree) : device_(&device), tree_(&tree) {}
+  const QueryDevice& device() const { return *device_; }
   const SourceTree& tree() const { return *tree_; }
 
-  // The one T of these resources, constructed as T(context, tree) the first time it is asked for.
+  // The one T of these resources, constructed as T(device, tree) the first time it is asked for.
   template <class T>
   const T& shared() {
     std::shared_ptr<void>& slot = shared_[std::type_index(typeid(T))];
-    if (!slot) slot = std::make_shared<T>(*context_, *tree_);
+    if (!slot) slot = std::make_shared<T>(*device_, *tree_);
     return *static_cast<const T*>(slot.get());
   }
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   const SourceTree* tree_;
   std::map<std::type_index, std::shared_ptr<void>> shared_;
 };
 
-// A technique's settings before any GL: made by a registry entry, changed by
+// A technique's settings before any device: made by a registry entry, changed by
 // its own override keys, validated on the command line before a context exists.
 class TechniqueConfig {
  public:

@@ -44,13 +44,11 @@ std::unique_ptr<DeviceTexture> CascadeBlendPass::blend(const DeviceTexture& view
   return target;
 }
 
-FloatTexture CascadeBlendPass::run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities,
-                                   int screen_size) const {
+std::unique_ptr<DeviceTexture> CascadeBlendPass::blend(const CascadeBlend& cascades,
+                                                       const std::vector<const DeviceTexture*>& visibilities,
+                                                       int screen_size) const {
   if (!cascades.view_depth) throw Error("cascade blend: expected the camera's view depth");
-  std::vector<std::unique_ptr<GlDeviceTexture>> wrapped;
-  std::vector<const DeviceTexture*> pointers;
-  for (const GlObject* v : visibilities) pointers.push_back(wrapped.emplace_back(std::make_unique<GlDeviceTexture>(*v)).get());
-  return take_float_texture(blend(GlDeviceTexture(*cascades.view_depth), cascades, pointers, screen_size));
+  return blend(*cascades.view_depth, cascades, visibilities, screen_size);
 }
 
 }  // namespace pn

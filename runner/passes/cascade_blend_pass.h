@@ -14,7 +14,7 @@ namespace pn {
 // What blends the cascades' visibilities (cascades.glsl): the camera's view depth, the splits
 // and the transition band.
 struct CascadeBlend {
-  const FloatTexture* view_depth = nullptr;  // screen² RGBA32F: z the camera's view depth, w = 1 where a surface is seen
+  const DeviceTexture* view_depth = nullptr;  // screen² RGBA32F: z the camera's view depth, w = 1 where a surface is seen
   float split_far[4] = {0, 0, 0, 0};     // C_1 ... C_m
   float near = 0;                        // C_0
   float band = 0;
@@ -29,9 +29,9 @@ class CascadeBlendPass {
   // by `view_depth` (cascades.view_depth's texture; any executor).
   std::unique_ptr<DeviceTexture> blend(const DeviceTexture& view_depth, const CascadeBlend& cascades,
                                        const std::vector<const DeviceTexture*>& visibilities, int screen_size) const;
-  // The same with GL textures (the device is a GL context).
-  FloatTexture run(const CascadeBlend& cascades, const std::vector<const GlObject*>& visibilities,
-                   int screen_size) const;
+  // The same by cascades.view_depth. Throws Error without one.
+  std::unique_ptr<DeviceTexture> blend(const CascadeBlend& cascades,
+                                       const std::vector<const DeviceTexture*>& visibilities, int screen_size) const;
 
  private:
   const QueryDevice* device_;

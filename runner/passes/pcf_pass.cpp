@@ -63,20 +63,21 @@ std::vector<float> PcfQueryPass::bilinear(const DeviceTexture& depth_map, const 
   return out;
 }
 
-PcfShadePass::PcfShadePass(const Context& context, const SourceTree& tree)
-    : context_(&context), shade_(context, tree, "passes/pcf_shade", PN_PCF_SHADE_VISIBILITY_IMAGE) {}
+PcfShadePass::PcfShadePass(const QueryDevice& device, const SourceTree& tree)
+    : shade_(device, tree, "passes/pcf_shade", PN_PCF_SHADE_VISIBILITY_IMAGE) {}
 
-FloatTexture PcfShadePass::run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size,
-                               const LightModel& light, float bias, float receiver_plane_tan, ShadeStage stage) const {
+std::unique_ptr<DeviceTexture> PcfShadePass::run(const DeviceTexture& shadow_map, const DeviceTexture& gbuffer,
+                                                 int screen_size, const LightModel& light, float bias,
+                                                 float receiver_plane_tan, ShadeStage stage) const {
   glsl::PnPcfShadeParams block{};
   set_light_fields(block, light);
   block.bias = bias;
   block.receiverPlaneTan = receiver_plane_tan;
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_PCF_SHADE_MAP_BINDING, shadow_map);
-  bind.texture(PN_PCF_SHADE_GBUFFER_BINDING, gbuffer);
-  return shade_.run(stage, {}, screen_size, bind);
+  PassResources resources;
+  resources.block = query_block(block);
+  resources.textures.push_back({PN_PCF_SHADE_MAP_BINDING, shadow_map});
+  resources.textures.push_back({PN_PCF_SHADE_GBUFFER_BINDING, gbuffer});
+  return shade_.run(stage, {}, screen_size, resources);
 }
 
 }  // namespace pn

@@ -52,14 +52,14 @@ class PcfQueryPass {
 // R32F texture. The pass the pcf techniques of one context share (TechniqueResources::shared).
 class PcfShadePass {
  public:
-  PcfShadePass(const Context& context, const SourceTree& tree);
+  PcfShadePass(const QueryDevice& device, const SourceTree& tree);
   // receiver_plane_tan > 0: each pixel's receiver plane from its G-buffer neighbours, slopes
   // clamped to that tangent (gbuffer_receiver_plane.glsl); 0: none.
-  FloatTexture run(const GlObject& shadow_map, const GlObject& gbuffer, int screen_size, const LightModel& light,
-                   float bias, float receiver_plane_tan, ShadeStage stage = ShadeStage::compute) const;
+  std::unique_ptr<DeviceTexture> run(const DeviceTexture& shadow_map, const DeviceTexture& gbuffer, int screen_size,
+                                     const LightModel& light, float bias, float receiver_plane_tan,
+                                     ShadeStage stage = ShadeStage::compute) const;
 
  private:
-  const Context* context_;
   ShadePass shade_;
 };
 

@@ -60,8 +60,8 @@ Rect rect_of(const Query& q) {
 
 }  // namespace
 
-SavsmPass::SavsmPass(const Context& context, const SourceTree& tree)
-    : context_(&context), shade_(context, tree, "passes/savsm_shade", PN_SAVSM_VISIBILITY_IMAGE) {}
+SavsmPass::SavsmPass(const QueryDevice& device, const SourceTree& tree)
+    : shade_(device, tree, "passes/savsm_shade", PN_SAVSM_VISIBILITY_IMAGE) {}
 
 SavsmQueryPass::SavsmQueryPass(const QueryDevice& device, const SourceTree& tree)
     : fixed_query_(device, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FIXED),
@@ -69,17 +69,17 @@ SavsmQueryPass::SavsmQueryPass(const QueryDevice& device, const SourceTree& tree
       float_query_(device, tree, "passes/savsm_query.comp", query_bindings(), table_define(PN_SAVSM_TABLE_FLOAT),
                    QueryCompile::on_first_use) {}
 
-FloatTexture SavsmPass::shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer,
-                              int screen_size, const LightModel& light, const SavsmSettings& settings,
-                              ShadeStage stage) const {
+std::unique_ptr<DeviceTexture> SavsmPass::shade(const MomentsTable& table, const DeviceTexture& mip,
+                                                const DeviceTexture& gbuffer, int screen_size, const LightModel& light,
+                                                const SavsmSettings& settings, ShadeStage stage) const {
   check_sizes(table, light);
   const glsl::PnSavsmParams block = make_block(table, light, settings);
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_SAVSM_TABLE_BINDING, gl_texture(*table.texture));
-  bind.texture(PN_SAVSM_MIP_BINDING, mip);
-  bind.texture(PN_SAVSM_INPUT_BINDING, gbuffer);
-  return shade_.run(stage, table_define(table), screen_size, bind);
+  PassResources resources;
+  resources.block = query_block(block);
+  resources.textures.push_back({PN_SAVSM_TABLE_BINDING, *table.texture});
+  resources.textures.push_back({PN_SAVSM_MIP_BINDING, mip});
+  resources.textures.push_back({PN_SAVSM_INPUT_BINDING, gbuffer});
+  return shade_.run(stage, table_define(table), screen_size, resources);
 }
 
 std::vector<SavsmQueryResult> SavsmQueryPass::query(const MomentsTable& table, const DeviceTexture& mip,

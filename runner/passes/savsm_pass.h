@@ -6,7 +6,6 @@
 
 #include <vector>
 
-#include "gl/pass_variants.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/query_pass.h"
 #include "passes/summed_area_pass.h"
@@ -30,19 +29,17 @@ struct SavsmQueryResult {
 
 class SavsmPass {
  public:
-  SavsmPass(const Context& context, const SourceTree& tree);
+  SavsmPass(const QueryDevice& device, const SourceTree& tree);
 
   // Per screen pixel of a G-buffer (screen² RGBA32F: u, v in texels, light depth, valid), as a new
   // screen² R32F texture; pixels without a surface are 1. `mip`: the map's min/max mip chain
   // (read when settings.bound or the min blocker mode; else any 2-D texture).
   // In `stage`: savsm.glsl's pnSavsm in a compute pass or a fragment shader (shade_pass.h).
-  FloatTexture shade(const MomentsTable& table, const GlObject& mip, const GlObject& gbuffer, int screen_size,
-                     const LightModel& light, const SavsmSettings& settings,
-                     ShadeStage stage = ShadeStage::compute) const;
-
+  std::unique_ptr<DeviceTexture> shade(const MomentsTable& table, const DeviceTexture& mip,
+                                       const DeviceTexture& gbuffer, int screen_size, const LightModel& light,
+                                       const SavsmSettings& settings, ShadeStage stage = ShadeStage::compute) const;
 
  private:
-  const Context* context_;
   ShadePass shade_;  // by PN_SAVSM_TABLE
 };
 

@@ -1,29 +1,28 @@
 #include "passes/shade_pass.h"
 
-#include "passes/scene_draw.h"
+#include "core/error.h"
 
 namespace pn {
 
-ShadePass::ShadePass(const Context& context, const SourceTree& tree, std::string stem, unsigned image_binding)
-    : context_(&context), tree_(tree), stem_(std::move(stem)), image_binding_(image_binding),
-      compute_(context, tree, stem_ + ".comp") {}
+ShadePass::ShadePass(const QueryDevice& device, const SourceTree& tree, std::string stem, unsigned image_binding)
+    : device_(&device), tree_(tree), stem_(std::move(stem)), image_binding_(image_binding),
+      compute_(device, tree, stem_ + ".comp") {}
 
-FloatTexture ShadePass::run(ShadeStage stage, const std::vector<Define>& defines, int size, PassBindings& bind,
-                            int fragment_channels) const {
+std::unique_ptr<DeviceTexture> ShadePass::run(ShadeStage stage, const std::vector<Define>& defines, int size,
+                                              PassResources resources, int fragment_channels) const {
   if (stage == ShadeStage::compute) {
-    FloatTexture out = make_float_texture(*context_, size, size, 1);
-    bind.image(image_binding_, out, GL_WRITE_ONLY, GL_R32F);
-    compute_.get(defines).dispatch(size, size);
+    std::unique_ptr<DeviceTexture> out = device_->make_texture(float_shape(size, size, 1));
+    resources.images.push_back({image_binding_, *out});
+    device_->run(compute_.get(defines), resources, size, size);
     return out;
   }
-  const std::string key = define_key(defines);
-  auto found = fragment_.find(key);
-  if (found == fragment_.end())
-    found = fragment_.emplace(key, link_raster_pass(*context_, tree_, kFullScreenVertex, stem_ + ".frag", defines))
-                .first;
-  RasterTarget target(*context_, size, fragment_channels);
-  target.draw_full_screen(found->second);
-  return target.release_texture();
+  if (fragment_channels != 1 && fragment_channels != 4)
+    throw Error(stem_ + ".frag: a target of " + std::to_string(fragment_channels) + " channels: expected 1 or 4");
+  std::unique_ptr<QueryProgram>& program = fragment_[define_key(defines) + ";" + std::to_string(fragment_channels)];
+  if (!program)
+    program = device_->compile_full_screen(tree_, stem_ + ".frag",
+                                           fragment_channels == 1 ? TexelFormat::r32f : TexelFormat::rgba32f, defines);
+  return device_->draw_full_screen(*program, size, resources);
 }
 
 }  // namespace pn

@@ -5,17 +5,16 @@
 // fragment-stage checks). Both programs come from one stem: `<stem>.comp`
 // writes its result to an r32f image, `<stem>.frag` (with
 // passes/full_screen.vert) to the colour target; both include the body that
-// calls the technique.
+// calls the technique. Runs on any executor (device/query_device.h).
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "gl/compute_program.h"
-#include "gl/pass_bindings.h"
-#include "gl/pass_variants.h"
-#include "gl/texture.h"
+#include "device/program_variants.h"
+#include "device/query_device.h"
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -28,22 +27,22 @@ enum class ShadeStage {
 class ShadePass {
  public:
   // `stem`: e.g. "passes/pcf_shade"; `image_binding`: the compute pass's r32f output image.
-  ShadePass(const Context& context, const SourceTree& tree, std::string stem, unsigned image_binding);
+  ShadePass(const QueryDevice& device, const SourceTree& tree, std::string stem, unsigned image_binding);
 
   // A new size² texture of the pass's values, computed in `stage` with the programs of `defines`
-  // (compiled on first use); `bind` holds every resource the pass reads (and any further image
-  // the compute pass writes). The compute pass's output is R32F; the fragment shader's target has
-  // `fragment_channels` channels (what it writes beyond the visibility, for a check).
-  FloatTexture run(ShadeStage stage, const std::vector<Define>& defines, int size, PassBindings& bind,
-                   int fragment_channels = 1) const;
+  // (compiled on first use); `resources` holds every resource the pass reads (and any further
+  // image the compute pass writes). The compute pass's output is R32F; the fragment shader's
+  // target has `fragment_channels` channels, 1 or 4 (what it writes beyond the visibility, for a check).
+  std::unique_ptr<DeviceTexture> run(ShadeStage stage, const std::vector<Define>& defines, int size,
+                                     PassResources resources, int fragment_channels = 1) const;
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   SourceTree tree_;
   std::string stem_;
   unsigned image_binding_;
-  PassVariants compute_;
-  mutable std::map<std::string, GlObject> fragment_;  // by define_key
+  ProgramVariants compute_;
+  mutable std::map<std::string, std::unique_ptr<QueryProgram>> fragment_;  // by define_key and channels
 };
 
 }  // namespace pn

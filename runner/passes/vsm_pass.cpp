@@ -79,11 +79,12 @@ std::vector<Query> VsmQueryPass::run(const VsmMoments& moments, const DepthPyram
       .list(0, queries.size());
 }
 
-VsmShadePass::VsmShadePass(const Context& context, const SourceTree& tree)
-    : context_(&context), shade_(context, tree, "passes/vsm_shade", PN_VSM_SHADE_VISIBILITY_IMAGE) {}
+VsmShadePass::VsmShadePass(const QueryDevice& device, const SourceTree& tree)
+    : shade_(device, tree, "passes/vsm_shade", PN_VSM_SHADE_VISIBILITY_IMAGE) {}
 
-FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer,
-                               int screen_size, const VsmParams& params, float bias, ShadeStage stage) const {
+std::unique_ptr<DeviceTexture> VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& pyramid,
+                                                 const DeviceTexture& gbuffer, int screen_size,
+                                                 const VsmParams& params, float bias, ShadeStage stage) const {
   params.validate();
   const glsl::PnVsmShadeParams block{{params.near_depth, params.far_depth},
                                      {params.positive_exponent, params.negative_exponent},
@@ -91,12 +92,13 @@ FloatTexture VsmShadePass::run(const VsmMoments& moments, const DepthPyramid& py
                                      bias,
                                      params.min_variance,
                                      params.bleeding_reduction};
-  PassBindings bind(*context_);
-  bind.uniform(block);
-  bind.texture(PN_VSM_SHADE_MOMENTS_BINDING, gl_texture(*moments.texture));
-  bind.texture(PN_VSM_SHADE_PYRAMID_BINDING, gl_texture(*pyramid.texture));
-  bind.texture(PN_VSM_SHADE_GBUFFER_BINDING, gbuffer);
-  return shade_.run(stage, {{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}}, screen_size, bind);
+  PassResources resources;
+  resources.block = query_block(block);
+  resources.textures.push_back({PN_VSM_SHADE_MOMENTS_BINDING, *moments.texture});
+  resources.textures.push_back({PN_VSM_SHADE_PYRAMID_BINDING, *pyramid.texture});
+  resources.textures.push_back({PN_VSM_SHADE_GBUFFER_BINDING, gbuffer});
+  return shade_.run(stage, {{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}}, screen_size,
+                    resources);
 }
 
 }  // namespace pn

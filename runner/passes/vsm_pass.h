@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "core/query_grid.h"
-#include "gl/pass_variants.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
 #include "modules/vsm.h"
@@ -65,12 +64,12 @@ class VsmQueryPass {
 // R32F texture. Pixels that see no surface are 1.
 class VsmShadePass {
  public:
-  VsmShadePass(const Context& context, const SourceTree& tree);
-  FloatTexture run(const VsmMoments& moments, const DepthPyramid& pyramid, const GlObject& gbuffer, int screen_size,
-                   const VsmParams& params, float bias, ShadeStage stage = ShadeStage::compute) const;
+  VsmShadePass(const QueryDevice& device, const SourceTree& tree);
+  std::unique_ptr<DeviceTexture> run(const VsmMoments& moments, const DepthPyramid& pyramid,
+                                     const DeviceTexture& gbuffer, int screen_size, const VsmParams& params,
+                                     float bias, ShadeStage stage = ShadeStage::compute) const;
 
  private:
-  const Context* context_;
   ShadePass shade_;  // by PN_VSM_SHADE_KIND
 };
 

@@ -107,12 +107,6 @@ double PcssStats::work_per_receiver() const {
   return receivers > 0 ? (blocker_work + occlusion_work) / static_cast<double>(receivers) : 0.0;
 }
 
-GlPcssInputs::GlPcssInputs(const TechniqueInputs& in)
-    : shadow_map(*in.shadow_map), gbuffer(*in.gbuffer),
-      inputs{in.light, in.screen_size, &shadow_map, &gbuffer, in.mip, in.pyramid} {
-  if (!in.shadow_map || !in.gbuffer) throw Error("PCSS frame: expected a shadow map and a G-buffer");
-}
-
 PcssPipeline::PcssPipeline(const QueryDevice& device, const SourceTree& tree)
     : device_(&device),
       tree_(tree),
@@ -124,7 +118,7 @@ PcssPipeline::PcssPipeline(const QueryDevice& device, const SourceTree& tree)
       search_(device, tree, "passes/pcss_search.comp"),
       traverse_(device, tree, "passes/pcss_traverse.comp"),
       filter_(device, tree, "passes/pcss_filter.comp"),
-      one_call_(device, tree, "passes/pcss_one_call.comp"),
+      one_call_(device, tree, "passes/pcss_one_call", PN_PCSS_VISIBILITY_IMAGE),
       scan_(device, tree, "passes/pcss_scan.comp"),
       poisson_(device, tree, "passes/pcss_poisson.comp"),
       compact_(device, tree, "passes/pcss_compact.comp"),
@@ -155,7 +149,7 @@ PcssPipeline::Texture PcssPipeline::cleared_texture(int size, int channels) cons
   return t;
 }
 
-void PcssPipeline::build_structure(PcssFrame& frame, const PcssInputs& inputs, int n) const {
+void PcssPipeline::build_structure(PcssFrame& frame, const TechniqueInputs& inputs, int n) const {
   const PcssSettings& s = frame.settings;
   const DeviceTexture& shadow_map = *inputs.shadow_map;
   const bool levels = uses_structure_levels(s);
@@ -289,7 +283,7 @@ void PcssPipeline::add_representatives(PassResources& resources, PcssBlock& bloc
   resources.textures.push_back({PN_PCSS_RESULTS_BINDING, results});
 }
 
-PcssFrame PcssPipeline::begin_frame(const PcssInputs& inputs, const PcssSettings& settings) const {
+PcssFrame PcssPipeline::begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const {
   settings.validate();
   if (!inputs.shadow_map || !inputs.gbuffer || inputs.screen_size < 1)
     throw Error("PCSS frame '" + settings.name + "': expected a shadow map, a G-buffer and a screen size >= 1");
@@ -300,7 +294,7 @@ PcssFrame PcssPipeline::begin_frame(const PcssInputs& inputs, const PcssSettings
   return frame;
 }
 
-void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const PcssInputs& inputs, PcssBlock& block,
+void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs, PcssBlock& block,
                                     PassResources& resources) const {
   const PcssSettings& s = frame.settings;
   // What the call reads: the mip chain (and the sums table when asked) for pnFastPcss, the pyramid for
@@ -331,7 +325,7 @@ static std::vector<Define> one_call_defines(OneCall call, bool record_work) {
           {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
 }
 
-PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const PcssInputs& inputs, bool record_work) const {
+PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inputs, bool record_work) const {
   const int size = frame.size;
   const std::unique_ptr<StageTimes> clock = device_->stage_clock();
   clock->start();
@@ -345,38 +339,28 @@ PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const PcssInputs& inputs, 
                                               : "mip chain");
   frame.work = record_work ? float_texture(size, 4) : cleared_texture(1, 4);
   frame.fetches = record_work ? float_texture(size, 1) : cleared_texture(1, 1);
-  frame.visibility = float_texture(size, 1);
-  for (const PassImage& r : {PassImage{PN_PCSS_WORK_IMAGE, *frame.work},
-                      PassImage{PN_PCSS_FETCH_IMAGE, *frame.fetches},
-                      PassImage{PN_PCSS_VISIBILITY_IMAGE, *frame.visibility}})
-      resources.images.push_back(r);
-  device_->run(one_call_.get(one_call_defines(call, record_work)), resources, size, size);
+  resources.images.push_back({PN_PCSS_WORK_IMAGE, *frame.work});
+  resources.images.push_back({PN_PCSS_FETCH_IMAGE, *frame.fetches});
+  frame.visibility = one_call_.run(ShadeStage::compute, one_call_defines(call, record_work), size, resources);
   clock->stage("one call");
   frame.stages = clock->read();
   return frame;
 }
 
-std::unique_ptr<DeviceTexture> PcssPipeline::run_fragment(const PcssInputs& inputs, const PcssSettings& settings,
+std::unique_ptr<DeviceTexture> PcssPipeline::run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings,
                                                           int channels) const {
   PcssFrame frame = begin_frame(inputs, settings);
   const std::optional<OneCall> call = one_call(settings);
   if (!call)
     throw Error("PCSS frame '" + settings.name + "': no one call to run in a fragment shader (reuse and blur need "
                 "neighbours; the other combinations are staged ablations)");
-  if (channels != 1 && channels != 4)
-    throw Error("PCSS frame '" + settings.name + "': a fragment target of " + std::to_string(channels) +
-                " channels: expected 1 or 4");
   PcssBlock block{};
   PassResources resources;
   prepare_one_call(frame, *call, inputs, block, resources);
-  const std::vector<Define> defines = one_call_defines(*call, true);
-  const TexelFormat format = channels == 1 ? TexelFormat::r32f : TexelFormat::rgba32f;
-  std::unique_ptr<QueryProgram>& program = one_call_fragment_[define_key(defines) + ";" + std::to_string(channels)];
-  if (!program) program = device_->compile_full_screen(tree_, "passes/pcss_one_call.frag", format, defines);
-  return device_->draw_full_screen(*program, frame.size, resources);
+  return one_call_.run(ShadeStage::fragment, one_call_defines(*call, true), frame.size, resources, channels);
 }
 
-PcssFrame PcssPipeline::run(const PcssInputs& inputs, const PcssSettings& settings, bool record_work) const {
+PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work) const {
   PcssFrame frame = begin_frame(inputs, settings);
   if (frame.one_call) return run_one_call(std::move(frame), inputs, record_work);
   const int size = frame.size;

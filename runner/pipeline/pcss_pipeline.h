@@ -14,12 +14,12 @@
 #include "core/image.h"
 #include "device/program_variants.h"
 #include "device/query_device.h"
-#include "gl/query_device_gl.h"
 #include "passes/blur_pass.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/summed_area_pass.h"
 #include "passes/reuse_pass.h"
+#include "passes/shade_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "frame/fetch_proxy.h"
 #include "frame/technique.h"
@@ -31,27 +31,10 @@ struct PnPcssParams;   // glsl/passes/pcss_params.h's uniform block
 struct PnPoissonDisk;  // and its disk
 }
 
-// What one frame reads, on the pipeline's device: TechniqueInputs' fields as device textures.
-struct PcssInputs {
-  LightModel light;
-  int screen_size = 0;
-  const DeviceTexture* shadow_map = nullptr;  // N×N R32F linear light depth, +Inf where empty
-  const DeviceTexture* gbuffer = nullptr;     // screen² RGBA32F (u, v in texels, light depth, valid)
-  const MinMaxMipChain* mip = nullptr;        // the source's structures when it keeps them, else null
-  const DepthPyramid* pyramid = nullptr;
-};
-
-// A GL technique's inputs (TechniqueInputs' GL textures, borrowed) as PcssInputs of its context.
-struct GlPcssInputs {
-  explicit GlPcssInputs(const TechniqueInputs& inputs);
-  GlDeviceTexture shadow_map, gbuffer;
-  PcssInputs inputs;
-};
-
 struct PcssFrame {
   PcssSettings settings;
   int size = 0;  // screen side
-  // Step 1's structures, the source's (PcssInputs) when it keeps them, else built_*: null where unused.
+  // Step 1's structures, the source's (TechniqueInputs) when it keeps them, else built_*: null where unused.
   const DepthPyramid* pyramid = nullptr;  // Structure::pyramid; level 0 only (the sanitized map) when nothing reads its levels
   const MinMaxMipChain* mip = nullptr;    // Structure::mip: the aligned min/max chain
   DepthPyramid built_pyramid;
@@ -112,24 +95,15 @@ class PcssPipeline {
   // run the staged passes. `record_work`: keep the one call's per-pixel work
   // for stats() (an engine's pass writes the visibility only).
   // Throws Error for invalid settings or inputs.
-  PcssFrame run(const PcssInputs& inputs, const PcssSettings& settings, bool record_work = true) const;
+  PcssFrame run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work = true) const;
 
   // The one call of `settings` (which must have one, staged or not) in a
   // fragment shader: a full-screen triangle over a screen-size target of
   // `channels` (4: each fragment's (visibility, Step 4's work, Step 5's work,
   // flags), what the compute pass's work image holds; 1: the visibility).
   // For the fragment-stage checks.
-  std::unique_ptr<DeviceTexture> run_fragment(const PcssInputs& inputs, const PcssSettings& settings,
-                                              int channels = 4) const;
-
-  // The same over a GL technique's inputs (the pipeline's device is their GL context).
-  PcssFrame run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work = true) const {
-    return run(GlPcssInputs(inputs).inputs, settings, record_work);
-  }
   std::unique_ptr<DeviceTexture> run_fragment(const TechniqueInputs& inputs, const PcssSettings& settings,
-                                              int channels = 4) const {
-    return run_fragment(GlPcssInputs(inputs).inputs, settings, channels);
-  }
+                                              int channels = 4) const;
 
   PcssStats stats(const PcssFrame& frame) const;
 
@@ -152,15 +126,15 @@ class PcssPipeline {
                           int samples, bool wants_depth_sums, Texture& parents, Texture& results) const;
   // Step 1's structure: the pyramid's levels, or the mip chain and the depth sums, as `settings` reads them.
   // The source's structures (inputs.pyramid, inputs.mip) are used as they are when they fit.
-  void build_structure(PcssFrame& frame, const PcssInputs& inputs, int map_size) const;
+  void build_structure(PcssFrame& frame, const TechniqueInputs& inputs, int map_size) const;
   // What the estimators read (the structures, the table, `entries` and `parents`), into `resources`.
   void add_structures(PassResources& resources, const PcssFrame& frame) const;
   // The one-call path's structure and resources (the compute and the fragment pass alike); `block`
   // and `disks` must outlive the dispatch.
-  void prepare_one_call(PcssFrame& frame, OneCall call, const PcssInputs& inputs, Block& block,
+  void prepare_one_call(PcssFrame& frame, OneCall call, const TechniqueInputs& inputs, Block& block,
                         PassResources& resources) const;
-  PcssFrame run_one_call(PcssFrame frame, const PcssInputs& inputs, bool record_work) const;
-  PcssFrame begin_frame(const PcssInputs& inputs, const PcssSettings& settings) const;
+  PcssFrame run_one_call(PcssFrame frame, const TechniqueInputs& inputs, bool record_work) const;
+  PcssFrame begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const;
   // The disk of `samples` points: the blocker or PCF default, else one made on first use and kept.
   const glsl::PnPoissonDisk& disk(int samples) const;
   // Their second half's inputs into `resources`: `entries`, parents (tile > 0), results, and the
@@ -176,8 +150,7 @@ class PcssPipeline {
   ReusePass reuse_;
   BlurPass blur_;
   ProgramVariants search_, traverse_, filter_;  // compiled per switch setting (pcss_params.glsl's PN_PCSS_*)
-  ProgramVariants one_call_;                    // pcss_one_call.comp per PN_PCSS_ONE_CALL
-  mutable std::map<std::string, std::unique_ptr<QueryProgram>> one_call_fragment_;  // pcss_one_call.frag, by define_key
+  ShadePass one_call_;                          // pcss_one_call.comp / .frag, per PN_PCSS_ONE_CALL
   ProgramVariants scan_, poisson_, compact_, shade_;
   Texture sample_table_, no_parents_;
   Texture no_pyramid_, no_mip_, no_depth_sums_;  // bound where a frame has no such structure

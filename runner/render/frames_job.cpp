@@ -76,15 +76,16 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
     row.map_ms = clock.read().front().second;
     row.moving_share = animation.moving_share(f);
     row.changed_share = map_share(sourced.changed, n);
-    const GlObject gbuffer = gbuffers.render(scene, size, fixtures::kNormalOffsetTexels);
-    const TechniqueInputs inputs{scene.light, size, sourced.map, &gbuffer, sourced.mip, sourced.pyramid};
+    const std::unique_ptr<DeviceTexture> gbuffer =
+        gbuffers.render_texture(scene, size, fixtures::kNormalOffsetTexels, scene.map_light());
+    const TechniqueInputs inputs{scene.light, size, sourced.map, gbuffer.get(), sourced.mip, sourced.pyramid};
     const TechniqueFrame frame = technique->run(inputs, false);
     row.technique_ms = frame.total_ms();
     result.rows.push_back(row);
     table << f << "\t" << format_number("%.4f", row.moving_share) << "\t" << format_ms(row.map_ms) << "\t"
           << format_ms(row.technique_ms) << "\t" << format_number("%.4f", row.changed_share) << "\n";
 
-    const Image visibility = read_float_texture(context, frame.visibility);
+    const Image visibility = context.read_texture(*frame.visibility, 0, 0);
     const Image surface = read_float_texture(context, surfaces.render(scene, size));
     const std::filesystem::path lit = setup.out / (frame_stem(scene.name, f) + ".png");
     Canvas picture(size, size, {0, 0, 0});
@@ -92,7 +93,7 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
     picture.write_png(lit);
     result.written.push_back(lit);
 
-    const Image map = read_float_texture(context, *sourced.map, n, n, 1);
+    const Image map = context.read_texture(*sourced.map, 0, 0);
     Canvas overlay(n, n, {255, 255, 255});
     overlay.grey(flip_rows(map), 0, 0, 0, 1, kDepthBlack, kDepthWhite, {255, 255, 255});
     for (const TexelRect& r : sourced.changed)  // rows from the map's bottom, the picture's from its top

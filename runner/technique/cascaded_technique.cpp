@@ -4,7 +4,6 @@
 #include <string>
 
 #include "core/error.h"
-#include "gl/gpu_timer.h"
 
 namespace pn {
 
@@ -16,8 +15,8 @@ TechniqueFrame CascadedTechnique::run(const TechniqueInputs& inputs, bool with_s
     layer.stage = inputs.stage;  // each cascade's call in the stage the frame asks for
     layers.push_back(inner_->run(layer, with_stats));
   }
-  std::vector<const GlObject*> visibilities;
-  for (const TechniqueFrame& layer : layers) visibilities.push_back(&layer.visibility);
+  std::vector<const DeviceTexture*> visibilities;
+  for (const TechniqueFrame& layer : layers) visibilities.push_back(layer.visibility.get());
   TechniqueFrame out;
   for (size_t c = 0; c < layers.size(); ++c) {
     for (const auto& stage : layers[c].stages) {  // not a structured binding: a lambda cannot capture one (C++17)
@@ -27,11 +26,11 @@ TechniqueFrame CascadedTechnique::run(const TechniqueInputs& inputs, bool with_s
     }
     for (const auto& [name, value] : layers[c].stats) out.stats.emplace_back("c" + std::to_string(c) + " " + name, value);
   }
-  StageClock clock(*context_);
-  clock.start();
-  out.visibility = blend_->run(cascades, visibilities, inputs.screen_size);
-  clock.stage("cascade blend");
-  for (const auto& stage : clock.read()) out.stages.push_back(stage);
+  const std::unique_ptr<StageTimes> clock = device_->stage_clock();
+  clock->start();
+  out.visibility = blend_->blend(cascades, visibilities, inputs.screen_size);
+  clock->stage("cascade blend");
+  for (const auto& stage : clock->read()) out.stages.push_back(stage);
   return out;
 }
 

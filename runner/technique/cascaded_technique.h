@@ -14,8 +14,8 @@ namespace pn {
 
 class CascadedTechnique : public Technique {
  public:
-  CascadedTechnique(const Technique& inner, const CascadeBlendPass& blend, const Context& context)
-      : inner_(&inner), blend_(&blend), context_(&context) {}
+  CascadedTechnique(const Technique& inner, const CascadeBlendPass& blend, const QueryDevice& device)
+      : inner_(&inner), blend_(&blend), device_(&device) {}
 
   // Throws Error unless inputs.cascades is set. Stages: the inner technique's, each summed over
   // the cascades, then "cascade blend"; stats: each cascade's, prefixed "c<i> ".
@@ -26,7 +26,7 @@ class CascadedTechnique : public Technique {
  private:
   const Technique* inner_;
   const CascadeBlendPass* blend_;
-  const Context* context_;
+  const QueryDevice* device_;
 };
 
 }  // namespace pn

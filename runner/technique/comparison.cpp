@@ -67,7 +67,7 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
   c.shadow_map_ms = cascaded ? cascades->shadow_map_ms : frame.shadow_map_ms;
   if (cascaded) {
     c.cascades = cascades->cascades;
-    c.cascade_index = cascade_index_image(read_float_texture(context, cascades->view_depth), *cascades);
+    c.cascade_index = cascade_index_image(context.read_texture(*cascades->view_depth, 0, 0), *cascades);
   }
   c.surface = read_float_texture(context, SurfaceRenderer(context, tree).render(scene, size));
   TruthSettings truth_settings;
@@ -91,7 +91,7 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
     TechniqueResult r;
     r.name = setup.techniques[k]->name();
     r.measurement = std::move(measurements[k]);
-    r.visibility = read_float_texture(context, r.measurement.frame.visibility);
+    r.visibility = context.read_texture(*r.measurement.frame.visibility, 0, 0);
     r.vs_truth = against_truth.score(r.visibility);
     c.results.push_back(std::move(r));
   }

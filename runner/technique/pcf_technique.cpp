@@ -5,7 +5,6 @@
 #include "core/format.h"
 #include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
-#include "gl/gpu_timer.h"
 #include "frame/setting_value.h"
 #include "modules/pcf.h"
 #include "passes/pcf_pass.h"
@@ -27,27 +26,26 @@ struct PcfTechniqueSettings {
 
 class PcfTechnique : public Technique {
  public:
-  PcfTechnique(const Context& context, const PcfShadePass& pass, PcfTechniqueSettings settings)
-      : context_(&context), pass_(&pass), settings_(std::move(settings)) {}
+  PcfTechnique(const QueryDevice& device, const PcfShadePass& pass, PcfTechniqueSettings settings)
+      : device_(&device), pass_(&pass), settings_(std::move(settings)) {}
 
   TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override {
     if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
       throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
     const int size = inputs.screen_size;
-    StageClock clock(*context_);
-    clock.start();
+    const std::unique_ptr<StageTimes> clock = device_->stage_clock();
+    clock->start();
     TechniqueFrame out;
     out.visibility = pass_->run(*inputs.shadow_map, *inputs.gbuffer, size, inputs.light, settings_.bias,
                                 settings_.receiver_plane_tan, inputs.stage);
-    context_->throw_if_gl_error("pcf shade");
-    clock.stage("shade");
-    out.stages = clock.read();
+    clock->stage("shade");
+    out.stages = clock->read();
     if (with_stats) out.stats = constant_fetch_stats(kPcfReceiverFetches);
     return out;
   }
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   const PcfShadePass* pass_;
   PcfTechniqueSettings settings_;
 };
@@ -65,7 +63,7 @@ std::unique_ptr<TechniqueConfig> pcf_config(const char* name) {
             else throw unknown_setting(settings.name, key, {"bias", "receiver-plane"});
           },
           [](TechniqueResources& resources, const PcfTechniqueSettings& settings) -> std::unique_ptr<Technique> {
-            return std::make_unique<PcfTechnique>(resources.context(), resources.shared<PcfShadePass>(), settings);
+            return std::make_unique<PcfTechnique>(resources.device(), resources.shared<PcfShadePass>(), settings);
           }});
 }
 

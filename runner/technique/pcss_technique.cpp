@@ -6,7 +6,7 @@ namespace pn {
 TechniqueFrame PcssTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
   if (inputs.stage == ShadeStage::fragment) {
     TechniqueFrame out;
-    out.visibility = take_float_texture(pipeline_->run_fragment(inputs, settings_, 1));
+    out.visibility = pipeline_->run_fragment(inputs, settings_, 1);
     return out;
   }
   PcssFrame frame = pipeline_->run(inputs, settings_, with_stats);
@@ -19,7 +19,7 @@ TechniqueFrame PcssTechnique::run(const TechniqueInputs& inputs, bool with_stats
                  {kFetchStat, stats.fetches.per_receiver},
                  {kFetchTileMaxStat, stats.fetches.tile_max}};
   }
-  out.visibility = take_float_texture(frame.take_soft_shadow());
+  out.visibility = frame.take_soft_shadow();
   return out;
 }
 

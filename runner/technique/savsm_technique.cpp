@@ -5,9 +5,6 @@
 #include "core/error.h"
 #include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
-#include "gl/query_device_gl.h"
-#include "gl/gpu_timer.h"
-#include "gl/texture.h"
 #include "frame/setting_value.h"
 
 namespace pn {
@@ -49,42 +46,41 @@ std::unique_ptr<TechniqueConfig> savsm_config(const char* name,
   return settings_config<SavsmTechniqueSettings>(
       s, {&savsm_setting_keys, &set_savsm_setting,
           [](TechniqueResources& resources, const SavsmTechniqueSettings& settings) -> std::unique_ptr<Technique> {
-            return std::make_unique<SavsmTechnique>(resources.context(), resources.shared<SavsmPasses>(), settings);
+            return std::make_unique<SavsmTechnique>(resources.device(), resources.shared<SavsmPasses>(), settings);
           }});
 }
 
-SavsmPasses::SavsmPasses(const Context& context, const SourceTree& tree)
-    : table(context, tree),
-      shade(context, tree),
-      mip(context, tree),
-      no_mip(make_placeholder_texture(context, GL_TEXTURE_2D, GL_RGBA32F)) {}
+SavsmPasses::SavsmPasses(const QueryDevice& device, const SourceTree& tree)
+    : table(device, tree), shade(device, tree), mip(device, tree), no_mip(device.make_texture(float_shape(1, 1, 4))) {
+  const float zero[4] = {0, 0, 0, 0};
+  device.clear_texture(*no_mip, zero);
+}
 
 TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
   if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
     throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
   const int n = inputs.light.map_size;
-  StageClock clock(*context_);
-  clock.start();
-  const MomentsTable table = passes_->table.build(GlDeviceTexture(*inputs.shadow_map), n, n, settings_.table,
+  const std::unique_ptr<StageTimes> clock = device_->stage_clock();
+  clock->start();
+  const MomentsTable table = passes_->table.build(*inputs.shadow_map, n, n, settings_.table,
                                                   unit_range(inputs.light.near_plane, inputs.light.far_plane));
-  clock.stage("table");
+  clock->stage("table");
   MinMaxMipChain own;
-  const GlObject* mip = &passes_->no_mip;
+  const DeviceTexture* mip = passes_->no_mip.get();
   if (settings_.savsm.reads_mip()) {
     if (inputs.mip != nullptr && inputs.mip->map_size == n) {
-      mip = &gl_texture(*inputs.mip->texture);
+      mip = inputs.mip->texture.get();
     } else {
-      own = passes_->mip.build(GlDeviceTexture(*inputs.shadow_map), n);
-      mip = &gl_texture(*own.texture);
-      clock.stage("mip chain");
+      own = passes_->mip.build(*inputs.shadow_map, n);
+      mip = own.texture.get();
+      clock->stage("mip chain");
     }
   }
   TechniqueFrame out;
   out.visibility = passes_->shade.shade(table, *mip, *inputs.gbuffer, inputs.screen_size, inputs.light,
                                         settings_.savsm, inputs.stage);
-  context_->throw_if_gl_error("savsm shade");
-  clock.stage("shade");
-  out.stages = clock.read();
+  clock->stage("shade");
+  out.stages = clock->read();
   if (with_stats) out.stats = constant_fetch_stats(kSavsmMaxReceiverFetches);
   return out;
 }

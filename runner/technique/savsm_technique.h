@@ -34,24 +34,24 @@ void set_savsm_setting(SavsmTechniqueSettings& s, const std::string& key, const 
 std::unique_ptr<TechniqueConfig> savsm_config(const char* name,
                                               const std::vector<std::pair<std::string, std::string>>& overrides);
 
-// The GL passes the savsm techniques of one context share (TechniqueResources::shared).
+// The passes the savsm techniques of one device share (TechniqueResources::shared).
 struct SavsmPasses {
-  SavsmPasses(const Context& context, const SourceTree& tree);
+  SavsmPasses(const QueryDevice& device, const SourceTree& tree);
   SummedAreaMomentsPass table;
   SavsmPass shade;
   MinMaxMipBuilder mip;
-  GlObject no_mip;  // bound where the settings read no chain
+  std::unique_ptr<DeviceTexture> no_mip;  // bound where the settings read no chain
 };
 
 class SavsmTechnique : public Technique {
  public:
-  SavsmTechnique(const Context& context, const SavsmPasses& passes, SavsmTechniqueSettings settings)
-      : context_(&context), passes_(&passes), settings_(std::move(settings)) {}
+  SavsmTechnique(const QueryDevice& device, const SavsmPasses& passes, SavsmTechniqueSettings settings)
+      : device_(&device), passes_(&passes), settings_(std::move(settings)) {}
   // Stages: table, mip chain (when read and the source keeps none), shade. No stats.
   TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override;
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   const SavsmPasses* passes_;
   SavsmTechniqueSettings settings_;
 };

@@ -8,8 +8,6 @@
 #include "core/format.h"
 #include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
-#include "gl/query_device_gl.h"
-#include "gl/gpu_timer.h"
 
 namespace pn {
 namespace {
@@ -57,12 +55,12 @@ std::unique_ptr<TechniqueConfig> vsm_config(VsmKind kind, const char* name) {
   return settings_config<VsmTechniqueSettings>(
       s, {&vsm_setting_keys, &set_vsm_setting,
           [](TechniqueResources& resources, const VsmTechniqueSettings& settings) -> std::unique_ptr<Technique> {
-            return std::make_unique<VsmTechnique>(resources.context(), resources.shared<VsmPasses>(), settings);
+            return std::make_unique<VsmTechnique>(resources.device(), resources.shared<VsmPasses>(), settings);
           }});
 }
 
-VsmPasses::VsmPasses(const Context& context, const SourceTree& tree)
-    : moments(context, tree), shade(context, tree), pyramid(context, tree) {}
+VsmPasses::VsmPasses(const QueryDevice& device, const SourceTree& tree)
+    : moments(device, tree), shade(device, tree), pyramid(device, tree) {}
 
 TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
   if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
@@ -71,24 +69,24 @@ TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool with_stats)
   VsmParams params = settings_.params;
   params.near_depth = static_cast<float>(inputs.light.near_plane);
   params.far_depth = static_cast<float>(inputs.light.far_plane);
-  StageClock clock(*context_);
-  clock.start();
-  const VsmMoments moments = passes_->moments.moments(GlDeviceTexture(*inputs.shadow_map), n, n, params);
-  clock.stage("moments");
+  const std::unique_ptr<StageTimes> clock = device_->stage_clock();
+  clock->start();
+  const VsmMoments moments = passes_->moments.moments(*inputs.shadow_map, n, n, params);
+  clock->stage("moments");
   const VsmMoments blurred = passes_->moments.blurred(moments, params);
-  clock.stage("blur");
+  clock->stage("blur");
   DepthPyramid own;
   const DepthPyramid* pyramid = inputs.pyramid;
   if (pyramid == nullptr) {
-    own = passes_->pyramid.build(GlDeviceTexture(*inputs.shadow_map), n, n, bound_levels(params.blur.radius));
+    own = passes_->pyramid.build(*inputs.shadow_map, n, n, bound_levels(params.blur.radius));
     pyramid = &own;
-    clock.stage("pyramid");
+    clock->stage("pyramid");
   }
   TechniqueFrame out;
   out.visibility = passes_->shade.run(blurred, *pyramid, *inputs.gbuffer, inputs.screen_size, params, settings_.bias,
                                        inputs.stage);
-  clock.stage("shade");
-  out.stages = clock.read();
+  clock->stage("shade");
+  out.stages = clock->read();
   if (with_stats) out.stats = constant_fetch_stats(kVsmReceiverFetches);
   return out;
 }

@@ -29,9 +29,9 @@ void set_vsm_setting(VsmTechniqueSettings& s, const std::string& key, const std:
 // The registry's entries: VSM, and EVSM with 4 components (c+ 40, c- 5).
 std::unique_ptr<TechniqueConfig> vsm_config(VsmKind kind, const char* name);
 
-// The GL passes the vsm techniques of one context share (TechniqueResources::shared).
+// The passes the vsm techniques of one device share (TechniqueResources::shared).
 struct VsmPasses {
-  VsmPasses(const Context& context, const SourceTree& tree);
+  VsmPasses(const QueryDevice& device, const SourceTree& tree);
   VsmMomentsPass moments;
   VsmShadePass shade;
   DepthPyramidBuilder pyramid;
@@ -39,13 +39,13 @@ struct VsmPasses {
 
 class VsmTechnique : public Technique {
  public:
-  VsmTechnique(const Context& context, const VsmPasses& passes, VsmTechniqueSettings settings)
-      : context_(&context), passes_(&passes), settings_(std::move(settings)) {}
+  VsmTechnique(const QueryDevice& device, const VsmPasses& passes, VsmTechniqueSettings settings)
+      : device_(&device), passes_(&passes), settings_(std::move(settings)) {}
   // Stages: moments, blur, pyramid (when the source keeps none), shade. No stats.
   TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override;
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   const VsmPasses* passes_;
   VsmTechniqueSettings settings_;
 };
