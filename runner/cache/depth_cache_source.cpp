@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "gl/query_device_gl.h"
-#include "gl/texture.h"
 
 namespace pn {
 namespace {
@@ -23,20 +21,19 @@ std::vector<VertexRun> runs_of(const std::vector<SceneObject>& objects, const Ta
 
 }  // namespace
 
-DepthCacheSource::DepthCacheSource(const Context& context, const SourceTree& tree, CacheScheme scheme,
+DepthCacheSource::DepthCacheSource(const QueryDevice& device, const SourceTree& tree, CacheScheme scheme,
                                    const SourceOptions& options)
-    : context_(&context), scheme_(scheme), renderer_(context, tree), composer_(context, tree),
-      structures_(context, tree, options) {}
+    : device_(&device), scheme_(scheme), renderer_(device, tree), composer_(device, tree),
+      structures_(device, tree, options) {}
 
 void DepthCacheSource::compose_whole(const Scene& scene, const std::vector<VertexRun>& moving) {
   const int n = scene.light.map_size;
   if (scheme_ == CacheScheme::whole_maps) {
-    dynamic_->clear(ShadowMapRenderer::far_clear());
+    device_->clear_target(*dynamic_, ShadowMapRenderer::far_clear());
     if (!moving.empty()) renderer_.draw(scene, *geometry_, *dynamic_, moving);
-    composer_.compose(GlDeviceTexture(static_->texture()), GlDeviceTexture(dynamic_->texture()),
-                      GlDeviceTexture(composed_->texture(), float_shape(n, n, 1)), n);
+    composer_.compose(static_->texture(), dynamic_->texture(), composed_->texture(), n);
   } else {
-    composed_->copy_from(*static_);
+    device_->copy_target(*static_, *composed_);
     if (!moving.empty()) renderer_.draw(scene, *geometry_, *composed_, moving);
   }
   structures_.rebuild(composed_->texture(), n);
@@ -54,11 +51,11 @@ const SourcedMap& DepthCacheSource::render(const Scene& scene) {
   const TexelRect whole = TexelRect::square(n);
 
   if (!continues) {  // a new scene (or the first frame): everything drawn
-    geometry_.emplace(*context_, scene);
-    static_.emplace(*context_, n, 1);
-    if (scheme_ == CacheScheme::whole_maps) dynamic_.emplace(*context_, n, 1);
-    composed_.emplace(*context_, n, 1);
-    static_->clear(ShadowMapRenderer::far_clear());
+    geometry_.emplace(*device_, scene);
+    static_ = device_->make_raster_target(n, TexelFormat::r32f);
+    if (scheme_ == CacheScheme::whole_maps) dynamic_ = device_->make_raster_target(n, TexelFormat::r32f);
+    composed_ = device_->make_raster_target(n, TexelFormat::r32f);
+    device_->clear_target(*static_, ShadowMapRenderer::far_clear());
     renderer_.draw(scene, *geometry_, *static_, still);
     compose_whole(scene, moving);
     out_.redrawn = {whole};
@@ -74,7 +71,7 @@ const SourcedMap& DepthCacheSource::render(const Scene& scene) {
     if (scheme_ == CacheScheme::whole_maps) {
       out_.redrawn.clear();
       if (state_changed) {
-        static_->clear(ShadowMapRenderer::far_clear());
+        device_->clear_target(*static_, ShadowMapRenderer::far_clear());
         renderer_.draw(scene, *geometry_, *static_, still);
         out_.redrawn = {whole};
       } else {  // only the moving objects were drawn, into the dynamic map
@@ -96,7 +93,7 @@ const SourcedMap& DepthCacheSource::render(const Scene& scene) {
       }
       static_rects = merged_rects(static_rects, kMaxStaticRects);
       if (!static_rects.empty()) {
-        static_->clear(ShadowMapRenderer::far_clear(), static_rects);
+        device_->clear_target(*static_, ShadowMapRenderer::far_clear(), static_rects);
         renderer_.draw(scene, *geometry_, *static_, still, static_rects);
       }
       // Not merged: a merge of overlapping rectangles into their bounds grows with every object it
@@ -105,21 +102,20 @@ const SourcedMap& DepthCacheSource::render(const Scene& scene) {
       out_.redrawn = out_.changed = changed;
       if (static_cast<double>(total_area(changed)) >= kWholeFrameShare * n * n) {
         // Most of the map changed: drawn whole, as the full render draws it.
-        composed_->clear(ShadowMapRenderer::far_clear());
+        device_->clear_target(*composed_, ShadowMapRenderer::far_clear());
         renderer_.draw(scene, *geometry_, *composed_, {{0, geometry_->vertex_count()}});
         structures_.rebuild(composed_->texture(), n);
         out_.changed = out_.redrawn = {whole};
       } else if (!changed.empty()) {
         // The static map's colour and depth where anything changed, then the moving objects drawn
         // over it with the depth test: every texel they cover lies in their bounds, copied afresh.
-        composed_->copy_from(*static_, changed);
+        device_->copy_target(*static_, *composed_, changed);
         if (!moving.empty()) renderer_.draw(scene, *geometry_, *composed_, moving);
         structures_.update(composed_->texture(), changed);
       }
     }
   }
-  map_ = std::make_unique<GlDeviceTexture>(composed_->texture(), float_shape(n, n, 1));
-  out_.map = map_.get();
+  out_.map = &composed_->texture();
   out_.mip = structures_.mip();
   out_.pyramid = structures_.pyramid();
   return out_;

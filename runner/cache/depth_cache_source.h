@@ -21,6 +21,7 @@
 // docs/modules/depth_cache.md has the rules and why they are exact.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -42,22 +43,22 @@ inline constexpr double kWholeFrameShare = 0.75;
 
 class DepthCacheSource : public ShadowMapSource {
  public:
-  DepthCacheSource(const Context& context, const SourceTree& tree, CacheScheme scheme, const SourceOptions& options = {});
+  DepthCacheSource(const QueryDevice& device, const SourceTree& tree, CacheScheme scheme,
+                   const SourceOptions& options = {});
   const SourcedMap& render(const Scene& scene) override;
 
  private:
   // The frame's map from the static map and the moving objects, everywhere; the structures rebuilt.
   void compose_whole(const Scene& scene, const std::vector<VertexRun>& moving);
 
-  const Context* context_;
+  const QueryDevice* device_;
   CacheScheme scheme_;
   ShadowMapRenderer renderer_;
   DepthCacheComposer composer_;
   MapStructures structures_;
   ObjectMotion motion_;
   std::optional<SceneGeometry> geometry_;
-  std::optional<RasterTarget> static_, dynamic_, composed_;  // dynamic_: whole_maps only
-  std::unique_ptr<DeviceTexture> map_;  // composed_'s texture as the frame's map
+  std::unique_ptr<DeviceRasterTarget> static_, dynamic_, composed_;  // dynamic_: whole_maps only
   SourcedMap out_;
 };
 

@@ -13,16 +13,15 @@ namespace pn {
 // vertex buffer kept between frames, every vertex written again), and rebuilds the structures.
 class FullRenderSource : public ShadowMapSource {
  public:
-  FullRenderSource(const Context& context, const SourceTree& tree, const SourceOptions& options = {});
+  FullRenderSource(const QueryDevice& device, const SourceTree& tree, const SourceOptions& options = {});
   const SourcedMap& render(const Scene& scene) override;
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   ShadowMapRenderer renderer_;
   MapStructures structures_;
   std::optional<SceneGeometry> geometry_;
-  std::optional<RasterTarget> target_;
-  std::unique_ptr<DeviceTexture> map_;  // target_'s texture as the frame's map
+  std::unique_ptr<DeviceRasterTarget> target_;
   SourcedMap out_;
 };
 

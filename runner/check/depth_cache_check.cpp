@@ -19,8 +19,6 @@
 #include "core/format.h"
 #include "core/seeded_random.h"
 #include "fixture/texture_fixture.h"
-#include "gl/query_device_gl.h"
-#include "gl/texture.h"
 #include "device/texel_list.h"
 #include "passes/depth_cache_pass.h"
 #include "passes/gbuffer_pass.h"
@@ -135,7 +133,7 @@ bool outside_map(const Box& b) {
 }  // namespace
 
 std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const MotionSequence& sequence) {
-  const Context& context = env.context();
+  const QueryDevice& context = env.device;
   const int n = sequence.map_size;
   const std::filesystem::path model = animated_scene_model("");
   AnimatedScene animation(find_animated_scene_fixture("moving"), sequence.k, n, model);
@@ -216,7 +214,6 @@ std::vector<CaseResult> run_depth_cache_check(const CheckEnvironment& env) {
   std::vector<CaseResult> results;
   module_cases(env, results);
   compose_pass_cases(env, results);
-  if (env.gl == nullptr) return results;  // GL passes below: module_check.cpp's gl_only
   for (const auto& [source, k] : {std::pair{"two-map", 0.3}, std::pair{"dirty-rect", 0.3}, std::pair{"dirty-rect", 1.0}}) {
     MotionSequence s;
     s.source = source;

@@ -30,71 +30,64 @@ std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env);
 
-const Context& CheckEnvironment::context() const {
-  if (gl == nullptr)
-    throw Error("this case runs GL passes: it runs on a GL context only (--api gl450 or es310)", ExitCode::failed);
-  return *gl;
-}
-
 const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
       {"blur", "separable Gaussian (two 1-D passes) vs direct 2-D convolution; depth-aware vs its 1-D definition",
-       &run_blur_check, OffGl::every_case},
+       &run_blur_check},
       {"depth_pyramid", "depth_pyramid levels vs window scans (min/max exact); any-square min/max vs square scans",
-       &run_depth_pyramid_check, OffGl::every_case},
+       &run_depth_pyramid_check},
       {"region", "region Steps 1-7 (literal and centred) vs the literal CPU steps, exhaustive on small maps",
-       &run_region_check, OffGl::every_case},
+       &run_region_check},
       {"sample_table", "multi-jittered strata of the table; the 3.2 selection and scaling vs the paper's arithmetic",
-       &run_sample_table_check, OffGl::every_case},
+       &run_sample_table_check},
       {"traversal", "leaf 1 vs brute force (exact counts); sampled / min leaves and budgets vs the CPU recursion",
-       &run_traversal_check, OffGl::every_case},
+       &run_traversal_check},
       {"reuse", "parent links, representatives and gathered values vs explicit parent pointers and root finding",
-       &run_reuse_check, OffGl::every_case},
+       &run_reuse_check},
       {"light_model", "blocker-window, search-width and penumbra widths vs runner/scene/light_model.h",
-       &run_light_model_check, OffGl::every_case},
+       &run_light_model_check},
       {"shadow_map", "each scene's shadow map and G-buffer vs CPU ray casts through every texel / pixel centre",
-       &run_shadow_map_check, OffGl::every_case},
+       &run_shadow_map_check},
       {"pcss_regions", "search entries (lit decisions, refined sides), filter entries and their regions in every mode vs "
                        "the CPU definition; no lit receiver a texel can shadow (exact mode)",
-       &run_pcss_regions_check, OffGl::every_case},
+       &run_pcss_regions_check},
       {"pipeline", "exact PCSS vs CPU brute force; all improvements off == exact PCSS; bad inputs; SSIM at 512^2",
-       &run_pipeline_check, OffGl::every_case},
+       &run_pipeline_check},
       {"fast_pcss", "pnFastPcss, pnPoissonPcss, pnExactPcss, pnHqepcss as one call: compute pass vs the staged passes "
                     "and fragment shader vs compute pass (exact); exact and all-off vs exact PCSS brute force on the CPU",
-       &run_fast_pcss_check, OffGl::every_case},
+       &run_fast_pcss_check},
       {"pcf", "brute-force window scan (whole, banded, bounded side) vs the definition in double; counts exact",
-       &run_pcf_check, OffGl::every_case},
+       &run_pcf_check},
       {"poisson_pcss", "Poisson-disk samples (parameter and constant disks, rotation) vs the definition in double",
-       &run_poisson_pcss_check, OffGl::every_case},
+       &run_poisson_pcss_check},
       {"vogel_pcss", "Vogel-disk samples (counts 1..128, turns) and the interleaved-gradient-noise rotation vs the "
                      "definition in double, within GPU sin/cos error",
-       &run_vogel_pcss_check, OffGl::every_case},
+       &run_vogel_pcss_check},
       {"receiver_plane", "receiver-plane gradient from G-buffer neighbours (edges, invalid and singular steps, clamps) "
                          "and its range over rectangles vs the definition in double",
-       &run_receiver_plane_check, OffGl::every_case},
+       &run_receiver_plane_check},
       {"truth", "Embree ray-traced truth vs slab tests on the same rays; width 0 == one shadow ray; converges in S",
-       &run_truth_check, OffGl::every_case},
+       &run_truth_check},
       {"summed_area", "64-bit fixed-point summed-area tables: depth and moment sums vs direct box sums (exact), float "
                       "sums, means and variances in bound; the float moments table's errors beside the fixed one's",
-       &run_summed_area_check, OffGl::every_case},
+       &run_summed_area_check},
       {"minmax_mip", "aligned min/max mip chain levels (padded to a power of two) vs node scans (exact)",
-       &run_minmax_mip_check, OffGl::every_case},
+       &run_minmax_mip_check},
       {"depth_cache", "min(static, dynamic) and its shadow test vs the definition; both caches over 100-frame motion "
                       "sequences vs a full render (map, mip chain, pyramid, Fast PCSS: exact)",
-       &run_depth_cache_check, OffGl::query_cases,
-       "the caches over motion sequences"},
+       &run_depth_cache_check},
       {"cascades", "split positions (practical, hybrid, adaptive lambda) and their order, selection and blend weights, "
                    "slice spheres and snaps vs the definitions in double; stable cascades move by whole texels",
-       &run_cascades_check, OffGl::every_case},
+       &run_cascades_check},
       {"exports", "the export entries (what bundle --target hlsl|msl translates) as query passes: pnExactPcss vs exact "
                   "PCSS brute force, pnPcf vs 2x2 bilinear PCF on the CPU, both overloads",
-       &run_exports_check, OffGl::every_case},
+       &run_exports_check},
       {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
               "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
-       &run_vsm_check, OffGl::every_case},
+       &run_vsm_check},
       {"savsm", "summed-area variance soft shadows: squares, blocker, filter side, moments and visibility vs the "
                 "estimate in double from brute-force moments over the same rectangles; fetches per receiver (constant)",
-       &run_savsm_check, OffGl::every_case},
+       &run_savsm_check},
   };
   return checks;
 }

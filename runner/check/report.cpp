@@ -39,22 +39,12 @@ std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, co
   if (modules.empty())
     for (const ModuleCheck& check : module_checks()) selected.push_back(&check);
   for (const std::string& name : modules) {
-    const ModuleCheck& check = find_module_check(name);
-    if (env.gl == nullptr && check.off_gl == OffGl::none)
-      throw Error("module '" + name + "': its check runs GL passes, which run on --api gl450 or es310 only, not on " +
-                  env.device.query_api());
-    selected.push_back(&check);
+    selected.push_back(&find_module_check(name));
   }
   std::vector<ModuleReport> reports;
   for (const ModuleCheck* check : selected) {
     ModuleReport report;
     report.module = check->name;
-    if (env.gl == nullptr && check->off_gl == OffGl::none) {
-      report.skipped = true;
-      reports.push_back(std::move(report));
-      continue;
-    }
-    if (env.gl == nullptr && check->off_gl == OffGl::query_cases) report.not_run = check->gl_only;
     try {
       report.cases = check->run(env);
     } catch (const Error& e) {
@@ -72,11 +62,6 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
   out << line;
   for (const ModuleReport& r : reports) {
     const CaseResult* w = r.worst();
-    if (r.skipped) {
-      std::snprintf(line, sizeof line, "%-18s %6s  %-34s %s\n", r.module.c_str(), "-", "-", "not run (GL passes)");
-      out << line;
-      continue;
-    }
     std::string worst = r.error.empty() ? "-" : "error: did not run";
     if (w != nullptr && r.error.empty()) {
       worst = format_number("%.2e", w->comparison.worst_error) + " (" + w->tolerance.describe() + ")";
@@ -85,8 +70,6 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
                   r.pass() ? "pass" : "FAIL");
     out << line;
   }
-  for (const ModuleReport& r : reports)
-    if (!r.not_run.empty()) out << r.module << ": not run here: " << r.not_run << " (GL passes)\n";
   if (!every_case)  // every_case lists them below with the rest
     for (const ModuleReport& r : reports)
       for (const CaseResult& c : r.cases)
@@ -97,7 +80,6 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
         out << r.module << ": " << (c.comparison.pass ? "pass " : "FAIL ") << c.name << ": "
             << c.comparison.where(c.tolerance) << "\n";
   for (const ModuleReport& r : reports) {
-    if (r.skipped) continue;
     if (!r.error.empty()) {
       // A driver log may hold several lines: each is printed under the module's name.
       size_t start = 0;

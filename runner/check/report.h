@@ -13,8 +13,6 @@ struct ModuleReport {
   std::string module;
   std::vector<CaseResult> cases;
   std::string error;  // why the check stopped (a compile or link error, a GL error, a timeout); "" when it ran
-  std::string not_run;  // off GL: which of its cases (GL passes) did not run here; "" when all ran
-  bool skipped = false;  // off GL, a check of GL passes only: nothing ran, and it is no verdict
 
   bool pass() const;
   // The failing case with the largest error, else the case closest to its bound.
@@ -22,8 +20,6 @@ struct ModuleReport {
 };
 
 // `modules` empty means every registered check. Unknown names throw Error before anything runs.
-// Off GL (env.gl null), the checks of GL passes only (ModuleCheck::off_gl none) are reported as
-// skipped when `modules` is empty, and refused (Error, bad input) when named.
 // A check that stops on an error (its copy does not compile, the driver reports an error, a
 // dispatch times out) is reported as failing with that error, and the next check still runs.
 std::vector<ModuleReport> run_checks(const std::vector<std::string>& modules, const CheckEnvironment& env);

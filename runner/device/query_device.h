@@ -22,6 +22,7 @@
 
 #include "core/image.h"
 #include "core/query_grid.h"
+#include "core/texel_rect.h"
 #include "shader/loop_guard.h"
 #include "shader/source_tree.h"
 #include "shader/target.h"
@@ -67,6 +68,37 @@ class DeviceBuffer {
   DeviceBuffer() = default;
   DeviceBuffer(const DeviceBuffer&) = delete;
   DeviceBuffer& operator=(const DeviceBuffer&) = delete;
+};
+
+// Triangle corners (world positions, PN_SCENE_POSITION_LOCATION) in a vertex buffer on one device,
+// kept for many draws (a cache's scene geometry).
+class DeviceVertices {
+ public:
+  virtual ~DeviceVertices() = default;
+  explicit DeviceVertices(int count) : count_(count) {}
+  DeviceVertices(const DeviceVertices&) = delete;
+  DeviceVertices& operator=(const DeviceVertices&) = delete;
+  int count() const { return count_; }
+
+ private:
+  int count_;
+};
+
+// A run of vertices: what one draw call draws.
+struct VertexRun {
+  int first = 0, count = 0;
+};
+
+// A size × size texture of a float format with its own depth buffer, drawn into frame after
+// frame (a cache's maps). Rows from the framebuffer's bottom, TexelRect rows likewise.
+class DeviceRasterTarget {
+ public:
+  virtual ~DeviceRasterTarget() = default;
+  DeviceRasterTarget() = default;
+  DeviceRasterTarget(const DeviceRasterTarget&) = delete;
+  DeviceRasterTarget& operator=(const DeviceRasterTarget&) = delete;
+  virtual const DeviceTexture& texture() const = 0;  // the colour, as the passes read it
+  int size() const { return texture().shape().width; }
 };
 
 // Where a pass reads its queries and writes its results (its header's binding numbers).
@@ -246,6 +278,28 @@ class QueryDevice {
   virtual std::unique_ptr<QueryProgram> compile_full_screen(const SourceTree& tree, const std::string& fragment,
                                                             TexelFormat target,
                                                             const std::vector<Define>& defines) const = 0;
+  // The kept raster path (a cache's maps): vertices written again where objects moved, a target
+  // cleared, copied and drawn into inside rectangles. Each throws Error for an object made on
+  // another device, and write_vertices for a list of another length or a range past it.
+  virtual std::unique_ptr<DeviceVertices> make_vertices(const std::vector<glm::vec3>& vertices) const = 0;
+  // Vertices [first, first + count) of `vertices` (the whole list, of to.count()) into `to`.
+  virtual void write_vertices(const DeviceVertices& to, const std::vector<glm::vec3>& vertices, std::size_t first,
+                              std::size_t count) const = 0;
+  virtual std::unique_ptr<DeviceRasterTarget> make_raster_target(int size, TexelFormat format) const = 0;
+  // Colour to `colour`, depth to the far plane, inside each rectangle (the whole target for none).
+  virtual void clear_target(const DeviceRasterTarget& target, const float colour[4],
+                            const std::vector<TexelRect>& rects = {}) const = 0;
+  // Colour and depth of `source` (the same size and format) into `target` inside each rectangle
+  // (everywhere for none), bit for bit.
+  virtual void copy_target(const DeviceRasterTarget& source, const DeviceRasterTarget& target,
+                           const std::vector<TexelRect>& rects = {}) const = 0;
+  // Draws `runs` of `vertices` with a compile_raster `program` into `target` over what it holds
+  // (the nearest surface kept), scissored to each rectangle in turn (unscissored for none), with
+  // `resources`' textures and blocks bound.
+  virtual void draw(const QueryProgram& program, const DeviceVertices& vertices, const std::vector<VertexRun>& runs,
+                    const DeviceRasterTarget& target, const std::vector<TexelRect>& rects,
+                    const PassResources& resources) const = 0;
+
   // Runs a compile_full_screen program over a new size × size texture of its target format with
   // `resources`' textures and blocks bound: every texel is the fragment's colour.
   virtual std::unique_ptr<DeviceTexture> draw_full_screen(const QueryProgram& program, int size,

@@ -1,36 +1,35 @@
 #include "frame/map_structures.h"
 
 #include "core/error.h"
-#include "gl/query_device_gl.h"
 #include "modules/depth_pyramid.h"
 
 namespace pn {
 
-MapStructures::MapStructures(const Context& context, const SourceTree& tree, const SourceOptions& options)
-    : context_(&context), options_(options) {
-  if (options.mip_chain) mip_builder_.emplace(context, tree);
-  if (options.pyramid_max_level >= 0) pyramid_builder_.emplace(context, tree);
+MapStructures::MapStructures(const QueryDevice& device, const SourceTree& tree, const SourceOptions& options)
+    : device_(&device), options_(options) {
+  if (options.mip_chain) mip_builder_.emplace(device, tree);
+  if (options.pyramid_max_level >= 0) pyramid_builder_.emplace(device, tree);
 }
 
-void MapStructures::rebuild(const GlObject& map, int n) {
+void MapStructures::rebuild(const DeviceTexture& map, int n) {
   if (mip_builder_) {
     if (mip_.map_size != n) mip_ = mip_builder_->allocate(n);
-    mip_builder_->build_into(GlDeviceTexture(map), mip_);
+    mip_builder_->build_into(map, mip_);
   }
   if (pyramid_builder_) {
     if (pyramid_.map_size != n) {
-      pyramid_ = pyramid_builder_->build(GlDeviceTexture(map), n, n, options_.pyramid_max_level);
+      pyramid_ = pyramid_builder_->build(map, n, n, options_.pyramid_max_level);
     } else {
-      pyramid_builder_->build_into(GlDeviceTexture(map), pyramid_);
-      pyramid_.level0 = context_->layer_texture(*pyramid_.texture, 0);
+      pyramid_builder_->build_into(map, pyramid_);
+      pyramid_.level0 = device_->layer_texture(*pyramid_.texture, 0);
     }
   }
 }
 
-void MapStructures::update(const GlObject& map, const std::vector<TexelRect>& rects) {
+void MapStructures::update(const DeviceTexture& map, const std::vector<TexelRect>& rects) {
   if (rects.empty()) return;
-  if (mip_builder_) mip_builder_->update_into(GlDeviceTexture(map), mip_, rects, texels_, options_.dilate_updates);
-  if (pyramid_builder_) pyramid_builder_->update_into(GlDeviceTexture(map), pyramid_, rects, texels_, options_.dilate_updates);
+  if (mip_builder_) mip_builder_->update_into(map, mip_, rects, texels_, options_.dilate_updates);
+  if (pyramid_builder_) pyramid_builder_->update_into(map, pyramid_, rects, texels_, options_.dilate_updates);
 }
 
 }  // namespace pn

@@ -10,7 +10,6 @@
 
 #include "core/texel_rect.h"
 #include "device/texel_list.h"
-#include "gl/objects.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/minmax_mip_pass.h"
 
@@ -26,17 +25,17 @@ struct SourceOptions {
 
 class MapStructures {
  public:
-  MapStructures(const Context& context, const SourceTree& tree, const SourceOptions& options);
+  MapStructures(const QueryDevice& device, const SourceTree& tree, const SourceOptions& options);
   // Every structure of the n×n map built again (allocated when n changes).
-  void rebuild(const GlObject& map, int n);
+  void rebuild(const DeviceTexture& map, int n);
   // Only where the map changed since the last rebuild or update: `rects`.
-  void update(const GlObject& map, const std::vector<TexelRect>& rects);
+  void update(const DeviceTexture& map, const std::vector<TexelRect>& rects);
 
   const MinMaxMipChain* mip() const { return mip_.texture ? &mip_ : nullptr; }
   const DepthPyramid* pyramid() const { return pyramid_.texture ? &pyramid_ : nullptr; }
 
  private:
-  const Context* context_;
+  const QueryDevice* device_;
   SourceOptions options_;
   std::optional<MinMaxMipBuilder> mip_builder_;
   std::optional<DepthPyramidBuilder> pyramid_builder_;

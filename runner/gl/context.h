@@ -92,6 +92,17 @@ class Context : public QueryDevice {
                                                     const std::vector<Define>& defines) const override;
   std::unique_ptr<DeviceTexture> draw_full_screen(const QueryProgram& program, int size,
                                                   const PassResources& resources) const override;
+  std::unique_ptr<DeviceVertices> make_vertices(const std::vector<glm::vec3>& vertices) const override;
+  void write_vertices(const DeviceVertices& to, const std::vector<glm::vec3>& vertices, std::size_t first,
+                      std::size_t count) const override;
+  std::unique_ptr<DeviceRasterTarget> make_raster_target(int size, TexelFormat format) const override;
+  void clear_target(const DeviceRasterTarget& target, const float colour[4],
+                    const std::vector<TexelRect>& rects) const override;
+  void copy_target(const DeviceRasterTarget& source, const DeviceRasterTarget& target,
+                   const std::vector<TexelRect>& rects) const override;
+  void draw(const QueryProgram& program, const DeviceVertices& vertices, const std::vector<VertexRun>& runs,
+            const DeviceRasterTarget& target, const std::vector<TexelRect>& rects,
+            const PassResources& resources) const override;
   std::unique_ptr<DeviceTexture> draw_triangles(const QueryProgram& program, const std::vector<glm::vec3>& vertices,
                                                 int size, const float clear[4],
                                                 const PassResources& resources) const override;

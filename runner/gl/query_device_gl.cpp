@@ -262,4 +262,43 @@ std::unique_ptr<DeviceTexture> Context::draw_full_screen(const QueryProgram& pro
   return std::make_unique<GlDeviceTexture>(target.release_texture());
 }
 
+std::unique_ptr<DeviceVertices> Context::make_vertices(const std::vector<glm::vec3>& vertices) const {
+  return std::make_unique<GlDeviceVertices>(*this, vertices);
+}
+
+void Context::write_vertices(const DeviceVertices& to, const std::vector<glm::vec3>& vertices, std::size_t first,
+                             std::size_t count) const {
+  made_here<GlDeviceVertices>(to, "vertex buffer").buffer().write(vertices, first, count);
+}
+
+std::unique_ptr<DeviceRasterTarget> Context::make_raster_target(int size, TexelFormat format) const {
+  if (format == TexelFormat::rgba32ui) throw Error("a raster target of RGBA32UI texels: expected a float format");
+  return std::make_unique<GlDeviceRasterTarget>(*this, size, format);
+}
+
+void Context::clear_target(const DeviceRasterTarget& target, const float colour[4],
+                           const std::vector<TexelRect>& rects) const {
+  made_here<GlDeviceRasterTarget>(target, "raster target").target().clear(colour, rects);
+}
+
+void Context::copy_target(const DeviceRasterTarget& source, const DeviceRasterTarget& target,
+                          const std::vector<TexelRect>& rects) const {
+  made_here<GlDeviceRasterTarget>(target, "raster target")
+      .target()
+      .copy_from(made_here<GlDeviceRasterTarget>(source, "raster target").target(), rects);
+}
+
+void Context::draw(const QueryProgram& program, const DeviceVertices& vertices, const std::vector<VertexRun>& runs,
+                   const DeviceRasterTarget& target, const std::vector<TexelRect>& rects,
+                   const PassResources& resources) const {
+  const GlRasterProgram& raster = gl_raster_program(program);
+  if (!resources.images.empty() || !resources.buffers.empty())
+    throw Error("a raster pass binds textures and blocks only: expected no storage images or buffers");
+  PassBindings bind(*this);
+  bind_resources(bind, resources);
+  made_here<GlDeviceRasterTarget>(target, "raster target")
+      .target()
+      .draw(raster.program(), made_here<GlDeviceVertices>(vertices, "vertex buffer").buffer(), runs, rects);
+}
+
 }  // namespace pn

@@ -8,6 +8,7 @@
 #include "device/query_device.h"
 #include "gl/compute_program.h"
 #include "gl/objects.h"
+#include "gl/raster_target.h"
 #include "gl/texture.h"
 
 namespace pn {
@@ -42,6 +43,29 @@ class GlDeviceBuffer final : public DeviceBuffer {
 
  private:
   GlObject buffer_;
+};
+
+// A TriangleBuffer and a RasterTarget of a GL context behind the device's kept raster path.
+class GlDeviceVertices final : public DeviceVertices {
+ public:
+  GlDeviceVertices(const Context& context, const std::vector<glm::vec3>& vertices)
+      : DeviceVertices(static_cast<int>(vertices.size())), buffer_(context, vertices) {}
+  TriangleBuffer& buffer() const { return buffer_; }
+
+ private:
+  mutable TriangleBuffer buffer_;
+};
+
+class GlDeviceRasterTarget final : public DeviceRasterTarget {
+ public:
+  GlDeviceRasterTarget(const Context& context, int size, TexelFormat format)
+      : target_(context, size, texel_channels(format)), view_(target_.texture(), float_shape(size, size, texel_channels(format))) {}
+  const DeviceTexture& texture() const override { return view_; }
+  const RasterTarget& target() const { return target_; }
+
+ private:
+  RasterTarget target_;
+  GlDeviceTexture view_;
 };
 
 // The GL texture behind a DeviceTexture of a GL context. Throws Error for one made elsewhere.

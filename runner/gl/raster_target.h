@@ -30,11 +30,6 @@ class TriangleBuffer {
   GlObject buffer_, vertex_array_;
 };
 
-// A run of vertices of a TriangleBuffer: what one draw call draws.
-struct VertexRun {
-  int first = 0, count = 0;
-};
-
 // A size×size float texture of `channels` channels with its own depth buffer, drawn into frame
 // after frame. Rows from the framebuffer's bottom (TexelRect rows likewise).
 class RasterTarget {

@@ -1,31 +1,31 @@
-// A scene's triangles drawn into a float target with depth testing, through the one raster path
-// (gl/raster_target.h) that the shadow map, the G-buffer, the surface pass and the shadow-map
-// caches share.
+// A scene's triangles in a vertex buffer kept on the device (QueryDevice's kept raster path),
+// for the shadow-map caches that draw them frame after frame.
 #pragma once
 
+#include <memory>
 #include <vector>
 
-#include "core/texel_rect.h"
-#include "gl/raster_target.h"
+#include "device/query_device.h"
 #include "scene/scene.h"
 
 namespace pn {
 
-// A scene's triangles() in one GPU vertex buffer, kept for many draws; the objects that moved are
-// written again.
-class SceneGeometry : public TriangleBuffer {
+// A scene's triangles() in one vertex buffer on a device, kept for many draws; the objects that
+// moved are written again.
+class SceneGeometry {
  public:
-  SceneGeometry(const Context& context, const Scene& scene);
+  SceneGeometry(const QueryDevice& device, const Scene& scene);
+  int vertex_count() const { return vertices_->count(); }
+  const DeviceVertices& vertices() const { return *vertices_; }
   // Writes the vertices of objects[o] for each o of `which` from `vertices` (a scene's triangles(), of
   // the layout the geometry was made with) — one write from the first to the last, the unchanged
   // vertices between them written again — or every vertex.
   void update(const std::vector<glm::vec3>& vertices, const std::vector<SceneObject>& objects, const std::vector<int>& which);
   void update_all(const std::vector<glm::vec3>& vertices);
-};
 
-// Renders every triangle of `scene` with `program` into a new size×size float texture of
-// `channels` channels cleared to `clear` (a SceneGeometry and a RasterTarget used once).
-FloatTexture draw_scene(const Context& context, const GlObject& program, const Scene& scene, int size, int channels,
-                        const float clear[4]);
+ private:
+  const QueryDevice* device_;
+  std::unique_ptr<DeviceVertices> vertices_;
+};
 
 }  // namespace pn

@@ -2,7 +2,6 @@
 
 #include <limits>
 
-#include "gl/pass_bindings.h"
 #include "gl/query_device_gl.h"
 #include "gl/std140.h"
 #include "passes/scene_draw.h"
@@ -40,12 +39,10 @@ FloatTexture ShadowMapRenderer::render(const Scene& scene, const MapLight& light
   return take_float_texture(render_texture(scene, light));
 }
 
-void ShadowMapRenderer::draw(const Scene& scene, const SceneGeometry& geometry, const RasterTarget& target,
+void ShadowMapRenderer::draw(const Scene& scene, const SceneGeometry& geometry, const DeviceRasterTarget& target,
                              const std::vector<VertexRun>& runs, const std::vector<TexelRect>& rects) const {
-  const GlRasterProgram& raster = gl_raster_program(*program_);  // made on a GL context: the device is one
-  PassBindings bind(static_cast<const Context&>(*device_));
-  bind.uniform(light_block(scene.map_light()));
-  target.draw(raster.program(), geometry, runs, rects);
+  const glsl::PnShadowDepthParams block = light_block(scene.map_light());
+  device_->draw(*program_, geometry.vertices(), runs, target, rects, {{}, {}, {}, query_block(block)});
 }
 
 }  // namespace pn

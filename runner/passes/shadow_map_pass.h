@@ -25,9 +25,8 @@ class ShadowMapRenderer {
   FloatTexture render(const Scene& scene, const MapLight& light) const;
 
   // Into a kept N×N R32F target: `runs` of `geometry` (the scene's vertices) with the scene's
-  // light, within `rects` (everywhere for none), over what the target holds. What the caches draw
-  // (the device is a GL context).
-  void draw(const Scene& scene, const SceneGeometry& geometry, const RasterTarget& target,
+  // light, within `rects` (everywhere for none), over what the target holds. What the caches draw.
+  void draw(const Scene& scene, const SceneGeometry& geometry, const DeviceRasterTarget& target,
             const std::vector<VertexRun>& runs, const std::vector<TexelRect>& rects = {}) const;
   // The map's clear value: +Inf, "no occluder".
   static const float* far_clear();

@@ -9,16 +9,16 @@ namespace pn {
 const std::vector<ShadowMapSourceEntry>& shadow_map_sources() {
   static const std::vector<ShadowMapSourceEntry> sources{
       {"full", "every triangle drawn into the map each frame",
-       [](const Context& context, const SourceTree& tree, const SourceOptions& options) -> std::unique_ptr<ShadowMapSource> {
-         return std::make_unique<FullRenderSource>(context, tree, options);
+       [](const QueryDevice& device, const SourceTree& tree, const SourceOptions& options) -> std::unique_ptr<ShadowMapSource> {
+         return std::make_unique<FullRenderSource>(device, tree, options);
        }},
       {"two-map", "seed 001: static map drawn again when an object starts or stops, dynamic map every frame",
-       [](const Context& context, const SourceTree& tree, const SourceOptions& options) -> std::unique_ptr<ShadowMapSource> {
-         return std::make_unique<DepthCacheSource>(context, tree, CacheScheme::whole_maps, options);
+       [](const QueryDevice& device, const SourceTree& tree, const SourceOptions& options) -> std::unique_ptr<ShadowMapSource> {
+         return std::make_unique<DepthCacheSource>(device, tree, CacheScheme::whole_maps, options);
        }},
       {"dirty-rect", "two maps, only their dirty rectangles drawn again; composition and structures updated there",
-       [](const Context& context, const SourceTree& tree, const SourceOptions& options) -> std::unique_ptr<ShadowMapSource> {
-         return std::make_unique<DepthCacheSource>(context, tree, CacheScheme::dirty_rects, options);
+       [](const QueryDevice& device, const SourceTree& tree, const SourceOptions& options) -> std::unique_ptr<ShadowMapSource> {
+         return std::make_unique<DepthCacheSource>(device, tree, CacheScheme::dirty_rects, options);
        }},
   };
   return sources;

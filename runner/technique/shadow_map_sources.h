@@ -13,7 +13,7 @@ namespace pn {
 struct ShadowMapSourceEntry {
   const char* name;
   const char* summary;
-  std::unique_ptr<ShadowMapSource> (*make)(const Context& context, const SourceTree& tree, const SourceOptions& options);
+  std::unique_ptr<ShadowMapSource> (*make)(const QueryDevice& device, const SourceTree& tree, const SourceOptions& options);
 };
 
 const std::vector<ShadowMapSourceEntry>& shadow_map_sources();

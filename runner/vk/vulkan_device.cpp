@@ -735,7 +735,8 @@ void VulkanQueryProgram::run(const PassResources& resources, int width, int heig
 }
 
 
-// A D32_SFLOAT depth attachment for one draw.
+// A D32_SFLOAT depth attachment, kept in GENERAL layout (cleared, copied and drawn into as the
+// colour is).
 class DepthImage {
  public:
   DepthImage(const VulkanDevice::State& s, int size) : s_(&s) {
@@ -746,7 +747,8 @@ class DepthImage {
     info.mipLevels = info.arrayLayers = 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     vk_check(vkCreateImage(s.device, &info, nullptr, &image_), "creating a depth buffer");
     memory_ = bind_image_memory(s, image_, "a depth buffer");
@@ -756,6 +758,17 @@ class DepthImage {
     view.format = VK_FORMAT_D32_SFLOAT;
     view.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
     vk_check(vkCreateImageView(s.device, &view, nullptr, &view_), "a depth buffer's view");
+    s.submit("a depth buffer's layout", [&](VkCommandBuffer c) {
+      VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+      barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+      barrier.newLayout = kImageLayout;
+      barrier.dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+      barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      barrier.image = image_;
+      barrier.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+      vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
+                           nullptr, 1, &barrier);
+    });
   }
   ~DepthImage() {
     if (view_ != VK_NULL_HANDLE) vkDestroyImageView(s_->device, view_, nullptr);
@@ -764,6 +777,7 @@ class DepthImage {
   }
   DepthImage(const DepthImage&) = delete;
   DepthImage& operator=(const DepthImage&) = delete;
+  VkImage image() const { return image_; }
   VkImageView view() const { return view_; }
 
  private:
@@ -773,9 +787,141 @@ class DepthImage {
   VkImageView view_ = VK_NULL_HANDLE;
 };
 
-// A vertex + fragment program drawing triangle lists into a `target` texture with a depth buffer,
-// in GL's conventions: clip-space depth -1..1 (VK_EXT_depth_clip_control) and NDC y = -1 at row 0,
-// so its texels are where GL's raster pass puts them.
+// The render pass every raster draw runs in: a colour attachment of `format` and a D32 depth
+// attachment, both loaded and stored in GENERAL layout (a target keeps what it holds between
+// draws). Pipelines made with it draw in any target of the same format (render pass compatibility).
+VkRenderPass make_render_pass(const VulkanDevice::State& s, TexelFormat format, const std::string& name) {
+  VkAttachmentDescription attachments[2] = {};
+  attachments[0].format = vk_format(format);
+  attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[0].initialLayout = kImageLayout;
+  attachments[0].finalLayout = kImageLayout;
+  attachments[1] = attachments[0];
+  attachments[1].format = VK_FORMAT_D32_SFLOAT;
+  const VkAttachmentReference colour{0, kImageLayout};
+  const VkAttachmentReference depth{1, kImageLayout};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colour;
+  subpass.pDepthStencilAttachment = &depth;
+  VkSubpassDependency dependencies[2] = {};
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT |
+                                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
+                                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+  dependencies[1].srcSubpass = 0;
+  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                 VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  VkRenderPassCreateInfo pass_info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  pass_info.attachmentCount = 2;
+  pass_info.pAttachments = attachments;
+  pass_info.subpassCount = 1;
+  pass_info.pSubpasses = &subpass;
+  pass_info.dependencyCount = 2;
+  pass_info.pDependencies = dependencies;
+  VkRenderPass out = VK_NULL_HANDLE;
+  vk_check(vkCreateRenderPass(s.device, &pass_info, nullptr, &out), name + ": a render pass");
+  return out;
+}
+
+// A triangle list in a host-visible vertex buffer.
+class VulkanVertices final : public DeviceVertices {
+ public:
+  VulkanVertices(const VulkanDevice::State& s, const std::vector<glm::vec3>& vertices)
+      : DeviceVertices(static_cast<int>(vertices.size())),
+        buffer_(s, std::max<std::size_t>(vertices.size(), 1) * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
+        owner_(&s) {
+    if (!vertices.empty()) std::memcpy(buffer_.data(), vertices.data(), vertices.size() * sizeof(glm::vec3));
+  }
+  const HostBuffer& buffer() const { return buffer_; }
+  const VulkanDevice::State* owner() const { return owner_; }
+
+ private:
+  HostBuffer buffer_;
+  const VulkanDevice::State* owner_;
+};
+
+// A colour image and its depth buffer, with the render pass and framebuffer that draw into them.
+class VulkanRasterTarget final : public DeviceRasterTarget {
+ public:
+  VulkanRasterTarget(const VulkanDevice::State& s, int size, TexelFormat format)
+      : s_(&s), colour_(std::make_unique<VulkanImage>(s, TextureShape{format, size, size})), depth_(s, size),
+        render_pass_(make_render_pass(s, format, "a raster target")) {
+    colour_->fill(nullptr, 0);  // into GENERAL layout
+    const VkImageView views[2] = {colour_->level_view(0), depth_.view()};
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = render_pass_;
+    info.attachmentCount = 2;
+    info.pAttachments = views;
+    info.width = info.height = static_cast<uint32_t>(size);
+    info.layers = 1;
+    vk_check(vkCreateFramebuffer(s.device, &info, nullptr, &framebuffer_), "a raster target's framebuffer");
+  }
+  ~VulkanRasterTarget() override {
+    if (framebuffer_ != VK_NULL_HANDLE) vkDestroyFramebuffer(s_->device, framebuffer_, nullptr);
+    if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(s_->device, render_pass_, nullptr);
+  }
+  const DeviceTexture& texture() const override { return *colour_; }
+  const VulkanDevice::State* owner() const { return s_; }
+  const VulkanImage& colour() const { return *colour_; }
+  std::unique_ptr<VulkanImage> take_colour() { return std::move(colour_); }
+  const DepthImage& depth() const { return depth_; }
+
+  // Records `inside` between the beginning and the end of this target's render pass, the
+  // viewport on the whole target (NDC y = -1 at row 0, as GL's: texels lie where GL's lie).
+  void record_pass(VkCommandBuffer c, const std::function<void()>& inside) const {
+    const uint32_t side = static_cast<uint32_t>(size());
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = render_pass_;
+    begin.framebuffer = framebuffer_;
+    begin.renderArea = {{0, 0}, {side, side}};
+    vkCmdBeginRenderPass(c, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    inside();
+    vkCmdEndRenderPass(c);
+  }
+
+ private:
+  const VulkanDevice::State* s_;
+  std::unique_ptr<VulkanImage> colour_;
+  DepthImage depth_;
+  VkRenderPass render_pass_ = VK_NULL_HANDLE;
+  VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+};
+
+// The rectangles a scissored operation covers: each one clipped to the target, the empty ones
+// dropped; the whole target for none given.
+std::vector<VkRect2D> scissor_rects(const std::vector<TexelRect>& rects, int size) {
+  std::vector<VkRect2D> out;
+  const TexelRect whole = TexelRect::square(size);
+  for (const TexelRect& given : rects.empty() ? std::vector<TexelRect>{whole} : rects) {
+    const TexelRect r = intersection(given, whole);
+    if (r.empty()) continue;
+    out.push_back({{r.x0, r.y0}, {static_cast<uint32_t>(r.x1 - r.x0), static_cast<uint32_t>(r.y1 - r.y0)}});
+  }
+  return out;
+}
+
+// A vertex + fragment program drawing triangle lists into a target with a depth buffer, in GL's
+// conventions: clip-space depth -1..1 (VK_EXT_depth_clip_control) and NDC y = -1 at row 0, so its
+// texels are where GL's raster pass puts them.
 class VulkanRasterProgram final : public VulkanProgram {
  public:
   // `positions`: the vertex stage reads a world position a vertex (a triangle list); else it makes
@@ -788,57 +934,7 @@ class VulkanRasterProgram final : public VulkanProgram {
       throw Error(name_ + ": the Vulkan device has no VK_EXT_depth_clip_control, without which GL's clip-space depth "
                           "(-1..1) cannot be kept",
                   ExitCode::failed);
-    VkAttachmentDescription attachments[2] = {};
-    attachments[0].format = vk_format(target);
-    attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = kImageLayout;
-    attachments[0].finalLayout = kImageLayout;
-    attachments[1] = attachments[0];
-    attachments[1].format = VK_FORMAT_D32_SFLOAT;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    const VkAttachmentReference colour{0, kImageLayout};
-    const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &colour;
-    subpass.pDepthStencilAttachment = &depth;
-    VkSubpassDependency dependencies[2] = {};
-    dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-    dependencies[0].dstSubpass = 0;
-    dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    dependencies[0].srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT |
-                                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    dependencies[0].dstStageMask = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
-    dependencies[0].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-    dependencies[1].srcSubpass = 0;
-    dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    dependencies[1].dstStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                                   VK_PIPELINE_STAGE_TRANSFER_BIT;
-    dependencies[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
-    VkRenderPassCreateInfo pass_info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    pass_info.attachmentCount = 2;
-    pass_info.pAttachments = attachments;
-    pass_info.subpassCount = 1;
-    pass_info.pSubpasses = &subpass;
-    pass_info.dependencyCount = 2;
-    pass_info.pDependencies = dependencies;
-    vk_check(vkCreateRenderPass(s.device, &pass_info, nullptr, &render_pass_), name_ + ": a render pass");
-
+    render_pass_ = make_render_pass(s, target, name_);
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                  {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -902,45 +998,29 @@ class VulkanRasterProgram final : public VulkanProgram {
   ~VulkanRasterProgram() override {
     if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(s_->device, render_pass_, nullptr);
   }
+  TexelFormat target_format() const { return target_; }
 
-  // Draws `vertices` (a program with positions) or its own full-screen triangle (one without).
-  std::unique_ptr<VulkanImage> draw(const std::vector<glm::vec3>& vertices, int size, const float clear[4],
-                                    const PassResources& resources) const {
+  // Draws `runs` of `vertices` (a program with positions) or its own full-screen triangle (one
+  // without: `vertices` null) into `target` over what it holds, scissored to each rectangle.
+  void draw(const VulkanVertices* vertices, const std::vector<VertexRun>& runs, const VulkanRasterTarget& target,
+            const std::vector<TexelRect>& rects, const PassResources& resources) const {
     const VulkanDevice::State& s = *s_;
-    if (!positions_ && !vertices.empty())
-      throw Error(name_ + ": a full-screen pass makes its own vertices: expected none", ExitCode::failed);
-    if (!resources.images.empty() || !resources.buffers.empty())
-      throw Error(name_ + ": a raster pass binds textures and a block only: expected no storage images or buffers",
+    if (positions_ != (vertices != nullptr))
+      throw Error(name_ + (positions_ ? ": expected a vertex buffer" : ": a full-screen pass makes its own vertices"),
                   ExitCode::failed);
-    auto target = std::make_unique<VulkanImage>(s, TextureShape{target_, size, size});
-    target->fill(nullptr, 0);  // into GENERAL layout, which the render pass starts from
-    const DepthImage depth(s, size);
-    const VkImageView views[2] = {target->level_view(0), depth.view()};
-    VkFramebufferCreateInfo framebuffer_info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    framebuffer_info.renderPass = render_pass_;
-    framebuffer_info.attachmentCount = 2;
-    framebuffer_info.pAttachments = views;
-    framebuffer_info.width = framebuffer_info.height = static_cast<uint32_t>(size);
-    framebuffer_info.layers = 1;
-    VkFramebuffer framebuffer = VK_NULL_HANDLE;
-    vk_check(vkCreateFramebuffer(s.device, &framebuffer_info, nullptr, &framebuffer), name_ + ": a framebuffer");
-    struct DestroyFramebuffer {
-      VkDevice d;
-      VkFramebuffer f;
-      ~DestroyFramebuffer() { vkDestroyFramebuffer(d, f, nullptr); }
-    } destroy_framebuffer{s.device, framebuffer};
-    HostBuffer vertex_buffer(s, std::max<std::size_t>(vertices.size(), 1) * sizeof(glm::vec3),
-                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    if (!vertices.empty()) std::memcpy(vertex_buffer.data(), vertices.data(), vertices.size() * sizeof(glm::vec3));
+    if (!resources.images.empty() || !resources.buffers.empty())
+      throw Error(name_ + ": a raster pass binds textures and blocks only: expected no storage images or buffers",
+                  ExitCode::failed);
+    if (target.colour().shape().format != target_)
+      throw Error(name_ + ": a target of another format than the program's", ExitCode::failed);
+    for (const VertexRun& run : runs)
+      if (vertices != nullptr && (run.first < 0 || run.count < 0 || run.first + run.count > vertices->count()))
+        throw Error(name_ + ": vertices " + std::to_string(run.first) + ".." + std::to_string(run.first + run.count) +
+                        " of " + std::to_string(vertices->count()),
+                    ExitCode::failed);
     BoundSet bound;
     bind(resources, bound);
-
-    VkClearValue clears[2] = {};
-    for (int c = 0; c < 4; ++c) {
-      clears[0].color.float32[c] = clear[c];
-      if (target->integer()) clears[0].color.uint32[c] = static_cast<uint32_t>(clear[c]);
-    }
-    clears[1].depthStencil = {1.0f, 0};
+    const int size = target.size();
     s.submit(name_ + ": draw", [&](VkCommandBuffer c) {
       VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
       before.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT;
@@ -949,33 +1029,25 @@ class VulkanRasterProgram final : public VulkanProgram {
                            VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                            0, 1, &before, 0, nullptr, 0, nullptr);
-      VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-      begin.renderPass = render_pass_;
-      begin.framebuffer = framebuffer;
-      begin.renderArea = {{0, 0}, {static_cast<uint32_t>(size), static_cast<uint32_t>(size)}};
-      begin.clearValueCount = 2;
-      begin.pClearValues = clears;
-      vkCmdBeginRenderPass(c, &begin, VK_SUBPASS_CONTENTS_INLINE);
-      vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-      // NDC y = -1 at framebuffer row 0, as in GL: the texels lie in memory where GL's lie (GL's
-      // row 0 is the window's bottom; a Vulkan framebuffer's row 0 is the row y = 0 maps to).
-      const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
-      const VkRect2D scissor{{0, 0}, {static_cast<uint32_t>(size), static_cast<uint32_t>(size)}};
-      vkCmdSetViewport(c, 0, 1, &viewport);
-      vkCmdSetScissor(c, 0, 1, &scissor);
-      if (bound.set != VK_NULL_HANDLE)
-        vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
-      if (positions_) {
-        const VkBuffer buffers[] = {vertex_buffer.buffer()};
-        const VkDeviceSize offsets[] = {0};
-        vkCmdBindVertexBuffers(c, 0, 1, buffers, offsets);
-        if (!vertices.empty()) vkCmdDraw(c, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
-      } else {
-        vkCmdDraw(c, 3, 1, 0, 0);
-      }
-      vkCmdEndRenderPass(c);
+      target.record_pass(c, [&] {
+        vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+        const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+        vkCmdSetViewport(c, 0, 1, &viewport);
+        if (bound.set != VK_NULL_HANDLE)
+          vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
+        if (vertices != nullptr) {
+          const VkBuffer buffers[] = {vertices->buffer().buffer()};
+          const VkDeviceSize offsets[] = {0};
+          vkCmdBindVertexBuffers(c, 0, 1, buffers, offsets);
+        }
+        for (const VkRect2D& scissor : scissor_rects(rects, size)) {
+          vkCmdSetScissor(c, 0, 1, &scissor);
+          if (vertices == nullptr) vkCmdDraw(c, 3, 1, 0, 0);
+          for (const VertexRun& run : vertices != nullptr ? runs : std::vector<VertexRun>{})
+            if (run.count > 0) vkCmdDraw(c, static_cast<uint32_t>(run.count), 1, static_cast<uint32_t>(run.first), 0);
+        }
+      });
     });
-    return target;
   }
 
  private:
@@ -983,6 +1055,23 @@ class VulkanRasterProgram final : public VulkanProgram {
   bool positions_;
   VkRenderPass render_pass_ = VK_NULL_HANDLE;
 };
+
+// `clear` into `target` inside each rectangle (the whole target for none), depth to the far plane.
+void clear_raster_target(const VulkanDevice::State& s, const VulkanRasterTarget& target, const float clear[4],
+                         const std::vector<TexelRect>& rects) {
+  VkClearAttachment clears[2] = {};
+  clears[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+  clears[0].colorAttachment = 0;
+  for (int c = 0; c < 4; ++c) clears[0].clearValue.color.float32[c] = clear[c];
+  clears[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+  clears[1].clearValue.depthStencil = {1.0f, 0};
+  std::vector<VkClearRect> areas;
+  for (const VkRect2D& r : scissor_rects(rects, target.size())) areas.push_back({r, 0, 1});
+  if (areas.empty()) return;
+  s.submit("clearing a raster target", [&](VkCommandBuffer c) {
+    target.record_pass(c, [&] { vkCmdClearAttachments(c, 2, clears, static_cast<uint32_t>(areas.size()), areas.data()); });
+  });
+}
 
 }  // namespace
 
@@ -1070,20 +1159,116 @@ std::unique_ptr<QueryProgram> VulkanDevice::compile_full_screen(const SourceTree
                                                stage_spirv(*state_, tree, fragment, defines, nullptr), target, false);
 }
 
-std::unique_ptr<DeviceTexture> VulkanDevice::draw_full_screen(const QueryProgram& program, int size,
-                                                              const PassResources& resources) const {
+namespace {
+
+const VulkanRasterProgram& raster_program(const QueryProgram& program) {
   const auto* raster = dynamic_cast<const VulkanRasterProgram*>(&program);
   if (raster == nullptr) throw Error("vulkan: a raster program compiled for another device", ExitCode::failed);
-  const float clear[4] = {0, 0, 0, 0};
-  return raster->draw({}, size, clear, resources);
+  return *raster;
+}
+
+template <class Made>
+const Made& made_on(const VulkanDevice::State& s, const auto& object, const char* what) {
+  const auto* made = dynamic_cast<const Made*>(&object);
+  if (made == nullptr || made->owner() != &s)
+    throw Error(std::string("vulkan: a ") + what + " made on another device than this one", ExitCode::failed);
+  return *made;
+}
+
+}  // namespace
+
+std::unique_ptr<DeviceTexture> VulkanDevice::draw_full_screen(const QueryProgram& program, int size,
+                                                              const PassResources& resources) const {
+  const VulkanRasterProgram& raster = raster_program(program);
+  VulkanRasterTarget target(*state_, size, raster.target_format());
+  const float nothing[4] = {0, 0, 0, 0};
+  clear_raster_target(*state_, target, nothing, {});
+  raster.draw(nullptr, {}, target, {}, resources);
+  return target.take_colour();
 }
 
 std::unique_ptr<DeviceTexture> VulkanDevice::draw_triangles(const QueryProgram& program,
                                                             const std::vector<glm::vec3>& vertices, int size,
                                                             const float clear[4], const PassResources& resources) const {
-  const auto* raster = dynamic_cast<const VulkanRasterProgram*>(&program);
-  if (raster == nullptr) throw Error("vulkan: a raster program compiled for another device", ExitCode::failed);
-  return raster->draw(vertices, size, clear, resources);
+  const VulkanRasterProgram& raster = raster_program(program);
+  VulkanRasterTarget target(*state_, size, raster.target_format());
+  clear_raster_target(*state_, target, clear, {});
+  const VulkanVertices buffer(*state_, vertices);
+  raster.draw(&buffer, {{0, buffer.count()}}, target, {}, resources);
+  return target.take_colour();
+}
+
+std::unique_ptr<DeviceVertices> VulkanDevice::make_vertices(const std::vector<glm::vec3>& vertices) const {
+  return std::make_unique<VulkanVertices>(*state_, vertices);
+}
+
+void VulkanDevice::write_vertices(const DeviceVertices& to, const std::vector<glm::vec3>& vertices,
+                                  std::size_t first, std::size_t count) const {
+  const VulkanVertices& buffer = made_on<VulkanVertices>(*state_, to, "vertex buffer");
+  if (static_cast<int>(vertices.size()) != buffer.count())
+    throw Error("scene geometry: " + std::to_string(vertices.size()) + " vertices, expected " +
+                    std::to_string(buffer.count()) + " (the layout it was made with)",
+                ExitCode::failed);
+  if (first + count > vertices.size()) throw Error("scene geometry: an object past the scene's vertices", ExitCode::failed);
+  if (count > 0)
+    std::memcpy(static_cast<char*>(buffer.buffer().data()) + first * sizeof(glm::vec3), &vertices[first],
+                count * sizeof(glm::vec3));
+}
+
+std::unique_ptr<DeviceRasterTarget> VulkanDevice::make_raster_target(int size, TexelFormat format) const {
+  if (format == TexelFormat::rgba32ui)
+    throw Error("vulkan: a raster target of RGBA32UI texels: expected a float format", ExitCode::failed);
+  return std::make_unique<VulkanRasterTarget>(*state_, size, format);
+}
+
+void VulkanDevice::clear_target(const DeviceRasterTarget& target, const float colour[4],
+                                const std::vector<TexelRect>& rects) const {
+  clear_raster_target(*state_, made_on<VulkanRasterTarget>(*state_, target, "raster target"), colour, rects);
+}
+
+void VulkanDevice::copy_target(const DeviceRasterTarget& source, const DeviceRasterTarget& target,
+                               const std::vector<TexelRect>& rects) const {
+  const VulkanRasterTarget& from = made_on<VulkanRasterTarget>(*state_, source, "raster target");
+  const VulkanRasterTarget& to = made_on<VulkanRasterTarget>(*state_, target, "raster target");
+  if (from.size() != to.size() || from.colour().shape().format != to.colour().shape().format)
+    throw Error("vulkan: copying between raster targets of different sizes or formats", ExitCode::failed);
+  std::vector<VkImageCopy> colour, depth;
+  for (const VkRect2D& r : scissor_rects(rects, to.size())) {
+    VkImageCopy copy{};
+    copy.srcSubresource = copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.srcOffset = copy.dstOffset = {r.offset.x, r.offset.y, 0};
+    copy.extent = {r.extent.width, r.extent.height, 1};
+    colour.push_back(copy);
+    copy.srcSubresource.aspectMask = copy.dstSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    depth.push_back(copy);
+  }
+  if (colour.empty()) return;
+  state_->submit("copying between raster targets", [&](VkCommandBuffer c) {
+    VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    before.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                           VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    before.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before, 0,
+                         nullptr, 0, nullptr);
+    vkCmdCopyImage(c, from.colour().image(), kImageLayout, to.colour().image(), kImageLayout,
+                   static_cast<uint32_t>(colour.size()), colour.data());
+    vkCmdCopyImage(c, from.depth().image(), kImageLayout, to.depth().image(), kImageLayout,
+                   static_cast<uint32_t>(depth.size()), depth.data());
+    VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    after.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
+                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &after, 0,
+                         nullptr, 0, nullptr);
+  });
+}
+
+void VulkanDevice::draw(const QueryProgram& program, const DeviceVertices& vertices, const std::vector<VertexRun>& runs,
+                        const DeviceRasterTarget& target, const std::vector<TexelRect>& rects,
+                        const PassResources& resources) const {
+  raster_program(program).draw(&made_on<VulkanVertices>(*state_, vertices, "vertex buffer"), runs,
+                               made_on<VulkanRasterTarget>(*state_, target, "raster target"), rects, resources);
 }
 
 std::unique_ptr<DeviceTexture> VulkanDevice::upload(const Image& image) const { return upload_image(*state_, image); }

@@ -3,10 +3,8 @@
 
 The Vulkan executor against GL 4.5, side by side (issue 27):
 - `penumbra info --api vulkan` names a device and has the validation layer on;
-- `penumbra check -v` on gl450, vulkan and hlsl: every check that runs off GL passes on all three,
-  with the same cases (the same names) as on GL — all of them for the checks that run every case
-  off GL, a non-empty part of them for the checks whose other cases are GL passes — and every
-  other check is reported "not run (GL passes)", never as passing;
+- `penumbra check -v` on gl450, vulkan and hlsl: every registered check passes on all three, with
+  the same cases (the same names) on each;
 - an HLSL copy given with --hlsl-root is what runs: exact_pcss.glsl's export (`bundle --target
   hlsl`, the file an engine takes) passes the exports check as written and fails with one operator
   changed, with a where / expected / observed line.
@@ -19,7 +17,7 @@ import subprocess
 import sys
 
 CASE = re.compile(r'^([a-z_]+): (pass|FAIL) (.*?): ')
-ROW = re.compile(r'^([a-z_]+)\s+(\d+|-)\s+.*\s(pass|FAIL|not run \(GL passes\))$')
+ROW = re.compile(r'^([a-z_]+)\s+(\d+|-)\s+.*\s(pass|FAIL)$')
 WHERE = re.compile(r'exports: FAIL .* at \([0-9]+, [0-9]+\)(\[[0-9]\])?: expected [-+0-9.einf]+, observed [-+0-9.einf]+')
 
 
@@ -28,19 +26,16 @@ def run(*args):
 
 
 def table(output):
-    """{module: (cases, verdict)} from a check's table, {module: set of case names} from -v lines,
-    the modules that ran part of their cases ("MODULE: not run here: ...")."""
-    rows, cases, partial = {}, {}, set()
+    """{module: (cases, verdict)} from a check's table, {module: set of case names} from -v lines."""
+    rows, cases = {}, {}
     for line in output.splitlines():
-        if ': not run here: ' in line:
-            partial.add(line.split(':')[0])
         m = ROW.match(line)
         if m:
             rows[m.group(1)] = (m.group(2), m.group(3))
         m = CASE.match(line)
         if m:
             cases.setdefault(m.group(1), set()).add(m.group(3))
-    return rows, cases, partial
+    return rows, cases
 
 
 def main():
@@ -58,45 +53,34 @@ def main():
         return 1
 
     runs = {}
-    for api in ('vulkan', 'hlsl'):
+    for api in ('gl450', 'vulkan', 'hlsl'):
         r = run(penumbra, 'check', '-v', '--api', api)
         if r.returncode != 0:
             print(r.stdout + r.stderr)
             print(f'check --api {api}: exit {r.returncode}, expected 0')
             return 1
         runs[api] = table(r.stdout)
-    off_gl = sorted(m for m, (_, verdict) in runs['vulkan'][0].items() if verdict != 'not run (GL passes)')
-    gl = run(penumbra, 'check', '-v', *off_gl)
-    if gl.returncode != 0:
-        print(gl.stdout + gl.stderr)
-        return 1
-    runs['gl450'] = table(gl.stdout)
 
     failures = []
+    modules = sorted(runs['gl450'][0])
     print(f'{"module":16} {"gl450":>14} {"vulkan":>14} {"hlsl":>14}')
-    for module in sorted(runs['vulkan'][0]):
+    for module in modules:
         cells = []
         for api in ('gl450', 'vulkan', 'hlsl'):
-            rows = runs[api][0]
-            cases, verdict = rows.get(module, ('-', 'not run (GL passes)' if api != 'gl450' else 'absent'))
-            cells.append(f'{cases} {verdict if verdict in ("pass", "FAIL") else "not run"}')
+            cases, verdict = runs[api][0].get(module, ('-', 'absent'))
+            cells.append(f'{cases} {verdict}')
         print(f'{module:16} {cells[0]:>14} {cells[1]:>14} {cells[2]:>14}')
-        if module not in off_gl:
-            if runs['hlsl'][0].get(module, ('', ''))[1] != 'not run (GL passes)':
-                failures.append(f'{module}: not run on vulkan, but run on hlsl')
-            continue
         gl_names = runs['gl450'][1].get(module, set())
         for api in ('vulkan', 'hlsl'):
-            verdict = runs[api][0][module][1]
+            verdict = runs[api][0].get(module, ('', 'absent'))[1]
             names = runs[api][1].get(module, set())
             if verdict != 'pass' or runs['gl450'][0][module][1] != 'pass':
                 failures.append(f'{module}: {api} {verdict}, gl450 {runs["gl450"][0][module][1]}: expected pass on both')
-            if not names or not names <= gl_names:
-                failures.append(f'{module}: {api} ran cases GL does not have: {sorted(names - gl_names)[:3]}')
-            if module not in runs[api][2] and names != gl_names:
-                failures.append(f'{module}: {api} ran {len(names)} cases, GL {len(gl_names)}: expected the same')
-    if len(off_gl) < 23:  # every check, three in part (docs/vulkan-hlsl.md, "What runs where")
-        failures.append(f'only {len(off_gl)} checks ran on vulkan: {off_gl}')
+            if not names or names != gl_names:
+                failures.append(f'{module}: {api} ran {len(names)} cases, GL {len(gl_names)}: expected the same '
+                                f'(first differing: {sorted(names ^ gl_names)[:2]})')
+    if len(modules) < 23:
+        failures.append(f'only {len(modules)} checks ran: {modules}')
 
     # An HLSL copy is what runs: exact_pcss.glsl's export — the file an engine takes — given with
     # --hlsl-root passes the exports check as written, and fails with one operator changed.
