@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <utility>
@@ -144,6 +145,14 @@ struct PassResources {
   std::vector<PassBuffer> buffers;
   QueryBlock block;
   std::vector<QueryBlock> more_blocks;  // further uniform blocks (a table beside the pass's parameters)
+
+  // Appends, one by one: the entries hold references, so a list is added to, never assigned.
+  void add_textures(std::initializer_list<QueryTexture> more) {
+    for (const QueryTexture& t : more) textures.push_back(t);
+  }
+  void add_images(std::initializer_list<PassImage> more) {
+    for (const PassImage& i : more) images.push_back(i);
+  }
 };
 // `block` (when it has data) and `more_blocks`: every uniform block a dispatch binds.
 std::vector<QueryBlock> uniform_blocks(const PassResources& resources);

@@ -1,7 +1,8 @@
-// The raster path every vertex + fragment pass draws through: triangles in one vertex buffer, and
-// a float target with its own depth buffer (the shadow map, the G-buffer, the surface pass, the
-// shadow-map caches, the full-screen fragment passes). gl/query_device_gl.cpp draws a device's
-// raster passes with it; passes/scene_draw.h gives it a scene's triangles.
+// The GL raster path: triangles in one vertex buffer, and a float target with its own depth
+// buffer, drawn into, cleared and copied inside rectangles, or covered by a full-screen fragment
+// pass. gl/query_device_gl.cpp runs every raster pass of the device seam through it (the shadow
+// map, the G-buffer, the surface pass, the shadow-map caches' kept targets, the techniques'
+// fragment shaders).
 #pragma once
 
 #include <vector>

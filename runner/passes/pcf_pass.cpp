@@ -75,8 +75,7 @@ std::unique_ptr<DeviceTexture> PcfShadePass::run(const DeviceTexture& shadow_map
   block.receiverPlaneTan = receiver_plane_tan;
   PassResources resources;
   resources.block = query_block(block);
-  resources.textures.push_back({PN_PCF_SHADE_MAP_BINDING, shadow_map});
-  resources.textures.push_back({PN_PCF_SHADE_GBUFFER_BINDING, gbuffer});
+  resources.add_textures({{PN_PCF_SHADE_MAP_BINDING, shadow_map}, {PN_PCF_SHADE_GBUFFER_BINDING, gbuffer}});
   return shade_.run(stage, {}, screen_size, resources);
 }
 

@@ -76,9 +76,8 @@ std::unique_ptr<DeviceTexture> SavsmPass::shade(const MomentsTable& table, const
   const glsl::PnSavsmParams block = make_block(table, light, settings);
   PassResources resources;
   resources.block = query_block(block);
-  resources.textures.push_back({PN_SAVSM_TABLE_BINDING, *table.texture});
-  resources.textures.push_back({PN_SAVSM_MIP_BINDING, mip});
-  resources.textures.push_back({PN_SAVSM_INPUT_BINDING, gbuffer});
+  resources.add_textures(
+      {{PN_SAVSM_TABLE_BINDING, *table.texture}, {PN_SAVSM_MIP_BINDING, mip}, {PN_SAVSM_INPUT_BINDING, gbuffer}});
   return shade_.run(stage, table_define(table), screen_size, resources);
 }
 

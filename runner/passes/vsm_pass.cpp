@@ -94,9 +94,9 @@ std::unique_ptr<DeviceTexture> VsmShadePass::run(const VsmMoments& moments, cons
                                      params.bleeding_reduction};
   PassResources resources;
   resources.block = query_block(block);
-  resources.textures.push_back({PN_VSM_SHADE_MOMENTS_BINDING, *moments.texture});
-  resources.textures.push_back({PN_VSM_SHADE_PYRAMID_BINDING, *pyramid.texture});
-  resources.textures.push_back({PN_VSM_SHADE_GBUFFER_BINDING, gbuffer});
+  resources.add_textures({{PN_VSM_SHADE_MOMENTS_BINDING, *moments.texture},
+                          {PN_VSM_SHADE_PYRAMID_BINDING, *pyramid.texture},
+                          {PN_VSM_SHADE_GBUFFER_BINDING, gbuffer}});
   return shade_.run(stage, {{"PN_VSM_SHADE_KIND", std::to_string(static_cast<int>(params.kind))}}, screen_size,
                     resources);
 }

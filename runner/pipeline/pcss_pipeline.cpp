@@ -185,12 +185,11 @@ PcssPipeline::Texture PcssPipeline::link(const DeviceTexture& entries, int size,
 }
 
 void PcssPipeline::add_structures(PassResources& resources, const PcssFrame& frame) const {
-  for (const QueryTexture& t : {
-      QueryTexture{PN_PCSS_PYRAMID_BINDING, frame.pyramid ? *frame.pyramid->texture : *no_pyramid_},
-      QueryTexture{PN_PCSS_MIP_BINDING, frame.mip ? *frame.mip->texture : *no_mip_},
-      QueryTexture{PN_PCSS_DEPTH_SUMS_BINDING, frame.depth_sums.texture ? *frame.depth_sums.texture : *no_depth_sums_},
-      QueryTexture{PN_PCSS_SAMPLE_TABLE_BINDING, *sample_table_}})
-    resources.textures.push_back(t);
+  resources.add_textures(
+      {{PN_PCSS_PYRAMID_BINDING, frame.pyramid ? *frame.pyramid->texture : *no_pyramid_},
+       {PN_PCSS_MIP_BINDING, frame.mip ? *frame.mip->texture : *no_mip_},
+       {PN_PCSS_DEPTH_SUMS_BINDING, frame.depth_sums.texture ? *frame.depth_sums.texture : *no_depth_sums_},
+       {PN_PCSS_SAMPLE_TABLE_BINDING, *sample_table_}});
 }
 
 void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const DeviceTexture& entries,
@@ -205,10 +204,10 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const Devic
   // What every estimator reads.
   PassResources inputs;
   add_structures(inputs, frame);
-  inputs.textures.push_back({PN_PCSS_ENTRIES_BINDING, entries});
-  inputs.textures.push_back({PN_PCSS_PARENTS_BINDING, parents ? *parents : *no_parents_});
-  // sampler2D of the sanitized map
-  inputs.textures.push_back({PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid ? *frame.pyramid->level0 : *no_mip_});
+  inputs.add_textures({{PN_PCSS_ENTRIES_BINDING, entries},
+                       {PN_PCSS_PARENTS_BINDING, parents ? *parents : *no_parents_},
+                       // the sanitized map, as a sampler2D
+                       {PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid ? *frame.pyramid->level0 : *no_mip_}});
 
   if (estimator == Estimator::scan) {
     // Bands of rows, ping-pong between `result` and a partner so the last band lands in `result`.
@@ -278,9 +277,9 @@ void PcssPipeline::add_representatives(PassResources& resources, PcssBlock& bloc
                                        int tile, const Texture& parents, const DeviceTexture& results) const {
   block.reuseTile = tile;
   resources.block = query_block(block);
-  resources.textures.push_back({PN_PCSS_ENTRIES_BINDING, entries});
-  resources.textures.push_back({PN_PCSS_PARENTS_BINDING, tile > 0 ? *parents : *no_parents_});
-  resources.textures.push_back({PN_PCSS_RESULTS_BINDING, results});
+  resources.add_textures({{PN_PCSS_ENTRIES_BINDING, entries},
+                          {PN_PCSS_PARENTS_BINDING, tile > 0 ? *parents : *no_parents_},
+                          {PN_PCSS_RESULTS_BINDING, results}});
 }
 
 PcssFrame PcssPipeline::begin_frame(const TechniqueInputs& inputs, const PcssSettings& settings) const {
@@ -304,8 +303,7 @@ void PcssPipeline::prepare_one_call(PcssFrame& frame, OneCall call, const Techni
   block = make_block(inputs.light, s);
   resources.block = query_block(block);
   add_structures(resources, frame);
-  resources.textures.push_back({PN_PCSS_SHADE_GBUFFER_BINDING, *inputs.gbuffer});
-  resources.textures.push_back({PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map});
+  resources.add_textures({{PN_PCSS_SHADE_GBUFFER_BINDING, *inputs.gbuffer}, {PN_PCSS_DEPTH_MAP_BINDING, *inputs.shadow_map}});
   // Only the Poisson call reads its disks; the others bind the defaults (a Vogel count may exceed the block's).
   const bool poisson = call == OneCall::poisson;
   resources.more_blocks.push_back(
@@ -339,8 +337,7 @@ PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inp
                                               : "mip chain");
   frame.work = record_work ? float_texture(size, 4) : cleared_texture(1, 4);
   frame.fetches = record_work ? float_texture(size, 1) : cleared_texture(1, 1);
-  resources.images.push_back({PN_PCSS_WORK_IMAGE, *frame.work});
-  resources.images.push_back({PN_PCSS_FETCH_IMAGE, *frame.fetches});
+  resources.add_images({{PN_PCSS_WORK_IMAGE, *frame.work}, {PN_PCSS_FETCH_IMAGE, *frame.fetches}});
   frame.visibility = one_call_.run(ShadeStage::compute, one_call_defines(call, record_work), size, resources);
   clock->stage("one call");
   frame.stages = clock->read();
@@ -388,14 +385,12 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     search_block.writeKeys = own_search_keys ? 1 : 0;
     PassResources resources;
     resources.block = query_block(search_block);
-    for (const QueryTexture& r : {QueryTexture{PN_PCSS_PYRAMID_BINDING, frame.pyramid ? *frame.pyramid->texture : *no_pyramid_},
-                          QueryTexture{PN_PCSS_MIP_BINDING, frame.mip ? *frame.mip->texture : *no_mip_},
-                          QueryTexture{PN_PCSS_GBUFFER_BINDING, *inputs.gbuffer}})
-      resources.textures.push_back(r);
-    for (const PassImage& r : {PassImage{PN_PCSS_SEARCH_MAP_IMAGE, *frame.search_map},
-                        PassImage{PN_PCSS_SEARCH_KEYS_IMAGE, *frame.search_keys},
-                        PassImage{PN_PCSS_RECEIVER_DEPTH_IMAGE, *frame.receiver_depth}})
-      resources.images.push_back(r);
+    resources.add_textures({{PN_PCSS_PYRAMID_BINDING, frame.pyramid ? *frame.pyramid->texture : *no_pyramid_},
+                            {PN_PCSS_MIP_BINDING, frame.mip ? *frame.mip->texture : *no_mip_},
+                            {PN_PCSS_GBUFFER_BINDING, *inputs.gbuffer}});
+    resources.add_images({{PN_PCSS_SEARCH_MAP_IMAGE, *frame.search_map},
+                          {PN_PCSS_SEARCH_KEYS_IMAGE, *frame.search_keys},
+                          {PN_PCSS_RECEIVER_DEPTH_IMAGE, *frame.receiver_depth}});
     device_->run(search_.get(search_defines(search_block)), resources, size, size);
   }
   clock->stage("3 search region");
@@ -413,10 +408,9 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     PassResources resources;
     add_representatives(resources, filter_block, *frame.search_map, settings.search_tile, frame.search_parents,
                         *frame.blocker_results);
-    for (const PassImage& r : {PassImage{PN_PCSS_FILTER_MAP_IMAGE, *frame.filter_map},
-                        PassImage{PN_PCSS_BLOCKER_MEAN_IMAGE, *frame.blocker_mean},
-                        PassImage{PN_PCSS_FILTER_KEYS_IMAGE, *frame.filter_keys}})
-      resources.images.push_back(r);
+    resources.add_images({{PN_PCSS_FILTER_MAP_IMAGE, *frame.filter_map},
+                          {PN_PCSS_BLOCKER_MEAN_IMAGE, *frame.blocker_mean},
+                          {PN_PCSS_FILTER_KEYS_IMAGE, *frame.filter_keys}});
     device_->run(filter_.get(filter_defines(filter_block)), resources, size, size);
   }
   clock->stage("4 filter region");
