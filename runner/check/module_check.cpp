@@ -29,6 +29,7 @@ std::vector<CaseResult> run_cascades_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env);
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env);
+std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env);
 
 const std::vector<ModuleCheck>& module_checks() {
   static const std::vector<ModuleCheck> checks{
@@ -82,6 +83,9 @@ const std::vector<ModuleCheck>& module_checks() {
       {"exports", "the export entries (what bundle --target hlsl|msl translates) as query passes: pnExactPcss vs exact "
                   "PCSS brute force, pnPcf vs 2x2 bilinear PCF on the CPU, both overloads",
        &run_exports_check},
+      {"backprojection", "the light's visible fraction through the height field (bitmask of light samples, every "
+                         "texel resolved) vs the ray march on the CPU, area light and sun; patches within a stated bound",
+       &run_backprojection_check},
       {"vsm", "VSM / EVSM moments, blurred moments vs direct 2-D sums, Chebyshev and bleeding reduction vs double, "
               "depth-range bound vs window scans (exact); light bleeding vs exact PCF on two occluders",
        &run_vsm_check},

@@ -106,7 +106,7 @@ class DeviceRasterTarget {
 struct QueryBindings {
   std::vector<unsigned> inputs;        // a sampler per input image (a query's fields A, B, C, …)
   std::vector<unsigned> results;       // an RGBA32F image per result image
-  std::vector<unsigned> word_results;  // an RGBA32UI image per result of exact words (sums modulo 2^64)
+  std::vector<unsigned> word_results = {};  // an RGBA32UI image per result of exact words (sums modulo 2^64)
 };
 
 // A texture the pass reads besides its queries (a depth map, a pyramid, a table), at `binding`.
@@ -144,7 +144,7 @@ struct PassResources {
   std::vector<PassImage> images;
   std::vector<PassBuffer> buffers;
   QueryBlock block;
-  std::vector<QueryBlock> more_blocks;  // further uniform blocks (a table beside the pass's parameters)
+  std::vector<QueryBlock> more_blocks = {};  // further uniform blocks (a table beside the pass's parameters)
 
   // Appends, one by one: the entries hold references, so a list is added to, never assigned.
   void add_textures(std::initializer_list<QueryTexture> more) {

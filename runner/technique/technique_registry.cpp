@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/named.h"
+#include "technique/backprojection_technique.h"
 #include "technique/pcss_technique.h"
 #include "technique/pcf_technique.h"
 #include "technique/savsm_technique.h"
@@ -59,6 +60,9 @@ const std::vector<TechniqueEntry>& technique_registry() {
        []() -> Made { return savsm_config("savsm-float", {{"table", "float"}}); }},
       {"savsm-raw", "savsm without light-bleeding reduction (bleeding=0)",
        []() -> Made { return savsm_config("savsm-raw", {{"bleeding", "0"}}); }},
+      {"backprojection", "back-projection over the min/max mip chain (issue 28): the fraction of 64 light samples "
+                         "the height field leaves visible, a bitmask, tight nodes as one patch (backprojection.glsl)",
+       []() -> Made { return backprojection_config("backprojection"); }},
       {kStagedPoissonTechnique, "Poisson PCSS through the staged passes (a map copy, a pass a step): the same output, "
                                 "the bench's baseline before issue 24",
        []() -> Made {

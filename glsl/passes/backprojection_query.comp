@@ -1,0 +1,24 @@
+// backprojection_query.comp — backprojection.glsl over a batch of receivers.
+// Query k: texel k of query image A = (u, v, light depth, bias), of B = (side,
+// tolerance, budget, 0). Result k: (visibility, blocked samples, nodes
+// visited, patches). Bindings and the light block: backprojection_query.h.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "backprojection_query.h"
+#include "backprojection.glsl"
+
+layout(binding = PN_BACKPROJECTION_QUERY_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_BACKPROJECTION_QUERY_A_BINDING) uniform sampler2D pnQueryA;
+layout(binding = PN_BACKPROJECTION_QUERY_B_BINDING) uniform sampler2D pnQueryB;
+layout(rgba32f, binding = PN_BACKPROJECTION_QUERY_RESULT_IMAGE) writeonly uniform image2D pnResult;
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(pnResult)))) return;
+  vec4 a = texelFetch(pnQueryA, p, 0);
+  vec4 b = texelFetch(pnQueryB, p, 0);
+  PnBackprojectionSettings s = PnBackprojectionSettings(int(b.x), b.y, int(b.z));
+  PnBackprojection r = pnBackprojectionWork(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, a.w, s);
+  imageStore(pnResult, p, vec4(r.visibility, r.blocked, r.nodes, r.patches));
+}

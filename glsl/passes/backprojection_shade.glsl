@@ -1,0 +1,26 @@
+// backprojection_shade.glsl — the back-projection soft shadow per screen pixel
+// (technique `backprojection`): backprojection.glsl's pnBackprojection at the
+// pixel's G-buffer position and light depth. Pixels that see no surface are
+// lit. Bindings and the block: backprojection_shade.h.
+//
+// The body of the compute pass and the fragment shader (shade_pass.h):
+// pnShade(p), the visibility of screen pixel p.
+
+#ifndef PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL
+#define PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL
+
+#include "backprojection_shade.h"
+
+layout(binding = PN_BACKPROJECTION_SHADE_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_BACKPROJECTION_SHADE_GBUFFER_BINDING) uniform sampler2D pnGBuffer;
+
+#include "backprojection.glsl"
+
+float pnShade(ivec2 p) {
+  vec4 receiver = texelFetch(pnGBuffer, p, 0);
+  if (receiver.w == 0.0) return 1.0;
+  PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.side, pnParams.tolerance, pnParams.budget);
+  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, pnParams.bias, s);
+}
+
+#endif  // PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL

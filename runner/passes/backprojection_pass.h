@@ -1,0 +1,37 @@
+// Runner side of glsl/passes/backprojection_query.comp: backprojection.glsl's
+// pnBackprojectionWork over a batch of receivers, on any executor.
+#pragma once
+
+#include <vector>
+
+#include "passes/minmax_mip_pass.h"
+#include "passes/query_pass.h"
+#include "scene/light_model.h"
+#include "shader/source_tree.h"
+
+namespace pn {
+
+struct BackprojectionQuery {
+  float u = 0.0f, v = 0.0f, depth = 0.0f;  // the receiver (texels, linear light depth)
+  float bias = 0.0f;
+  int side = 8;                             // side × side light samples
+  float tolerance = 0.0f;                   // 0: every texel resolved
+  int budget = 4096;                        // nodes
+};
+
+struct BackprojectionResult {
+  float visibility = 1.0f, blocked = 0.0f, nodes = 0.0f, patches = 0.0f;
+};
+
+class BackprojectionQueryPass {
+ public:
+  BackprojectionQueryPass(const QueryDevice& device, const SourceTree& tree);
+  // Throws Error when the chain is not of the light's map size.
+  std::vector<BackprojectionResult> run(const MinMaxMipChain& mip, const LightModel& light,
+                                        const std::vector<BackprojectionQuery>& queries) const;
+
+ private:
+  QueryPass query_;
+};
+
+}  // namespace pn

@@ -1,0 +1,128 @@
+#include "reference/backprojection_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "backprojection.h"
+
+namespace pn {
+
+BackprojectionSamplePoint backprojection_sample(int k, int side) {
+  const std::uint32_t h = PN_BACKPROJECTION_HASH(static_cast<std::uint32_t>(k));
+  const int bits = PN_BACKPROJECTION_JITTER_BITS;
+  const float unit = 1.0f / static_cast<float>(1 << bits);
+  const float jx = static_cast<float>(h >> (32 - bits)) * unit;
+  const float jy = static_cast<float>(h & ((1u << bits) - 1u)) * unit;
+  const float scale = 1.0f / static_cast<float>(side);
+  return {(static_cast<float>(k % side) + jx) * scale - 0.5f, (static_cast<float>(k / side) + jy) * scale - 0.5f};
+}
+
+namespace {
+
+// The ray from the receiver toward one light sample, in the light's frame: its texel coordinate
+// on one axis at depth z, and the depth at which it reaches a texel coordinate.
+struct RayAxis {
+  const LightModel* light;
+  double receiver_world;  // the receiver's lateral position on this axis (world units, from the axis)
+  double target;          // area light: the light point's lateral position; sun: its spread (per unit depth);
+                          // the ray's texel coordinate grows from the receiver's toward the light when > 0
+  double depth;           // dP
+  double centre;          // N / 2: the axis in texels
+
+  // The ray's texel coordinate at depth z (the projection of its point at that depth).
+  double texel_at(double z) const {
+    if (light->orthographic()) return centre + (receiver_world + target * (depth - z)) / light->texel_world;
+    const double c = light->near_plane_width() / (light->near_plane * light->map_size);
+    return centre + (receiver_world + (target - receiver_world) * (depth - z) / depth) / (z * c);
+  }
+  // The depth z at which the ray's texel coordinate is `u`.
+  double depth_at(double u) const {
+    const double b = u - centre;
+    if (light->orthographic()) return depth - (b * light->texel_world - receiver_world) / target;
+    const double c = light->near_plane_width() / (light->near_plane * light->map_size);
+    return target / (b * c + (target - receiver_world) / depth);
+  }
+};
+
+// The depths [lo, hi] at which the ray is within [a, b] on one axis (the receiver at u0); empty: lo > hi.
+void axis_interval(const RayAxis& ray, double u0, double a, double b, double& lo, double& hi) {
+  if (ray.target == 0.0) {  // toward the light's centre: the ray stays on the receiver's texel coordinate
+    const bool inside = a <= u0 && u0 <= b;
+    lo = inside ? -INFINITY : INFINITY;
+    hi = inside ? ray.depth : -INFINITY;
+    return;
+  }
+  if (ray.target > 0.0) {  // u grows from u0 as the ray nears the light
+    if (b < u0) return void(lo = INFINITY), void(hi = -INFINITY);
+    hi = a <= u0 ? ray.depth : ray.depth_at(a);
+    lo = ray.depth_at(b);
+  } else {
+    if (a > u0) return void(lo = INFINITY), void(hi = -INFINITY);
+    hi = b >= u0 ? ray.depth : ray.depth_at(b);
+    lo = ray.depth_at(a);
+  }
+}
+
+}  // namespace
+
+BackprojectionBounds backprojection_reference(const Image& map, const LightModel& light, double u, double v,
+                                              double depth, double bias, int side, double margin,
+                                              double depth_margin) {
+  BackprojectionBounds out;
+  if (!(depth > 0.0) || !std::isfinite(depth)) return out;
+  side = std::clamp(side, PN_BACKPROJECTION_MIN_SIDE, PN_BACKPROJECTION_MAX_SIDE);
+  const int count = side * side, n = light.map_size;
+  const double centre = 0.5 * n;
+  // The receiver's lateral position in the light's frame.
+  const double texel = light.texel_world_at(depth);
+  const double px = (u - centre) * texel, py = (v - centre) * texel;
+  const double dz = depth_margin * depth;
+  // No ray is blocked above the map's nearest texel (plus the bias): the texels a ray can pass
+  // below lie between the receiver and the ray's point at that depth (only to skip the others).
+  double nearest = INFINITY;
+  for (const float d : map.texels)
+    if (std::isfinite(d)) nearest = std::min(nearest, static_cast<double>(d));
+  if (!(nearest + bias - dz < depth)) return out;
+  const double floor_depth = std::max(nearest + bias - dz, light.orthographic() ? -INFINITY : 1e-9 * depth);
+  int sure = 0, possible = 0;
+  for (int k = 0; k < count; ++k) {
+    const BackprojectionSamplePoint l = backprojection_sample(k, side);
+    // Area light: the light point at depth 0; the sun: the spread per unit depth.
+    const double tx = light.orthographic() ? l.x * light.spread : l.x * light.width;
+    const double ty = light.orthographic() ? l.y * light.spread : l.y * light.width;
+    const RayAxis rx{&light, px, tx, depth, centre}, ry{&light, py, ty, depth, centre};
+    bool blocked_sure = false, blocked_possible = false;
+    const auto span = [&](const RayAxis& ray, double u0, int& first, int& last) {
+      const double far = ray.texel_at(floor_depth);
+      first = std::max(0, static_cast<int>(std::floor(std::min(u0, far) - 2 * margin)) - 1);
+      last = std::min(n - 1, static_cast<int>(std::floor(std::max(u0, far) + 2 * margin)) + 1);
+    };
+    int i0, i1, j0, j1;
+    span(rx, u, i0, i1);
+    span(ry, v, j0, j1);
+    for (int j = j0; j <= j1 && !blocked_sure; ++j)
+      for (int i = i0; i <= i1 && !blocked_sure; ++i) {
+        const double d = map.at(i, j);
+        if (!std::isfinite(d)) continue;
+        // The deepest point of the ray inside the column's square, grown (possible) and shrunk (sure).
+        for (const double m : {margin, -margin}) {
+          double xlo, xhi, ylo, yhi;
+          axis_interval(rx, u, i - m, i + 1 + m, xlo, xhi);
+          axis_interval(ry, v, j - m, j + 1 + m, ylo, yhi);
+          const double lo = std::max(xlo, ylo), hi = std::min(xhi, yhi);
+          if (lo > hi) continue;
+          if (m > 0 && hi > d + bias - dz) blocked_possible = true;
+          if (m < 0 && hi > d + bias + dz) blocked_sure = true;
+        }
+      }
+    sure += blocked_sure ? 1 : 0;
+    possible += (blocked_sure || blocked_possible) ? 1 : 0;
+  }
+  out.visibility_hi = 1.0 - static_cast<double>(sure) / count;
+  out.visibility_lo = 1.0 - static_cast<double>(possible) / count;
+  out.ambiguous = possible - sure;
+  return out;
+}
+
+}  // namespace pn

@@ -1,0 +1,116 @@
+#include "technique/backprojection_technique.h"
+
+#include <cmath>
+#include <string>
+
+#include "backprojection.h"
+#include "core/format.h"
+#include "frame/setting_value.h"
+#include "frame/settings_config.h"
+#include "gl/std140.h"
+#include "passes/minmax_mip_pass.h"
+#include "passes/shade_pass.h"
+#include "scene/light_block.h"
+
+namespace pn::glsl {
+#include "passes/backprojection_shade.h"
+PN_STD140_SIZE(PnBackprojectionShadeParams, 48);
+PN_STD140_OFFSET(PnBackprojectionShadeParams, bias, 24);
+PN_STD140_OFFSET(PnBackprojectionShadeParams, budget, 36);
+}  // namespace pn::glsl
+
+namespace pn {
+namespace {
+
+struct BackprojectionSettings {
+  std::string name;
+  float bias = 0.02f;  // light-depth units, as the PCSS family's default
+  int samples = PN_BACKPROJECTION_DEFAULT_SIDE * PN_BACKPROJECTION_DEFAULT_SIDE;
+  float tolerance = PN_BACKPROJECTION_DEFAULT_TOLERANCE;
+  int budget = PN_BACKPROJECTION_DEFAULT_BUDGET;
+
+  int side() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(samples)))); }
+  void validate() const {
+    const auto bad = [&](const std::string& what) { return Error("method '" + name + "': " + what); };
+    if (!std::isfinite(bias) || bias < 0.0f) throw bad("bias " + format_number("%g", bias) + ": expected a finite number >= 0");
+    if (samples != 16 && samples != 64 && samples != 256)
+      throw bad("samples " + std::to_string(samples) + ": expected 16, 64 or 256");
+    if (!std::isfinite(tolerance) || tolerance < 0.0f)
+      throw bad("tolerance " + format_number("%g", tolerance) + ": expected a finite number >= 0");
+    if (budget < 1 || budget > PN_BACKPROJECTION_MAX_BUDGET)
+      throw bad("budget " + std::to_string(budget) + ": expected 1.." + std::to_string(PN_BACKPROJECTION_MAX_BUDGET));
+  }
+};
+
+std::vector<std::string> backprojection_keys() { return {"bias", "samples", "tolerance", "budget"}; }
+
+// The passes the backprojection techniques of one device share (TechniqueResources::shared).
+struct BackprojectionPasses {
+  BackprojectionPasses(const QueryDevice& device, const SourceTree& tree)
+      : shade(device, tree, "passes/backprojection_shade", PN_BACKPROJECTION_SHADE_VISIBILITY_IMAGE), mip(device, tree) {}
+  ShadePass shade;
+  MinMaxMipBuilder mip;
+};
+
+class BackprojectionTechnique : public Technique {
+ public:
+  BackprojectionTechnique(const QueryDevice& device, const BackprojectionPasses& passes, BackprojectionSettings s)
+      : device_(&device), passes_(&passes), settings_(std::move(s)) {}
+
+  TechniqueFrame run(const TechniqueInputs& inputs, bool) const override {
+    if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
+      throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
+    const int n = inputs.light.map_size;
+    const std::unique_ptr<StageTimes> clock = device_->stage_clock();
+    clock->start();
+    MinMaxMipChain own;
+    const MinMaxMipChain* mip = inputs.mip;
+    if (mip == nullptr || mip->map_size != n) {
+      own = passes_->mip.build(*inputs.shadow_map, n);
+      mip = &own;
+      clock->stage("mip chain");
+    }
+    glsl::PnBackprojectionShadeParams block{};
+    set_light_fields(block, inputs.light);
+    block.bias = settings_.bias;
+    block.side = settings_.side();
+    block.tolerance = settings_.tolerance;
+    block.budget = settings_.budget;
+    PassResources resources;
+    resources.block = query_block(block);
+    resources.add_textures({{PN_BACKPROJECTION_SHADE_MIP_BINDING, *mip->texture},
+                            {PN_BACKPROJECTION_SHADE_GBUFFER_BINDING, *inputs.gbuffer}});
+    TechniqueFrame out;
+    out.visibility = passes_->shade.run(inputs.stage, {}, inputs.screen_size, resources);
+    clock->stage("shade");
+    out.stages = clock->read();
+    return out;
+  }
+
+ private:
+  const QueryDevice* device_;
+  const BackprojectionPasses* passes_;
+  BackprojectionSettings settings_;
+};
+
+}  // namespace
+
+std::unique_ptr<TechniqueConfig> backprojection_config(const char* name) {
+  BackprojectionSettings s;
+  s.name = name;
+  return settings_config<BackprojectionSettings>(
+      s, {&backprojection_keys,
+          [](BackprojectionSettings& settings, const std::string& key, const std::string& value) {
+            if (key == "bias") settings.bias = setting_real(settings.name, key, value);
+            else if (key == "samples") settings.samples = setting_integer(settings.name, key, value);
+            else if (key == "tolerance") settings.tolerance = setting_real(settings.name, key, value);
+            else if (key == "budget") settings.budget = setting_integer(settings.name, key, value);
+            else throw unknown_setting(settings.name, key, backprojection_keys());
+          },
+          [](TechniqueResources& resources, const BackprojectionSettings& settings) -> std::unique_ptr<Technique> {
+            return std::make_unique<BackprojectionTechnique>(resources.device(),
+                                                             resources.shared<BackprojectionPasses>(), settings);
+          }});
+}
+
+}  // namespace pn

@@ -1,0 +1,20 @@
+// Soft shadows by back-projection behind the technique seam (registry entry
+// `backprojection`, issue 28): backprojection.glsl's pnBackprojection per
+// screen pixel (passes/backprojection_shade.comp / .frag) over the map's
+// aligned min/max mip chain — the source's when it keeps one, else built.
+// Stages: mip chain (when built), shade. No stats.
+#pragma once
+
+#include <memory>
+
+#include "frame/technique.h"
+
+namespace pn {
+
+// The registry's entry; override keys: bias (light-depth units, >= 0; default 0.02), samples
+// (16, 64 or 256 light samples; default 64), tolerance (a node of depth range <= tolerance · its
+// distance to the receiver stands as one patch, finite >= 0; 0: every texel; default 0.05),
+// budget (nodes a pixel, 1..60000; default 4096).
+std::unique_ptr<TechniqueConfig> backprojection_config(const char* name);
+
+}  // namespace pn
