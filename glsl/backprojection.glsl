@@ -3,44 +3,46 @@
 // as a height field, not a blocker average.
 //
 // description:
-//   Issue 28 (Guennebaud, Barthe & Paulin 2006; Schwarz & Stamminger 2007's
-//   bitmask of light samples). The shadow map is a height field: texel (i, j)
-//   at linear light depth d is a column, solid from depth d away from the
-//   light (what the map cannot see behind a surface it takes as filled: this
-//   is the gap rule, below). The light is side × side stratified, jittered
-//   samples l in [-1/2, 1/2]² of its square (backprojection.h; a square of
-//   width w_L at the map's viewpoint, or the sun's square of spread S). The
-//   ray from the receiver (u, v, dP) to sample l crosses depth z at texel
+//   Issue 28 (Guennebaud, Barthe & Paulin 2006, their gap filling; Schwarz &
+//   Stamminger 2007's bitmask of light samples). The shadow map is a surface:
+//   texel (i, j) at linear light depth d is a flat patch, its square at depth
+//   d; two 4-neighbours whose depths differ by at most `gap` texel widths
+//   (pnLightTexelWorld at the nearer one) are one surface, joined by a wall
+//   on their shared edge spanning the two depths — the gap rule, closing the
+//   cracks between the patches of one sloped surface; a larger step is a
+//   silhouette, left open (the map cannot tell contact from a gap: below).
+//   The light is side × side stratified, jittered samples l in [-1/2, 1/2]²
+//   of its square (backprojection.h; a square of width w_L at the map's
+//   viewpoint, or the sun's square of spread S). The ray from the receiver
+//   (u, v, dP) to sample l crosses depth z at texel
 //       (u, v) + l · W(z),   W(z) = pnLightBlockerWindowTexels(light, dP, z)
 //   (light_model.glsl: W(dP) = 0, growing toward the light). It is blocked
-//   when it passes below some column: at a point of depth z inside texel
-//   (i, j)'s square with d < z - bias. W falls with z, so that holds iff the
-//   segment from (0, 0) to l · W(d + bias) meets the square
-//   Q = [i - u, i + 1 - u] × [j - v, j + 1 - v]: the texel's patch
-//   back-projected onto the light and everything beyond it, away from the
-//   receiver — the patch closes the gap to its neighbours by its column's
-//   wall, so neighbouring texels at different depths leave no crack between
-//   their back-projections (the micro-quads' job, done by the columns).
-//   Each blocked sample sets its bit; overlapping patches set a bit once:
+//   when it crosses a patch or a wall in front of the receiver (depth
+//   < dP - bias): patch (i, j) iff l · W(d) lies in its square, a wall iff
+//   the ray meets its edge's line at a window between W(deeper depth) and
+//   W(d), inside the edge. Each blocked sample sets its bit; overlapping
+//   patches set a bit once:
 //       visibility = 1 - (bits set) / side².
 //   The traversal walks the aligned min/max mip chain (minmax_mip.glsl) from
 //   its top, depth first, with an explicit stack:
 //     - a node with min + bias >= dP cannot occlude: skipped;
-//     - a node the segments cannot reach (its square outside ± W(min + bias) / 2
-//       around the receiver) is skipped;
-//     - a texel (level 0) is back-projected exactly against every sample;
-//     - a node whose depth range is within `tolerance` · (dP - min) stands as one
-//       patch at the middle of its range; 0: every node resolved to its texels;
+//     - a node the rays cannot reach (its square outside ± W(min) / 2 around
+//       the receiver) is skipped;
+//     - a texel (level 0) is back-projected exactly: its patch and its walls to
+//       its deeper neighbours of the same surface (four fetches);
+//     - a node whose depth range is below `tolerance` · (dP - min) stands as one
+//       patch at the middle of its range, without walls; 0: every node
+//       resolved to its texels;
 //     - past `budget` nodes, every node left on the stack stands as one patch
 //       likewise (an estimate of what remains, never dropped).
 //   With tolerance 0 and a budget that is not reached, the result is the
-//   fraction of the same samples whose segment to the receiver passes below the
-//   height field — exactly (runner/reference/backprojection_reference.cpp).
+//   fraction of the same samples whose ray to the receiver crosses the map's
+//   surface — exactly (runner/reference/backprojection_reference.cpp).
 //
 // use:
-//   PnBackprojectionSettings { int side; float tolerance; int budget; }
+//   PnBackprojectionSettings { int side; float tolerance; int budget; float gap; }
 //   PnBackprojectionSettings pnBackprojectionDefaults()   side 8 (64 samples), tolerance 0.05,
-//         budget PN_BACKPROJECTION_DEFAULT_BUDGET
+//         budget PN_BACKPROJECTION_DEFAULT_BUDGET, gap 3 texel widths
 //   float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, float bias, PnBackprojectionSettings s)
 //         receiver = (u, v, d) as pnLightProject gives; mip: the map's min/max chain
 //         (minmax_mip.glsl); returns the visibility in [0, 1] (1: no surface, lit)
@@ -49,8 +51,8 @@
 //         nodes visited, patches that stood for nodes)
 //   vec2 pnBackprojectionSample(int k, int side)   light sample k, in [-1/2, 1/2]²
 //
-// cost: per node visited one fetch; per texel or patch back-projected a
-//   slab test per sample (side² of them). Bounded by `budget` nodes and a
+// cost: per node visited one fetch, per texel four more (its neighbours); per
+//   patch a point test per sample (side² of them), per wall a line test. Bounded by `budget` nodes and a
 //   stack of 48; what bounds it in practice is the number of occluding
 //   texels whose segments reach: the penumbra's area in texels.
 
@@ -67,6 +69,7 @@ struct PnBackprojectionSettings {
   int side;         // samples side × side (4, 8 or 16)
   float tolerance;  // a node of depth range <= tolerance · (dP - min) is one patch; 0: texels only
   int budget;       // nodes visited before the rest stand as patches
+  float gap;        // neighbours whose depths differ by <= gap texel widths are one surface (a wall joins them)
 };
 
 struct PnBackprojection {
@@ -78,7 +81,7 @@ struct PnBackprojection {
 
 PnBackprojectionSettings pnBackprojectionDefaults() {
   return PnBackprojectionSettings(PN_BACKPROJECTION_DEFAULT_SIDE, PN_BACKPROJECTION_DEFAULT_TOLERANCE,
-                                  PN_BACKPROJECTION_DEFAULT_BUDGET);
+                                  PN_BACKPROJECTION_DEFAULT_BUDGET, PN_BACKPROJECTION_DEFAULT_GAP);
 }
 
 vec2 pnBackprojectionSample(int k, int side) {
@@ -90,28 +93,50 @@ vec2 pnBackprojectionSample(int k, int side) {
   return (stratum + jitter) * (1.0 / float(side)) - 0.5;
 }
 
-// Whether the segment from (0, 0) to `e` meets the box [lo, hi] (closed).
-bool pnBackprojectionSegmentHitsBox(vec2 e, vec2 lo, vec2 hi) {
-  float enter = 0.0, leave = 1.0;
-  for (int a = 0; a < 2; ++a) {
-    if (e[a] == 0.0) {
-      if (lo[a] > 0.0 || hi[a] < 0.0) return false;
-    } else {
-      float t0 = lo[a] / e[a], t1 = hi[a] / e[a];
-      enter = max(enter, min(t0, t1));
-      leave = min(leave, max(t0, t1));
-    }
+// Sets the bit of every sample whose ray crosses the patch [lo, hi] (texels, relative to the
+// receiver) at the depth whose window is `window`: the point l · window inside the box (closed).
+void pnBackprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  int count = side * side;
+  for (int k = 0; k < count; ++k) {
+    vec2 p = pnBackprojectionSample(k, side) * window;
+    if (all(greaterThanEqual(p, lo)) && all(lessThanEqual(p, hi))) mask[k >> 5] |= 1u << uint(k & 31);
   }
-  return enter <= leave;
 }
 
-// Sets the bit of every sample whose segment l · window meets the box [lo, hi] (texels, relative
-// to the receiver).
-void pnBackprojectBox(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+// Sets the bit of every sample whose ray crosses the wall on the line where axis `a` equals `edge`,
+// between `from` and `to` on the other axis, at windows in [near, far] (the wall's depths).
+void pnBackprojectWall(int a, float edge, float from, float to, float near, float far, int side,
+                       inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   int count = side * side;
-  for (int k = 0; k < count; ++k)
-    if (pnBackprojectionSegmentHitsBox(pnBackprojectionSample(k, side) * window, lo, hi))
-      mask[k >> 5] |= 1u << uint(k & 31);
+  int b = 1 - a;
+  for (int k = 0; k < count; ++k) {
+    vec2 l = pnBackprojectionSample(k, side);
+    if (l[a] == 0.0) continue;  // parallel to the wall
+    float w = edge / l[a];
+    float across = l[b] * w;
+    if (w >= near && w <= far && across >= from && across <= to) mask[k >> 5] |= 1u << uint(k & 31);
+  }
+}
+
+// Texel `q` of depth d (lo, hi: its square relative to the receiver): its patch, and its walls down
+// to each deeper neighbour the surface continues into (depth step <= gap texel widths).
+void pnBackprojectTexel(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, ivec2 q, float d,
+                        vec2 lo, vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  float dP = receiver.z;
+  float window = pnLightBlockerWindowTexels(light, dP, d);
+  pnBackprojectPatch(lo, hi, window, side, mask);
+  float step = gap * pnLightTexelWorld(light, d);
+  for (int n = 0; n < 4; ++n) {
+    ivec2 dir = n == 0 ? ivec2(1, 0) : n == 1 ? ivec2(-1, 0) : n == 2 ? ivec2(0, 1) : ivec2(0, -1);
+    float neighbour = pnMipFetch(mip, 0, q + dir).x;  // +Inf outside the map
+    if (!(neighbour > d) || !(neighbour - d <= step)) continue;
+    float deepest = min(neighbour, dP - bias);  // only what lies in front of the receiver blocks
+    if (!(deepest > d)) continue;
+    int a = dir.x != 0 ? 0 : 1;
+    float edge = (dir[a] > 0 ? hi : lo)[a];
+    pnBackprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, dP, deepest), window, side,
+                      mask);
+  }
 }
 
 PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, float bias,
@@ -134,20 +159,25 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
     vec2 range = pnMipFetch(mip, node.x, node.yz);
     ++visited;
     if (!(range.x + bias < dP)) continue;  // nothing in it can occlude (or no texel: +Inf)
-    float reach = pnLightBlockerWindowTexels(light, dP, range.x + bias);
+    // Every patch and wall of the node lies at a depth >= its min: at most W(min) from the receiver.
+    float reach = pnLightBlockerWindowTexels(light, dP, range.x);
     int size = 1 << node.x;
     vec2 lo = vec2(node.yz * size) - receiver.xy, hi = lo + float(size);
     if (any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach)))) continue;
-    bool resolve = node.x > 0 && visited < budget && range.y - range.x > s.tolerance * (dP - range.x) &&
+    if (node.x == 0) {
+      pnBackprojectTexel(mip, light, receiver, bias, s.gap, node.yz, range.x, lo, hi, side, mask);
+      continue;
+    }
+    bool resolve = visited < budget && range.y - range.x >= s.tolerance * (dP - range.x) &&
                    top + 4 <= PN_BACKPROJECTION_STACK;
     if (resolve) {
       for (int c = 3; c >= 0; --c) stack[top++] = ivec3(node.x - 1, node.yz * 2 + ivec2(c & 1, c >> 1));
       continue;
     }
-    // A texel, or a node standing as one patch at the middle of its range.
-    float depth = node.x == 0 ? range.x : 0.5 * (range.x + min(range.y, dP - bias));
-    if (node.x > 0) result.patches += 1.0;
-    pnBackprojectBox(lo, hi, pnLightBlockerWindowTexels(light, dP, depth + bias), side, mask);
+    // A node standing as one patch at the middle of its range (in front of the receiver).
+    result.patches += 1.0;
+    float depth = 0.5 * (range.x + min(range.y, dP - bias));
+    pnBackprojectPatch(lo, hi, pnLightBlockerWindowTexels(light, dP, depth), side, mask);
   }
   int blocked = 0;
   for (int w = 0; w < PN_BACKPROJECTION_MASK_WORDS; ++w) blocked += bitCount(mask[w]);

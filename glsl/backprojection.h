@@ -27,6 +27,10 @@
 // stands as one patch: the default.
 #define PN_BACKPROJECTION_DEFAULT_TOLERANCE 0.05
 
+// Neighbouring texels whose depths differ by at most this many texel widths (at the nearer one's
+// depth) are one surface, joined by a wall; a larger step is a silhouette, left open.
+#define PN_BACKPROJECTION_DEFAULT_GAP 3.0
+
 // Default node budget (nodes of the mip chain visited a receiver) and the largest one.
 #define PN_BACKPROJECTION_DEFAULT_BUDGET 4096
 #define PN_BACKPROJECTION_MAX_BUDGET 60000  // under llvmpipe's 65535 iterations a loop

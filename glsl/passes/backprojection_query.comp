@@ -1,6 +1,6 @@
 // backprojection_query.comp — backprojection.glsl over a batch of receivers.
 // Query k: texel k of query image A = (u, v, light depth, bias), of B = (side,
-// tolerance, budget, 0). Result k: (visibility, blocked samples, nodes
+// tolerance, budget, gap). Result k: (visibility, blocked samples, nodes
 // visited, patches). Bindings and the light block: backprojection_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -18,7 +18,7 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(pnResult)))) return;
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
-  PnBackprojectionSettings s = PnBackprojectionSettings(int(b.x), b.y, int(b.z));
+  PnBackprojectionSettings s = PnBackprojectionSettings(int(b.x), b.y, int(b.z), b.w);
   PnBackprojection r = pnBackprojectionWork(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, a.w, s);
   imageStore(pnResult, p, vec4(r.visibility, r.blocked, r.nodes, r.patches));
 }

@@ -10,7 +10,7 @@
 #define PN_BACKPROJECTION_QUERY_RESULT_IMAGE 0  // image2D, rgba32f: (visibility, blocked, nodes, patches)
 #define PN_BACKPROJECTION_QUERY_MIP_BINDING 1   // sampler2D: the aligned min/max mip chain
 #define PN_BACKPROJECTION_QUERY_A_BINDING 2     // sampler2D, RGBA32F: receiver (u, v, d, bias)
-#define PN_BACKPROJECTION_QUERY_B_BINDING 3     // sampler2D, RGBA32F: (side, tolerance, budget, 0)
+#define PN_BACKPROJECTION_QUERY_B_BINDING 3     // sampler2D, RGBA32F: (side, tolerance, budget, gap)
 #define PN_BACKPROJECTION_QUERY_PARAMS_BINDING 4
 
 PN_UNIFORM_BLOCK(PnBackprojectionQueryParams, PN_BACKPROJECTION_QUERY_PARAMS_BINDING)

@@ -19,7 +19,8 @@ layout(binding = PN_BACKPROJECTION_SHADE_GBUFFER_BINDING) uniform sampler2D pnGB
 float pnShade(ivec2 p) {
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return 1.0;
-  PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.side, pnParams.tolerance, pnParams.budget);
+  PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.side, pnParams.tolerance, pnParams.budget,
+                                                        pnParams.gap);
   return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, pnParams.bias, s);
 }
 

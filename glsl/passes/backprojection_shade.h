@@ -20,6 +20,7 @@ PN_UNIFORM_BLOCK(PnBackprojectionShadeParams, PN_BACKPROJECTION_SHADE_PARAMS_BIN
   int side;         // side × side light samples
   float tolerance;  // a node of depth range <= tolerance · (dP - min) stands as one patch
   int budget;       // nodes a pixel
+  float gap;        // texel widths: the depth step neighbours of one surface may take
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_BACKPROJECTION_SHADE_H

@@ -1,10 +1,11 @@
 // Cases of the backprojection check (issue 28): backprojection.glsl's one call
 // (pnBackprojectionWork, as passes/backprojection_query.comp runs it) against
-// the CPU's ray march through the height field (reference/backprojection_reference.h):
-// - every texel resolved (tolerance 0, the budget never reached): each scene's
-//   own map and G-buffer receivers, an area light, 8 × 8 samples — exactly the
-//   reference's visibility, the samples within rounding of a verdict left open
-//   (counted); 4 × 4 and 16 × 16 samples on the boxes;
+// the CPU's rays through the map's surface (reference/backprojection_reference.h):
+// - every texel resolved (tolerance 0, the budget never reached), the gap rule's
+//   default: each scene's own map and G-buffer receivers, an area light, 8 × 8
+//   samples, and the light 4 times as wide — exactly the reference's
+//   visibility, the samples within rounding of a verdict left open (counted);
+//   4 × 4 and 16 × 16 samples on the boxes;
 // - the sun (an orthographic map of spread S) over a random height field:
 //   likewise exact;
 // - a point light (width 0): the hard shadow of the receiver's own texel;
@@ -60,7 +61,7 @@ CaseResult exact_case(const std::string& name, const Image& map, const LightMode
   int ambiguous = 0, umbra = 0, penumbra = 0;
   for (size_t k = 0; k < queries.size(); ++k) {
     const BackprojectionQuery& q = queries[k];
-    const BackprojectionBounds b = backprojection_reference(map, light, q.u, q.v, q.depth, q.bias, q.side);
+    const BackprojectionBounds b = backprojection_reference(map, light, q.u, q.v, q.depth, q.bias, q.side, q.gap);
     ambiguous += b.ambiguous;
     umbra += b.visibility_hi == 0.0 ? 1 : 0;
     penumbra += b.visibility_hi > 0.0 && b.visibility_lo < 1.0 ? 1 : 0;
@@ -100,7 +101,7 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
                                std::to_string(side) + "x" + std::to_string(side) + " samples";
       const Receivers exact = gbuffer_receivers(gbuffer, side, 0.0f, PN_BACKPROJECTION_MAX_BUDGET);
       const std::vector<BackprojectionResult> got = pass.run(mip, light, exact.queries);
-      results.push_back(exact_case(what + ", every texel resolved, vs the ray march through the height field", map,
+      results.push_back(exact_case(what + ", every texel resolved, vs the rays through the map's surface on the CPU", map,
                                    light, exact.queries, got));
       if (&light != &wide.light) continue;
 
@@ -186,7 +187,7 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
       queries.push_back({u, v, depth, kBias, 8, 0.0f, PN_BACKPROJECTION_MAX_BUDGET});
     }
     results.push_back(exact_case("the sun (orthographic, spread 0.05) over a random height field, 8x8 samples, every "
-                                 "texel resolved, vs the ray march",
+                                 "texel resolved, vs the rays on the CPU",
                                  map, sun, queries, pass.run(mip, sun, queries)));
   }
   return results;

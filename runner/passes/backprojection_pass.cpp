@@ -30,7 +30,7 @@ std::vector<BackprojectionResult> BackprojectionQueryPass::run(const MinMaxMipCh
   std::vector<Query> a, b;
   for (const BackprojectionQuery& q : queries) {
     a.push_back({q.u, q.v, q.depth, q.bias});
-    b.push_back({static_cast<float>(q.side), q.tolerance, static_cast<float>(q.budget), 0.0f});
+    b.push_back({static_cast<float>(q.side), q.tolerance, static_cast<float>(q.budget), q.gap});
   }
   const QueryResults r = query_.run({a, b}, {{PN_BACKPROJECTION_QUERY_MIP_BINDING, *mip.texture}}, query_block(block));
   std::vector<BackprojectionResult> out;

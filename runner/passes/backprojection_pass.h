@@ -17,6 +17,7 @@ struct BackprojectionQuery {
   int side = 8;                             // side × side light samples
   float tolerance = 0.0f;                   // 0: every texel resolved
   int budget = 4096;                        // nodes
+  float gap = 3.0f;                         // texel widths: neighbours of one surface (a wall joins them)
 };
 
 struct BackprojectionResult {

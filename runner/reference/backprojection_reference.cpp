@@ -67,7 +67,7 @@ void axis_interval(const RayAxis& ray, double u0, double a, double b, double& lo
 }  // namespace
 
 BackprojectionBounds backprojection_reference(const Image& map, const LightModel& light, double u, double v,
-                                              double depth, double bias, int side, double margin,
+                                              double depth, double bias, int side, double gap, double margin,
                                               double depth_margin) {
   BackprojectionBounds out;
   if (!(depth > 0.0) || !std::isfinite(depth)) return out;
@@ -78,13 +78,13 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
   const double texel = light.texel_world_at(depth);
   const double px = (u - centre) * texel, py = (v - centre) * texel;
   const double dz = depth_margin * depth;
-  // No ray is blocked above the map's nearest texel (plus the bias): the texels a ray can pass
-  // below lie between the receiver and the ray's point at that depth (only to skip the others).
+  // Nothing lies nearer the light than the map's nearest texel: the texels a ray can cross lie
+  // between the receiver and the ray's point at that depth (only to skip the others).
   double nearest = INFINITY;
   for (const float d : map.texels)
     if (std::isfinite(d)) nearest = std::min(nearest, static_cast<double>(d));
   if (!(nearest + bias - dz < depth)) return out;
-  const double floor_depth = std::max(nearest + bias - dz, light.orthographic() ? -INFINITY : 1e-9 * depth);
+  const double floor_depth = std::max(nearest - dz, light.orthographic() ? -INFINITY : 1e-9 * depth);
   int sure = 0, possible = 0;
   for (int k = 0; k < count; ++k) {
     const BackprojectionSamplePoint l = backprojection_sample(k, side);
@@ -93,6 +93,16 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
     const double ty = light.orthographic() ? l.y * light.spread : l.y * light.width;
     const RayAxis rx{&light, px, tx, depth, centre}, ry{&light, py, ty, depth, centre};
     bool blocked_sure = false, blocked_possible = false;
+    // Every texel's patch (its square at its depth) and its walls to the deeper neighbours of the
+    // same surface: grown by the margins (possible) and shrunk by them (sure).
+    const auto depth_of = [&](int i, int j) {
+      return i >= 0 && j >= 0 && i < n && j < n && std::isfinite(map.at(i, j)) ? static_cast<double>(map.at(i, j))
+                                                                                : INFINITY;
+    };
+    const auto decide = [&](bool possible_hit, bool sure_hit) {
+      blocked_possible = blocked_possible || possible_hit;
+      blocked_sure = blocked_sure || sure_hit;
+    };
     const auto span = [&](const RayAxis& ray, double u0, int& first, int& last) {
       const double far = ray.texel_at(floor_depth);
       first = std::max(0, static_cast<int>(std::floor(std::min(u0, far) - 2 * margin)) - 1);
@@ -103,17 +113,35 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
     span(ry, v, j0, j1);
     for (int j = j0; j <= j1 && !blocked_sure; ++j)
       for (int i = i0; i <= i1 && !blocked_sure; ++i) {
-        const double d = map.at(i, j);
-        if (!std::isfinite(d)) continue;
-        // The deepest point of the ray inside the column's square, grown (possible) and shrunk (sure).
-        for (const double m : {margin, -margin}) {
-          double xlo, xhi, ylo, yhi;
-          axis_interval(rx, u, i - m, i + 1 + m, xlo, xhi);
-          axis_interval(ry, v, j - m, j + 1 + m, ylo, yhi);
-          const double lo = std::max(xlo, ylo), hi = std::min(xhi, yhi);
-          if (lo > hi) continue;
-          if (m > 0 && hi > d + bias - dz) blocked_possible = true;
-          if (m < 0 && hi > d + bias + dz) blocked_sure = true;
+        const double d = depth_of(i, j);
+        if (!(d + bias - dz < depth)) continue;
+        // The patch: where the ray is at depth d.
+        const double x = rx.texel_at(d), y = ry.texel_at(d);
+        const auto patch = [&](double m, double t) {
+          return d + bias + t < depth && x >= i - m && x <= i + 1 + m && y >= j - m && y <= j + 1 + m;
+        };
+        decide(patch(margin, -dz), patch(-margin, dz));
+        // The walls: on the square's edge toward each deeper neighbour within gap texel widths,
+        // from d to that neighbour's depth (or the receiver's, less the bias).
+        const double step = gap * light.texel_world_at(d);
+        for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+          const double neighbour = depth_of(i + di, j + dj);
+          if (!(neighbour > d) || !(neighbour - d <= step)) continue;
+          const bool across_x = di != 0;
+          const RayAxis& along = across_x ? rx : ry;  // the axis the wall stands across
+          const RayAxis& other = across_x ? ry : rx;
+          const double start = across_x ? u : v;
+          const double edge = across_x ? (di > 0 ? i + 1 : i) : (dj > 0 ? j + 1 : j);
+          const int cell = across_x ? j : i;
+          // The ray meets the wall's line only when it moves toward it from the receiver.
+          if (along.target == 0.0 || (along.target > 0.0) != (edge > start)) continue;
+          const double z = along.depth_at(edge);
+          const double other_at = other.texel_at(z);
+          const auto wall = [&](double m, double t) {
+            return z >= d - t && z <= std::min(neighbour, depth - bias) + t && other_at >= cell - m &&
+                   other_at <= cell + 1 + m;
+          };
+          decide(wall(margin, dz), wall(-margin, -dz));
         }
       }
     sure += blocked_sure ? 1 : 0;

@@ -1,14 +1,15 @@
 // CPU reference for glsl/backprojection.glsl, written from its definition in
-// double: the shadow map is a height field (texel (i, j) of depth d a column,
-// solid from d away from the light); the light is backprojection.h's side × side
+// double: the shadow map is a surface — texel (i, j) of depth d a flat patch,
+// its square at depth d, joined to each 4-neighbour whose depth is within `gap`
+// texel widths by a wall on their shared edge spanning the two depths; a larger
+// step is a silhouette, left open. The light is backprojection.h's side × side
 // samples l of its square. For each sample, the ray from the receiver to the
 // light point (an area light: the point l · w_L on the light's square at depth 0;
 // the sun: the direction l · S per unit of depth toward the light) is followed in
-// the light's 3-D frame, and it is blocked when, inside some texel's column, it
-// is deeper than that texel's d + bias — brute force over every texel of the map
-// and every sample, each column's depth interval solved from the ray's
-// projection (not from the shader's windows or its traversal). visibility =
-// 1 - blocked / side².
+// the light's 3-D frame, and it is blocked when it crosses a patch or a wall in
+// front of the receiver (depth < dP - bias) — brute force over the texels and
+// every sample, each crossing solved from the ray's projection (not from the
+// shader's windows or its traversal). visibility = 1 - blocked / side².
 //
 // The GPU decides in float: a sample whose verdict would change if every texel
 // grew or shrank by `margin` texels or every depth moved by `depth_margin` · dP
@@ -37,7 +38,7 @@ struct BackprojectionBounds {
 // (non-finite: no occluder), N = light.map_size. A receiver at a non-positive or non-finite
 // depth is lit.
 BackprojectionBounds backprojection_reference(const Image& map, const LightModel& light, double u, double v,
-                                              double depth, double bias, int side, double margin = 1e-3,
-                                              double depth_margin = 1e-5);
+                                              double depth, double bias, int side, double gap,
+                                              double margin = 1e-3, double depth_margin = 1e-5);
 
 }  // namespace pn

@@ -61,7 +61,8 @@ const std::vector<TechniqueEntry>& technique_registry() {
       {"savsm-raw", "savsm without light-bleeding reduction (bleeding=0)",
        []() -> Made { return savsm_config("savsm-raw", {{"bleeding", "0"}}); }},
       {"backprojection", "back-projection over the min/max mip chain (issue 28): the fraction of 64 light samples "
-                         "the height field leaves visible, a bitmask, tight nodes as one patch (backprojection.glsl)",
+                         "the map's surface leaves visible (patches, walls within 3 texel widths), a bitmask "
+                         "(backprojection.glsl)",
        []() -> Made { return backprojection_config("backprojection"); }},
       {kStagedPoissonTechnique, "Poisson PCSS through the staged passes (a map copy, a pass a step): the same output, "
                                 "the bench's baseline before issue 24",
