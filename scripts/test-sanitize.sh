@@ -28,11 +28,11 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:exitcode=23"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitize/lsan.supp:print_suppressions=0"
 
 # The module checks on a GL context that take a minute or more each under ASan (their CPU
-# references, instrumented) are left out: ~4 minutes on 2 cores; so is check_vulkan.py, which runs
-# every check on GL, vulkan and hlsl (those among them; over 8 minutes): the vulkan and hlsl
-# broken copies run the same executor. PENUMBRA_SANITIZE_ALL=1 runs them too. Every other CLI
+# references, instrumented) are left out: ~4 minutes on 2 cores; so are the runs of every check on
+# the library (cli_check_all_gl on GL, check_vulkan.py on vulkan and hlsl: over 8 minutes): the
+# broken copies run the same checks on every executor. PENUMBRA_SANITIZE_ALL=1 runs them too. Every other CLI
 # test runs, GL or not.
-slow='^cli_check_(depth_pyramid|traversal|pcss_regions)_|^cli_check_es310$|^cli_check_vulkan_hlsl_vs_gl$'
+slow='^cli_check_(depth_pyramid|traversal|pcss_regions)_|^cli_check_es310$|^cli_check_all_gl$|^cli_check_vulkan_hlsl_vs_gl$'
 [ "${PENUMBRA_SANITIZE_ALL:-0}" = 1 ] && slow='^$'  # no test has an empty name
 cd "$build"
 status=0

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "backprojection.h"
 #include "passes/minmax_mip_pass.h"
 #include "passes/query_pass.h"
 #include "scene/light_model.h"
@@ -14,10 +15,10 @@ namespace pn {
 struct BackprojectionQuery {
   float u = 0.0f, v = 0.0f, depth = 0.0f;  // the receiver (texels, linear light depth)
   float bias = 0.0f;
-  int side = 8;                             // side × side light samples
-  float tolerance = 0.0f;                   // 0: every texel resolved
-  int budget = 4096;                        // nodes
-  float gap = 3.0f;                         // texel widths: neighbours of one surface (a wall joins them)
+  int side = PN_BACKPROJECTION_DEFAULT_SIDE;                  // side × side light samples
+  float tolerance = 0.0f;                                     // 0: every texel resolved
+  int budget = PN_BACKPROJECTION_DEFAULT_BUDGET;              // nodes
+  float gap = static_cast<float>(PN_BACKPROJECTION_DEFAULT_GAP);  // texel widths: neighbours of one surface
 };
 
 struct BackprojectionResult {

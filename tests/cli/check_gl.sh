@@ -3,8 +3,9 @@
 # `penumbra check MODULE --backend BACKEND` passes on the library, and fails
 # with a where / expected / observed line on a copy of GLSL_DIR in which FILE
 # has its first FROM replaced by TO (a deliberate mistake).
-# BACKEND vulkan or hlsl: the same with `--api vulkan | hlsl` (the Vulkan executor), the broken copy
-# only (the library's run is check_vulkan.py's).
+# BACKEND vulkan or hlsl: the same with `--api vulkan | hlsl` (the Vulkan executor). On vulkan, hlsl
+# and egl-surfaceless the broken copy only: the library's run of every check is cli_check_all_gl's
+# (check_all_gl.sh, EGL surfaceless) and check_vulkan.py's.
 # Exit 77 (skipped) when the backend gives no context.
 set -u
 penumbra=$1 backend=$2 module=$3 glsl=$4 scratch=$5 file=$6
@@ -20,11 +21,10 @@ case $? in
   3) echo "SKIPPED: $(cat "$scratch.err")"; exit 77 ;;
   *) cat "$scratch.err"; exit 1 ;;
 esac
-# On the library's modules (on vulkan and hlsl cli_check_vulkan_hlsl_vs_gl runs every check that runs
-# there, beside GL, so the broken copy alone runs here).
+# On the library's modules (but where cli_check_all_gl and cli_check_vulkan_hlsl_vs_gl run them).
 # shellcheck disable=SC2086
 case $backend in
-  vulkan|hlsl) ;;
+  vulkan|hlsl|egl-surfaceless) ;;
   *) "$penumbra" check "$module" $where || { echo "check failed on the library's modules"; exit 1; } ;;
 esac
 rm -rf "$scratch" && cp -r "$glsl" "$scratch" || exit 1

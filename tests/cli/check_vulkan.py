@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""check_vulkan.py PENUMBRA SCRATCH
+"""check_vulkan.py PENUMBRA SCRATCH GL_CHECK
 
 The Vulkan executor against GL 4.5, side by side (issue 27):
 - `penumbra info --api vulkan` names a device and has the validation layer on;
-- `penumbra check -v` on gl450, vulkan and hlsl: every registered check passes on all three, with
-  the same cases (the same names) on each;
+- `penumbra check -v` on vulkan and hlsl against GL_CHECK, the same on GL 4.5 (cli_check_all_gl,
+  check_all_gl.sh): every registered check passes on all three, with the same cases (the same
+  names) on each;
 - an HLSL copy given with --hlsl-root is what runs: exact_pcss.glsl's export (`bundle --target
   hlsl`, the file an engine takes) passes the exports check as written and fails with one operator
   changed, with a where / expected / observed line.
@@ -39,7 +40,7 @@ def table(output):
 
 
 def main():
-    penumbra, scratch = sys.argv[1], sys.argv[2]
+    penumbra, scratch, gl_check = sys.argv[1], sys.argv[2], sys.argv[3]
     info = run(penumbra, 'info', '--api', 'vulkan')
     if info.returncode == 3:
         print('SKIPPED: ' + info.stderr.strip())
@@ -52,8 +53,12 @@ def main():
         print('the validation layer is not on: install vulkan-validationlayers (scripts/install-deps.sh)')
         return 1
 
-    runs = {}
-    for api in ('gl450', 'vulkan', 'hlsl'):
+    if not os.path.exists(gl_check):
+        print(f'SKIPPED: no GL run of the checks ({gl_check}: cli_check_all_gl did not run or had no context)')
+        return 77
+    with open(gl_check) as f:
+        runs = {'gl450': table(f.read())}
+    for api in ('vulkan', 'hlsl'):
         r = run(penumbra, 'check', '-v', '--api', api)
         if r.returncode != 0:
             print(r.stdout + r.stderr)
