@@ -71,11 +71,14 @@ long name_limit(const fs::path& directory) {
 
 // A temporary file of its own in `directory` (issue 26 B7, B10): a short name no other
 // writer uses (two processes writing one output each rename their own), made with O_EXCL,
-// mode 0666 less the umask like any output; the name never lengthens the target's. fd -1,
-// errno set, when none can be made.
+// mode 0666 less the umask like any output; the name never lengthens the target's. Its path is
+// in the signal handler's table before the file exists, so no signal between the two leaves it
+// behind (another thread may take the signal: blocking it here would not do). fd -1, errno set,
+// when none can be made. The caller releases `slot` once the file is renamed or removed.
 struct Temporary {
   fs::path path;
   int fd = -1;
+  int slot = -1;
 };
 Temporary open_temporary(const fs::path& directory) {
   std::random_device entropy;
@@ -83,8 +86,13 @@ Temporary open_temporary(const fs::path& directory) {
     char name[32];
     std::snprintf(name, sizeof name, ".pn-%08x%08x.tmp", entropy(), entropy());
     const fs::path candidate = directory / name;
+    const int slot = register_temporary(candidate);
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0 || errno != EEXIST) return {candidate, fd};
+    if (fd >= 0) return {candidate, fd, slot};
+    const int reason = errno;
+    release_temporary(slot);
+    errno = reason;
+    if (reason != EEXIST) return {candidate, fd, -1};
   }
   return {};  // errno: EEXIST, no free name
 }
@@ -103,6 +111,7 @@ std::string cannot_write_reason(const fs::path& directory) {
   if (probe.fd < 0) return std::strerror(errno);
   ::close(probe.fd);
   ::unlink(probe.path.c_str());
+  release_temporary(probe.slot);
   return "";
 }
 
@@ -207,11 +216,10 @@ void write_file_atomically(const fs::path& requested, const std::string& text) {
   if (fs::exists(status) && !fs::is_regular_file(status)) return write_in_place(path, text);
 
   const Temporary temporary = create_temporary(path, requested);
-  const int slot = register_temporary(temporary.path);
   struct Release {
     int slot;
     ~Release() { release_temporary(slot); }
-  } release{slot};
+  } release{temporary.slot};
   for (size_t done = 0; done < text.size();) {
     const ssize_t n = ::write(temporary.fd, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
