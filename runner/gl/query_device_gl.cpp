@@ -174,6 +174,12 @@ void bind_resources(PassBindings& bind, const PassResources& resources) {
     bind.storage_buffer(b.binding, made_here<GlDeviceBuffer>(b.buffer, "buffer").object());
 }
 
+// Error unless `resources` are what a raster pass binds: textures and blocks, no storage.
+void require_raster_resources(const PassResources& resources, const char* pass) {
+  if (!resources.images.empty() || !resources.buffers.empty())
+    throw Error(std::string("a ") + pass + " pass binds textures and blocks only: expected no storage images or buffers");
+}
+
 // StageClock (gl/gpu_timer.h) behind the device's interface.
 class GlStageTimes final : public StageTimes {
  public:
@@ -229,8 +235,7 @@ std::unique_ptr<DeviceTexture> Context::draw_triangles(const QueryProgram& progr
                                                        const std::vector<glm::vec3>& vertices, int size,
                                                        const float clear[4], const PassResources& resources) const {
   const GlRasterProgram& raster = gl_raster_program(program);
-  if (!resources.images.empty() || !resources.buffers.empty())
-    throw Error("a raster pass binds textures and a block only: expected no storage images or buffers");
+  require_raster_resources(resources, "raster");
   const TriangleBuffer triangles(*this, vertices);
   RasterTarget target(*this, size, texel_channels(raster.target()));
   target.clear(clear);
@@ -251,8 +256,7 @@ std::unique_ptr<QueryProgram> Context::compile_full_screen(const SourceTree& tre
 std::unique_ptr<DeviceTexture> Context::draw_full_screen(const QueryProgram& program, int size,
                                                          const PassResources& resources) const {
   const GlRasterProgram& raster = gl_raster_program(program);
-  if (!resources.images.empty() || !resources.buffers.empty())
-    throw Error("a full-screen pass binds textures and blocks only: expected no storage images or buffers");
+  require_raster_resources(resources, "full-screen");
   RasterTarget target(*this, size, texel_channels(raster.target()));
   {
     PassBindings bind(*this);
@@ -292,8 +296,7 @@ void Context::draw(const QueryProgram& program, const DeviceVertices& vertices, 
                    const DeviceRasterTarget& target, const std::vector<TexelRect>& rects,
                    const PassResources& resources) const {
   const GlRasterProgram& raster = gl_raster_program(program);
-  if (!resources.images.empty() || !resources.buffers.empty())
-    throw Error("a raster pass binds textures and blocks only: expected no storage images or buffers");
+  require_raster_resources(resources, "raster");
   PassBindings bind(*this);
   bind_resources(bind, resources);
   made_here<GlDeviceRasterTarget>(target, "raster target")
