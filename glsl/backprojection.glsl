@@ -40,9 +40,10 @@
 //   surface — exactly (runner/reference/backprojection_reference.cpp).
 //
 // use:
-//   PnBackprojectionSettings { int side; float tolerance; int budget; float gap; }
-//   PnBackprojectionSettings pnBackprojectionDefaults()   side 8 (64 samples), tolerance 0.05,
-//         budget PN_BACKPROJECTION_DEFAULT_BUDGET, gap 3 texel widths
+//   PnBackprojectionSettings { int side; float tolerance; int budget; float gap; float thickness; }
+//   PnBackprojectionSettings pnBackprojectionDefaults()   side 16 (256 samples), tolerance 0.05,
+//         budget PN_BACKPROJECTION_DEFAULT_BUDGET, gap 3 texel widths,
+//         thickness PN_BACKPROJECTION_DEFAULT_THICKNESS
 //   float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, float bias, PnBackprojectionSettings s)
 //         receiver = (u, v, d) as pnLightProject gives; mip: the map's min/max chain
 //         (minmax_mip.glsl); returns the visibility in [0, 1] (1: no surface, lit)
@@ -70,6 +71,7 @@ struct PnBackprojectionSettings {
   float tolerance;  // a node of depth range <= tolerance · (dP - min) is one patch; 0: texels only
   int budget;       // nodes visited before the rest stand as patches
   float gap;        // neighbours whose depths differ by <= gap texel widths are one surface (a wall joins them)
+  float thickness;  // a silhouette's wall reaches thickness · (dP - d) below its top (0: open)
 };
 
 struct PnBackprojection {
@@ -81,7 +83,14 @@ struct PnBackprojection {
 
 PnBackprojectionSettings pnBackprojectionDefaults() {
   return PnBackprojectionSettings(PN_BACKPROJECTION_DEFAULT_SIDE, PN_BACKPROJECTION_DEFAULT_TOLERANCE,
-                                  PN_BACKPROJECTION_DEFAULT_BUDGET, PN_BACKPROJECTION_DEFAULT_GAP);
+                                  PN_BACKPROJECTION_DEFAULT_BUDGET, PN_BACKPROJECTION_DEFAULT_GAP,
+                                  PN_BACKPROJECTION_DEFAULT_THICKNESS);
+}
+
+// (i · side + j) -> (j · side + i): sample k's fine row, or the sample of fine row k.
+int pnBackprojectionTranspose(int k, int side) {
+  int shift = findMSB(side);  // side is a power of two
+  return ((k & (side - 1)) << shift) + (k >> shift);
 }
 
 vec2 pnBackprojectionSample(int k, int side) {
@@ -89,54 +98,182 @@ vec2 pnBackprojectionSample(int k, int side) {
   int bits = PN_BACKPROJECTION_JITTER_BITS;
   float unit = 1.0 / float(1 << bits);
   vec2 jitter = vec2(float(h >> uint(32 - bits)), float(h & ((1u << uint(bits)) - 1u))) * unit;
-  vec2 stratum = vec2(float(k % side), float(k / side));
-  return (stratum + jitter) * (1.0 / float(side)) - 0.5;
+  vec2 fine = vec2(float(k), float(pnBackprojectionTranspose(k, side)));  // its fine column and row
+  return (fine + jitter) * (1.0 / float(side * side)) - 0.5;
+}
+
+// Bits lo..hi of a word (0 <= lo <= hi <= 31).
+uint pnBackprojectionBits(int lo, int hi) {
+  uint upper = hi >= 31 ? 0xffffffffu : (1u << uint(hi + 1)) - 1u;
+  return upper & ~((1u << uint(lo)) - 1u);
+}
+
+// Word w of the mask of the samples whose fine column lies in [first, last] (sample k: column k).
+uint pnBackprojectionColumns(int w, int first, int last, int side) {
+  int lo = max(first - 32 * w, 0), hi = min(min(last, side * side - 1) - 32 * w, 31);
+  return lo > hi ? 0u : pnBackprojectionBits(lo, hi);
+}
+
+// Word w of the mask of the samples whose fine row lies in [first, last]: fine row g holds sample
+// (g % side) · side + g / side, so the rows' samples are the transpose of a range — whole strata
+// rows (bit j of every side-bit group) between two partial ones.
+uint pnBackprojectionRows(int w, int first, int last, int side) {
+  first = max(first, 0);
+  last = min(last, side * side - 1);
+  if (first > last) return 0u;
+  int shift = findMSB(side), low = side - 1;  // side is a power of two
+  int row0 = first >> shift, column0 = first & low, row1 = last >> shift, column1 = last & low;
+  int base = w * (32 >> shift);  // the first stratum column in word w
+  uint repeat = side == 4 ? 0x11111111u : side == 8 ? 0x01010101u : 0x00010001u;  // bit 0 of each group
+  int from = clamp((column0 - base) << shift, 0, 32), to = clamp((column1 + 1 - base) << shift, 0, 32);
+  uint fromMask = from >= 32 ? 0u : 0xffffffffu << uint(from);
+  uint toMask = to >= 32 ? 0xffffffffu : (1u << uint(to)) - 1u;
+  uint rows;
+  if (row0 == row1) {
+    rows = (repeat << uint(row0)) & fromMask & toMask;
+  } else {
+    rows = ((repeat << uint(row0)) & fromMask) | ((repeat << uint(row1)) & toMask);
+    if (row1 - row0 >= 2) rows |= pnBackprojectionBits(row0 + 1, row1 - 1) * repeat;
+  }
+  return side * side < 32 ? rows & ((1u << uint(side * side)) - 1u) : rows;
+}
+
+// The fine cells (columns x, rows y) that [lo, hi] of the light's square [-1/2, 1/2]² touches,
+// clamped to [-1, side²].
+ivec4 pnBackprojectionCells(vec2 lo, vec2 hi, int side) {
+  float n = float(side * side);
+  vec2 a = floor(clamp((lo + 0.5) * n, -1.0, n)), b = floor(clamp((hi + 0.5) * n, -1.0, n));
+  return ivec4(a, b);
+}
+
+// Sets the bit of sample k (if it is one) when l_k · window lies in [lo, hi].
+void pnBackprojectSample(int k, vec2 lo, vec2 hi, float window, int side,
+                         inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  if (k < 0 || k >= side * side) return;
+  vec2 p = pnBackprojectionSample(k, side) * window;
+  if (all(greaterThanEqual(p, lo)) && all(lessThanEqual(p, hi))) mask[k >> 5] |= 1u << uint(k & 31);
+}
+
+// Word w of the samples whose fine cells lie inside `cells` (first column, first row, last column,
+// last row; inclusive), if the mask has that word.
+uint pnBackprojectionBox(int w, ivec4 cells, int side) {
+  if (32 * w >= side * side) return 0u;
+  return pnBackprojectionColumns(w, cells.x, cells.z, side) & pnBackprojectionRows(w, cells.y, cells.w, side);
 }
 
 // Sets the bit of every sample whose ray crosses the patch [lo, hi] (texels, relative to the
 // receiver) at the depth whose window is `window`: the point l · window inside the box (closed).
-void pnBackprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+// The samples of the fine cells strictly inside the box in both axes are set by words (each word
+// written out, not a loop: llvmpipe's limit, backprojection.h); the four on its edges (one a fine
+// column or row) are tested one by one. Returns the loop iterations spent: none.
+int pnBackprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   int count = side * side;
-  for (int k = 0; k < count; ++k) {
-    vec2 p = pnBackprojectionSample(k, side) * window;
-    if (all(greaterThanEqual(p, lo)) && all(lessThanEqual(p, hi))) mask[k >> 5] |= 1u << uint(k & 31);
+  ivec4 inside;
+  if (!(window > 0.0)) {  // every ray stays on the receiver's point: every sample or none
+    if (!(all(lessThanEqual(lo, vec2(0.0))) && all(greaterThanEqual(hi, vec2(0.0))))) return 0;
+    inside = ivec4(0, 0, count - 1, count - 1);
+  } else {
+    ivec4 cells = pnBackprojectionCells(lo / window, hi / window, side);
+    if (cells.z < 0 || cells.w < 0 || cells.x >= count || cells.y >= count) return 0;
+    inside = cells + ivec4(1, 1, -1, -1);
+    pnBackprojectSample(cells.x, lo, hi, window, side, mask);
+    pnBackprojectSample(cells.z, lo, hi, window, side, mask);
+    if (cells.y >= 0 && cells.y < count)
+      pnBackprojectSample(pnBackprojectionTranspose(cells.y, side), lo, hi, window, side, mask);
+    if (cells.w >= 0 && cells.w < count)
+      pnBackprojectSample(pnBackprojectionTranspose(cells.w, side), lo, hi, window, side, mask);
   }
+  mask[0] |= pnBackprojectionBox(0, inside, side);
+  mask[1] |= pnBackprojectionBox(1, inside, side);
+  mask[2] |= pnBackprojectionBox(2, inside, side);
+  mask[3] |= pnBackprojectionBox(3, inside, side);
+  mask[4] |= pnBackprojectionBox(4, inside, side);
+  mask[5] |= pnBackprojectionBox(5, inside, side);
+  mask[6] |= pnBackprojectionBox(6, inside, side);
+  mask[7] |= pnBackprojectionBox(7, inside, side);
+  return 0;
+}
+
+// The wall's test (pnBackprojectWall) for the candidate samples of word w: each one by one.
+// Returns the samples tested.
+int pnBackprojectWallWord(int w, uint candidates, int a, float edge, float from, float to, float near, float far,
+                          int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  int b = 1 - a, tested = 0;
+  for (int t = 0; t < 32 && candidates != 0u; ++t) {
+    int k = 32 * w + findLSB(candidates);
+    candidates &= candidates - 1u;
+    ++tested;
+    vec2 l = pnBackprojectionSample(k, side);
+    if (l[a] == 0.0) continue;  // parallel to the wall
+    float window = edge / l[a];
+    float across = l[b] * window;
+    if (window >= near && window <= far && across >= from && across <= to) mask[w] |= 1u << uint(k & 31);
+  }
+  return tested;
 }
 
 // Sets the bit of every sample whose ray crosses the wall on the line where axis `a` equals `edge`,
-// between `from` and `to` on the other axis, at windows in [near, far] (the wall's depths).
-void pnBackprojectWall(int a, float edge, float from, float to, float near, float far, int side,
-                       inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  int count = side * side;
-  int b = 1 - a;
-  for (int k = 0; k < count; ++k) {
-    vec2 l = pnBackprojectionSample(k, side);
-    if (l[a] == 0.0) continue;  // parallel to the wall
-    float w = edge / l[a];
-    float across = l[b] * w;
-    if (w >= near && w <= far && across >= from && across <= to) mask[k >> 5] |= 1u << uint(k & 31);
+// between `from` and `to` on the other axis, at windows in [near, far] (the wall's depths). Only
+// the samples not yet set inside the wall's bounding box on the light are tested, one by one:
+// l[a] between edge / far and edge / near, l[b] = across / window between the extremes of
+// from and to over those windows. Returns the loop iterations spent (the samples tested).
+int pnBackprojectWall(int a, float edge, float from, float to, float near, float far, int side,
+                      inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  if (edge == 0.0 || !(far > 0.0)) return 0;
+  // |l| <= 1/2 for every sample: a bound past 1 (a window near 0) is the whole light.
+  float la0 = edge / far, la1 = near > abs(edge) ? edge / near : sign(edge);
+  vec2 lb = vec2(-1.0, 1.0);
+  if (near > 0.0) {
+    vec4 ends = vec4(from / near, from / far, to / near, to / far);
+    lb = clamp(vec2(min(min(ends.x, ends.y), min(ends.z, ends.w)), max(max(ends.x, ends.y), max(ends.z, ends.w))),
+               -1.0, 1.0);
   }
+  vec2 lo = a == 0 ? vec2(min(la0, la1), lb.x) : vec2(lb.x, min(la0, la1));
+  vec2 hi = a == 0 ? vec2(max(la0, la1), lb.y) : vec2(lb.y, max(la0, la1));
+  ivec4 cells = pnBackprojectionCells(lo, hi, side);
+  int tested = 0;
+  for (int w = 0; w < (side * side + 31) / 32; ++w)
+    tested += pnBackprojectWallWord(w, pnBackprojectionBox(w, cells, side) & ~mask[w], a, edge, from, to, near, far, side, mask);
+  return tested;
 }
 
-// Texel `q` of depth d (lo, hi: its square relative to the receiver): its patch, and its walls down
-// to each deeper neighbour the surface continues into (depth step <= gap texel widths).
-void pnBackprojectTexel(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, ivec2 q, float d,
-                        vec2 lo, vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+// The wall of node `q` of `level` (a texel at level 0; depth d, window W(d); lo, hi: its square
+// relative to the receiver) toward its neighbour node in direction `dir`, if deeper (its min): down
+// to the neighbour where the surface continues into it (depth step <= gap texel widths), down to
+// thickness · (dP - d) below d at a silhouette. Returns the loop iterations spent.
+int pnBackprojectNodeWall(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness,
+                          int level, ivec2 q, ivec2 dir, float d, float window, vec2 lo, vec2 hi, int side,
+                          inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   float dP = receiver.z;
-  float window = pnLightBlockerWindowTexels(light, dP, d);
-  pnBackprojectPatch(lo, hi, window, side, mask);
+  float neighbour = pnMipFetch(mip, level, q + dir).x;  // +Inf outside the map
+  if (!(neighbour > d)) return 0;
   float step = gap * pnLightTexelWorld(light, d);
-  for (int n = 0; n < 4; ++n) {
-    ivec2 dir = n == 0 ? ivec2(1, 0) : n == 1 ? ivec2(-1, 0) : n == 2 ? ivec2(0, 1) : ivec2(0, -1);
-    float neighbour = pnMipFetch(mip, 0, q + dir).x;  // +Inf outside the map
-    if (!(neighbour > d) || !(neighbour - d <= step)) continue;
-    float deepest = min(neighbour, dP - bias);  // only what lies in front of the receiver blocks
-    if (!(deepest > d)) continue;
-    int a = dir.x != 0 ? 0 : 1;
-    float edge = (dir[a] > 0 ? hi : lo)[a];
-    pnBackprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, dP, deepest), window, side,
-                      mask);
-  }
+  float bottom = neighbour - d <= step ? neighbour : min(neighbour, d + thickness * (dP - d));
+  float deepest = min(bottom, dP - bias);  // only what lies in front of the receiver blocks
+  if (!(deepest > d)) return 0;
+  int a = dir.x != 0 ? 0 : 1;
+  float edge = (dir[a] > 0 ? hi : lo)[a];
+  return pnBackprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, dP, deepest), window,
+                           side, mask);
+}
+
+// Node `q` of `level` as one flat patch at depth d (lo, hi: its square relative to the receiver) with
+// its four walls (written out, not a loop: Mesa's llvmpipe counts every loop iteration of an
+// invocation against one limit, backprojection.h). Exact for a texel (level 0); for a larger node,
+// the estimate of its surface. Returns the loop iterations spent.
+int pnBackprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness, int level,
+                      ivec2 q, float d, vec2 lo, vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  float window = pnLightBlockerWindowTexels(light, receiver.z, d);
+  int spent = pnBackprojectPatch(lo, hi, window, side, mask);
+  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(1, 0), d, window, lo, hi,
+                                 side, mask);
+  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(-1, 0), d, window, lo, hi,
+                                 side, mask);
+  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, 1), d, window, lo, hi,
+                                 side, mask);
+  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, -1), d, window, lo, hi,
+                                 side, mask);
+  return spent;
 }
 
 PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, float bias,
@@ -153,11 +290,12 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
   ivec3 stack[PN_BACKPROJECTION_STACK];
   int top = 0;
   stack[top++] = ivec3(pnMipMaxLevel(mip), 0, 0);
-  int visited = 0;
+  int visited = 0, work = 0;  // nodes; loop iterations in all (PN_BACKPROJECTION_MAX_WORK)
   for (int step = 0; step < PN_BACKPROJECTION_MAX_BUDGET + PN_BACKPROJECTION_STACK && top > 0; ++step) {
     ivec3 node = stack[--top];
     vec2 range = pnMipFetch(mip, node.x, node.yz);
     ++visited;
+    ++work;
     if (!(range.x + bias < dP)) continue;  // nothing in it can occlude (or no texel: +Inf)
     // Every patch and wall of the node lies at a depth >= its min: at most W(min) from the receiver.
     float reach = pnLightBlockerWindowTexels(light, dP, range.x);
@@ -165,19 +303,24 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
     vec2 lo = vec2(node.yz * size) - receiver.xy, hi = lo + float(size);
     if (any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach)))) continue;
     if (node.x == 0) {
-      pnBackprojectTexel(mip, light, receiver, bias, s.gap, node.yz, range.x, lo, hi, side, mask);
+      work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, 0, node.yz, range.x, lo, hi, side, mask);
       continue;
     }
-    bool resolve = visited < budget && range.y - range.x >= s.tolerance * (dP - range.x) &&
-                   top + 4 <= PN_BACKPROJECTION_STACK;
-    if (resolve) {
-      for (int c = 3; c >= 0; --c) stack[top++] = ivec3(node.x - 1, node.yz * 2 + ivec2(c & 1, c >> 1));
+    bool resolve = visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&
+                   range.y - range.x >= s.tolerance * (dP - range.x) && top + 4 <= PN_BACKPROJECTION_STACK;
+    if (resolve) {  // the four children, the first on top
+      ivec2 child = node.yz * 2;
+      stack[top++] = ivec3(node.x - 1, child + ivec2(1, 1));
+      stack[top++] = ivec3(node.x - 1, child + ivec2(0, 1));
+      stack[top++] = ivec3(node.x - 1, child + ivec2(1, 0));
+      stack[top++] = ivec3(node.x - 1, child);
       continue;
     }
-    // A node standing as one patch at the middle of its range (in front of the receiver).
+    // A node standing as one patch at the middle of its range (in front of the receiver), with walls
+    // toward the neighbour nodes deeper than it, by the texels' rule applied to the nodes' mins.
     result.patches += 1.0;
     float depth = 0.5 * (range.x + min(range.y, dP - bias));
-    pnBackprojectPatch(lo, hi, pnLightBlockerWindowTexels(light, dP, depth), side, mask);
+    work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi, side, mask);
   }
   int blocked = 0;
   for (int w = 0; w < PN_BACKPROJECTION_MASK_WORDS; ++w) blocked += bitCount(mask[w]);

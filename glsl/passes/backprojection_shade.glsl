@@ -20,7 +20,7 @@ float pnShade(ivec2 p) {
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return 1.0;
   PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.side, pnParams.tolerance, pnParams.budget,
-                                                        pnParams.gap);
+                                                        pnParams.gap, pnParams.thickness);
   return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, pnParams.bias, s);
 }
 

@@ -21,6 +21,7 @@ PN_UNIFORM_BLOCK(PnBackprojectionShadeParams, PN_BACKPROJECTION_SHADE_PARAMS_BIN
   float tolerance;  // a node of depth range <= tolerance · (dP - min) stands as one patch
   int budget;       // nodes a pixel
   float gap;        // texel widths: the depth step neighbours of one surface may take
+  float thickness;  // a silhouette's wall: its share of the way from the occluder to the receiver
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_BACKPROJECTION_SHADE_H

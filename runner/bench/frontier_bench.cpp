@@ -40,7 +40,7 @@ Scene frontier_scene(const std::string& name, int size, double width) {
 
 std::string family_of(const std::string& spec) {
   const std::string name = spec.substr(0, spec.find(':'));
-  for (const char* family : {"poisson", "vogel", "fast", "hqepcss", "savsm", "exact", "pcf"})
+  for (const char* family : {"poisson", "vogel", "fast", "hqepcss", "savsm", "exact", "pcf", "backprojection"})
     if (name.rfind(family, 0) == 0) return family;
   if (name == "vsm" || name.rfind("evsm", 0) == 0) return "vsm";
   return name;
@@ -71,6 +71,10 @@ std::vector<std::string> frontier_techniques() {
                         "fast:leaf=4", "fast:leaf=8", "fast:leaf=32", "fast:leaf-divisor=8",
                         "fast:leaf-divisor=16", "hqepcss", "savsm", "vsm", "evsm", "pcf", "exact"})
     out.push_back(s);
+  // Back-projection: its light samples and the depth range a node may stand for as one patch.
+  for (const char* s : {"backprojection:samples=16", "backprojection:samples=64", "backprojection",
+                        "backprojection:tolerance=0.2"})
+    out.push_back(s);
   return out;
 }
 
@@ -82,7 +86,7 @@ FrontierBenchSetup quick_frontier_setup() {
   s.repeats = 1;
   s.truth_samples = 4;
   s.methods = {samples_spec("poisson", 16), "poisson", "vogel", samples_spec("vogel", 64), "fast", "fast:leaf=8",
-               "hqepcss", "savsm", "vsm", "pcf", "exact"};
+               "hqepcss", "savsm", "vsm", "pcf", "exact", "backprojection:samples=64"};
   return s;
 }
 
@@ -222,7 +226,8 @@ nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::v
 Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title) {
   const std::vector<std::pair<std::string, Rgb>> families{
       {"poisson", {31, 119, 180}}, {"vogel", {23, 190, 207}}, {"fast", {214, 39, 40}},  {"hqepcss", {148, 103, 189}},
-      {"savsm", {44, 160, 44}},    {"vsm", {188, 189, 34}},   {"pcf", {127, 127, 127}}, {"exact", {140, 86, 75}}};
+      {"savsm", {44, 160, 44}},    {"vsm", {188, 189, 34}},   {"pcf", {127, 127, 127}}, {"exact", {140, 86, 75}},
+      {"backprojection", {255, 127, 14}}};
   std::vector<ChartPanel> panels;
   int columns = 1;
   for (const FrontierPoint& p : points) {

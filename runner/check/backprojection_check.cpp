@@ -43,12 +43,17 @@ struct Receivers {
   std::vector<int> pixels;  // screen pixel of each (y · size + x)
 };
 
-Receivers gbuffer_receivers(const Image& gbuffer, int side, float tolerance, int budget) {
+// Every `every`-th pixel of the G-buffer that sees a surface, as a receiver.
+Receivers gbuffer_receivers(const Image& gbuffer, int side, float tolerance, int budget,
+                            float thickness = static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS), int every = 1) {
   Receivers r;
+  int seen = 0;
   for (int y = 0; y < gbuffer.height; ++y)
     for (int x = 0; x < gbuffer.width; ++x) {
-      if (gbuffer.at(x, y, 3) == 0.0f) continue;
-      r.queries.push_back({gbuffer.at(x, y, 0), gbuffer.at(x, y, 1), gbuffer.at(x, y, 2), kBias, side, tolerance, budget});
+      if (gbuffer.at(x, y, 3) == 0.0f || seen++ % every != 0) continue;
+      BackprojectionQuery q{gbuffer.at(x, y, 0), gbuffer.at(x, y, 1), gbuffer.at(x, y, 2), kBias, side, tolerance, budget};
+      q.thickness = thickness;
+      r.queries.push_back(q);
       r.pixels.push_back(y * gbuffer.width + x);
     }
   return r;
@@ -61,7 +66,8 @@ CaseResult exact_case(const std::string& name, const Image& map, const LightMode
   int ambiguous = 0, umbra = 0, penumbra = 0;
   for (size_t k = 0; k < queries.size(); ++k) {
     const BackprojectionQuery& q = queries[k];
-    const BackprojectionBounds b = backprojection_reference(map, light, q.u, q.v, q.depth, q.bias, q.side, q.gap);
+    const BackprojectionBounds b = backprojection_reference(map, light, q.u, q.v, q.depth, q.bias, q.side, q.gap,
+                                                             q.thickness);
     ambiguous += b.ambiguous;
     umbra += b.visibility_hi == 0.0 ? 1 : 0;
     penumbra += b.visibility_hi > 0.0 && b.visibility_lo < 1.0 ? 1 : 0;
@@ -104,6 +110,11 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
       results.push_back(exact_case(what + ", every texel resolved, vs the rays through the map's surface on the CPU", map,
                                    light, exact.queries, got));
       if (&light != &wide.light) continue;
+      if (first) {  // silhouettes closed by walls half the way down to the receiver
+        const Receivers thick = gbuffer_receivers(gbuffer, side, 0.0f, PN_BACKPROJECTION_MAX_BUDGET, 0.5f);
+        results.push_back(exact_case(what + ", thickness 0.5, every texel resolved, vs the rays on the CPU", map, light,
+                                     thick.queries, pass.run(mip, light, thick.queries)));
+      }
 
       // The defaults: tight nodes as one patch, the budget.
       const float tolerance = PN_BACKPROJECTION_DEFAULT_TOLERANCE;
@@ -162,6 +173,28 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
                        compare(expected, observed, Tolerance::exact())});
   }
 
+  // A 256² map under the tall blocker with the light 4 times as wide: thousands of texels a receiver,
+  // past what the loops of a per-sample test could run on llvmpipe (one limit of 65535 loop
+  // iterations an invocation, backprojection.h): every fourth receiver of a 64² screen, exact.
+  {
+    constexpr int kLargeMap = 256, kLargeScreen = 64;
+    const Scene scene = make_scene(fixtures::kScenes[2], kLargeMap);
+    Scene wide = scene;
+    wide.light.width *= 4.0;
+    const DeviceSceneFrame frame = render_device_frame(env, scene, kLargeScreen);
+    const Image map = read(*frame.shadow_map), gbuffer = read(*frame.gbuffer);
+    const MinMaxMipChain mip = mips.build(*frame.shadow_map, kLargeMap);
+    const Receivers exact = gbuffer_receivers(gbuffer, 8, 0.0f, PN_BACKPROJECTION_MAX_BUDGET,
+                                              static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS), 4);
+    const std::vector<BackprojectionResult> got = pass.run(mip, wide.light, exact.queries);
+    double nodes = 0.0;
+    for (const BackprojectionResult& r : got) nodes = std::max(nodes, static_cast<double>(r.nodes));
+    results.push_back(exact_case(std::string(fixtures::kScenes[2].name) + " " + std::to_string(kLargeMap) + "² map, the light 4x as wide, "
+                                 "8x8 samples, every texel resolved (up to " + format_number("%.0f", nodes) +
+                                 " nodes a receiver), vs the rays on the CPU",
+                                 map, wide.light, exact.queries, got));
+  }
+
   // The sun over a random height field: an orthographic map, texels 0.1 wide, spread 0.05.
   {
     SeededRandom random(0x5eed0028u);
@@ -188,6 +221,10 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
     }
     results.push_back(exact_case("the sun (orthographic, spread 0.05) over a random height field, 8x8 samples, every "
                                  "texel resolved, vs the rays on the CPU",
+                                 map, sun, queries, pass.run(mip, sun, queries)));
+    for (BackprojectionQuery& q : queries) q.thickness = 0.5f, q.side = 16;
+    results.push_back(exact_case("the sun over the random height field, 16x16 samples, thickness 0.5, every texel "
+                                 "resolved, vs the rays on the CPU",
                                  map, sun, queries, pass.run(mip, sun, queries)));
   }
   return results;

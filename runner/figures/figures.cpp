@@ -230,6 +230,7 @@ std::vector<fs::path> write_figures(const Context& context, const SourceTree& tr
       {"vsm_bleeding", &vsm_bleeding_figure},
       {"savsm_bleeding", &savsm_bleeding_figure},
       {"cascades_splits", [](const Context&, const SourceTree&) { return cascades_splits_figure(); }},
+      {"backprojection", &backprojection_figure},
   };
   // Every picture is drawn before the first is written: a module that fails leaves the
   // directory as it was (not made, if it was missing), not five new pictures beside two old ones.

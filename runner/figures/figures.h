@@ -12,7 +12,8 @@
 namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
-// traversal_nodes.png, reuse_groups.png, pipeline_stages.png, vsm_bleeding.png and savsm_bleeding.png into `out`
+// traversal_nodes.png, reuse_groups.png, pipeline_stages.png, vsm_bleeding.png, savsm_bleeding.png,
+// cascades_splits.png and backprojection.png into `out`
 // (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
@@ -26,5 +27,9 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree);
 
 // The city camera's frustum from above with its cascades' splits and spheres (cascades_figure.cpp).
 Canvas cascades_splits_figure();
+
+// pnBackprojection over a boxes map under the sun: the map, the visibility, the nodes visited
+// (backprojection_figure.cpp).
+Canvas backprojection_figure(const Context& context, const SourceTree& tree);
 
 }  // namespace pn

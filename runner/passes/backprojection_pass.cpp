@@ -16,7 +16,7 @@ namespace pn {
 
 BackprojectionQueryPass::BackprojectionQueryPass(const QueryDevice& device, const SourceTree& tree)
     : query_(device, tree, "passes/backprojection_query.comp",
-             {{PN_BACKPROJECTION_QUERY_A_BINDING, PN_BACKPROJECTION_QUERY_B_BINDING},
+             {{PN_BACKPROJECTION_QUERY_A_BINDING, PN_BACKPROJECTION_QUERY_B_BINDING, PN_BACKPROJECTION_QUERY_C_BINDING},
               {PN_BACKPROJECTION_QUERY_RESULT_IMAGE}}) {}
 
 std::vector<BackprojectionResult> BackprojectionQueryPass::run(const MinMaxMipChain& mip, const LightModel& light,
@@ -27,12 +27,13 @@ std::vector<BackprojectionResult> BackprojectionQueryPass::run(const MinMaxMipCh
                 ": expected the mip chain's " + std::to_string(mip.map_size));
   glsl::PnBackprojectionQueryParams block{};
   set_light_fields(block, light);
-  std::vector<Query> a, b;
+  std::vector<Query> a, b, c;
   for (const BackprojectionQuery& q : queries) {
     a.push_back({q.u, q.v, q.depth, q.bias});
     b.push_back({static_cast<float>(q.side), q.tolerance, static_cast<float>(q.budget), q.gap});
+    c.push_back({q.thickness, 0.0f, 0.0f, 0.0f});
   }
-  const QueryResults r = query_.run({a, b}, {{PN_BACKPROJECTION_QUERY_MIP_BINDING, *mip.texture}}, query_block(block));
+  const QueryResults r = query_.run({a, b, c}, {{PN_BACKPROJECTION_QUERY_MIP_BINDING, *mip.texture}}, query_block(block));
   std::vector<BackprojectionResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
     const Query q = r.at(0, k);

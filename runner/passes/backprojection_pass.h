@@ -19,6 +19,7 @@ struct BackprojectionQuery {
   float tolerance = 0.0f;                                     // 0: every texel resolved
   int budget = PN_BACKPROJECTION_DEFAULT_BUDGET;              // nodes
   float gap = static_cast<float>(PN_BACKPROJECTION_DEFAULT_GAP);  // texel widths: neighbours of one surface
+  float thickness = static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS);  // a silhouette's wall, of dP - d
 };
 
 struct BackprojectionResult {

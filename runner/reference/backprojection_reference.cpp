@@ -14,8 +14,9 @@ BackprojectionSamplePoint backprojection_sample(int k, int side) {
   const float unit = 1.0f / static_cast<float>(1 << bits);
   const float jx = static_cast<float>(h >> (32 - bits)) * unit;
   const float jy = static_cast<float>(h & ((1u << bits) - 1u)) * unit;
-  const float scale = 1.0f / static_cast<float>(side);
-  return {(static_cast<float>(k % side) + jx) * scale - 0.5f, (static_cast<float>(k / side) + jy) * scale - 0.5f};
+  const float scale = 1.0f / static_cast<float>(side * side);
+  const int column = k / side, row = k % side;  // its stratum; fine column k, fine row row · side + column
+  return {(static_cast<float>(k) + jx) * scale - 0.5f, (static_cast<float>(row * side + column) + jy) * scale - 0.5f};
 }
 
 namespace {
@@ -45,30 +46,11 @@ struct RayAxis {
   }
 };
 
-// The depths [lo, hi] at which the ray is within [a, b] on one axis (the receiver at u0); empty: lo > hi.
-void axis_interval(const RayAxis& ray, double u0, double a, double b, double& lo, double& hi) {
-  if (ray.target == 0.0) {  // toward the light's centre: the ray stays on the receiver's texel coordinate
-    const bool inside = a <= u0 && u0 <= b;
-    lo = inside ? -INFINITY : INFINITY;
-    hi = inside ? ray.depth : -INFINITY;
-    return;
-  }
-  if (ray.target > 0.0) {  // u grows from u0 as the ray nears the light
-    if (b < u0) return void(lo = INFINITY), void(hi = -INFINITY);
-    hi = a <= u0 ? ray.depth : ray.depth_at(a);
-    lo = ray.depth_at(b);
-  } else {
-    if (a > u0) return void(lo = INFINITY), void(hi = -INFINITY);
-    hi = b >= u0 ? ray.depth : ray.depth_at(b);
-    lo = ray.depth_at(a);
-  }
-}
-
 }  // namespace
 
 BackprojectionBounds backprojection_reference(const Image& map, const LightModel& light, double u, double v,
-                                              double depth, double bias, int side, double gap, double margin,
-                                              double depth_margin) {
+                                              double depth, double bias, int side, double gap, double thickness,
+                                              double margin, double depth_margin) {
   BackprojectionBounds out;
   if (!(depth > 0.0) || !std::isfinite(depth)) return out;
   side = std::clamp(side, PN_BACKPROJECTION_MIN_SIDE, PN_BACKPROJECTION_MAX_SIDE);
@@ -121,12 +103,15 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
           return d + bias + t < depth && x >= i - m && x <= i + 1 + m && y >= j - m && y <= j + 1 + m;
         };
         decide(patch(margin, -dz), patch(-margin, dz));
-        // The walls: on the square's edge toward each deeper neighbour within gap texel widths,
-        // from d to that neighbour's depth (or the receiver's, less the bias).
+        // The walls: on the square's edge toward each deeper neighbour, from d down to that
+        // neighbour's depth when it is within gap texel widths (one surface), else down to
+        // thickness · (depth - d) below d, if the neighbour is not nearer (a silhouette); never
+        // past the receiver's depth less the bias.
         const double step = gap * light.texel_world_at(d);
         for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
           const double neighbour = depth_of(i + di, j + dj);
-          if (!(neighbour > d) || !(neighbour - d <= step)) continue;
+          if (!(neighbour > d)) continue;
+          const double bottom = neighbour - d <= step ? neighbour : std::min(neighbour, d + thickness * (depth - d));
           const bool across_x = di != 0;
           const RayAxis& along = across_x ? rx : ry;  // the axis the wall stands across
           const RayAxis& other = across_x ? ry : rx;
@@ -138,7 +123,7 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
           const double z = along.depth_at(edge);
           const double other_at = other.texel_at(z);
           const auto wall = [&](double m, double t) {
-            return z >= d - t && z <= std::min(neighbour, depth - bias) + t && other_at >= cell - m &&
+            return z >= d - t && z <= std::min(bottom, depth - bias) + t && other_at >= cell - m &&
                    other_at <= cell + 1 + m;
           };
           decide(wall(margin, dz), wall(-margin, -dz));

@@ -2,7 +2,8 @@
 // double: the shadow map is a surface — texel (i, j) of depth d a flat patch,
 // its square at depth d, joined to each 4-neighbour whose depth is within `gap`
 // texel widths by a wall on their shared edge spanning the two depths; a larger
-// step is a silhouette, left open. The light is backprojection.h's side × side
+// step is a silhouette, its wall reaching `thickness` · (dP - d) below d (0:
+// open). The light is backprojection.h's side × side
 // samples l of its square. For each sample, the ray from the receiver to the
 // light point (an area light: the point l · w_L on the light's square at depth 0;
 // the sun: the direction l · S per unit of depth toward the light) is followed in
@@ -38,7 +39,7 @@ struct BackprojectionBounds {
 // (non-finite: no occluder), N = light.map_size. A receiver at a non-positive or non-finite
 // depth is lit.
 BackprojectionBounds backprojection_reference(const Image& map, const LightModel& light, double u, double v,
-                                              double depth, double bias, int side, double gap,
+                                              double depth, double bias, int side, double gap, double thickness,
                                               double margin = 1e-3, double depth_margin = 1e-5);
 
 }  // namespace pn

@@ -29,6 +29,7 @@ struct BackprojectionSettings {
   float tolerance = PN_BACKPROJECTION_DEFAULT_TOLERANCE;
   int budget = PN_BACKPROJECTION_DEFAULT_BUDGET;
   float gap = static_cast<float>(PN_BACKPROJECTION_DEFAULT_GAP);
+  float thickness = static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS);
 
   int side() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(samples)))); }
   void validate() const {
@@ -39,12 +40,14 @@ struct BackprojectionSettings {
     if (!std::isfinite(tolerance) || tolerance < 0.0f)
       throw bad("tolerance " + format_number("%g", tolerance) + ": expected a finite number >= 0");
     if (!std::isfinite(gap) || gap < 0.0f) throw bad("gap " + format_number("%g", gap) + ": expected a finite number >= 0");
+    if (!(thickness >= 0.0f && thickness <= 1.0f))
+      throw bad("thickness " + format_number("%g", thickness) + ": expected a number in [0, 1]");
     if (budget < 1 || budget > PN_BACKPROJECTION_MAX_BUDGET)
       throw bad("budget " + std::to_string(budget) + ": expected 1.." + std::to_string(PN_BACKPROJECTION_MAX_BUDGET));
   }
 };
 
-std::vector<std::string> backprojection_keys() { return {"bias", "samples", "tolerance", "budget", "gap"}; }
+std::vector<std::string> backprojection_keys() { return {"bias", "samples", "tolerance", "budget", "gap", "thickness"}; }
 
 // The passes the backprojection techniques of one device share (TechniqueResources::shared).
 struct BackprojectionPasses {
@@ -79,6 +82,7 @@ class BackprojectionTechnique : public Technique {
     block.tolerance = settings_.tolerance;
     block.budget = settings_.budget;
     block.gap = settings_.gap;
+    block.thickness = settings_.thickness;
     PassResources resources;
     resources.block = query_block(block);
     resources.add_textures({{PN_BACKPROJECTION_SHADE_MIP_BINDING, *mip->texture},
@@ -109,6 +113,7 @@ std::unique_ptr<TechniqueConfig> backprojection_config(const char* name) {
             else if (key == "tolerance") settings.tolerance = setting_real(settings.name, key, value);
             else if (key == "budget") settings.budget = setting_integer(settings.name, key, value);
             else if (key == "gap") settings.gap = setting_real(settings.name, key, value);
+            else if (key == "thickness") settings.thickness = setting_real(settings.name, key, value);
             else throw unknown_setting(settings.name, key, backprojection_keys());
           },
           [](TechniqueResources& resources, const BackprojectionSettings& settings) -> std::unique_ptr<Technique> {

@@ -15,7 +15,9 @@ namespace pn {
 // (16, 64 or 256 light samples; default 64), tolerance (a node of depth range <= tolerance · its
 // distance to the receiver stands as one patch, finite >= 0; 0: every texel; default 0.05),
 // budget (nodes a pixel, 1..60000; default 4096), gap (texel widths: the depth step neighbours of
-// one surface may take, joined by a wall; finite >= 0; default 3).
+// one surface may take, joined by a wall; finite >= 0; default 3), thickness (a silhouette's wall
+// reaches this share of the way from the occluder to the receiver, [0, 1]; default
+// PN_BACKPROJECTION_DEFAULT_THICKNESS).
 std::unique_ptr<TechniqueConfig> backprojection_config(const char* name);
 
 }  // namespace pn

@@ -107,7 +107,9 @@ std::vector<const TechniqueConfig*> chosen_or_default_techniques(
   return out;
 }
 
-std::vector<std::string> render_techniques() { return {"exact", "poisson", "hqepcss", "fast-paper", "fast", "savsm"}; }
+std::vector<std::string> render_techniques() {
+  return {"exact", "poisson", "hqepcss", "fast-paper", "fast", "savsm", "backprojection"};
+}
 
 std::vector<std::string> bench_techniques() {
   std::vector<std::string> out;
