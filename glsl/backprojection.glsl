@@ -1,6 +1,6 @@
 // backprojection.glsl — soft shadows by back-projection over the min/max mip
 // chain: the fraction of the light a receiver sees, from the shadow map read
-// as a height field, not a blocker average.
+// as a surface, not a blocker average.
 //
 // description:
 //   Issue 28 (Guennebaud, Barthe & Paulin 2006, their gap filling; Schwarz &
@@ -9,17 +9,20 @@
 //   d; two 4-neighbours whose depths differ by at most `gap` texel widths
 //   (pnLightTexelWorld at the nearer one) are one surface, joined by a wall
 //   on their shared edge spanning the two depths — the gap rule, closing the
-//   cracks between the patches of one sloped surface; a larger step is a
-//   silhouette, left open (the map cannot tell contact from a gap: below).
-//   The light is side × side stratified, jittered samples l in [-1/2, 1/2]²
-//   of its square (backprojection.h; a square of width w_L at the map's
-//   viewpoint, or the sun's square of spread S). The ray from the receiver
-//   (u, v, dP) to sample l crosses depth z at texel
+//   cracks between the patches of one sloped surface; at a larger step (a
+//   silhouette) the wall reaches `thickness` · (dP - d) below d (0: open;
+//   1: the height field), or to the deeper neighbour if nearer — the map
+//   cannot tell a box's edge over the ground from a thick occluder's side.
+//   The light is side × side multi-jittered samples l in [-1/2, 1/2]² of its
+//   square (backprojection.h: sample k in fine column k and fine row
+//   transpose(k), so a box's samples are a few word operations; a square of
+//   width w_L at the map's viewpoint, or the sun's square of spread S). The
+//   ray from the receiver (u, v, dP) to sample l crosses depth z at texel
 //       (u, v) + l · W(z),   W(z) = pnLightBlockerWindowTexels(light, dP, z)
 //   (light_model.glsl: W(dP) = 0, growing toward the light). It is blocked
 //   when it crosses a patch or a wall in front of the receiver (depth
 //   < dP - bias): patch (i, j) iff l · W(d) lies in its square, a wall iff
-//   the ray meets its edge's line at a window between W(deeper depth) and
+//   the ray meets its edge's line at a window between W(its bottom) and
 //   W(d), inside the edge. Each blocked sample sets its bit; overlapping
 //   patches set a bit once:
 //       visibility = 1 - (bits set) / side².
@@ -28,16 +31,18 @@
 //     - a node with min + bias >= dP cannot occlude: skipped;
 //     - a node the rays cannot reach (its square outside ± W(min) / 2 around
 //       the receiver) is skipped;
-//     - a texel (level 0) is back-projected exactly: its patch and its walls to
-//       its deeper neighbours of the same surface (four fetches);
+//     - a texel (level 0) is back-projected exactly: its patch and its walls
+//       toward its deeper neighbours (four fetches);
 //     - a node whose depth range is below `tolerance` · (dP - min) stands as one
-//       patch at the middle of its range, without walls; 0: every node
-//       resolved to its texels;
-//     - past `budget` nodes, every node left on the stack stands as one patch
-//       likewise (an estimate of what remains, never dropped).
-//   With tolerance 0 and a budget that is not reached, the result is the
-//   fraction of the same samples whose ray to the receiver crosses the map's
-//   surface — exactly (runner/reference/backprojection_reference.cpp).
+//       patch at the middle of its range, with walls toward the deeper
+//       neighbour nodes of its level (the texels' rule on the nodes' mins);
+//       0: every node resolved to its texels;
+//     - past `budget` nodes or PN_BACKPROJECTION_MAX_WORK loop iterations,
+//       every node left on the stack stands as one patch likewise (an
+//       estimate of what remains, never dropped).
+//   With tolerance 0 and neither bound reached, the result is the fraction of
+//   the same samples whose ray to the receiver crosses the map's surface —
+//   exactly (runner/reference/backprojection_reference.cpp).
 //
 // use:
 //   PnBackprojectionSettings { int side; float tolerance; int budget; float gap; float thickness; }
@@ -53,9 +58,11 @@
 //   vec2 pnBackprojectionSample(int k, int side)   light sample k, in [-1/2, 1/2]²
 //
 // cost: per node visited one fetch, per texel four more (its neighbours); per
-//   patch a point test per sample (side² of them), per wall a line test. Bounded by `budget` nodes and a
-//   stack of 48; what bounds it in practice is the number of occluding
-//   texels whose segments reach: the penumbra's area in texels.
+//   patch side² / 32 mask words and four samples tested one by one; per wall
+//   the samples not yet set in its box on the light, one by one. Bounded by
+//   `budget` nodes, PN_BACKPROJECTION_MAX_WORK loop iterations and a stack of
+//   48; what bounds it in practice is the number of occluding texels whose
+//   segments reach: the penumbra's area in texels.
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL
 #define PENUMBRA_BACKPROJECTION_GLSL

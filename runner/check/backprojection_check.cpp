@@ -5,9 +5,11 @@
 //   default: each scene's own map and G-buffer receivers, an area light, 8 × 8
 //   samples, and the light 4 times as wide — exactly the reference's
 //   visibility, the samples within rounding of a verdict left open (counted);
-//   4 × 4 and 16 × 16 samples on the boxes;
+//   4 × 4 and 16 × 16 samples and a thickness of 0.5 on the boxes;
+// - a 256² map under the tall blocker with the light 4 times as wide: thousands
+//   of texels a receiver (llvmpipe's loop limit, backprojection.h), exact;
 // - the sun (an orthographic map of spread S) over a random height field:
-//   likewise exact;
+//   likewise exact, at 8 × 8 samples and at 16 × 16 with a thickness of 0.5;
 // - a point light (width 0): the hard shadow of the receiver's own texel;
 // - the defaults (nodes of a tight depth range as one patch, the budget):
 //   within the stated bound of the exact visibility;

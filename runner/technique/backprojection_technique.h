@@ -12,7 +12,7 @@
 namespace pn {
 
 // The registry's entry; override keys: bias (light-depth units, >= 0; default 0.02), samples
-// (16, 64 or 256 light samples; default 64), tolerance (a node of depth range <= tolerance · its
+// (16, 64 or 256 light samples; default 256), tolerance (a node of depth range <= tolerance · its
 // distance to the receiver stands as one patch, finite >= 0; 0: every texel; default 0.05),
 // budget (nodes a pixel, 1..60000; default 4096), gap (texel widths: the depth step neighbours of
 // one surface may take, joined by a wall; finite >= 0; default 3), thickness (a silhouette's wall
