@@ -172,16 +172,16 @@ uint pnBackprojectionBox(int w, ivec4 cells, int side) {
 // receiver) at the depth whose window is `window`: the point l · window inside the box (closed).
 // The samples of the fine cells strictly inside the box in both axes are set by words (each word
 // written out, not a loop: llvmpipe's limit, backprojection.h); the four on its edges (one a fine
-// column or row) are tested one by one. Returns the loop iterations spent: none.
-int pnBackprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+// column or row) are tested one by one. No loop: it adds nothing to the traversal's work count.
+void pnBackprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   int count = side * side;
   ivec4 inside;
   if (!(window > 0.0)) {  // every ray stays on the receiver's point: every sample or none
-    if (!(all(lessThanEqual(lo, vec2(0.0))) && all(greaterThanEqual(hi, vec2(0.0))))) return 0;
+    if (!(all(lessThanEqual(lo, vec2(0.0))) && all(greaterThanEqual(hi, vec2(0.0))))) return;
     inside = ivec4(0, 0, count - 1, count - 1);
   } else {
     ivec4 cells = pnBackprojectionCells(lo / window, hi / window, side);
-    if (cells.z < 0 || cells.w < 0 || cells.x >= count || cells.y >= count) return 0;
+    if (cells.z < 0 || cells.w < 0 || cells.x >= count || cells.y >= count) return;
     inside = cells + ivec4(1, 1, -1, -1);
     pnBackprojectSample(cells.x, lo, hi, window, side, mask);
     pnBackprojectSample(cells.z, lo, hi, window, side, mask);
@@ -198,7 +198,6 @@ int pnBackprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask
   mask[5] |= pnBackprojectionBox(5, inside, side);
   mask[6] |= pnBackprojectionBox(6, inside, side);
   mask[7] |= pnBackprojectionBox(7, inside, side);
-  return 0;
 }
 
 // The wall's test (pnBackprojectWall) for the candidate samples of word w: each one by one.
@@ -267,12 +266,12 @@ int pnBackprojectNodeWall(sampler2D mip, PnLight light, vec3 receiver, float bia
 // Node `q` of `level` as one flat patch at depth d (lo, hi: its square relative to the receiver) with
 // its four walls (written out, not a loop: Mesa's llvmpipe counts every loop iteration of an
 // invocation against one limit, backprojection.h). Exact for a texel (level 0); for a larger node,
-// the estimate of its surface. Returns the loop iterations spent.
+// the estimate of its surface. Returns the loop iterations spent (its walls').
 int pnBackprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness, int level,
                       ivec2 q, float d, vec2 lo, vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   float window = pnLightBlockerWindowTexels(light, receiver.z, d);
-  int spent = pnBackprojectPatch(lo, hi, window, side, mask);
-  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(1, 0), d, window, lo, hi,
+  pnBackprojectPatch(lo, hi, window, side, mask);
+  int spent = pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(1, 0), d, window, lo, hi,
                                  side, mask);
   spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(-1, 0), d, window, lo, hi,
                                  side, mask);

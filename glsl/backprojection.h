@@ -44,13 +44,14 @@
 
 // Mesa's llvmpipe and lavapipe count every loop iteration of a shader invocation (all loops, a
 // SIMD group of invocations together) against one limit of 65535 and silently leave every loop
-// once it is spent. The traversal counts its own iterations (a node 1, a patch its mask words, a
-// wall its words and the samples it tests) and stops resolving nodes past this many: the nodes
+// once it is spent. The traversal counts its own iterations (a node 1, a wall its mask words and
+// the samples it tests; a patch has no loop) and stops resolving nodes past this many: the nodes
 // left stand as patches, estimated rather than cut off.
 #define PN_BACKPROJECTION_MAX_WORK 32768
 
 // Default node budget (nodes of the mip chain visited a receiver) and the largest one.
 #define PN_BACKPROJECTION_DEFAULT_BUDGET 4096
-#define PN_BACKPROJECTION_MAX_BUDGET 60000  // under llvmpipe's 65535 iterations a loop
+#define PN_BACKPROJECTION_MAX_BUDGET 60000  // the traversal loop's bound; PN_BACKPROJECTION_MAX_WORK
+                                             // ends resolving sooner on a receiver that heavy
 
 #endif  // PENUMBRA_BACKPROJECTION_H
