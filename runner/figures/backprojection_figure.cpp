@@ -1,7 +1,6 @@
 // docs/modules/backprojection.md's picture: what pnBackprojection computes on a
 // shadow map and what it costs, drawn from the GPU's answers.
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "figures/figures.h"
@@ -44,11 +43,8 @@ Canvas backprojection_figure(const Context& context, const SourceTree& tree) {
   canvas.grey(map, 0, gap, gap, scale, 0.2f, 1.0f, {220, 0, 180});
   canvas.grey(visibility, 0, 2 * gap + panel, gap, scale, 0.0f, 1.0f, {220, 0, 180});
   for (int k = 0; k < n * n; ++k) {
-    const float t = std::sqrt(results[static_cast<size_t>(k)].nodes / most);
-    const Rgb heat{static_cast<unsigned char>(255 * std::min(1.0f, 1.6f * t)),
-                   static_cast<unsigned char>(255 * std::clamp(1.6f * t - 0.6f, 0.0f, 1.0f)),
-                   static_cast<unsigned char>(255 * std::clamp(3.0f * t - 2.0f, 0.0f, 1.0f) * 0.8f)};
-    canvas.fill(3 * gap + 2 * panel + (k % n) * scale, gap + (k / n) * scale, scale, scale, heat);
+    canvas.fill(3 * gap + 2 * panel + (k % n) * scale, gap + (k / n) * scale, scale, scale,
+                node_heat(results[static_cast<size_t>(k)].nodes / most));
   }
   return canvas;
 }

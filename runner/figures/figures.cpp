@@ -161,11 +161,8 @@ Canvas traversal_figure(const Context& context, const SourceTree& tree) {
     long most = 1;
     for (const auto& r : results) most = std::max(most, r.nodes);
     for (int k = 0; k < n * n; ++k) {
-      const float t = std::sqrt(static_cast<float>(results[static_cast<size_t>(k)].nodes) / static_cast<float>(most));
-      const Rgb heat{static_cast<unsigned char>(255 * std::min(1.0f, 1.6f * t)),
-                     static_cast<unsigned char>(255 * std::clamp(1.6f * t - 0.6f, 0.0f, 1.0f)),
-                     static_cast<unsigned char>(255 * std::clamp(3.0f * t - 2.0f, 0.0f, 1.0f) * 0.8f)};
-      canvas.fill(gap + column * (n + gap) + k % n, gap + k / n, 1, 1, heat);
+      const float share = static_cast<float>(results[static_cast<size_t>(k)].nodes) / static_cast<float>(most);
+      canvas.fill(gap + column * (n + gap) + k % n, gap + k / n, 1, 1, node_heat(share));
     }
     ++column;
   }
@@ -214,6 +211,13 @@ Canvas reuse_figure(const Context& context, const SourceTree& tree) {
 }
 
 }  // namespace
+
+Rgb node_heat(float share) {
+  const float t = std::sqrt(share);
+  return {static_cast<unsigned char>(255 * std::min(1.0f, 1.6f * t)),
+          static_cast<unsigned char>(255 * std::clamp(1.6f * t - 0.6f, 0.0f, 1.0f)),
+          static_cast<unsigned char>(255 * std::clamp(3.0f * t - 2.0f, 0.0f, 1.0f) * 0.8f)};
+}
 
 std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
   validate_output_directory(out);

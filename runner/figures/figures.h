@@ -28,6 +28,10 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree);
 // The city camera's frustum from above with its cascades' splits and spheres (cascades_figure.cpp).
 Canvas cascades_splits_figure();
 
+// The colour of a receiver's work in the node-count pictures: black through red and yellow to
+// white, by the square root of its share of the most work (0..1).
+Rgb node_heat(float share);
+
 // pnBackprojection over a boxes map under the sun: the map, the visibility, the nodes visited
 // (backprojection_figure.cpp).
 Canvas backprojection_figure(const Context& context, const SourceTree& tree);
