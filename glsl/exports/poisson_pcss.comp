@@ -1,42 +1,4 @@
-// exports/poisson_pcss.comp — the entry `penumbra bundle poisson_pcss.glsl --target hlsl|msl` translates
-// (runner/shader/export_source.h). SPIR-V keeps only what an entry point reaches, so this entry
-// calls each overload of pnPoissonPcss once per receiver of a receiver image: the export then holds the call and
-// everything it calls, with the parameters' names. Its bindings are an example; an engine calls
-// the exported function from its own shader with its own resources.
-
-layout(local_size_x = 8, local_size_y = 8) in;
-
-#include "poisson_pcss.h"
-
-// The two disks the call reads (poisson_pcss.glsl asks its includer to name them): an engine's
-// constants, or `penumbra poisson --count 36` and `--count 64` uploaded once.
-layout(std140, binding = 5) uniform PnPoissonPcssDisks {
-  vec2 blockerPoints[PN_POISSON_MAX_SAMPLES];
-  vec2 filterPoints[PN_POISSON_MAX_SAMPLES];
-} pnDisks;
-#define PN_POISSON_BLOCKER_DISK pnDisks.blockerPoints
-#define PN_POISSON_FILTER_DISK pnDisks.filterPoints
-#include "poisson_pcss.glsl"
-
-layout(rgba32f, binding = 0) writeonly uniform image2D pnVisibility;
-layout(binding = 1) uniform sampler2D pnReceivers;       // (u, v, light depth, 1: with the receiver plane)
-layout(binding = 2) uniform sampler2D pnReceiverPlanes;  // (du, dv): light depth per texel
-layout(binding = 3) uniform sampler2D pnDepthMap;  // the shadow map, linear depth
-layout(std140, binding = 4) uniform PnPoissonPcssExport {
-  PnLight light;
-  PnPoissonPcssSettings settings;
-  vec2 rotation;  // (cos, sin) of the disks' rotation
-} pnExport;
-
-void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, imageSize(pnVisibility)))) return;
-  vec4 r = texelFetch(pnReceivers, p, 0);
-  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
-  // filterScale 0: the shipped defaults with the block's bias (pnPoissonPcssDefaults, in the export too).
-  PnPoissonPcssSettings settings = pnPoissonPcssDefaults(pnExport.settings.bias);
-  if (pnExport.settings.filterScale > 0.0) settings = pnExport.settings;
-  float v = r.w != 0.0 ? pnPoissonPcss(pnDepthMap, pnExport.light, r.xyz, plane, settings, pnExport.rotation)
-                       : pnPoissonPcss(pnDepthMap, pnExport.light, r.xyz, settings, pnExport.rotation);
-  imageStore(pnVisibility, p, vec4(v));
-}
+// exports/poisson_pcss.comp — the entry `penumbra bundle poisson_pcss.glsl --target hlsl|msl` translates and the
+// exports check runs: poisson_pcss_call.glsl's call in a compute shader (exports.h: why an entry).
+#include "poisson_pcss_call.glsl"
+#include "compute_entry.glsl"

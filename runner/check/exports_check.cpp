@@ -1,22 +1,32 @@
-// Cases of the exports check (issue 27): the export entries — glsl/exports/X.comp, what
-// `penumbra bundle X.glsl --target hlsl|msl` translates — run as query passes on the executor
-// under check (on `--api hlsl`, the HLSL export itself, compiled back by glslang), against the
-// CPU's definitions of the calls, for every pixel of each scene that sees a surface:
+// Cases of the exports check (issues 27, 39): every technique's public call as an engine makes it
+// — the export entries glsl/exports/X.comp (what `penumbra bundle X.glsl --target hlsl|msl`
+// translates) and X.frag (the same call in a fragment shader, a full-screen triangle) — in both
+// stages, on the executor under check (on `--api hlsl`, the HLSL export itself, compiled back),
+// against the CPU's definitions of the calls, for the pixels of each scene that see a surface:
 // - pnExactPcss against exact PCSS brute force (exact_pcss_reference, double);
 // - pnPcf against 2×2 bilinear PCF (pcf_plane_reference, double);
 // - pnHqepcss with its exact settings (no refinement, exact regions, leaf 1) over the decreased
 //   depth pyramid built on the executor, against exact PCSS brute force;
-// - pnFastPcss with its exact settings (no refinement, exact regions, leaf 1, the summed-area
-//   table's blocker sums: exports/fast_pcss.comp with PN_EXPORT_SUM_TABLE) against exact PCSS
-//   brute force, over the min/max mip chain and the table built on the same executor;
-// each through both overloads (half the receivers through the receiverPlane one, with a zero
-// plane, which must give the same), the pixels within rounding of a decision left out and
+// - pnFastPcss with its exact settings (no refinement, exact regions, leaf 1) against exact PCSS
+//   brute force, over the min/max mip chain built on the same executor: with the summed-area
+//   table's blocker sums (exports/fast_pcss with PN_EXPORT_SUM_TABLE) and, as an engine includes
+//   it (no define), with the chain's midpoint sums on a map whose occluding nodes are flat;
+// - pnPoissonPcss and pnVogelPcss, with their defaults (pnXDefaults) and with other counts and
+//   scale, rotated, against the disks' PCSS on the CPU (disk_pcss_reference: open samples make
+//   the visibility an interval; a receiver whose blocker search float could decide otherwise is
+//   left out and counted);
+// - pnBackprojection, every texel resolved, against the rays through the map's surface
+//   (backprojection_reference: an interval);
+// each through both overloads where it has two (half the receivers through the receiverPlane one:
+// with a zero plane for the square-region calls — their planes are the fast_pcss check's — and a
+// small plane of its own for the disks), the pixels within rounding of a decision left out and
 // counted. The shadow map and G-buffer are the CPU's ray casts (the shadow_map check holds the
 // GPU's rasterised ones to them), so the check needs nothing but the executor.
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "backprojection.h"
 #include "check/module_check.h"
 #include "check/pcss_compare.h"
 #include "core/format.h"
@@ -29,7 +39,14 @@
 #include "passes/traversal_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "sampling/sample_table.h"
+#include "core/seeded_random.h"
+#include "passes/shade_pass.h"
+#include "reference/backprojection_reference.h"
+#include "reference/disk_pcss_reference.h"
 #include "reference/pcss_reference.h"
+#include "reference/vogel_pcss_reference.h"
+#include "modules/vogel_pcss.h"
+#include "sampling/poisson_disk.h"
 #include "scene/light_block.h"
 #include "scene/scene.h"
 
@@ -38,6 +55,13 @@ namespace pn::glsl {
 #include "exports/fast_pcss.h"
 #include "exports/hqepcss.h"
 #include "exports/pcf.h"
+#include "exports/poisson_pcss.h"
+#include "exports/vogel_pcss.h"
+#include "exports/backprojection.h"
+PN_STD140_OFFSET(PnPoissonPcssExport, rotationSin, 44);
+PN_STD140_OFFSET(PnPoissonPcssExport, blockerPoints, 48);
+PN_STD140_OFFSET(PnVogelPcssExport, filterSamples, 36);
+PN_STD140_OFFSET(PnBackprojectionExport, thickness, 44);
 PN_STD140_SIZE(PnExactPcssExport, 32);
 PN_STD140_OFFSET(PnExactPcssExport, bias, 24);
 PN_STD140_SIZE(PnFastPcssExport, 80);
@@ -114,18 +138,98 @@ glsl::PnFastPcssExport exact_fast_block(const LightModel& light, float bias, flo
   return b;
 }
 
+
+// Where sample k of a Poisson disk of `diameter` around the centre lies (poisson_pcss.glsl:
+// c + (s / 2) R o_k), with the float position's error and what the diameter's error moves it.
+DiskLayout poisson_layout(const std::vector<Sample>& disk, int count, double rotation_cos, double rotation_sin) {
+  return [&disk, count, rotation_cos, rotation_sin](double cx, double cy, double diameter, double diameter_error) {
+    std::vector<DiskSamplePosition> out;
+    const double r = 0.5 * diameter, unit = std::ldexp(1.0, -24);
+    const double error = 4.0 * unit * (std::max(std::fabs(cx), std::fabs(cy)) + r + 1.0) + 0.5 * diameter_error;
+    for (int k = 0; k < std::min<int>(count, static_cast<int>(disk.size())); ++k) {
+      const double ox = disk[static_cast<std::size_t>(k)].x, oy = disk[static_cast<std::size_t>(k)].y;
+      out.push_back({cx + r * (rotation_cos * ox - rotation_sin * oy), cy + r * (rotation_sin * ox + rotation_cos * oy),
+                     error});
+    }
+    return out;
+  };
+}
+
+// Vogel's samples for the pixel (px, py) (vogel_pcss.glsl), with the float position's error: the
+// sin and cos of Vulkan's precision table, the turn's noise in float, the diameter's error.
+DiskLayout vogel_layout(int count, int px, int py) {
+  return [count, px, py](double cx, double cy, double diameter, double diameter_error) {
+    const double unit = std::ldexp(1.0, -24), trig = 1.0 / 2048.0;
+    const double noise = 53.0 * unit * (3.1 * (PN_IGN_X * (px + 0.5) + PN_IGN_Y * (py + 0.5)) + 2.0);
+    VogelPcssQuery q;
+    q.centre_x = cx, q.centre_y = cy, q.diameter = diameter, q.count = count;
+    q.turn = interleaved_gradient_noise(px + 0.5, py + 0.5);
+    const int n = std::clamp(count, 0, kVogelMaxSamples);
+    std::vector<DiskSamplePosition> out;
+    const double r = 0.5 * diameter;
+    for (int k = 0; k < n; ++k) {
+      const VogelPcssPosition p = vogel_pcss_position(q, k, n);
+      const double angle = 2.0 * M_PI * (4.0 * unit * (0.382 * k + 2.0) + noise);
+      out.push_back({p.x, p.y,
+                     r * (trig + angle + 8.0 * unit) + 4.0 * unit * (std::max(std::fabs(cx), std::fabs(cy)) + r + 1.0) +
+                         0.5 * diameter_error});
+    }
+    return out;
+  };
+}
+
+// The disk receivers: those of the scene, half with a small receiver plane of their own.
+std::vector<ExportReceiver> disk_receivers(const SceneImages& s) {
+  std::vector<ExportReceiver> out = s.receivers;
+  for (std::size_t k = 0; k < out.size(); ++k)
+    if (out[k].plane) out[k].du = 2e-4f * static_cast<float>(int(k % 5) - 2), out[k].dv = 1e-4f * static_cast<float>(int(k % 3) - 1);
+  return out;
+}
+
+// The GPU's visibilities inside the CPU's intervals; receivers the reference leaves open are left out.
+CaseResult interval_case(const std::string& name, const std::vector<DiskPcssResult>& expected,
+                         const std::vector<float>& observed) {
+  BoundedElements elements;
+  int left_out = 0, shadowed = 0;
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    if (expected[k].ambiguous) {
+      ++left_out;
+      continue;
+    }
+    shadowed += expected[k].visibility_lo < 1.0 ? 1 : 0;
+    const auto [x, y] = ExportPass::texel(k, expected.size());
+    // The interval, widened by the float rounding of 1 - occluders / samples.
+    const double lo = expected[k].visibility_lo, hi = expected[k].visibility_hi;
+    elements.add(0.5 * (lo + hi), observed[k], 0.5 * (hi - lo) + kFractionRounding, x, y);
+  }
+  Tolerance tolerance = Tolerance::absolute(kFractionRounding);
+  const Comparison c = compare_bounded(elements, tolerance);
+  return {name + " (" + std::to_string(expected.size()) + " receivers, " + std::to_string(shadowed) +
+              " shadowed, receiver k at texel (k mod s, k / s); " + std::to_string(left_out) +
+              " whose blocker search float could decide otherwise left out)",
+          tolerance, c};
+}
+
+const char* stage_name(ShadeStage stage) { return stage == ShadeStage::fragment ? "fragment" : "compute"; }
+
 }  // namespace
 
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss");
   const ExportPass pcf(env.device, env.tree, "pcf");
-  const ExportPass fast(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
+  const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
+  const ExportPass fast(env.device, env.tree, "fast_pcss");
   const ExportPass hqepcss(env.device, env.tree, "hqepcss");
+  const ExportPass poisson(env.device, env.tree, "poisson_pcss");
+  const ExportPass vogel(env.device, env.tree, "vogel_pcss");
+  const ExportPass backprojection(env.device, env.tree, "backprojection");
   const MinMaxMipBuilder mips(env.device, env.tree);
   const DepthPyramidBuilder pyramids(env.device, env.tree);
   const SummedAreaPass sums(env.device, env.tree);
   const std::unique_ptr<DeviceTexture> table = upload_sample_table(env.device, generate_sample_table(kSampleTableSeed));
   const float bias = exact_pcss().bias;
+  const std::vector<Sample> blocker_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0036u).points;
+  const std::vector<Sample> filter_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0064u).points;
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
@@ -133,43 +237,123 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
     const std::unique_ptr<DeviceTexture> map = env.device.upload(s.map);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen: ";
-    for (const float c : {1.0f, 0.5f}) {
-      glsl::PnExactPcssExport block{};
-      set_light_fields(block, scene.light);
-      block.bias = bias;
-      block.filterScale = c;
-      const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, c, kPcssDecisionMargin);
-      results.push_back(against(name + "exports/exact_pcss.comp (pnExactPcss, c " + format_number("%g", c) +
-                                    ") vs exact PCSS brute force on the CPU",
-                                s, reference, exact.run({{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
-                                                        query_block(block))));
-    }
     const PcssReference exact_reference =
         exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kPcssDecisionMargin);
     const DepthPyramid pyramid = pyramids.build(*map, kMap, kMap, 31);
-    const glsl::PnHqepcssExport hqepcss_block = exact_settings_block<glsl::PnHqepcssExport>(scene.light, bias, 1.0f);
-    results.push_back(against(name + "exports/hqepcss.comp (pnHqepcss: refine 0, exact regions, leaf 1) vs exact PCSS "
-                                     "brute force on the CPU",
-                              s, exact_reference,
-                              hqepcss.run({{PN_EXPORT_PYRAMID_BINDING, *pyramid.texture},
-                                           {PN_EXPORT_DEPTH_MAP_BINDING, *map}},
-                                          s.receivers, query_block(hqepcss_block))));
     const MinMaxMipChain mip = mips.build(*map, kMap);
     const SummedAreaTable depth_sums = sums.build(*map, kMap, kMap);
-    const glsl::PnFastPcssExport fast_block = exact_fast_block(scene.light, bias, 1.0f);
-    results.push_back(
-        against(name + "exports/fast_pcss.comp (pnFastPcss: refine 0, exact regions, leaf 1, table sums) vs exact PCSS "
-                       "brute force on the CPU",
-                s, exact_reference,
-                fast.run({{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
-                          {PN_EXPORT_SAMPLE_TABLE_BINDING, *table},
-                          {PN_EXPORT_SUM_TABLE_BINDING, *depth_sums.texture}},
+    const std::vector<ExportReceiver> disks = disk_receivers(s);
+
+    // The disks' calls: the defaults (filterScale 0: pnXDefaults), and other counts and scale.
+    struct DiskCase {
+      float filter_scale;
+      int blocker_samples, filter_samples;
+      std::vector<DiskPcssResult> poisson, vogel;
+    };
+    std::vector<DiskCase> disk_cases{{0.0f, PN_POISSON_BLOCKER_SAMPLES, PN_POISSON_PCF_SAMPLES, {}, {}},
+                                     {0.5f, 16, 24, {}, {}}};
+    const double rotation_cos = std::cos(0.7), rotation_sin = std::sin(0.7);
+    for (DiskCase& d : disk_cases) {
+      const double scale = d.filter_scale > 0.0f ? d.filter_scale : 1.0;
+      const int vogel_blockers = d.filter_scale > 0.0f ? d.blocker_samples : PN_VOGEL_BLOCKER_SAMPLES;
+      const int vogel_filter = d.filter_scale > 0.0f ? d.filter_samples : PN_VOGEL_PCF_SAMPLES;
+      for (std::size_t k = 0; k < disks.size(); ++k) {
+        const ExportReceiver& r = disks[k];
+        const DiskPcssReceiver receiver{r.u, r.v, r.depth, r.plane ? r.du : 0.0, r.plane ? r.dv : 0.0};
+        d.poisson.push_back(disk_pcss_reference(
+            s.map, scene.light, receiver, bias, scale, poisson_layout(blocker_disk, d.blocker_samples, rotation_cos, rotation_sin),
+            poisson_layout(filter_disk, d.filter_samples, rotation_cos, rotation_sin)));
+        const auto [px, py] = ExportPass::texel(k, disks.size());
+        d.vogel.push_back(disk_pcss_reference(s.map, scene.light, receiver, bias, scale,
+                                              vogel_layout(vogel_blockers, px, py), vogel_layout(vogel_filter, px, py)));
+      }
+    }
+    // Back-projection, every texel resolved, on every third receiver (the reference is brute force).
+    std::vector<ExportReceiver> bp_receivers;
+    std::vector<DiskPcssResult> bp_expected;
+    constexpr int kBackprojectionSide = 4;
+    for (std::size_t k = 0; k < s.receivers.size(); k += 3) {
+      const ExportReceiver& r = s.receivers[k];
+      bp_receivers.push_back(r);
+      const BackprojectionBounds b =
+          backprojection_reference(s.map, scene.light, r.u, r.v, r.depth, bias, kBackprojectionSide,
+                                   PN_BACKPROJECTION_DEFAULT_GAP, PN_BACKPROJECTION_DEFAULT_THICKNESS);
+      bp_expected.push_back({false, b.visibility_lo, b.visibility_hi});
+    }
+
+    for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
+      const std::string where = name + stage_name(stage) + " ";
+      for (const float c : {1.0f, 0.5f}) {
+        glsl::PnExactPcssExport block{};
+        set_light_fields(block, scene.light);
+        block.bias = bias;
+        block.filterScale = c;
+        const PcssReference reference =
+            c == 1.0f ? exact_reference : exact_pcss_reference(s.map, s.gbuffer, scene.light, bias, c, kPcssDecisionMargin);
+        results.push_back(against(where + "exports/exact_pcss (pnExactPcss, c " + format_number("%g", c) +
+                                      ") vs exact PCSS brute force on the CPU",
+                                  s, reference, exact.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
+                                                          query_block(block))));
+      }
+      const glsl::PnHqepcssExport hqepcss_block = exact_settings_block<glsl::PnHqepcssExport>(scene.light, bias, 1.0f);
+      results.push_back(against(where + "exports/hqepcss (pnHqepcss: refine 0, exact regions, leaf 1) vs exact PCSS "
+                                        "brute force on the CPU",
+                                s, exact_reference,
+                                hqepcss.run(stage, {{PN_EXPORT_PYRAMID_BINDING, *pyramid.texture},
+                                                    {PN_EXPORT_DEPTH_MAP_BINDING, *map}},
+                                            s.receivers, query_block(hqepcss_block))));
+      const glsl::PnFastPcssExport fast_block = exact_fast_block(scene.light, bias, 1.0f);
+      results.push_back(against(
+          where + "exports/fast_pcss with PN_EXPORT_SUM_TABLE (pnFastPcss: refine 0, exact regions, leaf 1, table "
+                  "sums) vs exact PCSS brute force on the CPU",
+          s, exact_reference,
+          fast_table.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+                                 {PN_EXPORT_SAMPLE_TABLE_BINDING, *table},
+                                 {PN_EXPORT_SUM_TABLE_BINDING, *depth_sums.texture}},
                          s.receivers, query_block(fast_block))));
-    const glsl::PnPcfExport block{bias};
-    const PcssReference reference =
-        pcf_plane_reference(s.map, s.gbuffer, scene.light, bias, std::ldexp(1.0, -20), 0.0);
-    results.push_back(against(name + "exports/pcf.comp (pnPcf) vs 2x2 bilinear PCF on the CPU", s, reference,
-                              pcf.run({{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers, query_block(block))));
+      const glsl::PnPcfExport pcf_block{bias};
+      const PcssReference pcf_reference =
+          pcf_plane_reference(s.map, s.gbuffer, scene.light, bias, std::ldexp(1.0, -20), 0.0);
+      results.push_back(against(where + "exports/pcf (pnPcf) vs 2x2 bilinear PCF on the CPU", s, pcf_reference,
+                                pcf.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
+                                        query_block(pcf_block))));
+      for (const DiskCase& d : disk_cases) {
+        const std::string settings = d.filter_scale > 0.0f ? format_number("c %g, ", d.filter_scale) + std::to_string(d.blocker_samples) +
+                                                                 " / " + std::to_string(d.filter_samples) + " samples"
+                                                           : std::string("its defaults");
+        glsl::PnPoissonPcssExport pb{};
+        set_light_fields(pb, scene.light);
+        pb.bias = bias, pb.filterScale = d.filter_scale;
+        pb.blockerSamples = d.blocker_samples, pb.filterSamples = d.filter_samples;
+        pb.rotationCos = static_cast<float>(rotation_cos), pb.rotationSin = static_cast<float>(rotation_sin);
+        for (int k = 0; k < PN_POISSON_MAX_SAMPLES; ++k) {
+          pb.blockerPoints[k] = {blocker_disk[static_cast<std::size_t>(k)].x, blocker_disk[static_cast<std::size_t>(k)].y};
+          pb.filterPoints[k] = {filter_disk[static_cast<std::size_t>(k)].x, filter_disk[static_cast<std::size_t>(k)].y};
+        }
+        results.push_back(interval_case(where + "exports/poisson_pcss (pnPoissonPcss, " + settings +
+                                            ", both overloads, rotated) vs Poisson-disk PCSS on the CPU",
+                                        d.poisson,
+                                        poisson.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, disks, query_block(pb))));
+        glsl::PnVogelPcssExport vb{};
+        set_light_fields(vb, scene.light);
+        vb.bias = bias, vb.filterScale = d.filter_scale;
+        vb.blockerSamples = d.blocker_samples, vb.filterSamples = d.filter_samples;
+        results.push_back(interval_case(where + "exports/vogel_pcss (pnVogelPcss, " + settings +
+                                            ", both overloads) vs Vogel-disk PCSS on the CPU",
+                                        d.vogel,
+                                        vogel.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, disks, query_block(vb))));
+      }
+      glsl::PnBackprojectionExport bb{};
+      set_light_fields(bb, scene.light);
+      bb.bias = bias, bb.side = kBackprojectionSide, bb.tolerance = 0.0f, bb.budget = PN_BACKPROJECTION_MAX_BUDGET;
+      bb.gap = static_cast<float>(PN_BACKPROJECTION_DEFAULT_GAP);
+      bb.thickness = static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS);
+      results.push_back(interval_case(where + "exports/backprojection (pnBackprojection, 4 x 4 samples, every texel "
+                                              "resolved) vs rays through the map's surface on the CPU",
+                                      bp_expected,
+                                      backprojection.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture}},
+                                                         bp_receivers, query_block(bb))));
+    }
   }
   return results;
 }

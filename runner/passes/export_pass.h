@@ -1,12 +1,13 @@
-// Runner side of the export entries (glsl/exports/X.comp, exports.h): the entry `bundle
-// X.glsl --target hlsl|msl` translates, run as a query pass — so on `check --api hlsl` what runs
-// is the module's HLSL export itself, compiled back.
+// Runner side of the export entries (glsl/exports/X.comp and X.frag, exports.h): the module's
+// public call as `bundle X.glsl --target hlsl|msl` exports it, run over a list of receivers in a
+// compute shader or in a fragment shader (a full-screen triangle) — so on `check --api hlsl` what
+// runs is the module's HLSL export itself, compiled back.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "passes/query_pass.h"
+#include "passes/shade_pass.h"
 
 namespace pn {
 
@@ -18,16 +19,24 @@ struct ExportReceiver {
 
 class ExportPass {
  public:
-  // `module`: "pcf", "exact_pcss", "fast_pcss" (exports/<module>.comp), compiled with `defines`.
+  // `module`: "pcf", "exact_pcss", "fast_pcss", … (exports/<module>.comp | .frag), compiled with `defines`.
   ExportPass(const QueryDevice& device, const SourceTree& tree, const std::string& module,
-             const std::vector<Define>& defines = {});
-  // The call's visibility for each receiver, reading `textures` (the depth map, or the structures
-  // the call reads, at the export's bindings) with the export's `block`.
-  std::vector<float> run(const std::vector<QueryTexture>& textures, const std::vector<ExportReceiver>& receivers,
-                         const QueryBlock& block) const;
+             std::vector<Define> defines = {});
+  // The call's visibility for each receiver in `stage`, reading `textures` (the depth map, or the
+  // structures the call reads, at the export's bindings) with the export's `block`. Receiver k sits
+  // at texel (k mod s, k / s) of an s × s receiver image: the `pixel` a call takes (Fast PCSS's
+  // sample set, Vogel's rotation) is that texel, in either stage.
+  std::vector<float> run(ShadeStage stage, const std::vector<QueryTexture>& textures,
+                         const std::vector<ExportReceiver>& receivers, const QueryBlock& block) const;
+
+  // The side s of the receiver image for `count` receivers, and receiver k's texel.
+  static int side(std::size_t count);
+  static std::pair<int, int> texel(std::size_t k, std::size_t count);
 
  private:
-  QueryPass query_;
+  const QueryDevice* device_;
+  std::vector<Define> defines_;
+  ShadePass pass_;
 };
 
 }  // namespace pn

@@ -1,0 +1,20 @@
+// exports/backprojection_call.glsl — the call exports/backprojection.comp and .frag make:
+// pnBackprojection once per receiver of a receiver image (bindings: exports.h, backprojection.h).
+
+#include "backprojection.h"
+#include "backprojection.glsl"
+
+layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain
+
+#define PN_EXPORT_CALL
+
+float pnExportCall(ivec2 p) {
+  vec3 r = texelFetch(pnReceivers, p, 0).xyz;
+  // side <= 0: the shipped defaults (pnBackprojectionDefaults, in the export too).
+  PnBackprojectionSettings settings = pnBackprojectionDefaults();
+  if (pnExport.side > 0)
+    settings = PnBackprojectionSettings(pnExport.side, pnExport.tolerance, pnExport.budget, pnExport.gap,
+                                        pnExport.thickness);
+  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, pnExport.bias, settings);
+}

@@ -1,0 +1,31 @@
+// exports/fast_pcss_call.glsl — the call exports/fast_pcss.comp and .frag make: each overload of
+// pnFastPcss once per receiver of a receiver image (bindings: exports.h, fast_pcss.h).
+
+#include "fast_pcss.h"
+
+#ifdef PN_EXPORT_SUM_TABLE  // the exact blocker sums (PN_DEPTH_SUMS_TABLE): the check's exact case
+layout(binding = PN_EXPORT_SUM_TABLE_BINDING) uniform highp usampler2D pnDepthSums;
+#define PN_TRAVERSAL_SUM_TABLE pnDepthSums
+#endif
+#include "fast_pcss.glsl"
+
+layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain
+layout(binding = PN_EXPORT_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
+
+#define PN_EXPORT_CALL
+
+float pnExportCall(ivec2 p) {
+  vec4 r = texelFetch(pnReceivers, p, 0);
+  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+  // filterScale <= 0: the shipped defaults with the block's bias (pnFastPcssDefaults, in the export too).
+  PnFastPcssSettings settings = pnFastPcssDefaults(pnExport.bias);
+  if (pnExport.filterScale > 0.0)
+    settings = PnFastPcssSettings(pnExport.bias, pnExport.filterScale, pnExport.refineIterations, pnExport.regionMode,
+                                  pnExport.leafSide, pnExport.leafDivisor, pnExport.leafMode, pnExport.blockerLeafMode,
+                                  pnExport.nodeBudget, pnExport.depthSums, pnExport.grid);
+  return r.w != 0.0 ? pnFastPcss(pnMip, pnSampleTable, light, r.xyz, plane, p, settings)
+                    : pnFastPcss(pnMip, pnSampleTable, light, r.xyz, p, settings);
+}

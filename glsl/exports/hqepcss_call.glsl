@@ -1,0 +1,25 @@
+// exports/hqepcss_call.glsl — the call exports/hqepcss.comp and .frag make: each overload of
+// pnHqepcss once per receiver of a receiver image (bindings: exports.h, hqepcss.h).
+
+#include "hqepcss.h"
+#include "hqepcss.glsl"
+
+layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+layout(binding = PN_EXPORT_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;  // the decreased depth pyramid
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;    // the shadow map, linear depth
+
+#define PN_EXPORT_CALL
+
+float pnExportCall(ivec2 p) {
+  vec4 r = texelFetch(pnReceivers, p, 0);
+  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+  // filterScale <= 0: the shipped defaults with the block's bias (pnHqepcssDefaults, in the export too).
+  PnHqepcssSettings settings = pnHqepcssDefaults(pnExport.bias);
+  if (pnExport.filterScale > 0.0)
+    settings = PnHqepcssSettings(pnExport.bias, pnExport.filterScale, pnExport.refineIterations, pnExport.regionMode,
+                                 pnExport.leafSide, pnExport.leafDivisor, pnExport.nodeBudget);
+  return r.w != 0.0 ? pnHqepcss(pnPyramid, pnDepthMap, light, r.xyz, plane, settings)
+                    : pnHqepcss(pnPyramid, pnDepthMap, light, r.xyz, settings);
+}

@@ -1,0 +1,26 @@
+// poisson_pcss.h — the block of exports/poisson_pcss.comp and .frag, shared with the exports check
+// (runner/check/exports_check.cpp). Valid as GLSL and as C++.
+
+#ifndef PENUMBRA_EXPORTS_POISSON_PCSS_H
+#define PENUMBRA_EXPORTS_POISSON_PCSS_H
+
+#include "../passes/light_fields.h"
+#include "../passes/uniform_block.h"
+#include "../poisson_pcss.h"
+#include "exports.h"
+
+// The two disks travel in the block (an engine may paste `penumbra poisson --count 36` and
+// `--count 64` as constants instead): std140, a vec2 a 16-byte element.
+PN_UNIFORM_BLOCK(PnPoissonPcssExport, PN_EXPORT_PARAMS_BINDING)
+  PN_LIGHT_FIELDS
+  float bias;
+  float filterScale;  // <= 0: pnPoissonPcssDefaults(bias)
+  int blockerSamples;
+  int filterSamples;
+  float rotationCos;  // the disks' rotation (cos, sin); (1, 0): none
+  float rotationSin;
+  PN_VEC2_ARRAY(blockerPoints, PN_POISSON_MAX_SAMPLES)
+  PN_VEC2_ARRAY(filterPoints, PN_POISSON_MAX_SAMPLES)
+PN_END_UNIFORM_BLOCK(pnExport)
+
+#endif  // PENUMBRA_EXPORTS_POISSON_PCSS_H

@@ -1,0 +1,29 @@
+// exports/poisson_pcss_call.glsl — the call exports/poisson_pcss.comp and .frag make: each
+// overload of pnPoissonPcss once per receiver of a receiver image (bindings: exports.h,
+// poisson_pcss.h; the disks read in place from the block, as poisson_pcss.glsl asks its includer).
+
+#include "poisson_pcss.h"
+
+#define PN_POISSON_BLOCKER_DISK pnExport.blockerPoints
+#define PN_POISSON_FILTER_DISK pnExport.filterPoints
+#include "poisson_pcss.glsl"
+
+layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
+
+#define PN_EXPORT_CALL
+
+float pnExportCall(ivec2 p) {
+  vec4 r = texelFetch(pnReceivers, p, 0);
+  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+  vec2 rotation = vec2(pnExport.rotationCos, pnExport.rotationSin);
+  // filterScale <= 0: the shipped defaults with the block's bias (pnPoissonPcssDefaults, in the export too).
+  PnPoissonPcssSettings settings = pnPoissonPcssDefaults(pnExport.bias);
+  if (pnExport.filterScale > 0.0)
+    settings = PnPoissonPcssSettings(pnExport.bias, pnExport.filterScale, pnExport.blockerSamples,
+                                     pnExport.filterSamples);
+  return r.w != 0.0 ? pnPoissonPcss(pnDepthMap, light, r.xyz, plane, settings, rotation)
+                    : pnPoissonPcss(pnDepthMap, light, r.xyz, settings, rotation);
+}

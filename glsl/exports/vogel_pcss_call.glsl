@@ -1,0 +1,25 @@
+// exports/vogel_pcss_call.glsl — the call exports/vogel_pcss.comp and .frag make: each overload
+// of pnVogelPcss once per receiver of a receiver image, the pixel the receiver's texel
+// (bindings: exports.h, vogel_pcss.h).
+
+#include "vogel_pcss.h"
+#include "vogel_pcss.glsl"
+
+layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
+
+#define PN_EXPORT_CALL
+
+float pnExportCall(ivec2 p) {
+  vec4 r = texelFetch(pnReceivers, p, 0);
+  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+  // filterScale <= 0: the shipped defaults with the block's bias (pnVogelPcssDefaults, in the export too).
+  PnVogelPcssSettings settings = pnVogelPcssDefaults(pnExport.bias);
+  if (pnExport.filterScale > 0.0)
+    settings = PnVogelPcssSettings(pnExport.bias, pnExport.filterScale, pnExport.blockerSamples,
+                                   pnExport.filterSamples);
+  return r.w != 0.0 ? pnVogelPcss(pnDepthMap, light, r.xyz, plane, p, settings)
+                    : pnVogelPcss(pnDepthMap, light, r.xyz, p, settings);
+}

@@ -1,0 +1,25 @@
+// exports/vsm_call.glsl — the calls exports/vsm.comp and .frag make: pnVsm, pnEvsm2 or pnEvsm4
+// (the block's kind) once per receiver of a receiver image (bindings: exports.h, vsm.h).
+
+#include "vsm.h"
+#include "vsm.glsl"
+
+layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+layout(binding = PN_EXPORT_MOMENTS_BINDING) uniform sampler2D pnMoments;
+layout(binding = PN_EXPORT_VSM_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
+
+#define PN_EXPORT_CALL
+
+float pnExportCall(ivec2 p) {
+  vec3 r = texelFetch(pnReceivers, p, 0).xyz;
+  vec2 range = vec2(pnExport.depthNear, pnExport.depthFar);
+  if (pnExport.kind == PN_EXPORT_EVSM2)
+    return pnEvsm2(pnMoments, pnPyramid, r, pnExport.radius, pnExport.bias, range, pnExport.evsm2Exponent,
+                   pnExport.minVariance, pnExport.bleedingReduction);
+  if (pnExport.kind == PN_EXPORT_EVSM4)
+    return pnEvsm4(pnMoments, pnPyramid, r, pnExport.radius, pnExport.bias, range,
+                   vec2(pnExport.evsm4Positive, pnExport.evsm4Negative), pnExport.minVariance,
+                   pnExport.bleedingReduction);
+  return pnVsm(pnMoments, pnPyramid, r, pnExport.radius, pnExport.bias, pnExport.minVariance,
+               pnExport.bleedingReduction);
+}
