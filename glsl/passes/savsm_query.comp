@@ -34,5 +34,8 @@ void main() {
   imageStore(pnSearch, p, vec4(vec2(s.searchRect.origin), vec2(s.searchRect.size)));
   imageStore(pnFilter, p, vec4(vec2(s.filterRect.origin), vec2(s.filterRect.size)));
   imageStore(pnBlocker, p, vec4(s.blocker, s.hasBlocker ? 1.0 : 0.0, s.filterSide, float(pnFetches)));
-  imageStore(pnResult, p, vec4(s.mean, s.variance, s.chebyshev, s.visibility));
+  // The visibility is the module's one call, pnSavsm (after the fetches are stored: it fetches
+  // again), so the check holds the call itself to the reference, not only pnSavsmEstimate.
+  float visibility = pnSavsm(pnTable, pnMip, pnSavsmParamsLight(), q.xyz, pnParams.unitRange, pnSavsmParamsSettings());
+  imageStore(pnResult, p, vec4(s.mean, s.variance, s.chebyshev, visibility));
 }

@@ -1,7 +1,7 @@
 // vsm_query.comp — vsm.glsl's bounds for a batch of receivers (the check's
 // query pass). Query k: texel k of the query image = (texel x, texel y,
-// receiver depth, bias); result k = (visibility — pnVsmVisibility /
-// pnEvsmVisibility2 / 4 —, the Chebyshev bound p alone, p after the
+// receiver depth, bias); result k = (visibility — the one call pnVsm /
+// pnEvsm2 / 4 at the texel's centre —, the Chebyshev bound p alone, p after the
 // bleeding reduction, the depth-range bound's code PN_VSM_BOUND_*).
 // The kind comes from the parameter block (a check pass: its branches cost
 // nothing that matters).
@@ -24,22 +24,25 @@ void main() {
   vec4 q = texelFetch(pnQueries, p, 0);
   ivec2 texel = ivec2(q.xy);
   float t = q.z - q.w;
+  // The visibility is the module's one call (pnVsm, pnEvsm2, pnEvsm4) for a receiver at the
+  // texel's centre, so the check holds the call itself to the reference, not only its parts.
+  vec3 receiver = vec3(vec2(texel) + 0.5, q.z);
   vec4 m = pnVsmFetchMoments(pnMoments, texel);
   float bound = pnVsmDepthRangeBound(pnVsmWindowMinMax(pnPyramid, texel, pnParams.radius), t);
   float chebyshev;
   float visibility;
   if (pnParams.kind == PN_VSM_KIND_EVSM4) {
     chebyshev = pnEvsmBound4(m, t, pnParams.depthRange, pnParams.exponents, pnParams.minVariance);
-    visibility = pnEvsmVisibility4(pnMoments, pnPyramid, texel, pnParams.radius, q.z, q.w, pnParams.depthRange,
-                                   pnParams.exponents, pnParams.minVariance, pnParams.bleedingReduction);
+    visibility = pnEvsm4(pnMoments, pnPyramid, receiver, pnParams.radius, q.w, pnParams.depthRange, pnParams.exponents,
+                         pnParams.minVariance, pnParams.bleedingReduction);
   } else if (pnParams.kind == PN_VSM_KIND_EVSM2) {
     chebyshev = pnEvsmBound2(m.xy, t, pnParams.depthRange, pnParams.exponents.x, pnParams.minVariance);
-    visibility = pnEvsmVisibility2(pnMoments, pnPyramid, texel, pnParams.radius, q.z, q.w, pnParams.depthRange,
-                                   pnParams.exponents.x, pnParams.minVariance, pnParams.bleedingReduction);
+    visibility = pnEvsm2(pnMoments, pnPyramid, receiver, pnParams.radius, q.w, pnParams.depthRange,
+                         pnParams.exponents.x, pnParams.minVariance, pnParams.bleedingReduction);
   } else {
     chebyshev = pnVsmChebyshev(m.xy, t, pnParams.minVariance);
-    visibility = pnVsmVisibility(pnMoments, pnPyramid, texel, pnParams.radius, q.z, q.w, pnParams.minVariance,
-                                 pnParams.bleedingReduction);
+    visibility = pnVsm(pnMoments, pnPyramid, receiver, pnParams.radius, q.w, pnParams.minVariance,
+                       pnParams.bleedingReduction);
   }
   imageStore(pnResults, p, vec4(visibility, chebyshev, pnVsmReduceBleeding(chebyshev, pnParams.bleedingReduction),
                                 bound));

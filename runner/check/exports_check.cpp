@@ -129,13 +129,37 @@ Block exact_settings_block(const LightModel& light, float bias, float c) {
 }
 
 // pnFastPcss's besides: the summed-area table's exact blocker sums, no grid.
-glsl::PnFastPcssExport exact_fast_block(const LightModel& light, float bias, float c) {
+glsl::PnFastPcssExport exact_fast_block(const LightModel& light, float bias, float c, int depth_sums = PN_DEPTH_SUMS_TABLE) {
   glsl::PnFastPcssExport b = exact_settings_block<glsl::PnFastPcssExport>(light, bias, c);
   b.leafMode = PN_LEAF_SAMPLED;
   b.blockerLeafMode = PN_FAST_PCSS_SAME_LEAF_MODE;
-  b.depthSums = PN_DEPTH_SUMS_TABLE;
+  b.depthSums = depth_sums;
   b.grid = 0;
   return b;
+}
+
+// A map an engine's Fast PCSS (no PN_TRAVERSAL_SUM_TABLE: the chain's midpoint sums) computes
+// exactly: blockers of one depth (so every node wholly below a receiver has min = max) in
+// rectangles over an empty (+Inf) map, and receivers at random places and depths behind them.
+SceneImages one_depth_blockers(std::uint32_t seed) {
+  SceneImages out{Image(kMap, kMap, 1, INFINITY), Image(kScreen, kScreen, 4), {}, {}};
+  SeededRandom random(seed);
+  constexpr float kBlocker = 3.0f;
+  for (int r = 0; r < 6; ++r) {
+    const int x0 = random.uniform_int(0, kMap - 8), y0 = random.uniform_int(0, kMap - 8);
+    const int w = random.uniform_int(3, 20), h = random.uniform_int(3, 20);
+    for (int y = y0; y < std::min(kMap, y0 + h); ++y)
+      for (int x = x0; x < std::min(kMap, x0 + w); ++x) out.map.at(x, y) = kBlocker;
+  }
+  for (int y = 0; y < kScreen; ++y)
+    for (int x = 0; x < kScreen; ++x) {
+      const float v[4] = {random.uniform_float(0.0f, static_cast<float>(kMap)),
+                          random.uniform_float(0.0f, static_cast<float>(kMap)), random.uniform_float(3.2f, 8.0f), 1.0f};
+      for (int c = 0; c < 4; ++c) out.gbuffer.at(x, y, c) = v[c];
+      out.receivers.push_back({v[0], v[1], v[2], out.receivers.size() % 2 == 1, 0.0f, 0.0f});
+      out.pixels.push_back({x, y});
+    }
+  return out;
 }
 
 
@@ -231,6 +255,24 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const std::vector<Sample> blocker_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0036u).points;
   const std::vector<Sample> filter_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0064u).points;
   std::vector<CaseResult> results;
+  {
+    // pnFastPcss as an engine includes it (no define: the chain's midpoint sums), on blockers of
+    // one depth, where those sums are exact.
+    const LightModel light = make_scene(fixtures::kScenes[0], kMap).light;
+    const SceneImages s = one_depth_blockers(0x5eed0039u);
+    const std::unique_ptr<DeviceTexture> map = env.device.upload(s.map);
+    const MinMaxMipChain mip = mips.build(*map, kMap);
+    const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, light, bias, 1.0, kPcssDecisionMargin);
+    const glsl::PnFastPcssExport block = exact_fast_block(light, bias, 1.0f, PN_DEPTH_SUMS_MIDPOINT);
+    for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment})
+      results.push_back(against(std::string("blockers of one depth, 64² map: ") + stage_name(stage) +
+                                    " exports/fast_pcss as an engine includes it (pnFastPcss: refine 0, exact regions, "
+                                    "leaf 1, the chain's midpoint sums) vs exact PCSS brute force on the CPU",
+                                s, reference,
+                                fast.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+                                                 {PN_EXPORT_SAMPLE_TABLE_BINDING, *table}},
+                                         s.receivers, query_block(block))));
+  }
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
     const SceneImages s = ray_cast(scene);
