@@ -5,7 +5,8 @@
 //   row 0 of the map to its last, added up with pnPcfAddRows (what
 //   pcss_scan.comp does across dispatches, here in one invocation).
 // Result k: (occluders, depth sum, texels, 0).
-// B.w = 1 instead: pnPcfBilinearVisibility at position A.xy for receiver B.x, bias B.y; result
+// B.w = 1 instead: pnPcfBilinearVisibility at position A.xy for receiver B.x, bias B.y (at odd
+//   texel columns the one call pnPcf(depthMap, (A.xy, B.x), bias), the same by definition); result
 //   (visibility, 0, 0, 0); with a receiver-plane gradient A.zw != 0, pnPcf's plane overload
 //   (pnPcfBilinearVisibilityPlane at (A.xy, B.x)).
 //   bindings: pcf_query.h
@@ -29,8 +30,10 @@ void main() {
   vec4 b = texelFetch(pnQueryB, p, 0);
   ivec2 origin = ivec2(a.xy), size = ivec2(a.zw);
   if (b.w == 1.0) {
-    float v = all(equal(a.zw, vec2(0.0))) ? pnPcfBilinearVisibility(pnDepthMap, a.xy, b.x, b.y)
-                                          : pnPcf(pnDepthMap, vec3(a.xy, b.x), a.zw, b.y);
+    // Without a gradient, every other query through the one call pnPcf(depthMap, receiver, bias).
+    float v = !all(equal(a.zw, vec2(0.0))) ? pnPcf(pnDepthMap, vec3(a.xy, b.x), a.zw, b.y)
+              : (p.x % 2 == 1)             ? pnPcf(pnDepthMap, vec3(a.xy, b.x), b.y)
+                                           : pnPcfBilinearVisibility(pnDepthMap, a.xy, b.x, b.y);
     imageStore(pnResult, p, vec4(v, 0.0, 0.0, 0.0));
     return;
   }
