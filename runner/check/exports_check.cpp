@@ -35,6 +35,10 @@
 #include "passes/depth_pyramid_pass.h"
 #include "passes/export_pass.h"
 #include "passes/minmax_mip_pass.h"
+#include "passes/vsm_pass.h"
+#include "check/vsm_tolerance.h"
+#include "fixture/texture_fixture.h"
+#include "reference/vsm_reference.h"
 #include "passes/summed_area_pass.h"
 #include "passes/traversal_pass.h"
 #include "pipeline/pcss_settings.h"
@@ -58,10 +62,12 @@ namespace pn::glsl {
 #include "exports/poisson_pcss.h"
 #include "exports/vogel_pcss.h"
 #include "exports/backprojection.h"
+#include "exports/vsm.h"
 PN_STD140_OFFSET(PnPoissonPcssExport, rotationSin, 44);
 PN_STD140_OFFSET(PnPoissonPcssExport, blockerPoints, 48);
 PN_STD140_OFFSET(PnVogelPcssExport, filterSamples, 36);
 PN_STD140_OFFSET(PnBackprojectionExport, thickness, 44);
+PN_STD140_OFFSET(PnVsmExport, kind, 36);
 PN_STD140_SIZE(PnExactPcssExport, 32);
 PN_STD140_OFFSET(PnExactPcssExport, bias, 24);
 PN_STD140_SIZE(PnFastPcssExport, 80);
@@ -238,6 +244,60 @@ const char* stage_name(ShadeStage stage) { return stage == ShadeStage::fragment 
 
 }  // namespace
 
+// pnVsm, pnEvsm2 and pnEvsm4 on the two-occluder fixture: the moments built and blurred on the
+// executor (the vsm check holds them to the definition) and read back, a receiver a texel at a
+// random place in it and a random depth around its window's depths; each against vsm.glsl's
+// definition in double on those moments (vsm_reference.h), within the vsm check's bound.
+void vsm_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
+  const VsmMomentsPass moments(env.device, env.tree);
+  const DepthPyramidBuilder pyramids(env.device, env.tree);
+  const ExportPass pass(env.device, env.tree, "vsm");
+  const Image depth = generate_two_occluders(fixtures::kTwoOccluders);
+  const int n = depth.width;
+  const std::unique_ptr<DeviceTexture> map = env.device.upload(depth);
+  const DepthPyramid pyramid = pyramids.build(*map, n, n, 30);
+  constexpr float kBias = 0.01f;
+  SeededRandom random(0x5eed0e5au);
+  std::vector<ExportReceiver> receivers;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const DepthRange r = window_depth_range(depth, x, y, BlurParams{}.radius);
+      const float lo = std::isfinite(r.min) ? r.min : 0.5f, hi = std::isfinite(r.max) ? r.max : 0.75f;
+      receivers.push_back({x + random.uniform_float(0.0f, 0.99f), y + random.uniform_float(0.0f, 0.99f),
+                           random.uniform_float(lo - 0.05f, hi + 0.05f), false, 0.0f, 0.0f});
+    }
+  for (const VsmKind kind : {VsmKind::vsm, VsmKind::evsm2, VsmKind::evsm4}) {
+    VsmParams params;
+    params.kind = kind;
+    params.near_depth = -0.1f, params.far_depth = 1.2f;  // the fixture's depths lie in [0, 1]
+    const VsmMoments blurred = moments.blurred(moments.moments(*map, n, n, params), params);
+    const Image window = channels_of(env.device.read_texture(*blurred.texture), 0, blurred.channels);
+    Image expected(n, n);
+    for (int k = 0; k < n * n; ++k) {
+      const int x = k % n, y = k / n;
+      const float t = receivers[static_cast<std::size_t>(k)].depth - kBias;  // the float t the module forms
+      const double p = vsm_bound(vsm_tolerance::moments_at(window, x, y), t, params);
+      const double code = depth_range_bound(window_depth_range(depth, x, y, params.blur.radius), t);
+      expected.at(x, y) = static_cast<float>(vsm_visibility(code, reduce_bleeding(p, params.bleeding_reduction)));
+    }
+    const glsl::PnVsmExport block{params.positive_exponent, params.positive_exponent, params.negative_exponent,
+                                  params.near_depth, params.far_depth, kBias, params.min_variance,
+                                  params.bleeding_reduction, params.blur.radius, static_cast<int>(kind)};
+    const Tolerance tolerance = Tolerance::absolute(vsm_tolerance::reduced_tolerance(params));
+    for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
+      const std::vector<float> got =
+          pass.run(stage, {{PN_EXPORT_MOMENTS_BINDING, *blurred.texture}, {PN_EXPORT_VSM_PYRAMID_BINDING, *pyramid.texture}},
+                   receivers, query_block(block));
+      Image observed(n, n);
+      for (int k = 0; k < n * n; ++k) observed.at(k % n, k / n) = got[static_cast<std::size_t>(k)];
+      results.push_back({std::string(fixtures::kTwoOccluders.name) + ": " + stage_name(stage) + " exports/vsm (" +
+                             (kind == VsmKind::vsm ? "pnVsm" : kind == VsmKind::evsm2 ? "pnEvsm2" : "pnEvsm4") +
+                             ", a receiver a texel, at (x, y)) vs the definition in double on the executor's moments",
+                         tolerance, compare(expected, observed, tolerance)});
+    }
+  }
+}
+
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss");
   const ExportPass pcf(env.device, env.tree, "pcf");
@@ -255,6 +315,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const std::vector<Sample> blocker_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0036u).points;
   const std::vector<Sample> filter_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0064u).points;
   std::vector<CaseResult> results;
+  vsm_cases(env, results);
   {
     // pnFastPcss as an engine includes it (no define: the chain's midpoint sums), on blockers of
     // one depth, where those sums are exact.

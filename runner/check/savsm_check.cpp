@@ -46,6 +46,9 @@
 #include <tuple>
 
 #include "check/module_check.h"
+#include "gl/std140.h"
+#include "passes/export_pass.h"
+#include "scene/light_block.h"
 #include "core/format.h"
 #include "core/integer_hash.h"
 #include "core/query_grid.h"
@@ -54,6 +57,11 @@
 #include "passes/summed_area_pass.h"
 #include "reference/pcss_regions_reference.h"
 #include "reference/savsm_reference.h"
+
+namespace pn::glsl {
+#include "exports/savsm.h"
+PN_STD140_OFFSET(PnSavsmExport, unitScale, 52);
+}  // namespace pn::glsl
 
 namespace pn {
 namespace {
@@ -191,7 +199,7 @@ class MomentsCache {
 };
 
 struct Cases {
-  BoundedElements search, blocker, side, filter, mean, variance, visibility, fetches, upper;
+  BoundedElements search, blocker, side, filter, mean, variance, visibility, fetches, upper, exported;
   long search_ties = 0, filter_ties = 0, ambiguous = 0, with_filter = 0;
   int most_fetches[16] = {};  // by filter-side class floor(log2 side)
 };
@@ -283,6 +291,29 @@ void receiver_cases(const Image& map, MomentsCache& moments, const LightModel& l
   }
 }
 
+// The call as an engine makes it (exports/savsm.comp and .frag, the export `bundle --target hlsl`
+// translates) on the same receivers: equal to the query pass's pnSavsm, whose visibility the
+// cases above hold to the definition — the same arithmetic in another entry and stage.
+void export_cases(const ExportPass& exported, const MomentsTable& table, const DeviceTexture& mip,
+                  const std::vector<SavsmReceiver>& rs, const LightModel& light, const SavsmSettings& s,
+                  const std::vector<SavsmQueryResult>& got, Cases& c) {
+  glsl::PnSavsmExport block{};
+  set_light_fields(block, light);
+  block.bias = s.bias, block.filterScale = s.filter_scale, block.minVariance = s.min_variance;
+  block.bleedingReduction = s.bleeding_reduction, block.blockerMode = static_cast<int>(s.blocker);
+  block.bound = s.bound ? 1 : 0, block.unitNear = table.range.offset, block.unitScale = table.range.scale;
+  std::vector<ExportReceiver> receivers;
+  for (const SavsmReceiver& r : rs) receivers.push_back({r.u, r.v, r.depth, false, 0.0f, 0.0f});
+  for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
+    const std::vector<float> v = exported.run(stage, {{PN_EXPORT_MOMENT_TABLE_BINDING, *table.texture},
+                                                      {PN_EXPORT_MIP_BINDING, mip}},
+                                              receivers, query_block(block));
+    for (std::size_t k = 0; k < rs.size(); ++k)
+      c.exported.add(got[k].visibility, v[k], 0.0, static_cast<int>(k) % kGridWidth, static_cast<int>(k) / kGridWidth,
+                     stage == ShadeStage::fragment ? 1 : 0);
+  }
+}
+
 void push(std::vector<CaseResult>& results, const std::string& name, const BoundedElements& e) {
   Tolerance t;
   const Comparison c = compare_bounded(e, t);
@@ -295,6 +326,7 @@ std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
   const SummedAreaMomentsPass tables(env.device, env.tree);
   const MinMaxMipBuilder mips(env.device, env.tree);
   const SavsmQueryPass pass(env.device, env.tree);
+  const ExportPass export_pass(env.device, env.tree, "savsm");
   std::vector<CaseResult> results;
   for (const MapCase& mc : kMaps) {
     const int n = mc.size;
@@ -316,6 +348,7 @@ std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
         const std::vector<SavsmQueryResult> got = pass.query(table, *mip.texture, rs, light, config.settings);
         for (size_t k = 0; k < rs.size(); ++k)
           receiver_cases(map, moments, light, config.settings, rs[k], got[k], static_cast<int>(k), c);
+        if (width == kLightWidths[0]) export_cases(export_pass, table, *mip.texture, rs, light, config.settings, got, c);
       }
       const std::string label = std::to_string(n) + "x" + std::to_string(n) + " " + config.name + ": ";
       push(results, label + "search square vs pcss_square (" + std::to_string(c.search_ties) + " ties)", c.search);
@@ -329,6 +362,9 @@ std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
       push(results, label + "filter mean vs brute force (" + std::to_string(c.with_filter) + " filtered)", c.mean);
       push(results, label + "filter variance vs brute force", c.variance);
       push(results, label + "visibility over the moments' error box", c.visibility);
+      push(results, label + "exports/savsm (pnSavsm as an engine calls it) in compute and fragment = the query's "
+                            "pnSavsm above, bit for bit",
+           c.exported);
       std::string classes;
       int most = 0;
       for (int i = 0; i < 16; ++i)

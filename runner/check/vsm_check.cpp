@@ -41,6 +41,7 @@
 
 #include "check/blur_tolerance.h"
 #include "check/module_check.h"
+#include "check/vsm_tolerance.h"
 #include "core/format.h"
 #include "fixture/texture_fixture.h"
 #include "passes/depth_pyramid_pass.h"
@@ -50,7 +51,7 @@
 namespace pn {
 namespace {
 
-constexpr double kU = FLT_EPSILON / 2.0;
+using namespace vsm_tolerance;
 constexpr int kSizes[] = {37, 64};
 constexpr int kReceiversPerTexel = 8;
 constexpr VsmKind kKinds[] = {VsmKind::vsm, VsmKind::evsm2, VsmKind::evsm4};
@@ -63,27 +64,9 @@ VsmParams params_for(VsmKind kind) {
   return p;
 }
 
-double largest_exponent(const VsmParams& p) {
-  if (p.kind == VsmKind::vsm) return 0.0;
-  return p.kind == VsmKind::evsm2 ? p.positive_exponent : std::max(p.positive_exponent, p.negative_exponent);
-}
-
-double warp_error(const VsmParams& p) { return 2.0 * kU * (11.0 * largest_exponent(p) + 6.0); }
-
 Tolerance moments_tolerance(const VsmParams& p) {
   if (p.kind == VsmKind::vsm) return Tolerance::exact();
   return Tolerance::relative(2.0 * warp_error(p) + kU);
-}
-
-double chebyshev_tolerance(const VsmParams& p) {
-  const double mv = p.min_variance;
-  double bound = 2.0 * ((kU / mv + 7.0 * kU) / 4.0 + 6.0 * kU);
-  if (p.kind != VsmKind::vsm) bound += 2.0 * warp_error(p) * (0.65 / std::sqrt(mv) + 0.5);
-  return bound;
-}
-
-double reduced_tolerance(const VsmParams& p) {
-  return chebyshev_tolerance(p) / (1.0 - p.bleeding_reduction) + 8.0 * kU;
 }
 
 struct Map {
@@ -127,12 +110,6 @@ Image as_image(const std::vector<Query>& results, int n, int c) {
     const int texel = static_cast<int>(k) / kReceiversPerTexel, i = static_cast<int>(k) % kReceiversPerTexel;
     out.at((texel % n) * kReceiversPerTexel + i, texel / n) = results[k][static_cast<size_t>(c)];
   }
-  return out;
-}
-
-std::array<double, 4> moments_at(const Image& m, int x, int y) {
-  std::array<double, 4> out{};
-  for (int c = 0; c < m.channels; ++c) out[static_cast<size_t>(c)] = m.at(x, y, c);
   return out;
 }
 
