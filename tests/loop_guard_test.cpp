@@ -1,10 +1,13 @@
 // The loop guard's rewrite (shader/loop_guard.h): every for/while condition
 // prefixed, nothing else touched, each loop's file and line, and the result
-// still a valid shader for every target glslang knows.
+// still a valid shader for every target glslang knows; the guard reads glslang's
+// preprocessed text, so no spelling of a loop hides from it (issue 39), in GLSL
+// and in an HLSL copy.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 
+#include "core/error.h"
 #include "shader/glslang_compiler.h"
 #include "shader/loop_guard.h"
 
@@ -38,7 +41,7 @@ TEST_CASE("the loop guard prefixes every loop condition and records where each l
       "  return s + whiley;\n"
       "}\n";
   pn::ShaderSource source = wrapped(body);
-  const std::vector<pn::GuardedLoop> loops = pn::guard_loops(source, {7, 1000});
+  const std::vector<pn::GuardedLoop> loops = pn::guard_preprocessed_loops(source, {7, 1000}, pn::GuardSyntax::glsl);
   CHECK(after_prelude(source) ==
         "#line 1 0\n"
         "uint f(uint n) {\n"
@@ -86,7 +89,7 @@ TEST_CASE("a guarded shader compiles for gl450, vulkan and es310") {
     flat.files = {"m.comp"};
     flat.has_main = true;
     pn::ShaderSource source = pn::standalone_source(flat, target);
-    CHECK(pn::guard_loops(source, {5, 1u << 22}).size() == 2);  // the while and the do; the for has a constant bound
+    CHECK(pn::guard_loops(process, source, target, {5, 1u << 22}).size() == 2);  // the while and the do; the for has a constant bound
     const pn::CompileResult compiled = pn::compile_with_glslang(process, source, target);
     INFO(pn::target_name(target) << ":\n" << source.text);
     for (const auto& d : compiled.diagnostics) INFO(d.str());
@@ -95,10 +98,13 @@ TEST_CASE("a guarded shader compiles for gl450, vulkan and es310") {
 }
 
 TEST_CASE("only for loops bounded by construction stay unguarded") {
-  const auto guarded = [](const std::string& loop) {
-    pn::ShaderSource source = wrapped("void bump(inout int x) { x = 0; }\nvoid add(inout int s, int x) { s += x; }\nint f(int n) {\n  int s = 0;\n  " + loop +
-                                      "\n  return s;\n}\n");
-    return !pn::guard_loops(source, {0, 100}).empty();
+  const pn::GlslangProcess process;
+  const auto guarded = [&](const std::string& loop) {
+    pn::ShaderSource source = wrapped("#define PN_MAX_TAPS 16\n#define PN_TILE 8\nconst int PN_DISK[3] = int[](1, 2, 3);\n"
+                                      "const int PN_FAR = 2000000000;\nint g;\nvoid bump(inout int x) { x = 0; }\n"
+                                      "void add(inout int s, int x) { s += x; }\nvoid reset() { g = 0; }\n"
+                                      "int f(int n) {\n  int s = 0;\n  " + loop + "\n  return s;\n}\n");
+    return !pn::guard_loops(process, source, pn::Target::gl450, {0, 100}).empty();
   };
   // At most B - A iterations whatever the body computes:
   CHECK_FALSE(guarded("for (int i = 0; i < 8; ++i) s += i;"));
@@ -129,19 +135,90 @@ TEST_CASE("only for loops bounded by construction stay unguarded") {
   CHECK(guarded("\n#define PN_RESET i = 0\n  for (int i = 0; i < 8; ++i) { PN_RESET; }"));
   CHECK(guarded("\n#define PN_SET(x) x = 0\n  for (int i = 0; i < 8; ++i) { PN_SET(i); }"));
   CHECK_FALSE(guarded("\n#define PN_TWO 2\n  for (int i = 0; i < 8; ++i) { s += PN_TWO; }"));
+  // Issue 39: the bound is read after the preprocessor, so a named constant is no bound (it is not
+  // folded there), nor is a counter the loop does not declare (a call may write it), nor a start
+  // that is not a literal.
+  CHECK(guarded("for (int i = 0; i < PN_FAR; ++i) s += i;"));
+  CHECK(guarded("for (g = 0; g < 8; ++g) reset();"));
+  CHECK(guarded("for (int i = n; i < 8; ++i) s += i;"));
+  CHECK_FALSE(guarded("for (int i = -8; i < 8; ++i) s += i;"));
+  CHECK(guarded("for (int i = -100; i < 8; ++i) s += i;"));  // 108 iterations: past the limit of 100
 }
 
-TEST_CASE("a #define that spells a loop keyword or pastes tokens is refused, naming its line (issue 26 B3)") {
-  const pn::LoopGuardSettings settings{3, 100};
-  for (const char* define : {"#define PN_REPEAT while\n", "#  define LOOP(n) for (int i = 0; i < n; ++i)\n",
-                             "#define DO do\n", "#define KEY(a, b) a##b\n", "#define R \\\n  while\n"}) {
-    pn::ShaderSource source = wrapped(std::string("float g = 1.0;\n") + define + "float f() { return g; }\n");
-    CHECK_THROWS_WITH(pn::guard_loops(source, settings),
-                      Catch::StartsWith("m.glsl:2: a #define that spells a loop keyword (for, while, do) or pastes tokens"));
+// The endless loop of issue 39 in each spelling the probe found passing `check blur`, as the
+// flattener leaves it: every one is a plain loop in glslang's preprocessed text, guarded and
+// named by the line of its keyword (or of the macro that spells it), and the result compiles.
+TEST_CASE("every spelling of a loop is guarded: the guard reads the preprocessed text (issue 39)") {
+  struct Spelling {
+    const char* name;
+    std::string body;  // from line 5 of m.glsl, after `float x = 0.0;`
+    std::string loop;  // file:line of the loop's keyword, or of the macro that spells it
+  };
+  const std::vector<Spelling> spellings = {
+      {"a line continuation", "  whi\\\nle (x > -1.0) { x += 1.0; }\n", "m.glsl:5"},
+      {"a macro split by a continuation", "#define PN_REPEAT wh\\\nile\n  PN_REPEAT (x > -1.0) { x += 1.0; }\n", "m.glsl:7"},
+      {"the keyword from an included header", "#line 1 1\n  while\n#line 5 0\n  (x > -1.0) { x += 1.0; }\n", "w.h:1"},
+      {"a #line between keyword and condition", "  while\n#line 500\n  (x > -1.0) { x += 1.0; }\n", "m.glsl:5"},
+      {"a comment inside the #define", "#/**/define PN_REPEAT while\n  PN_REPEAT (x > -1.0) { x += 1.0; }\n", "m.glsl:6"},
+  };
+  const pn::GlslangProcess process;
+  for (const Spelling& spelling : spellings) {
+    for (pn::Target target : pn::all_targets()) {
+      pn::FlatSource flat;
+      flat.text = "#line 1 0\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer Out { float result; };\n"
+                  "void main() {\n  float x = 0.0;\n" + spelling.body + "  result = x;\n}\n";
+      flat.files = {"m.glsl", "w.h"};
+      flat.has_main = true;
+      pn::ShaderSource source = pn::standalone_source(flat, target);
+      const std::vector<pn::GuardedLoop> loops = pn::guard_loops(process, source, target, {5, 1000});
+      INFO(spelling.name << ", " << pn::target_name(target) << ":\n" << source.text);
+      REQUIRE(loops.size() == 1);
+      CHECK(loops[0].file + ":" + std::to_string(loops[0].line) == spelling.loop);
+      CHECK(source.text.find("pnLoopGuard(0u) && (") != std::string::npos);
+      const pn::CompileResult compiled = pn::compile_with_glslang(process, source, target);
+      for (const auto& d : compiled.diagnostics) INFO(d.str());
+      CHECK(compiled.ok);
+    }
   }
-  // A loop keyword in a #define's comment, or a name that merely contains one, is fine.
-  pn::ShaderSource fine = wrapped(
-      "#define PN_BINDING 1  // for the table, while it lasts\n#define FOREVER_WHILE_DONE 2 /* do */\n"
-      "float f() { return float(PN_BINDING + FOREVER_WHILE_DONE); }\n");
-  CHECK(pn::guard_loops(fine, settings).empty());
+}
+
+TEST_CASE("a source the preprocessor refuses is refused by the guard with its first error") {
+  const pn::GlslangProcess process;
+  pn::ShaderSource source = wrapped("float g = 1.0;\n#error not this copy\nfloat f() { return g; }\n");
+  try {
+    pn::guard_loops(process, source, pn::Target::gl450, {3, 100});
+    FAIL("no error");
+  } catch (const pn::Error& e) {
+    CHECK(e.code() == pn::ExitCode::failed);
+    CHECK_THAT(e.what(), Catch::StartsWith("m.glsl:2: error: ") && Catch::Contains("not this copy"));
+  }
+}
+
+// Issue 39: an HLSL copy (check --hlsl-root) gets the same guard, in HLSL, after glslang's HLSL
+// preprocessor: the probe's `for (uint k = 0u; k != 0xFFFFFFFFu; k += 2u)` and a macro-spelled loop.
+TEST_CASE("an HLSL copy's loops are guarded in HLSL and still compile") {
+  const std::string hlsl =
+      "RWByteAddressBuffer result : register(u0);\n"            // 1
+      "#define PN_REPEAT wh\\\nile\n"                            // 2-3
+      "[numthreads(1, 1, 1)]\n"                                 // 4
+      "void main() {\n"                                         // 5
+      "  uint s = 0u;\n"                                        // 6
+      "  [loop] for (uint k = 0u; k != 0xFFFFFFFFu; k += 2u)\n"  // 7
+      "    s += k;\n"                                           // 8
+      "  for (uint i = 0u; i < 4u; ++i) s += i;\n"              // 9: bounded, left alone
+      "  PN_REPEAT (s > 3u) { s -= 2u; }\n"                     // 10
+      "  result.Store(0, s);\n"
+      "}\n";
+  const pn::GlslangProcess process;
+  std::string text = hlsl;
+  const std::vector<pn::GuardedLoop> loops =
+      pn::guard_hlsl_loops(process, text, "copy/pcf.hlsl", pn::Stage::compute, {7, 1000});
+  INFO(text);
+  std::vector<std::pair<std::string, int>> where;
+  for (const pn::GuardedLoop& l : loops) where.push_back({l.file, l.line});
+  CHECK(where == std::vector<std::pair<std::string, int>>{{"copy/pcf.hlsl", 7}, {"copy/pcf.hlsl", 10}});
+  CHECK(text.find("register(u7)") != std::string::npos);
+  const pn::CompileResult compiled = pn::compile_hlsl_with_glslang(process, text, "copy/pcf.hlsl", pn::Stage::compute);
+  for (const auto& d : compiled.diagnostics) INFO(d.str());
+  CHECK(compiled.ok);
 }

@@ -7,6 +7,7 @@
 #include "core/format.h"
 #include "shader/diagnostic.h"
 #include "shader/flatten.h"
+#include "shader/glslang_compiler.h"
 #include "shader/loop_guard.h"
 
 namespace pn {
@@ -75,7 +76,14 @@ GlObject link_program(const Context& context, const std::string& name, const std
 
 namespace {
 
-// The source as compiled: under DispatchBounds, with every loop guarded.
+// glslang's process-wide state for the guard's preprocessor, kept while the runner runs (its
+// built-in tables are made once, not once a pass).
+const GlslangProcess& glslang_process() {
+  static const GlslangProcess process;
+  return process;
+}
+
+// The source as compiled: under DispatchBounds, glslang's preprocessed text with every loop guarded.
 ShaderSource bounded_source(const Context& context, const ShaderSource& source, std::vector<GuardedLoop>& loops,
                             GLuint& binding) {
   if (!context.dispatch_bounds().enabled || source.stage != Stage::compute) return source;
@@ -83,7 +91,8 @@ ShaderSource bounded_source(const Context& context, const ShaderSource& source, 
   context.gl().GetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
   binding = static_cast<GLuint>(std::max(bindings, 1) - 1);  // the last: passes number theirs from 0
   ShaderSource guarded = source;
-  loops = guard_loops(guarded, {binding, context.dispatch_bounds().loop_iterations});
+  loops = guard_loops(glslang_process(), guarded, driver_target(context),
+                      {binding, context.dispatch_bounds().loop_iterations});
   return guarded;
 }
 

@@ -32,6 +32,21 @@ CompileResult compile_with_glslang(const GlslangProcess& process, const ShaderSo
 // The first error of `result` as "file:line: error: message", or `fallback` when it has none.
 std::string first_error(const CompileResult& result, const std::string& fallback);
 
+// glslang's preprocessor output (glslangValidator -E) for `source` as compile_with_glslang
+// reads it for `target`, or for an HLSL text: macros expanded, comments and line continuations
+// gone, directives other than #version, #extension, #pragma and #line consumed. Each token stays
+// on its line (a #line marker is passed on as written), so the text maps back as the input did.
+// The loop guard reads this (shader/loop_guard.h): what the compiler will see.
+struct Preprocessed {
+  bool ok = false;
+  std::vector<Diagnostic> diagnostics;  // as CompileResult's
+  std::string text;
+};
+
+Preprocessed preprocess_with_glslang(const GlslangProcess& process, const ShaderSource& source, Target target);
+Preprocessed preprocess_hlsl_with_glslang(const GlslangProcess& process, const std::string& text,
+                                          const std::string& name, Stage stage);
+
 // HLSL (an export of shader/spirv_cross.h, or an engine's copy of one) through glslang's HLSL
 // front end to SPIR-V for Vulkan 1.0, validated: entry point `main`, register t<N>/u<N>/b<N> at
 // binding N and s<N> at N + kHlslSamplerBindingShift. `name` is the file diagnostics name.

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 
 #include "core/error.h"
+#include "shader/glslang_compiler.h"
 
 namespace pn {
 namespace {
@@ -24,8 +26,18 @@ std::pair<std::string, int> origin_of(const ShaderSource& source, size_t at) {
   return source.origin_of_line(static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + 1);
 }
 
-// The index just past the comment starting at `i`, or `i` when none starts there.
+// The index just past the directive (`#` first on its line: the preprocessor leaves #version,
+// #extension, #pragma and #line) or comment starting at `i`, or `i` when none starts there. A
+// directive may stand between a loop keyword and its `(` (`while⏎#line 500⏎(…)`, issue 39).
 size_t skip_comment(const std::string& s, size_t i) {
+  if (s[i] == '#') {
+    size_t b = i;
+    while (b > 0 && (s[b - 1] == ' ' || s[b - 1] == '\t')) --b;
+    if (b == 0 || s[b - 1] == '\n') {
+      const size_t end = s.find('\n', i);
+      return end == std::string::npos ? s.size() : end;
+    }
+  }
   if (s.compare(i, 2, "//") == 0) {
     const size_t end = s.find('\n', i);
     return end == std::string::npos ? s.size() : end;
@@ -77,27 +89,29 @@ std::string trimmed(const std::string& s) {
   return a == std::string::npos ? "" : s.substr(a, b - a + 1);
 }
 
+// `s` without its white space: the preprocessor spaces tokens its own way (`++ i`, `a . length()`).
+std::string squeezed(const std::string& s) {
+  std::string out;
+  for (char c : s)
+    if (std::isspace(static_cast<unsigned char>(c)) == 0) out += c;
+  return out;
+}
+
 bool is_identifier(const std::string& s) {
   return !s.empty() && std::isdigit(static_cast<unsigned char>(s[0])) == 0 &&
          std::all_of(s.begin(), s.end(), identifier_char);
 }
 
-// A compile-time constant as modules write bounds: integer literals, ALL_CAPS macro names,
-// `NAME.length()`, + - * / and parentheses.
-bool is_constant_bound(const std::string& e) {
-  if (trimmed(e).empty()) return false;
-  for (size_t i = 0; i < e.size();) {
-    const char c = e[i];
-    if (std::isupper(static_cast<unsigned char>(c)) != 0 || c == '_') {
-      while (i < e.size() && (std::isupper(static_cast<unsigned char>(e[i])) != 0 ||
-                              std::isdigit(static_cast<unsigned char>(e[i])) != 0 || e[i] == '_'))
-        ++i;
-      if (e.compare(i, 9, ".length()") == 0) i += 9;
-    } else if (std::isdigit(static_cast<unsigned char>(c)) != 0 || std::string(" \t+-*/()u").find(c) != std::string::npos) {
-      ++i;
-    } else {
-      return false;
-    }
+// `name.length()` or `block.member.length()` (squeezed): an array's length, fixed where it is
+// declared (a buffer's run-time array is bounded by its buffer).
+bool is_array_length(const std::string& e) {
+  const std::string suffix = ".length()";
+  if (e.size() <= suffix.size() || e.compare(e.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+  const std::string chain = e.substr(0, e.size() - suffix.size());
+  for (size_t a = 0; a <= chain.size();) {
+    const size_t dot = std::min(chain.find('.', a), chain.size());
+    if (!is_identifier(chain.substr(a, dot - a))) return false;
+    a = dot + 1;
   }
   return true;
 }
@@ -132,7 +146,10 @@ CallArgument enclosing_call(const std::string& s, size_t at) {
 // position, and every argument of the built-ins that have one (index -1).
 std::vector<CallArgument> written_arguments(const std::string& s) {
   std::vector<CallArgument> written;
-  for (const char* builtin : {"modf", "frexp", "uaddCarry", "usubBorrow", "umulExtended", "imulExtended"})
+  for (const char* builtin : {"modf", "frexp", "uaddCarry", "usubBorrow", "umulExtended", "imulExtended",  // GLSL
+                              "sincos", "GetDimensions", "InterlockedAdd", "InterlockedAnd", "InterlockedOr",  // HLSL
+                              "InterlockedXor", "InterlockedMin", "InterlockedMax", "InterlockedExchange",
+                              "InterlockedCompareExchange"})
     written.push_back({builtin, -1});
   for (const char* keyword : {"out", "inout"}) {
     const std::string k = keyword;
@@ -174,41 +191,16 @@ bool may_change(const std::string& body, const std::string& name, const std::vec
   return false;
 }
 
-// The source's object-like macros: name -> replacement text (the last #define wins; function-
-// like macros are left out: their bodies are read where they are used, below).
-using Macros = std::vector<std::pair<std::string, std::string>>;
-
-Macros object_macros(const std::string& s) {
-  Macros macros;
-  for (size_t at = s.find("#define"); at != std::string::npos; at = s.find("#define", at + 1)) {
-    size_t i = skip_space(s, at + 7);
-    const size_t e = identifier_end(s, i);
-    if (e == i || (e < s.size() && s[e] == '(')) continue;
-    const size_t line_end = s.find('\n', e);
-    std::string text = s.substr(e, (line_end == std::string::npos ? s.size() : line_end) - e);
-    const size_t comment = text.find("//");
-    if (comment != std::string::npos) text.erase(comment);
-    macros.emplace_back(s.substr(i, e - i), trimmed(text));
-  }
-  return macros;
-}
-
-const std::string* find_macro(const Macros& macros, const std::string& name) {
-  for (auto it = macros.rbegin(); it != macros.rend(); ++it)
-    if (it->first == name) return &it->second;
-  return nullptr;
-}
-
-// The value of an integer constant expression (literals, + - * / and parentheses, the source's
-// macros expanded), or -1 when it is not one this reader can evaluate or exceeds 2^40.
+// The value of an integer constant expression of literals, + - * / and parentheses (the text
+// the preprocessor leaves of a module's bound macros), or LLONG_MIN when it is not one this reader
+// can evaluate or its magnitude exceeds 2^40.
 class ConstantReader {
  public:
-  ConstantReader(const Macros& macros, int depth = 0) : macros_(macros), depth_(depth) {}
   long long read(const std::string& text) {
-    text_ = text, at_ = 0, ok_ = depth_ < 8;
+    text_ = text, at_ = 0, ok_ = true;
     const long long v = sum();
     space();
-    return ok_ && at_ == text_.size() && v >= 0 && v <= (1LL << 40) ? v : -1;
+    return ok_ && at_ == text_.size() ? v : LLONG_MIN;
   }
 
  private:
@@ -235,7 +227,7 @@ class ConstantReader {
   }
   long long term() {
     space();
-    if (at_ >= text_.size()) return ok_ = false, 0;
+    if (!ok_ || at_ >= text_.size()) return ok_ = false, 0;
     const char c = text_[at_];
     if (c == '(') {
       ++at_;
@@ -245,86 +237,59 @@ class ConstantReader {
       ++at_;
       return v;
     }
-    if (c == '-') return ++at_, -term();
-    if (std::isdigit(static_cast<unsigned char>(c)) != 0) {
-      long long v = 0;
-      while (at_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[at_])) != 0)
-        v = clamp(v * 10 + (text_[at_++] - '0'));
-      if (at_ < text_.size() && (text_[at_] == 'u' || text_[at_] == 'U')) ++at_;
-      return v;
-    }
-    const size_t e = identifier_end(text_, at_);
-    const std::string* value = e > at_ ? find_macro(macros_, text_.substr(at_, e - at_)) : nullptr;
-    if (value == nullptr) return ok_ = false, 0;
-    at_ = e;
-    const long long v = ConstantReader(macros_, depth_ + 1).read(*value);
-    if (v < 0) ok_ = false;
+    if (c == '-') return ++at_, clamp(-term());
+    if (c == '+') return ++at_, term();
+    if (std::isdigit(static_cast<unsigned char>(c)) == 0) return ok_ = false, 0;
+    long long v = 0;
+    while (ok_ && at_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[at_])) != 0)
+      v = clamp(v * 10 + (text_[at_++] - '0'));
+    if (at_ < text_.size() && (text_[at_] == 'u' || text_[at_] == 'U')) ++at_;
+    if (at_ < text_.size() && identifier_char(text_[at_])) ok_ = false;  // 0x10, 1e3, 2.0: not read here
     return v;
   }
 
-  const Macros& macros_;
-  int depth_;
   std::string text_;
   size_t at_ = 0;
   bool ok_ = true;
 };
 
-// Whether `body` may change `name` through a macro it uses: an object-like macro whose text
-// names it, or a function-like macro (its body unread here) — a counter reset through
-// `#define RESET i = 0` is not seen by may_change (issue 26 B4).
-bool macro_may_change(const std::string& s, const std::string& body, const std::string& name, const Macros& macros) {
-  for (size_t k = 0; k < body.size();) {
-    if (!identifier_char(body[k])) {
-      ++k;
-      continue;
-    }
-    const size_t e = identifier_end(body, k);
-    const std::string word = body.substr(k, e - k);
-    k = e;
-    if (const std::string* text = find_macro(macros, word)) {
-      for (size_t at = text->find(name); at != std::string::npos; at = text->find(name, at + 1))
-        if ((at == 0 || !identifier_char((*text)[at - 1])) &&
-            (at + name.size() >= text->size() || !identifier_char((*text)[at + name.size()])))
-          return true;
-    } else if (s.find("#define " + word + "(") != std::string::npos) {
-      return true;
-    }
-  }
-  return false;
-}
-
-// `for (T i = A; i < B; ++i) body` with B a compile-time constant, a step of ++i, i++ or
-// i += a positive literal, and a body that does not touch i (nor use a macro that may): at most
-// B - A iterations by construction — when B - A is within the guard's limit. Such loops stay as they are, so that the compiler still unrolls them (a
-// guarded loop is not unrolled, and llvmpipe caps each loop's iterations at 65535).
+// `for (T i = A; i < B; ++i) body` with A and B integer constants (literals and arithmetic, as
+// the preprocessor leaves a module's bound macros) or B an array's length, B - A within the
+// guard's limit, a step of ++i, i++ or i += a positive literal, and a body that does not touch i:
+// at most B - A iterations by construction. Such loops stay as they are, so that the compiler still
+// unrolls them (a guarded loop is not unrolled, and llvmpipe caps each loop's iterations at 65535).
+// A bound past the limit is no bound for the guard (issue 26 B4: `i < 2000000000` ran 80 s on
+// llvmpipe, silently capped, and failed naming no loop); nor is a named constant, which the
+// preprocessor does not fold (`const int N = 2000000000;`), nor a counter the loop does not
+// declare (a call in the body may write a global one).
 bool bounded_by_construction(const std::string& s, size_t open, const Bracketed& p,
-                             const std::vector<CallArgument>& written, const Macros& macros, unsigned limit) {
+                             const std::vector<CallArgument>& written, unsigned limit) {
   const std::string init = s.substr(open + 1, p.semicolons[0] - open - 1);
-  const std::string condition = trimmed(s.substr(p.semicolons[0] + 1, p.semicolons[1] - p.semicolons[0] - 1));
-  const std::string step = trimmed(s.substr(p.semicolons[1] + 1, p.close - p.semicolons[1] - 1));
+  const std::string condition = squeezed(s.substr(p.semicolons[0] + 1, p.semicolons[1] - p.semicolons[0] - 1));
+  const std::string step = squeezed(s.substr(p.semicolons[1] + 1, p.close - p.semicolons[1] - 1));
   const size_t eq = init.find('=');
   if (eq == std::string::npos) return false;
   const std::string declared = trimmed(init.substr(0, eq));
-  const size_t space = declared.find_last_of(" \t");
-  const std::string name = space == std::string::npos ? declared : declared.substr(space + 1);
-  if (!is_identifier(name)) return false;
+  const size_t space = declared.find_last_of(" \t\n");
+  if (space == std::string::npos) return false;  // `i = 0`: a counter declared elsewhere
+  const std::string name = declared.substr(space + 1);
+  if (!is_identifier(name) || !is_identifier(trimmed(declared.substr(0, space)))) return false;
   const size_t less = condition.find('<');
-  if (less == std::string::npos || trimmed(condition.substr(0, less)) != name) return false;
+  if (less == std::string::npos || condition.substr(0, less) != name) return false;
   const size_t bound = condition.compare(less, 2, "<=") == 0 ? less + 2 : less + 1;
-  if (!is_constant_bound(condition.substr(bound))) return false;
-  // A bound past the guard's limit is no bound for the guard (issue 26 B4: `i < 2000000000` ran
-  // 80 s on llvmpipe, silently capped, and failed naming no loop): guarded like any other.
-  const long long most = ConstantReader(macros).read(condition.substr(bound));
-  const long long start = ConstantReader(macros).read(init.substr(eq + 1));
-  if (most >= 0 && most - std::max(start, 0LL) > static_cast<long long>(limit)) return false;
+  const std::string most_text = condition.substr(bound);
+  const long long start = ConstantReader().read(init.substr(eq + 1));
+  if (start == LLONG_MIN) return false;
+  if (!is_array_length(most_text)) {
+    const long long most = ConstantReader().read(most_text);
+    if (most == LLONG_MIN || most - start > static_cast<long long>(limit)) return false;
+  }
   bool step_ok = step == "++" + name || step == name + "++";
-  if (!step_ok && step.compare(0, name.size(), name) == 0) {
-    const std::string rest = trimmed(step.substr(name.size()));
-    if (rest.compare(0, 2, "+=") == 0) {
-      const std::string amount = trimmed(rest.substr(2));
-      step_ok = !amount.empty() && std::all_of(amount.begin(), amount.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }) &&
-                std::stoul(amount.substr(0, 9)) > 0;
-    }
+  if (!step_ok && step.compare(0, name.size() + 2, name + "+=") == 0) {
+    const std::string amount = step.substr(name.size() + 2);
+    const auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+    step_ok = !amount.empty() && amount.size() < 10 && std::all_of(amount.begin(), amount.end(), digit) &&
+              std::stoul(amount) > 0;
   }
   if (!step_ok) return false;
   // The body: a braced block, or one simple statement (a nested loop or branch counts as unknown).
@@ -339,8 +304,7 @@ bool bounded_by_construction(const std::string& s, size_t open, const Bracketed&
     end = s.find(';', first);
   }
   if (end == std::string::npos) return false;
-  const std::string body = s.substr(first, end - first + 1);
-  return !may_change(body, name, written) && !macro_may_change(s, body, name, macros);
+  return !may_change(s.substr(first, end - first + 1), name, written);
 }
 
 struct Insertion {
@@ -352,11 +316,23 @@ std::string guard_call(size_t id) { return "pnLoopGuard(" + std::to_string(id) +
 
 // One counter per loop, so that the limit reads as llvmpipe's own cap does: a loop's
 // iterations summed over all its entries in one invocation.
-std::string guard_prelude(const LoopGuardSettings& settings, size_t loops) {
+std::string guard_prelude(const LoopGuardSettings& settings, GuardSyntax syntax, size_t loops) {
   const std::string limit = std::to_string(settings.iterations) + "u";
   const std::string n = std::to_string(std::max<size_t>(loops, 1));
   std::string zeros;
   for (size_t k = 0; k < std::max<size_t>(loops, 1); ++k) zeros += k == 0 ? "0u" : ", 0u";
+  if (syntax == GuardSyntax::hlsl)  // as SPIRV-Cross writes a GLSL storage buffer and atomicCompSwap
+    return "globallycoherent RWByteAddressBuffer pnLoopGuardState : register(u" + std::to_string(settings.binding) +
+           ");\n"
+           "static uint pnLoopGuardCounts[" + n + "] = { " + zeros + " };\n"
+           "bool pnLoopGuard(uint loop) {\n"
+           "  pnLoopGuardCounts[loop] += 1u;\n"
+           "  if (pnLoopGuardCounts[loop] <= " + limit + " && pnLoopGuardState.Load(0) == 0u) return true;\n"
+           "  uint pnLoopGuardWas;\n"
+           "  if (pnLoopGuardCounts[loop] > " + limit +
+           ") pnLoopGuardState.InterlockedCompareExchange(0, 0u, loop + 1u, pnLoopGuardWas);\n"
+           "  return false;\n"
+           "}\n";
   return "layout(std430, binding = " + std::to_string(settings.binding) +
          ") coherent buffer PnLoopGuardState { uint pnLoopGuardTripped; uint pnLoopGuardSpare; };\n"
          "uint pnLoopGuardCounts[" + n + "] = uint[" + n + "](" + zeros + ");\n"
@@ -368,68 +344,27 @@ std::string guard_prelude(const LoopGuardSettings& settings, size_t loops) {
          "}\n";
 }
 
-// The guard reads the source before the preprocessor: a loop that a macro spells
-// (`#define REPEAT while`, or a keyword pasted together with ##) would run unguarded
-// — a driver may then drop it and the check pass (issue 26 B3). Such a #define is
-// refused, naming its line: the loop has to be written out where it runs.
-void refuse_macro_loops(const ShaderSource& source, size_t start) {
-  const std::string& s = source.text;
-  for (size_t line_start = start; line_start < s.size();) {
-    size_t line_end = s.find('\n', line_start);
-    // A directive continues over lines that end in a backslash.
-    while (line_end != std::string::npos && line_end > line_start && s[line_end - 1] == '\\') line_end = s.find('\n', line_end + 1);
-    if (line_end == std::string::npos) line_end = s.size();
-    size_t i = line_start;
-    while (i < line_end && (s[i] == ' ' || s[i] == '\t')) ++i;
-    if (i < line_end && s[i] == '#') {
-      ++i;
-      while (i < line_end && (s[i] == ' ' || s[i] == '\t')) ++i;
-      if (s.compare(i, 6, "define") == 0) {
-        // The directive without its comments, as tokens.
-        std::string text;
-        for (size_t k = i + 6; k < line_end;) {
-          if (const size_t after = skip_comment(s, k); after != k) {
-            text += ' ';
-            k = after;
-          } else {
-            text += s[k++];
-          }
-        }
-        bool refused = text.find("##") != std::string::npos;
-        for (size_t k = 0; k < text.size() && !refused;) {
-          if (!identifier_char(text[k])) {
-            ++k;
-            continue;
-          }
-          const size_t e = identifier_end(text, k);
-          refused = loop_keyword(text.substr(k, e - k));
-          k = e;
-        }
-        if (refused) {
-          const auto [file, file_line] = origin_of(source, line_start);
-          throw Error(file + ":" + std::to_string(file_line) +
-                      ": a #define that spells a loop keyword (for, while, do) or pastes tokens (##): the loop guard "
-                      "cannot bound a loop a macro writes; expected the loop written out");
-        }
-      }
-    }
-    line_start = line_end + 1;
-  }
+// Throws the preprocessor's first error (it has one when not ok): the compiler would refuse the
+// source with it.
+void throw_unless_preprocessed(const Preprocessed& p) {
+  if (p.ok) return;
+  for (const Diagnostic& d : p.diagnostics)
+    if (d.severity == "error") throw Error(d.str(), ExitCode::failed);
+  throw Error(p.diagnostics.empty() ? "glslang could not preprocess it" : p.diagnostics.front().str(), ExitCode::failed);
 }
 
 }  // namespace
 
-std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettings& settings) {
+std::vector<GuardedLoop> guard_preprocessed_loops(ShaderSource& source, const LoopGuardSettings& settings,
+                                                  GuardSyntax syntax) {
   std::string& s = source.text;
   // The prelude goes before the first #line marker: lines up to there map to "<wrapper>".
-  size_t start = s.find("\n#line ");
-  start = start == std::string::npos ? s.size() : start + 1;
-  refuse_macro_loops(source, start);
+  size_t start = s.compare(0, 6, "#line ") == 0 ? 0 : s.find("\n#line ");
+  start = start == 0 ? 0 : start == std::string::npos ? s.size() : start + 1;
 
   std::vector<Insertion> edits;
   std::vector<GuardedLoop> loops;
   const std::vector<CallArgument> written = written_arguments(s);
-  const Macros macros = object_macros(s);
   for (size_t i = start; i < s.size();) {
     if (const size_t after = skip_comment(s, i); after != i) {
       i = after;
@@ -454,7 +389,7 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
       edits.push_back({parens.close, ")"});
     } else {
       if (parens.semicolons.size() != 2) continue;  // not a for header the compiler accepts
-      if (bounded_by_construction(s, open, parens, written, macros, settings.iterations)) continue;
+      if (bounded_by_construction(s, open, parens, written, settings.iterations)) continue;
       const size_t from = parens.semicolons[0] + 1, to = parens.semicolons[1];
       const bool empty = skip_space(s, from) >= to;
       edits.push_back({from, " " + guard_call(id) + (empty ? "" : " && (")});
@@ -466,7 +401,29 @@ std::vector<GuardedLoop> guard_loops(ShaderSource& source, const LoopGuardSettin
   // Back to front, so that each insertion leaves the earlier positions valid.
   std::stable_sort(edits.begin(), edits.end(), [](const Insertion& a, const Insertion& b) { return a.at > b.at; });
   for (const Insertion& e : edits) s.insert(e.at, e.text);
-  s.insert(start, guard_prelude(settings, loops.size()));
+  s.insert(start, guard_prelude(settings, syntax, loops.size()));
+  return loops;
+}
+
+std::vector<GuardedLoop> guard_loops(const GlslangProcess& process, ShaderSource& source, Target target,
+                                     const LoopGuardSettings& settings) {
+  const Preprocessed p = preprocess_with_glslang(process, source, target);
+  throw_unless_preprocessed(p);
+  source.text = p.text;
+  return guard_preprocessed_loops(source, settings, GuardSyntax::glsl);
+}
+
+std::vector<GuardedLoop> guard_hlsl_loops(const GlslangProcess& process, std::string& text, const std::string& name,
+                                          Stage stage, const LoopGuardSettings& settings) {
+  // A marker first, so that the copy's lines map to it (origin_of_line) and the prelude goes above.
+  ShaderSource source;
+  source.files = {name};
+  source.stage = stage;
+  const Preprocessed p = preprocess_hlsl_with_glslang(process, "#line 1 0\n" + text, name, stage);
+  throw_unless_preprocessed(p);
+  source.text = p.text;
+  std::vector<GuardedLoop> loops = guard_preprocessed_loops(source, settings, GuardSyntax::hlsl);
+  text = source.text;
   return loops;
 }
 

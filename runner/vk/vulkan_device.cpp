@@ -1105,12 +1105,13 @@ namespace {
 
 // One stage of a pass as the device runs it: the vulkan target's SPIR-V, or (--api hlsl) its HLSL
 // export compiled back — or the user's copy of that export (--hlsl-root, a pass without extra
-// defines). `loops`: the loop guard's loops, put in under the dispatch bounds (compute passes);
-// emptied for a user's copy, which has no guard (the deadline alone bounds it).
+// defines). `loops`: the loop guard's loops, put in under the dispatch bounds (compute passes):
+// into the GLSL, which the library's HLSL export is made from, or into the user's copy.
 std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const SourceTree& tree, const std::string& pass,
                                        const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
   ShaderSource source = standalone_source(flatten(tree, tree.locate_in_root(pass)), Target::vulkan, defines);
-  if (loops != nullptr && s.bounds.enabled) *loops = guard_loops(source, {kGuardBinding, s.bounds.loop_iterations});
+  if (loops != nullptr && s.bounds.enabled)
+    *loops = guard_loops(s.glslang, source, Target::vulkan, {kGuardBinding, s.bounds.loop_iterations});
   const CompileResult glsl = compile_with_glslang(s.glslang, source, Target::vulkan);
   if (!glsl.ok) throw Error(pass + ": " + first_error(glsl, "glslang could not compile it for Vulkan"), ExitCode::failed);
   if (s.settings.language == PassLanguage::glsl) return glsl.spirv;
@@ -1122,7 +1123,10 @@ std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const Sourc
     const SourceTree root(*s.settings.hlsl_root);  // read as module files are: a regular file, bounded
     const std::filesystem::path canonical = root.locate_in_root(name);
     hlsl = root.read(canonical), name = root.diagnostic_path(canonical);
-    if (loops != nullptr) loops->clear();
+    if (loops != nullptr)  // the copy's own loops, guarded as the GLSL's are
+      *loops = s.bounds.enabled ? guard_hlsl_loops(s.glslang, hlsl, name, source.stage,
+                                                   {kGuardBinding, s.bounds.loop_iterations})
+                                : std::vector<GuardedLoop>{};
   } else {
     hlsl = cross_compile(glsl.spirv, CrossLanguage::hlsl50);
   }

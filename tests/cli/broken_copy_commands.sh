@@ -9,8 +9,9 @@
 #   within its --gpu-timeout (here 20 s; the loop guard ends it long before),
 #   naming the pass, the file and the line of the loop (llvmpipe used to delete
 #   or cap the loop, and the check passed);
-# - the same with the loop spelled through a macro (`#define PN_REPEAT while`):
-#   refused, naming the #define's line (it used to pass).
+# - the same with the loop spelled where only the preprocessor sees it (issue 39): a
+#   macro `#/**/define PN_REPEAT wh\⏎ile`, and a `while` that comes from an included
+#   header: each fails naming the line that spells the loop (both used to pass).
 # Exit 77 (skipped) without a GL context.
 set -u
 penumbra=$1 glsl=$2 work=$3
@@ -52,16 +53,30 @@ printf '%s\n' "$out"
 printf '%s\n' "$out" | grep -q "^blur: FAIL passes/blur.comp: dispatch: the loop at blur.glsl:$line ran past 65000 iterations" ||
   fail "endless loop: no message naming the pass and blur.glsl:$line"
 
-# Issue 26 B3: an endless loop spelled through a macro used to pass (the guard never saw a loop
-# keyword and the driver dropped the loop); the #define is refused, naming its line.
+# Issue 39 (after issue 26 B3): an endless loop spelled through a macro, the #define itself hidden from
+# a textual reader (a comment after its `#`, the keyword split by a line continuation), used to pass:
+# the guard reads glslang's preprocessed text, where it is a plain loop.
 cp "$glsl/blur.glsl" "$work/copy/blur.glsl" || fail "could not restore blur.glsl"
-perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1#define PN_REPEAT while\n  float x = 0.0;\n  PN_REPEAT (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
-line=$(grep -n '^#define PN_REPEAT while' "$work/copy/blur.glsl" | cut -d: -f1)
-[ -n "$line" ] || fail "could not put the macro-spelled loop into blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1#\/**\/define PN_REPEAT wh\\\nile\n  float x = 0.0;\n  PN_REPEAT (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
+line=$(grep -n '^  PN_REPEAT (x > -1.0) {' "$work/copy/blur.glsl" | cut -d: -f1)
+grep -q '^#/\*\*/define PN_REPEAT wh\\$' "$work/copy/blur.glsl" && [ -n "$line" ] ||
+  fail "could not put the macro-spelled loop into blur.glsl"
 out=$(timeout 120 "$penumbra" check blur --glsl-root "$work/copy" --gpu-timeout 20 2>&1)
 status=$?
 printf '%s\n' "$out"
 [ "$status" -eq 1 ] || fail "macro loop: expected exit 1 (a false PASS before), got $status"
-printf '%s\n' "$out" | grep -q "^blur: FAIL blur.glsl:$line: a #define that spells a loop keyword" ||
-  fail "macro loop: no message naming blur.glsl:$line"
+printf '%s\n' "$out" | grep -q "^blur: FAIL passes/blur.comp: dispatch: the loop at blur.glsl:$line ran past" ||
+  fail "macro loop: no message naming the loop at blur.glsl:$line"
+
+# The keyword from an included header, its condition in blur.glsl: a #line marker stands between them.
+cp "$glsl/blur.glsl" "$work/copy/blur.glsl" && printf '  while\n' > "$work/copy/pn_repeat.h" ||
+  fail "could not restore blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1  float x = 0.0;\n#include "pn_repeat.h"\n  (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
+grep -q '^#include "pn_repeat.h"$' "$work/copy/blur.glsl" || fail "could not put the header's loop into blur.glsl"
+out=$(timeout 120 "$penumbra" check blur --glsl-root "$work/copy" --gpu-timeout 20 2>&1)
+status=$?
+printf '%s\n' "$out"
+[ "$status" -eq 1 ] || fail "header loop: expected exit 1 (a false PASS before), got $status"
+printf '%s\n' "$out" | grep -q "^blur: FAIL passes/blur.comp: dispatch: the loop at pn_repeat.h:1 ran past" ||
+  fail "header loop: no message naming the loop at pn_repeat.h:1"
 echo "broken_copy_commands: ok"
