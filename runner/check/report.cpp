@@ -17,6 +17,50 @@ double closeness(const CaseResult& c) {
   return c.comparison.worst_error > 0.0 ? 1e300 : 0.0;
 }
 
+// "MODULE: --hlsl-root: ran R/a.hlsl, …; the library's export for exports/b, passes/c (why); …":
+// which copies a check ran and, grouped by reason, which entries it ran the library's export of.
+std::string origins_line(const ModuleReport& r) {
+  auto add = [](std::vector<std::string>& to, const std::string& what) {
+    if (std::find(to.begin(), to.end(), what) == to.end()) to.push_back(what);
+  };
+  auto list = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size() && i < 8; ++i) out += (i ? ", " : "") + names[i];
+    if (names.size() > 8) out += ", … (" + std::to_string(names.size()) + " in all)";
+    return out;
+  };
+  std::vector<std::string> copies, reasons;
+  std::vector<std::vector<std::string>> passes;                // a list a reason
+  std::vector<std::vector<std::vector<std::string>>> details;  // a list a pass of a reason
+  for (const PassOrigin& o : r.origins) {
+    if (!o.copy.empty()) {
+      add(copies, o.copy);
+      continue;
+    }
+    add(reasons, o.why_not);
+    const auto k = static_cast<std::size_t>(std::find(reasons.begin(), reasons.end(), o.why_not) - reasons.begin());
+    passes.resize(reasons.size()), details.resize(reasons.size());
+    const std::string name = o.pass.size() > 5 && o.pass.compare(o.pass.size() - 5, 5, ".comp") == 0
+                                 ? o.pass.substr(0, o.pass.size() - 5) : o.pass;
+    add(passes[k], name);
+    const auto p = static_cast<std::size_t>(std::find(passes[k].begin(), passes[k].end(), name) - passes[k].begin());
+    details[k].resize(passes[k].size());
+    if (!o.detail.empty()) add(details[k][p], o.detail);
+  }
+  std::string line = r.module + ": --hlsl-root: " + (copies.empty() ? "no copy ran" : "ran " + list(copies));
+  for (std::size_t k = 0; k < reasons.size(); ++k) {
+    std::vector<std::string> names;
+    for (std::size_t p = 0; p < passes[k].size(); ++p) {
+      const std::vector<std::string>& d = details[k][p];
+      names.push_back(passes[k][p] + (d.empty()       ? ""
+                                      : d.size() == 1 ? " [" + d[0] + "]"
+                                                      : " [" + std::to_string(d.size()) + " sets of defines]"));
+    }
+    line += (k ? "; and for " : "; the library's export ran for ") + list(names) + " (" + reasons[k] + ")";
+  }
+  return line;
+}
+
 }  // namespace
 
 bool ModuleReport::pass() const {
@@ -74,6 +118,8 @@ void print_report(std::ostream& out, const std::vector<ModuleReport>& reports, s
     for (const ModuleReport& r : reports)
       for (const CaseResult& c : r.cases)
         if (c.headline && c.comparison.pass) out << r.module << ": " << c.name << "\n";
+  for (const ModuleReport& r : reports)
+    if (!r.origins.empty()) out << origins_line(r) << "\n";
   if (every_case)
     for (const ModuleReport& r : reports)
       for (const CaseResult& c : r.cases)

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -8,6 +9,7 @@
 #include "core/format.h"
 #include "gl/context.h"
 #include "modules/blur.h"
+#include "vk/hlsl_root.h"
 #include "vk/vulkan_device.h"
 
 namespace pn::cli {
@@ -54,8 +56,9 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
                   "checks on a Vulkan device, from the vulkan target's SPIR-V) | hlsl (the same from each pass's HLSL "
                   "export, compiled back by glslang)");
   cmd->add_option("--hlsl-root", opt->hlsl_root,
-                  "With --api hlsl: a directory of HLSL exports (X.hlsl, as `bundle glsl/passes/X.comp --target hlsl` "
-                  "writes) run instead of the generated ones");
+                  "With --api hlsl: a directory of HLSL exports run instead of the generated ones: X.hlsl (as `bundle "
+                  "X.glsl --target hlsl` writes it) for the export entry exports/X.comp or the pass passes/X.comp; "
+                  "each check says which copies it ran");
   cmd->add_flag("--no-validation", opt->no_validation, "With --api vulkan | hlsl: without the Khronos validation layer");
   cmd->add_option("--blur-radius", opt->blur_radius,
                   "Check blur with this radius only (0 to " + std::to_string(kBlurMaxRadius) + ")");
@@ -86,13 +89,16 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     const std::optional<PassLanguage> language = vulkan_language(global, true);
     if (!opt->hlsl_root.empty() && language != PassLanguage::hlsl)
       throw Error("--hlsl-root " + opt->hlsl_root + ": applies to --api hlsl only");
-    if (!opt->hlsl_root.empty() && !std::filesystem::is_directory(opt->hlsl_root))
-      throw Error("--hlsl-root " + opt->hlsl_root + ": expected a directory of HLSL exports");
     if (language && !global.backend.empty())
       throw Error("--backend " + global.backend + ": applies to the GL APIs (gl450, es310), not to " + global.api);
     if (!language && opt->no_validation) throw Error("--no-validation: applies to --api vulkan | hlsl only");
     const SourceTree tree(glsl_root_or_default(global));
+    // A root that supplies no copy, or a copy named so that it would never be read, is refused
+    // here, before any work (vk/hlsl_root.h); each check then says what it ran.
+    const std::vector<std::string> copies =
+        opt->hlsl_root.empty() ? std::vector<std::string>() : usable_hlsl_copies(opt->hlsl_root, tree);
     std::vector<ModuleReport> reports;
+    std::vector<std::string> unread;  // copies no check read
     if (language) {
       VulkanSettings settings;
       settings.language = *language;
@@ -101,7 +107,21 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       const auto device = create_vulkan_device(settings);
       device->set_dispatch_bounds(opt->bounds);
       print_vulkan_device(*device);
-      reports = run_checks(opt->modules, CheckEnvironment(*device, tree, options));
+      // One check at a time: each with its own budget of device time, and the origins of the
+      // stages it compiled (--hlsl-root).
+      const CheckEnvironment env(*device, tree, options);
+      std::vector<std::string> modules = opt->modules;
+      if (modules.empty())
+        for (const ModuleCheck& check : module_checks()) modules.push_back(check.name);
+      for (const std::string& module : modules) {
+        device->start_budget();
+        device->take_pass_origins();  // what ran before is not this check's
+        reports.push_back(std::move(run_checks({module}, env).front()));
+        reports.back().origins = device->take_pass_origins();
+      }
+      const std::vector<std::string> read = device->hlsl_copies_read();
+      for (const std::string& c : copies)
+        if (std::find(read.begin(), read.end(), c) == read.end()) unread.push_back(c);
     } else {
       const std::optional<Backend> backend = chosen_backend(global);
       const Api api = chosen_api(global);
@@ -112,6 +132,12 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       reports = run_checks(opt->modules, CheckEnvironment(*context, tree, options));
     }
     print_report(std::cout, reports, 10, opt->every_case);
+    if (!unread.empty()) {
+      std::string names;
+      for (const std::string& c : unread) names += (names.empty() ? "" : ", ") + c;
+      std::cout << "--hlsl-root " << opt->hlsl_root << ": not read by the checks run: " << names
+                << " (no check run compiled that entry without defines)\n";
+    }
     bool pass = true;
     for (const auto& r : reports) pass = pass && r.pass();
     exit_code = pass ? 0 : static_cast<int>(ExitCode::failed);

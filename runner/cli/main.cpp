@@ -1,8 +1,22 @@
 // penumbra — lint, bundle and check the GLSL soft-shadow modules.
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
 #include "cli/commands.h"
 #include "core/write_file.h"
+#include "vk/vulkan_device.h"
 
 int main(int argc, char** argv) {
   pn::remove_temporaries_on_signals();  // an interrupted write leaves no temporary behind
-  return pn::cli::run(argc, argv);
+  const int code = pn::cli::run(argc, argv);
+  if (pn::vulkan_job_abandoned()) {
+    // A Vulkan job past its deadline still runs (`check --gpu-timeout`: the verdict is printed):
+    // end now, without the exit handlers and static destructors that could wait for its threads.
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }

@@ -3,10 +3,16 @@
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <cstring>
 #include <functional>
 #include <list>
+#include <mutex>
+#include <set>
+#include <thread>
 #include <tuple>
+#include <utility>
 
 #include "core/error.h"
 #include "core/format.h"
@@ -78,6 +84,65 @@ int type_rank(VkPhysicalDeviceType type) {
 }
 
 
+// Waits for one fence at a time on a thread of its own, so that the caller's deadline holds on the
+// runner's clock whatever the driver's wait does, and the calling thread never sits in a driver
+// call that a job without end could block: lavapipe's vkWaitForFences was caught (gdb, `check blur
+// --gpu-timeout 2` on a loaded machine) still in its timed wait seconds past its deadline, and its
+// waits take locks its queue thread holds while it runs a job.
+class FenceWaiter {
+ public:
+  explicit FenceWaiter(VkDevice device) : device_(device), thread_([this] { loop(); }) {}
+  FenceWaiter(const FenceWaiter&) = delete;
+  FenceWaiter& operator=(const FenceWaiter&) = delete;
+  // Only when no wait is in flight (State leaks a waiter still inside the driver, with its device).
+  ~FenceWaiter() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      quit_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+  }
+
+  void start(VkFence fence) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      fence_ = fence, done_ = false;
+    }
+    changed_.notify_all();
+  }
+  // Whether the fence last started has signalled, waiting up to `seconds`; `result`: the driver's.
+  bool wait(double seconds, VkResult& result) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!changed_.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return done_; })) return false;
+    result = result_;
+    return true;
+  }
+
+ private:
+  void loop() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      changed_.wait(lock, [&] { return quit_ || fence_ != VK_NULL_HANDLE; });
+      if (quit_) return;
+      const VkFence fence = fence_;
+      lock.unlock();
+      const VkResult r = vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX);
+      lock.lock();
+      fence_ = VK_NULL_HANDLE, result_ = r, done_ = true;
+      changed_.notify_all();
+    }
+  }
+
+  VkDevice device_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  VkFence fence_ = VK_NULL_HANDLE;
+  bool done_ = false, quit_ = false;
+  VkResult result_ = VK_SUCCESS;
+  std::thread thread_;  // last: it starts with the others made
+};
+
 }  // namespace
 
 struct VulkanDevice::State {
@@ -99,11 +164,51 @@ struct VulkanDevice::State {
   DispatchBounds bounds;
   GlslangProcess glslang;
   mutable std::vector<std::string> messages;  // the validation layer's, since the last check
+  mutable std::vector<PassOrigin> origins;     // --hlsl-root: what each stage compiled since ran from
+  mutable std::set<std::string> copies_read;   // --hlsl-root: the copies' names read so far
+
+  // A submission past its deadline (`check --gpu-timeout`). A Vulkan job cannot be cancelled:
+  // lavapipe's worker threads go on running the shader, reading and writing every buffer, image,
+  // descriptor set and pipeline its command buffer names. Freeing any of them under the running
+  // job is what ended `check traversal --api vulkan --gpu-timeout 0.2` in SIGSEGV (the exception's
+  // unwinding destroyed them), and any wait for the job (vkDeviceWaitIdle, vkDestroyDevice, even
+  // vkGetFenceStatus on lavapipe) hangs as long as it runs: forever, on an endless loop. So from
+  // the timeout on the device is *abandoned* and the process waits for the job on no call of its
+  // own:
+  // - nothing made on the device is destroyed: every destructor below returns first while
+  //   `abandoned()`, and the objects leak, deliberately (the job may still be reading them);
+  // - the fence waiter (its own thread) goes on waiting for the job; the next use of the device
+  //   (ensure_usable) gives it up to the deadline once more: if the job has ended by then, the
+  //   device is whole again (what leaked stays leaked) and the checks go on; if not, the device is
+  //   given up, and every later use fails at once, naming the stuck job, with no Vulkan call;
+  // - ~State, while the job runs, destroys and waits for nothing (the device, the instance and the
+  //   waiter, blocked in the driver, leak) and marks the process (vulkan_job_abandoned()):
+  //   `penumbra` then ends by _Exit after its report, so no exit handler or static destructor can
+  //   wait for the job's threads or free what they use (cli/main.cpp).
+  mutable std::unique_ptr<FenceWaiter> waiter;
+  // One check's device time (start_budget): the seconds its submissions waited in all, bounded by
+  // kBudgetFactor × the dispatch deadline. A copy whose loops the driver cuts short one dispatch at
+  // a time (llvmpipe ends a loop silently at 65535 iterations, above a --loop-limit that high)
+  // keeps every dispatch under the deadline and used to run a check for many minutes: past the
+  // budget the check fails as a deadline fails.
+  static constexpr double kBudgetFactor = 10;
+  mutable double device_seconds = 0;
+  mutable VkFence stuck_fence = VK_NULL_HANDLE;
+  mutable VkCommandBuffer stuck_commands = VK_NULL_HANDLE;
+  mutable std::string stuck_what;  // "passes/blur.comp: dispatch did not finish within 2 s"
+  mutable bool given_up = false;
+  bool abandoned() const { return stuck_fence != VK_NULL_HANDLE; }
 
   State() = default;
   State(const State&) = delete;
   State& operator=(const State&) = delete;
   ~State() {
+    if (abandoned() && !stuck_job_ended(0.0)) {
+      abandoned_jobs() = true;
+      static_cast<void>(waiter.release());  // blocked in the driver: it leaks with the device it waits on
+      return;
+    }
+    waiter.reset();
     if (device != VK_NULL_HANDLE) {
       vkDeviceWaitIdle(device);
       if (sampler != VK_NULL_HANDLE) vkDestroySampler(device, sampler, nullptr);
@@ -134,9 +239,42 @@ struct VulkanDevice::State {
     throw Error("vulkan: no memory type with the properties a buffer or image needs", ExitCode::failed);
   }
 
+  static bool& abandoned_jobs() {
+    static bool any = false;
+    return any;
+  }
+
+  double timeout_s() const { return bounds.enabled ? bounds.timeout_s : 3600.0; }
+
+  // Whether the stuck job has ended, giving it up to `seconds` (its waiter's word: no Vulkan call
+  // that could block); if it has, the device is whole again: its fence and command buffer are
+  // freed, and destructors free what they own once more.
+  bool stuck_job_ended(double seconds) const {
+    VkResult result = VK_SUCCESS;
+    if (!waiter->wait(seconds, result)) return false;
+    vkDestroyFence(device, stuck_fence, nullptr);
+    vkFreeCommandBuffers(device, pool, 1, &stuck_commands);
+    stuck_fence = VK_NULL_HANDLE, stuck_commands = VK_NULL_HANDLE, stuck_what.clear();
+    return true;
+  }
+
+  // Before any use of the device (a submission, an object made): throws Error naming `what` and
+  // the stuck job when a job past its deadline still runs (above).
+  void ensure_usable(const std::string& what) const {
+    if (!abandoned()) return;
+    if (!given_up && stuck_job_ended(timeout_s())) return;
+    given_up = true;
+    throw Error(what + ": not run: the Vulkan device still runs the job that " + stuck_what +
+                    " (a Vulkan job cannot be cancelled)",
+                ExitCode::failed);
+  }
+
   // Records commands into a new command buffer, submits it and waits, under the dispatch
-  // bounds' deadline. Throws Error naming `what` on a timeout or a validation message.
+  // bounds' deadline. Throws Error naming `what` on a timeout or a validation message; after a
+  // timeout the device is abandoned (above).
   void submit(const std::string& what, const std::function<void(VkCommandBuffer)>& record) const {
+    ensure_usable(what);
+    const double timeout_s = this->timeout_s();
     VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     allocate.commandPool = pool;
     allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -146,7 +284,9 @@ struct VulkanDevice::State {
     struct Free {
       const State* s;
       VkCommandBuffer c;
-      ~Free() { vkFreeCommandBuffers(s->device, s->pool, 1, &c); }
+      ~Free() {
+        if (c != VK_NULL_HANDLE) vkFreeCommandBuffers(s->device, s->pool, 1, &c);
+      }
     } free_commands{this, commands};
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -159,18 +299,33 @@ struct VulkanDevice::State {
     struct DestroyFence {
       VkDevice d;
       VkFence f;
-      ~DestroyFence() { vkDestroyFence(d, f, nullptr); }
+      ~DestroyFence() {
+        if (f != VK_NULL_HANDLE) vkDestroyFence(d, f, nullptr);
+      }
     } destroy_fence{device, fence};
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &commands;
     vk_check(vkQueueSubmit(queue, 1, &submit, fence), what + ": submitting");
-    const double timeout_s = bounds.enabled ? bounds.timeout_s : 3600.0;
-    const VkResult waited = vkWaitForFences(device, 1, &fence, VK_TRUE, static_cast<uint64_t>(timeout_s * 1e9));
-    if (waited == VK_TIMEOUT)
-      throw Error(what + " did not finish within " + format_number("%g", timeout_s) + " s", ExitCode::failed);
+    waiter->start(fence);
+    VkResult waited = VK_SUCCESS;
+    const auto start = std::chrono::steady_clock::now();
+    const bool ended = waiter->wait(timeout_s, waited);
+    device_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!ended) {
+      // Still running: its commands and fence are kept, and so is everything it reads (above).
+      stuck_fence = fence, stuck_commands = commands;
+      destroy_fence.f = VK_NULL_HANDLE, free_commands.c = VK_NULL_HANDLE;
+      stuck_what = what + " did not finish within " + format_number("%g", timeout_s) + " s";
+      throw Error(stuck_what, ExitCode::failed);
+    }
     vk_check(waited, what + ": waiting");
     throw_if_messages(what);
+    if (bounds.enabled && device_seconds > kBudgetFactor * timeout_s)
+      throw Error(what + ": the check's device work did not finish within " +
+                      format_number("%g", kBudgetFactor * timeout_s) + " s (" + format_number("%g", kBudgetFactor) +
+                      " x --gpu-timeout, over all its dispatches)",
+                  ExitCode::failed);
   }
 };
 
@@ -203,6 +358,7 @@ class HostBuffer {
     vk_check(vkMapMemory(s.device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "mapping a buffer");
   }
   ~HostBuffer() {
+    if (s_->abandoned()) return;  // a stuck job may read it (State)
     if (memory_ != VK_NULL_HANDLE) vkFreeMemory(s_->device, memory_, nullptr);  // unmaps
     if (buffer_ != VK_NULL_HANDLE) vkDestroyBuffer(s_->device, buffer_, nullptr);
   }
@@ -311,6 +467,7 @@ class VulkanImage final : public DeviceTexture {
     for (int level = 0; level < shape.levels; ++level) level_views_.push_back(make_view(level, 1));
   }
   ~VulkanImage() override {
+    if (s_->abandoned()) return;  // a stuck job may read it (State)
     for (VkImageView view : level_views_) vkDestroyImageView(s_->device, view, nullptr);
     if (view_ != VK_NULL_HANDLE) vkDestroyImageView(s_->device, view_, nullptr);
     if (image_ != VK_NULL_HANDLE) vkDestroyImage(s_->device, image_, nullptr);
@@ -502,6 +659,7 @@ struct BoundSet {
   BoundSet(const BoundSet&) = delete;
   BoundSet& operator=(const BoundSet&) = delete;
   ~BoundSet() {
+    if (s == nullptr || s->abandoned()) return;  // a stuck job may read it (State)
     if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(s->device, pool, nullptr);
   }
 };
@@ -511,6 +669,7 @@ struct BoundSet {
 class VulkanProgram : public QueryProgram {
  public:
   ~VulkanProgram() override {
+    if (s_->abandoned()) return;  // a stuck job may run it (State)
     for (VkShaderModule module : modules_) vkDestroyShaderModule(s_->device, module, nullptr);
     if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(s_->device, pipeline_, nullptr);
     if (pipeline_layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(s_->device, pipeline_layout_, nullptr);
@@ -771,6 +930,7 @@ class DepthImage {
     });
   }
   ~DepthImage() {
+    if (s_->abandoned()) return;  // a stuck job may write it (State)
     if (view_ != VK_NULL_HANDLE) vkDestroyImageView(s_->device, view_, nullptr);
     if (image_ != VK_NULL_HANDLE) vkDestroyImage(s_->device, image_, nullptr);
     if (memory_ != VK_NULL_HANDLE) vkFreeMemory(s_->device, memory_, nullptr);
@@ -876,6 +1036,7 @@ class VulkanRasterTarget final : public DeviceRasterTarget {
     vk_check(vkCreateFramebuffer(s.device, &info, nullptr, &framebuffer_), "a raster target's framebuffer");
   }
   ~VulkanRasterTarget() override {
+    if (s_->abandoned()) return;  // a stuck job may draw into it (State)
     if (framebuffer_ != VK_NULL_HANDLE) vkDestroyFramebuffer(s_->device, framebuffer_, nullptr);
     if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(s_->device, render_pass_, nullptr);
   }
@@ -996,6 +1157,7 @@ class VulkanRasterProgram final : public VulkanProgram {
     s.throw_if_messages(name_);
   }
   ~VulkanRasterProgram() override {
+    if (s_->abandoned()) return;  // a stuck job may run it (State)
     if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(s_->device, render_pass_, nullptr);
   }
   TexelFormat target_format() const { return target_; }
@@ -1096,6 +1258,13 @@ std::string VulkanDevice::validation() const {
   return state_->validation_on ? std::string("on (") + kValidationLayer + ")" : "off (" + state_->validation_why + ")";
 }
 void VulkanDevice::set_dispatch_bounds(const DispatchBounds& bounds) { state_->bounds = bounds; }
+void VulkanDevice::start_budget() { state_->device_seconds = 0; }
+
+std::vector<PassOrigin> VulkanDevice::take_pass_origins() const { return std::exchange(state_->origins, {}); }
+
+std::vector<std::string> VulkanDevice::hlsl_copies_read() const {
+  return {state_->copies_read.begin(), state_->copies_read.end()};
+}
 
 std::string VulkanDevice::query_api() const {
   return state_->settings.language == PassLanguage::hlsl ? "hlsl" : "vulkan";
@@ -1118,8 +1287,11 @@ std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const Sourc
 
   std::string name = std::filesystem::path(pass).stem().string() + ".hlsl";
   std::string hlsl;
+  // The copy stands in for the entry of its name (vk/hlsl_root.h); either way, what ran is recorded
+  // for the check's report, so a check never falls back to the library's export in silence.
   const std::filesystem::path copy = s.settings.hlsl_root ? *s.settings.hlsl_root / name : std::filesystem::path();
-  if (source.stage == Stage::compute && s.settings.hlsl_root && defines.empty() && std::filesystem::exists(copy)) {
+  const bool has_copy = s.settings.hlsl_root && std::filesystem::is_regular_file(copy);  // links followed
+  if (source.stage == Stage::compute && has_copy && defines.empty()) {
     const SourceTree root(*s.settings.hlsl_root);  // read as module files are: a regular file, bounded
     const std::filesystem::path canonical = root.locate_in_root(name);
     hlsl = root.read(canonical), name = root.diagnostic_path(canonical);
@@ -1127,8 +1299,25 @@ std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const Sourc
       *loops = s.bounds.enabled ? guard_hlsl_loops(s.glslang, hlsl, name, source.stage,
                                                    {kGuardBinding, s.bounds.loop_iterations})
                                 : std::vector<GuardedLoop>{};
+    s.origins.push_back({pass, name, "", ""});
+    s.copies_read.insert(copy.filename().string());
   } else {
     hlsl = cross_compile(glsl.spirv, CrossLanguage::hlsl50);
+    if (s.settings.hlsl_root) {
+      const std::string root = s.settings.hlsl_root->string();
+      if (source.stage != Stage::compute) {
+        s.origins.push_back({pass, "", "vertex and fragment stages (a copy stands in for a compute entry only)", ""});
+      } else if (!defines.empty()) {
+        std::string set;
+        for (const Define& d : defines) set += (set.empty() ? "" : " ") + d.name + (d.value.empty() ? "" : "=" + d.value);
+        s.origins.push_back({pass, "",
+                             std::string("compiled with defines, which a copy (one fixed text) cannot take") +
+                                 (has_copy ? ": its copy in " + root + " not read" : ""),
+                             set});
+      } else {
+        s.origins.push_back({pass, "", "no copy of it in " + root, ""});
+      }
+    }
   }
   const CompileResult back = compile_hlsl_with_glslang(s.glslang, hlsl, name, source.stage);
   if (!back.ok) throw Error(name + ": " + first_error(back, "glslang could not compile the HLSL"), ExitCode::failed);
@@ -1143,6 +1332,7 @@ std::string program_name(const VulkanDevice::State& s, const std::string& pass) 
 
 std::unique_ptr<QueryProgram> VulkanDevice::compile_query(const SourceTree& tree, const std::string& pass,
                                                           const std::vector<Define>& defines) const {
+  state_->ensure_usable(pass);
   std::vector<GuardedLoop> loops;
   const std::vector<std::uint32_t> spirv = stage_spirv(*state_, tree, pass, defines, &loops);
   return std::make_unique<VulkanQueryProgram>(*state_, program_name(*state_, pass), spirv, std::move(loops));
@@ -1150,6 +1340,7 @@ std::unique_ptr<QueryProgram> VulkanDevice::compile_query(const SourceTree& tree
 
 std::unique_ptr<QueryProgram> VulkanDevice::compile_raster(const SourceTree& tree, const std::string& vertex,
                                                            const std::string& fragment, TexelFormat target) const {
+  state_->ensure_usable(fragment);
   return std::make_unique<VulkanRasterProgram>(*state_, program_name(*state_, fragment),
                                                stage_spirv(*state_, tree, vertex, {}, nullptr),
                                                stage_spirv(*state_, tree, fragment, {}, nullptr), target, true);
@@ -1158,6 +1349,7 @@ std::unique_ptr<QueryProgram> VulkanDevice::compile_raster(const SourceTree& tre
 std::unique_ptr<QueryProgram> VulkanDevice::compile_full_screen(const SourceTree& tree, const std::string& fragment,
                                                                 TexelFormat target,
                                                                 const std::vector<Define>& defines) const {
+  state_->ensure_usable(fragment);
   return std::make_unique<VulkanRasterProgram>(*state_, program_name(*state_, fragment),
                                                stage_spirv(*state_, tree, kFullScreenVertex, {}, nullptr),
                                                stage_spirv(*state_, tree, fragment, defines, nullptr), target, false);
@@ -1203,6 +1395,7 @@ std::unique_ptr<DeviceTexture> VulkanDevice::draw_triangles(const QueryProgram& 
 }
 
 std::unique_ptr<DeviceVertices> VulkanDevice::make_vertices(const std::vector<glm::vec3>& vertices) const {
+  state_->ensure_usable("a vertex buffer");
   return std::make_unique<VulkanVertices>(*state_, vertices);
 }
 
@@ -1220,6 +1413,7 @@ void VulkanDevice::write_vertices(const DeviceVertices& to, const std::vector<gl
 }
 
 std::unique_ptr<DeviceRasterTarget> VulkanDevice::make_raster_target(int size, TexelFormat format) const {
+  state_->ensure_usable("a raster target");
   if (format == TexelFormat::rgba32ui)
     throw Error("vulkan: a raster target of RGBA32UI texels: expected a float format", ExitCode::failed);
   return std::make_unique<VulkanRasterTarget>(*state_, size, format);
@@ -1275,10 +1469,14 @@ void VulkanDevice::draw(const QueryProgram& program, const DeviceVertices& verti
                                made_on<VulkanRasterTarget>(*state_, target, "raster target"), rects, resources);
 }
 
-std::unique_ptr<DeviceTexture> VulkanDevice::upload(const Image& image) const { return upload_image(*state_, image); }
+std::unique_ptr<DeviceTexture> VulkanDevice::upload(const Image& image) const {
+  state_->ensure_usable("uploading an image");
+  return upload_image(*state_, image);
+}
 
 std::unique_ptr<QueryBatch> VulkanDevice::make_batch(const std::vector<Image>& inputs, std::size_t results,
                                                      std::size_t word_results) const {
+  state_->ensure_usable("a query batch");
   return std::make_unique<VulkanQueryBatch>(*state_, inputs, results, word_results);
 }
 
@@ -1298,6 +1496,7 @@ void VulkanDevice::dispatch(const QueryProgram& program, const QueryBindings& bi
 }
 
 std::unique_ptr<DeviceTexture> VulkanDevice::make_texture(const TextureShape& shape) const {
+  state_->ensure_usable("a texture");
   auto image = std::make_unique<VulkanImage>(*state_, shape);
   image->fill(nullptr, 0);  // into GENERAL layout
   return image;
@@ -1352,6 +1551,7 @@ std::unique_ptr<DeviceTexture> VulkanDevice::layer_texture(const DeviceTexture& 
 }
 
 std::unique_ptr<DeviceBuffer> VulkanDevice::make_buffer(std::size_t bytes) const {
+  state_->ensure_usable("a storage buffer");
   return std::make_unique<VulkanBuffer>(*state_, bytes);
 }
 
@@ -1407,6 +1607,8 @@ void VulkanDevice::clear_texture(const DeviceTexture& texture, const float value
                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
   });
 }
+
+bool vulkan_job_abandoned() { return VulkanDevice::State::abandoned_jobs(); }
 
 std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings) {
   auto s = std::make_unique<VulkanDevice::State>();
@@ -1518,6 +1720,7 @@ std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& setting
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.queueFamilyIndex = s->queue_family;
   vk_check(vkCreateCommandPool(s->device, &pool_info, nullptr, &s->pool), "creating a command pool");
+  s->waiter = std::make_unique<FenceWaiter>(s->device);
   // The GL textures' sampling (gl/texture.h): nearest, clamped to the edge, one level.
   VkSamplerCreateInfo sampler_info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   sampler_info.magFilter = sampler_info.minFilter = VK_FILTER_NEAREST;

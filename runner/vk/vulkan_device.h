@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "device/pass_origin.h"
 #include "device/query_device.h"
 
 namespace pn {
@@ -26,8 +27,9 @@ enum class PassLanguage {
 struct VulkanSettings {
   PassLanguage language = PassLanguage::glsl;
   bool validation = true;  // the Khronos validation layer, when installed
-  // With hlsl: a directory of HLSL exports (`bundle glsl/passes/X.comp --target hlsl` as X.hlsl)
-  // used instead of the generated export of a pass compiled without extra defines.
+  // With hlsl: a directory of HLSL exports (X.hlsl, as `bundle X.glsl --target hlsl` writes it)
+  // used instead of the generated export of the compute entry X (exports/X.comp or
+  // passes/X.comp) compiled without extra defines; checked by usable_hlsl_copies (vk/hlsl_root.h).
   std::optional<std::filesystem::path> hlsl_root;
 };
 
@@ -40,9 +42,17 @@ class VulkanDevice final : public QueryDevice {
   std::string device_type() const;  // "cpu", "integrated GPU", …
   // "on (VK_LAYER_KHRONOS_validation)" or "off (…why)".
   std::string validation() const;
+  // Under the bounds every submission is waited for at most bounds.timeout_s (a job past it is
+  // abandoned: vulkan_device.cpp, State), and the submissions since start_budget() together at most
+  // 10 × that (`check` starts a budget for each check).
   void set_dispatch_bounds(const DispatchBounds& bounds);
+  void start_budget();
 
   std::string query_api() const override;
+  // With --hlsl-root: where each stage compiled since the last call came from (device/pass_origin.h).
+  std::vector<PassOrigin> take_pass_origins() const;
+  // The names of the --hlsl-root copies (vk/hlsl_root.h) some compiled stage has read ("pcf.hlsl").
+  std::vector<std::string> hlsl_copies_read() const;
   std::unique_ptr<QueryProgram> compile_query(const SourceTree& tree, const std::string& pass,
                                               const std::vector<Define>& defines) const override;
   std::unique_ptr<DeviceTexture> upload(const Image& image) const override;
@@ -93,5 +103,11 @@ class VulkanDevice final : public QueryDevice {
 // The first device with a compute queue, GPUs before CPUs. Throws Error(ExitCode::no_context)
 // naming why there is none (no loader, no driver, no device).
 std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings = {});
+
+// Whether a device was destroyed while a job past its deadline still ran on it (`check
+// --gpu-timeout`): a Vulkan job cannot be cancelled, so that device and everything on it were left
+// as they were (vulkan_device.cpp, State), and the process must end without exit handlers that
+// could wait for the job's threads: `penumbra` ends by std::_Exit after its output (cli/main.cpp).
+bool vulkan_job_abandoned();
 
 }  // namespace pn
