@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <random>
 
 #include "core/error.h"
@@ -21,7 +22,35 @@ namespace {
 
 // Writes `text` straight into an existing file that is not a regular one (a device, a FIFO):
 // there is nothing to replace, and renaming a temporary over it would destroy the node.
+// The descriptor `path` names (/dev/stdout 1, /dev/stderr 2, /dev/fd/N, /proc/self/fd/N), or -1.
+int named_descriptor(const fs::path& path) {
+  const std::string name = path.lexically_normal().string();
+  if (name == "/dev/stdout") return 1;
+  if (name == "/dev/stderr") return 2;
+  for (const std::string prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    if (name.rfind(prefix, 0) != 0 || name.size() == prefix.size() || name.size() > prefix.size() + 9) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.find_first_not_of("0123456789") == std::string::npos) return std::stoi(digits);
+  }
+  return -1;
+}
+
 void write_in_place(const fs::path& path, const std::string& text) {
+  // A descriptor the caller opened is written as opened (issue 39 C13): reopening /dev/stdout would
+  // truncate a file the shell opened to append to.
+  if (const int fd = named_descriptor(path); fd >= 0) {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    for (size_t done = 0; done < text.size();) {
+      const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0)
+        throw Error("output '" + path.string() + "': write failed (" + std::strerror(n < 0 ? errno : EIO) + ")");
+      done += static_cast<size_t>(n);
+    }
+    return;
+  }
   std::ofstream file(path, std::ios::binary);
   if (!file) throw Error("output '" + path.string() + "': cannot be written");
   file << text;
@@ -127,6 +156,9 @@ struct OutputTarget {
 };
 OutputTarget resolve_output_target(const fs::path& requested) {
   std::error_code ec;
+  // A descriptor the caller opened (`-o /dev/stdout > file`, `>> file`): written through it, as the
+  // shell set it up, whatever it is; renaming over the file it names would undo an append.
+  if (named_descriptor(requested) >= 0) return {requested, true};
   const fs::file_status followed = fs::status(requested, ec);
   if (fs::exists(followed)) {
     if (!fs::is_regular_file(followed)) return {requested, true};
