@@ -31,6 +31,13 @@ std::string samples_spec(const char* family, int n) {
 
 // The scene at one map size and width factor.
 Scene frontier_scene(const std::string& name, int size, double width) {
+  // The scenes frontier takes, named in its refusal (issue 39 C21: it used to list the area-light three).
+  const std::vector<std::string> known = FrontierBenchSetup{}.scenes;
+  if (std::find(known.begin(), known.end(), name) == known.end()) {
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw Error("unknown scene '" + name + "': expected one of " + list);
+  }
   Scene scene = name == kFrontierModelScene                     ? make_model_scene(fixtures::kCityModels[0], size)
                 : find_city_scene_fixture_or_null(name) != nullptr ? make_city_scene(*find_city_scene_fixture_or_null(name), size)
                                                                 : make_scene(find_scene_fixture(name), size);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
@@ -22,8 +23,8 @@ void CascadeSettings::validate() const {
   if (count < 1 || count > PN_CASCADES_MAX)
     throw bad_setting("cascade count", count, "1 ... " + std::to_string(PN_CASCADES_MAX));
   if (lambda && !(*lambda >= 0.0 && *lambda <= 1.0)) throw bad_setting("cascade lambda", *lambda, "0 ... 1");
-  if (!(enlargement >= 1.0) || !std::isfinite(enlargement))
-    throw bad_setting("cascade enlargement k", enlargement, "a finite number >= 1");
+  if (!(enlargement >= 1.0) || !(enlargement <= std::numeric_limits<float>::max()))  // cascades.h's float k
+    throw bad_setting("cascade enlargement k", enlargement, "a finite number >= 1 that float holds (<= 3.4e38)");
   if (!(gap >= PN_CASCADE_GAP_MIN && gap <= PN_CASCADE_GAP_MAX))
     throw bad_setting("cascade gap", gap,
                       format_number("%g", PN_CASCADE_GAP_MIN) + " ... " + format_number("%g", PN_CASCADE_GAP_MAX));

@@ -133,6 +133,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       throw Error("--model '" + opt->pipeline.model.string() + "': the path is not UTF-8, which --json cannot record; "
                   "expected a UTF-8 path (rename the file) or no --json");
     if (!opt->plot.empty()) probe_output_file(opt->plot);
+    require_distinct_outputs({{"--json", opt->json}, {"--plot", opt->plot}});  // issue 39 C11
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <string>
 
 #include "check/report.h"
@@ -81,9 +82,15 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       blur.validate();  // bad parameters are refused before a context is made
       options.blur = blur;
     }
+    // A module named more than once runs once, in the order first named (issue 39 C20).
+    std::vector<std::string> modules;
+    std::set<std::string> named;
+    for (const std::string& m : opt->modules)
+      if (named.insert(m).second) modules.push_back(m);
+    opt->modules = std::move(modules);
     for (const std::string& m : opt->modules) find_module_check(m);  // unknown names, likewise
-    if (!(opt->bounds.timeout_s >= 0.1 && opt->bounds.timeout_s <= 3600))
-      throw Error("GPU timeout " + format_number("%g", opt->bounds.timeout_s) + ": expected 0.1..3600 seconds");
+    if (!(opt->bounds.timeout_s >= 0.1 && opt->bounds.timeout_s <= 3600))  // the value as given (issue 39 C21)
+      throw Error("GPU timeout " + format_shortest(opt->bounds.timeout_s) + ": expected 0.1..3600 seconds");
     if (opt->bounds.loop_iterations < 1 || opt->bounds.loop_iterations > (1u << 30))
       throw Error("loop limit " + std::to_string(opt->bounds.loop_iterations) + ": expected 1..1073741824");
     const std::optional<PassLanguage> language = vulkan_language(global, true);

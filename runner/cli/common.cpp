@@ -20,8 +20,10 @@ std::filesystem::path root_for(const std::filesystem::path& path, const GlobalOp
   const fs::path rel = target.lexically_relative(library);
   if (!library.empty() && !rel.empty() && *rel.begin() != "..") return library;
   const fs::path directory = fs::is_directory(target) ? target : target.parent_path();
-  // A pass of a copy (my-copy/passes/x.comp) includes the copy's modules: the copy is the root.
-  return directory.filename() == "passes" && !fs::is_directory(target) ? directory.parent_path() : directory;
+  // A pass of a copy (my-copy/passes/x.comp, or an export entry my-copy/exports/x.comp, issue 39 C17)
+  // includes the copy's modules: the copy is the root.
+  const bool in_copy = directory.filename() == "passes" || directory.filename() == "exports";
+  return in_copy && !fs::is_directory(target) ? directory.parent_path() : directory;
 }
 
 std::optional<Backend> chosen_backend(const GlobalOptions& global) {

@@ -14,7 +14,8 @@ void add_figures_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([out, &global, &exit_code] {
     validate_output_directory(*out);  // before the context: a bad --out is exit 2 with or without one
-    if (std::filesystem::is_directory(*out)) prepare_output_directory(*out, {});  // and one that cannot be written
+    // One that cannot be written, or a picture's name there that cannot be (issue 39 C8, C9).
+    if (std::filesystem::is_directory(*out)) prepare_output_directory(*out, figure_file_names());
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     for (const auto& path : write_figures(*context, tree, *out)) std::cout << "wrote " << path.string() << "\n";

@@ -1,5 +1,6 @@
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "cli/commands.h"
 #include "core/error.h"
@@ -17,9 +18,16 @@ void add_lint_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     if (paths->empty()) paths->push_back(glsl_root_or_default(global));
     const GlslangProcess glslang;
     size_t files = 0, failed = 0;
+    // A path named more than once, or a file reached by two paths, is linted once (issue 39 C20).
+    std::set<std::string> named;
+    std::set<fs::path> linted;
     for (const std::string& path : *paths) {
+      if (!named.insert(path).second) continue;
       const SourceTree tree(root_for(path, global));
       for (const fs::path& file : collect_glsl_files(path)) {
+        std::error_code ec;
+        const fs::path canonical = fs::weakly_canonical(file, ec);
+        if (!linted.insert(ec ? file : canonical).second) continue;
         const LintResult result = lint_file(glslang, tree, file);
         ++files;
         for (const LintDiagnostic& d : result.diagnostics) std::cout << d.str() << "\n";

@@ -52,11 +52,13 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       frames->out = setup->out;
       validate_frames_setup(*frames);  // before looking for a GL context
       const Api api = chosen_api(global);
-      prepare_output_directory(frames->out, {});  // an --out that cannot be made or written: before any GL work
+      // An --out that cannot be made or written, or a name there that cannot be (issue 39 C8): before any GL work.
+      MadeDirectories made(prepare_output_directory(frames->out, frames_output_names(*frames)));
       const SourceTree tree(glsl_root_or_default(global));
       const auto context = create_context(chosen_backend(global), api);
       std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << "\n";
       const FramesResult result = run_frames(*context, tree, *frames);
+      made.keep();
       print_frames_table(std::cout, *frames, result);
       std::cout << "wrote " << result.written.size() << " files into " << frames->out.string() << "\n";
       exit_code = 0;
@@ -70,12 +72,14 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     const Scene scene = load_render_scene(*setup);  // and a bad model file before anything is written
     if (cascades->count() > 0 && !scene.sun)
       throw Error("--cascades: scene '" + scene.name + "' is not lit by the sun; only the city has cascades");
-    prepare_output_directory(setup->out, render_output_names(*setup, scene));  // made, writable, every name legal
+    // Made, writable, every name legal; removed again if the run fails before writing into it (issue 39 C19).
+    MadeDirectories made(prepare_output_directory(setup->out, render_output_names(*setup, scene)));
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global), api);
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer()
               << (api == Api::gl450 ? "" : std::string(", ") + context->version()) << "\n";
     const RenderResult result = run_render(*context, tree, *setup, scene);
+    made.keep();
     print_render_table(std::cout, *setup, result, *stages);
     for (const auto& path : result.written) std::cout << "wrote " << path.string() << "\n";
     exit_code = 0;

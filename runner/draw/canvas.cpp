@@ -141,14 +141,24 @@ void Canvas::rgb(const Image& image, int x, int y, int scale) {
     }
 }
 
-void Canvas::write_png(const std::filesystem::path& path) const {
-  std::string png;
+std::string Canvas::png() const {
+  std::string bytes;
   const auto append = [](void* out, void* data, int size) {
     static_cast<std::string*>(out)->append(static_cast<const char*>(data), static_cast<size_t>(size));
   };
-  if (!stbi_write_png_to_func(append, &png, width_, height_, 3, pixels_.data(), width_ * 3))
+  if (!stbi_write_png_to_func(append, &bytes, width_, height_, 3, pixels_.data(), width_ * 3))
+    throw Error("PNG encoding failed");
+  return bytes;
+}
+
+void Canvas::write_png(const std::filesystem::path& path) const {
+  std::string bytes;
+  try {
+    bytes = png();
+  } catch (const Error&) {
     throw Error("figure '" + path.string() + "': PNG encoding failed");
-  write_file_atomically(path, png);
+  }
+  write_file_atomically(path, bytes);
 }
 
 }  // namespace pn

@@ -65,6 +65,8 @@ class Canvas {
 
   // Throws Error naming the path when it cannot be written.
   void write_png(const std::filesystem::path& path) const;
+  // The canvas encoded as a PNG file's bytes (what write_png writes); Error when encoding fails.
+  std::string png() const;
 
  private:
   void blend(int x, int y, Rgb colour, float alpha);  // (x, y) inside the canvas

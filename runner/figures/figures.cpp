@@ -219,10 +219,11 @@ Rgb node_heat(float share) {
           static_cast<unsigned char>(255 * std::clamp(3.0f * t - 2.0f, 0.0f, 1.0f) * 0.8f)};
 }
 
-std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
-  validate_output_directory(out);
-  // One entry a picture: its file's name and what draws it.
-  using Draw = Canvas (*)(const Context&, const SourceTree&);
+namespace {
+
+using Draw = Canvas (*)(const Context&, const SourceTree&);
+
+const std::vector<std::pair<const char*, Draw>>& figure_table() {
   static const std::vector<std::pair<const char*, Draw>> figures{
       {"blur", &blur_figure},
       {"pyramid_levels", &pyramid_figure},
@@ -236,6 +237,21 @@ std::vector<fs::path> write_figures(const Context& context, const SourceTree& tr
       {"cascades_splits", [](const Context&, const SourceTree&) { return cascades_splits_figure(); }},
       {"backprojection", &backprojection_figure},
   };
+  return figures;
+}
+
+}  // namespace
+
+std::vector<std::string> figure_file_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, draw] : figure_table()) names.push_back(std::string(name) + ".png");
+  return names;
+}
+
+std::vector<fs::path> write_figures(const Context& context, const SourceTree& tree, const fs::path& out) {
+  validate_output_directory(out);
+  // One entry a picture: its file's name and what draws it.
+  const auto& figures = figure_table();
   // Every picture is drawn before the first is written: a module that fails leaves the
   // directory as it was (not made, if it was missing), not five new pictures beside two old ones.
   std::vector<fs::path> paths;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "draw/canvas.h"
@@ -17,6 +18,9 @@ namespace pn {
 // (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
+
+// The names write_figures writes (blur.png, …), for probing `out` before any work (issue 39 C8, C9).
+std::vector<std::string> figure_file_names();
 
 // Fast PCSS's stages on the boxes scene, 256² (pipeline_figure.cpp).
 Canvas pipeline_stages_figure(const Context& context, const SourceTree& tree);

@@ -30,6 +30,8 @@ inline int setting_integer(const std::string& method, const std::string& key, co
 }
 
 inline float setting_real(const std::string& method, const std::string& key, const std::string& value) {
+  // Decimal only (issue 39 C15): std::stof would read 0x10 as hexadecimal.
+  if (value.find_first_of("xX") != std::string::npos) throw bad_setting_value(method, key, value, "a decimal number");
   try {
     size_t used = 0;
     const float v = std::stof(value, &used);

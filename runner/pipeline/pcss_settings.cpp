@@ -46,7 +46,12 @@ void PcssSettings::validate() const {
   const std::string samples = "1.." + std::to_string(most);
   if (blocker_samples < 1 || blocker_samples > most) throw bad("blocker samples", blocker_samples, samples.c_str());
   if (filter_samples < 1 || filter_samples > most) throw bad("filter samples", filter_samples, samples.c_str());
-  if (blur) blur_params.validate();
+  // Checked with blur off too (issue 39 C22): a setting given is a setting meant.
+  try {
+    blur_params.validate();
+  } catch (const Error& e) {
+    throw Error("method '" + name + "': " + e.what());
+  }
 }
 
 std::optional<OneCall> one_call(const PcssSettings& s) {

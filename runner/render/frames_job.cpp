@@ -45,6 +45,17 @@ void validate_frames_setup(const FramesSetup& s) {
   validate_animated_scene_model(s.model);  // last: it reads the file
 }
 
+std::vector<std::string> frames_output_names(const FramesSetup& setup) {
+  const std::string scene = find_animated_scene_fixture(setup.scene).name;
+  std::vector<std::string> names;
+  for (int f = 0; f < setup.frames; ++f) {
+    names.push_back(frame_stem(scene, f) + ".png");
+    names.push_back(frame_stem(scene, f) + "_map.png");
+  }
+  names.push_back(scene + "_frames.tsv");
+  return names;
+}
+
 FramesResult run_frames(const Context& context, const SourceTree& tree, const FramesSetup& setup) {
   validate_frames_setup(setup);
   AnimatedScene animation(find_animated_scene_fixture(setup.scene), setup.k, setup.map_size, animated_scene_model(setup.model));

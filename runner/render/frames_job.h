@@ -46,6 +46,10 @@ struct FramesResult {
 // Throws Error naming the first bad setting (scene, K, frames 1..1000, source, sizes 16..4096, method).
 void validate_frames_setup(const FramesSetup& setup);
 
+// The names run_frames writes into `setup.out` (each frame's picture and map, the table), for
+// probing the directory before any work (issue 39 C8, C9).
+std::vector<std::string> frames_output_names(const FramesSetup& setup);
+
 // Renders the frames, writing `<scene>_frame_NNNN.png` and `<scene>_frame_NNNN_map.png` into `out`
 // (created) and `<scene>_frames.tsv`, the table.
 FramesResult run_frames(const Context& context, const SourceTree& tree, const FramesSetup& setup);

@@ -1,6 +1,7 @@
 #include "render/render_job.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <iomanip>
 
@@ -24,28 +25,44 @@ namespace {
 
 constexpr float kErrorLimit = 0.5f;  // the error pictures saturate at ±0.5 visibility
 
-void write_grey(const Image& image, const std::filesystem::path& path) {
-  Canvas canvas(image.width, image.height, {0, 0, 0});
-  canvas.grey(flip_rows(image), 0, 0, 0, 1, 0.0f, 1.0f, {255, 0, 255});
-  canvas.write_png(path);
+// FNV-1a 64 of `bytes`, 16 hex digits: the manifest's hash of each file (issue 39 C10).
+std::string file_hash(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+  char out[17];
+  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+  return out;
 }
 
-void write_rgb(const Image& image, const std::filesystem::path& path) {
+// Writes `canvas` to `path`; returns the hash of the bytes written.
+std::string write_canvas(const Canvas& canvas, const std::filesystem::path& path) {
+  const std::string bytes = canvas.png();
+  write_file_atomically(path, bytes);
+  return file_hash(bytes);
+}
+
+std::string write_grey(const Image& image, const std::filesystem::path& path) {
+  Canvas canvas(image.width, image.height, {0, 0, 0});
+  canvas.grey(flip_rows(image), 0, 0, 0, 1, 0.0f, 1.0f, {255, 0, 255});
+  return write_canvas(canvas, path);
+}
+
+std::string write_rgb(const Image& image, const std::filesystem::path& path) {
   Canvas canvas(image.width, image.height, {0, 0, 0});
   canvas.rgb(flip_rows(image), 0, 0, 1);
-  canvas.write_png(path);
+  return write_canvas(canvas, path);
 }
 
 // The error picture with its scale at its right (issue 26 B19: a picture read on its own says
 // what its colours mean): the signed map's bar from +limit to -limit, labelled.
-void write_signed(const Image& image, const std::filesystem::path& path) {
+std::string write_signed(const Image& image, const std::filesystem::path& path) {
   const Font font;
   const int text = std::clamp(image.height / 20, 10, 16), bar = 12, margin = 6;
   const int label = font.text_width("\u2212" + format_number("%g", kErrorLimit), text);
   Canvas canvas(image.width + margin + bar + 4 + label + margin, image.height, {255, 255, 255});
   canvas.signed_map(flip_rows(image), 0, 0, 0, 1, kErrorLimit);
   canvas.colour_bar(font, image.width + margin, margin, bar, image.height - 2 * margin, kErrorLimit, text, {0, 0, 0});
-  canvas.write_png(path);
+  return write_canvas(canvas, path);
 }
 
 Image difference(const Image& observed, const Image& reference) {
@@ -201,9 +218,12 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
   std::error_code ec;
   std::filesystem::remove(manifest_path, ec);
   if (ec) throw Error("output '" + manifest_path.string() + "': cannot be removed (" + ec.message() + ")");
+  // The hash of each file as this run wrote it: another run writing into the same --out between
+  // this run's files and its manifest (issue 39 C10) leaves files whose bytes the manifest disowns.
+  std::vector<std::string> hashes;
   const auto write = [&](const std::string& stem, auto writer, const Image& image) {
     const auto path = setup.out / render_file_name(scene.name, stem);
-    writer(image, path);
+    hashes.push_back(writer(image, path));
     result.written.push_back(path);
   };
   write("truth_shadow", write_grey, c.truth);
@@ -222,10 +242,11 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
                             "×" + std::to_string(setup.truth_samples) +
                             " light samples; scores on light-facing pixels: SSIM / MAE";
   const auto sheet_path = setup.out / render_file_name(scene.name, "sheet");
-  draw_sheet(title, c).write_png(sheet_path);
+  hashes.push_back(write_canvas(draw_sheet(title, c), sheet_path));
   result.written.push_back(sheet_path);
-  std::string manifest;
-  for (const auto& path : result.written) manifest += path.filename().string() + "\n";
+  std::string manifest;  // `HASH  NAME` a file, as sha256sum lays it out (FNV-1a 64)
+  for (size_t i = 0; i < result.written.size(); ++i)
+    manifest += hashes[i] + "  " + result.written[i].filename().string() + "\n";
   write_file_atomically(manifest_path, manifest);
   result.written.push_back(manifest_path);
   return result;

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/integer_hash.h"
 #include "core/named.h"
 #include "core/seeded_random.h"
@@ -28,7 +29,7 @@ void validate_animated_scene_model(const std::filesystem::path& chosen) {
 }
 
 void validate_moving_share(double k, const char* what) {
-  if (!(k >= 0.0 && k <= 1.0)) throw Error(std::string(what) + " " + std::to_string(k) + ": expected 0 <= K <= 1");
+  if (!(k >= 0.0 && k <= 1.0)) throw Error(std::string(what) + " " + format_shortest(k) + ": expected 0 <= K <= 1");
 }
 
 AnimatedScene::AnimatedScene(const fixtures::AnimatedSceneFixture& fixture, double k, int map_size,

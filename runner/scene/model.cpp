@@ -6,6 +6,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <cerrno>
+#include <fcntl.h>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -221,6 +222,17 @@ std::vector<glm::vec3> read_triangles_in_child(const fs::path& file, const Model
     close(pipe_fds[0]);
     prctl(PR_SET_PDEATHSIG, SIGKILL);  // not left running (a hang in Assimp) when the parent dies
     if (getppid() != parent) _exit(1);
+    // Assimp and its parsers print to the standard streams ("nullptr returned by creating DDLNode."
+    // for an empty OpenGEX camera, issue 39 C18): the import's only voice is its reply, so an
+    // error stays one line. A sanitizer build keeps standard error for the sanitizer's report.
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0) {
+      dup2(null, STDOUT_FILENO);
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+      dup2(null, STDERR_FILENO);
+#endif
+      close(null);
+    }
     limit_import(limits);
     std::vector<glm::vec3> triangles;
     const std::string message = read_triangles_or_message(file, limits, triangles);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
@@ -97,8 +98,13 @@ const fixtures::SceneFixture& find_scene_fixture(const std::string& name) {
 }
 
 void validate_light_width_factor(double factor, const char* what) {
+  // At least float's smallest normal number (issue 39 C22): below it the light width is a
+  // subnormal or 0 in the truth's float rays.
   if (!std::isfinite(factor) || factor <= 0)
-    throw Error(std::string(what) + " " + format_number("%g", factor) + ": expected a finite number > 0");
+    throw Error(std::string(what) + " " + format_shortest(factor) + ": expected a finite number > 0");
+  if (factor < std::numeric_limits<float>::min())
+    throw Error(std::string(what) + " " + format_shortest(factor) + ": expected a finite number > 0 that float holds "
+                "(1.2e-38 or more)");
 }
 
 void scale_light_width(Scene& scene, double factor, const char* what) {

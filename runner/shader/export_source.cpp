@@ -21,9 +21,20 @@ std::string content_hash(const std::string& text) {
 std::string export_entry(const SourceTree& tree, const std::string& module) {
   const std::filesystem::path file = tree.locate(module);
   const std::string name = tree.display_name(file);
-  if (file.extension() != ".glsl") return name;  // a pass: its own entry
+  const std::string extension = file.extension().string();
+  if (extension == ".comp" || extension == ".vert" || extension == ".frag") return name;  // a pass: its own entry
+  // Issue 39 C17: a header (blur.h) or any other file has no entry point; it used to give an empty shader.
+  if (extension != ".glsl")
+    throw Error("'" + name + "': neither a module (.glsl, exported through exports/X.comp) nor a pass (.comp, .vert, "
+                ".frag): expected one of those (a header is included by its module)");
   const std::string entry = "exports/" + file.stem().string() + ".comp";
-  if (!std::filesystem::is_regular_file(tree.root() / entry))
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(tree.root() / entry, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw Error("module '" + name + "': its export entry " + entry + " is " +
+                (std::filesystem::is_directory(status) ? "a directory" : "not a regular file (a FIFO or a device)") +
+                ": expected a GLSL file");
+  if (!std::filesystem::is_regular_file(status))
     throw Error("module '" + name + "': no export entry " + entry +
                 " (HLSL and MSL keep only what an entry calls): export one of its passes instead, e.g. passes/" +
                 file.stem().string() + "_query.comp");

@@ -77,6 +77,12 @@ bool is_include_extension(const std::string& code) {
   return name > i + 9 && word_at(code, name, "GL_GOOGLE_include_directive");
 }
 
+// `#line ...`
+bool is_line_directive(const std::string& code) {
+  const size_t i = directive_name(code);
+  return i != std::string::npos && word_at(code, i, "line");
+}
+
 // `void main (` with `void` and `main` whole words.
 bool declares_main(const std::string& code) {
   for (size_t i = code.find("void"); i != std::string::npos; i = code.find("void", i + 1)) {
@@ -122,6 +128,13 @@ class Flattener {
       }
       if (!starts_in_block && is_include_extension(code)) {
         out_.text += "\n";  // drivers reject this extension; keep the line count
+        continue;
+      }
+      if (!starts_in_block && is_line_directive(code)) {
+        // The file's own `#line N F` (issue 39 C21) would renumber what follows under a file
+        // number of the flattener's table (`#line 77 9`: "<wrapper>:77"): it is replaced by the
+        // flattener's marker, so a message names this file and its real line.
+        marker(line_no + 1, number);
         continue;
       }
       if (declares_main(code)) out_.has_main = true;

@@ -98,7 +98,11 @@ std::string SourceTree::read(const fs::path& canonical) const {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw Error("'" + diagnostic_path(canonical) + "': read failed");
-  return text.str();
+  // A UTF-8 byte-order mark (an editor's) is not GLSL: dropped, as compilers of UTF-8 text do
+  // (issue 39 C21: it used to reach the driver, which then reported "lacks `main'").
+  std::string source = text.str();
+  if (source.compare(0, 3, "\xEF\xBB\xBF") == 0) source.erase(0, 3);
+  return source;
 }
 
 }  // namespace pn

@@ -25,6 +25,15 @@ printf 'old\n' > "$work/target" && ln -s "$work/target" "$work/link" || fail "ca
 [ -L "$work/link" ] || fail "the link was replaced by a file"
 grep -q "penumbra bundle of blur.glsl" "$work/target" || fail "the link's target does not hold the bundle"
 
+# Issue 39 C13: /dev/stdout is the descriptor the caller opened, written as opened: a pipe (it
+# used to be "its link cannot be followed"), a file opened to append to (not truncated).
+out=$("$penumbra" poisson --count 4 -o /dev/stdout) || fail "poisson -o /dev/stdout into a pipe: exit $?"
+printf '%s\n' "$out" | grep -q "PN_POISSON_DISK" || fail "poisson -o /dev/stdout into a pipe wrote: $out"
+printf 'kept\n' >"$work/appended"
+"$penumbra" poisson --count 4 -o /dev/stdout >>"$work/appended" || fail "poisson -o /dev/stdout >> file: exit $?"
+[ "$(head -n 1 "$work/appended")" = kept ] || fail "-o /dev/stdout truncated a file opened to append to"
+grep -q "PN_POISSON_DISK" "$work/appended" || fail "-o /dev/stdout >> file did not append the samples"
+
 out=$("$penumbra" bench pyramid --sizes 64 --repeats 1 --json "$work/no/such/dir/x.json" 2>&1)
 status=$?
 [ "$status" -eq 2 ] || fail "bench --json into a missing directory: expected exit 2, got $status: $out"

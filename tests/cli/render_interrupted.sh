@@ -2,7 +2,9 @@
 # render_interrupted.sh PENUMBRA SCRATCH
 # Issue 26 B8: SIGINT or SIGTERM at any moment of `render` leaves no temporary
 # (`.pn-*.tmp`), and a set of files is whole exactly when its manifest is there:
-# every file the manifest lists exists. Runs the same render interrupted at
+# every file the manifest lists exists, with the bytes its line's hash names
+# (issue 39 C10: `FNV-1a-64  NAME`, so the manifest vouches only for the
+# bytes this run wrote, never for another run's). Runs the same render interrupted at
 # several delays (before, during and after its writes), then once to the end.
 # Exit 77 (skipped) without a GL context.
 set -u
@@ -16,13 +18,29 @@ run() {
   "$penumbra" render --map-size 128 --screen 128 --truth-samples 4 --repeats 1 --methods pcf,fast --out "$out" \
     >"$scratch/log" 2>&1
 }
+# FNV-1a 64 of a file, 16 hex digits, as the manifest writes it.
+fnv() {
+  python3 -c 'import sys
+h = 0xcbf29ce484222325
+for c in open(sys.argv[1], "rb").read(): h = ((h ^ c) * 0x100000001b3) % (1 << 64)
+print("%016x" % h)' "$1"
+}
 check_out() {
   left=$(find "$out" -name '.pn-*.tmp' 2>/dev/null)
   [ -z "$left" ] || fail "$1: left $left"
   if [ -e "$out/boxes_manifest.txt" ]; then
-    while read -r name; do
-      [ -f "$out/$name" ] || fail "$1: the manifest lists $name, which is not there"
-    done <"$out/boxes_manifest.txt"
+    problem=$(python3 -c 'import os, sys
+out = sys.argv[1]
+for line in open(os.path.join(out, "boxes_manifest.txt")):
+    digest, name = line.rstrip("\n").split("  ", 1)
+    path = os.path.join(out, name)
+    if not os.path.isfile(path):
+        print("the manifest lists " + name + ", which is not there"); break
+    h = 0xcbf29ce484222325
+    for c in open(path, "rb").read(): h = ((h ^ c) * 0x100000001b3) % (1 << 64)
+    if "%016x" % h != digest:
+        print(name + " does not hold the bytes its manifest line hashes"); break' "$out")
+    [ -z "$problem" ] || fail "$1: $problem"
   fi
 }
 for signal in INT TERM; do
@@ -44,4 +62,10 @@ run || { cat "$scratch/log"; fail "the whole render failed"; }
 check_out "the whole render"
 [ -e "$out/boxes_manifest.txt" ] || fail "a whole render wrote no manifest"
 [ "$(wc -l <"$out/boxes_manifest.txt")" -eq 9 ] || fail "the manifest lists $(wc -l <"$out/boxes_manifest.txt") files, expected 9"
+# Another run's bytes under a listed name are disowned: its hash no longer matches.
+printf 'another run\n' >"$out/boxes_pcf_lit.png"
+name=boxes_pcf_lit.png
+hash=$(sed -n "s/^\([0-9a-f]*\)  $name\$/\1/p" "$out/boxes_manifest.txt")
+[ -n "$hash" ] || fail "the manifest has no line for $name"
+[ "$(fnv "$out/$name")" != "$hash" ] || fail "the manifest's hash of $name matches another run's bytes"
 echo "render_interrupted: ok"

@@ -97,6 +97,38 @@ def make_hostile_inputs(work: pathlib.Path, glsl: pathlib.Path) -> None:
     # A module a bundle would be written onto.
     shutil.copytree(glsl, work / "bundle_copy")
     (work / "not_a_directory").write_text("a file\n")
+    # Issue 39. Output targets: a symbolic link to itself, a dangling one, a file outside an --out.
+    os.symlink("loop", work / "loop")
+    os.symlink("dangling_target", work / "dangling")
+    (work / "outside.png").write_text("not the figures' file\n")
+    # --out directories holding, under one of the set's names, a FIFO, a directory, a link out of it.
+    for name, entry in (("fifo_figures", "blur.png"), ("fifo_frames", "moving_frame_0001_map.png")):
+        (work / name).mkdir()
+        os.mkfifo(work / name / entry)
+    for name, entry in (("dir_figures", "traversal_nodes.png"), ("dir_frames", "moving_frames.tsv")):
+        (work / name / entry).mkdir(parents=True)
+    (work / "link_figures").mkdir()
+    os.symlink(work / "outside.png", work / "link_figures" / "blur.png")
+    (work / "twin_figures").mkdir()
+    os.symlink("reuse_groups.png", work / "twin_figures" / "blur.png")
+    # Copies of the modules: an export entry that is a FIFO; a `#line 77 9` before a mistake; a
+    # byte-order mark.
+    fifo_export = work / "fifo_export"
+    shutil.copytree(glsl, fifo_export)
+    (fifo_export / "exports" / "pcf.comp").unlink()
+    os.mkfifo(fifo_export / "exports" / "pcf.comp")
+    line_copy = work / "line_copy"
+    shutil.copytree(glsl, line_copy)
+    region = line_copy / "region.glsl"
+    region.write_text(region.read_text() + "#line 77 9\nfloat pnBroken() { return no_such_name; }\n")
+    broken_pcf = work / "broken_pcf"
+    shutil.copytree(glsl, broken_pcf)
+    with open(broken_pcf / "pcf.glsl", "a") as pcf:
+        pcf.write("float pnBroken( {\n")
+    bom_copy = work / "bom_copy"
+    shutil.copytree(glsl, bom_copy)
+    for name in ("region.glsl", "passes/region_query.comp"):
+        (bom_copy / name).write_bytes(b"\xef\xbb\xbf" + (bom_copy / name).read_bytes())
 
 
 def has_gl(penumbra: str) -> bool:
