@@ -1,43 +1,48 @@
 #!/usr/bin/env python3
 """mutate.py PENUMBRA [options]: mutation coverage of the modules' public calls (issue 39).
 
-Every GLSL module (a file under the glsl root with a `// use:` header) lists its public calls
-in that header. For each call the module defines — every definition of the name, every overload,
-in #if branches too — this makes copies of the whole glsl root, each with ONE simple mutant of
-one definition, runs the `penumbra check`s that cover the module on the copy, and requires each
-mutant to FAIL (exit 1). Kinds (a definition gets each kind that applies):
+A module is a .glsl file under the glsl root whose header comment (the comment lines before its
+first line of code) has a `// use:` section; its public calls are the pn* names that header
+names and the module defines (the use: section's, and a call named before it, as pcf.glsl's
+"The call": struct lines and other modules' names are no sites). Every definition of such a name
+— every overload, in #if branches too — is a mutation site, so a function added to a header is
+covered without a change here. For each site this makes a copy of the whole glsl root with ONE
+mutant of that definition, runs the `penumbra check`s that cover the module on the copy, and
+requires the mutant to FAIL (exit 1). Kinds (a definition gets each kind that applies to it):
 
   ret0   `return <the return type's zero>;` as the body's first statement (`return;` for void;
-         a pn struct: its constructor of zeros; a type without a zero is skipped with a note)
+         a struct: its constructor of zeros, nested; a type without a zero is skipped, noted)
   ret1   `return 1.0;` (float) / `return true;` (bool) as the first statement
   cmp    the body's first comparison negated: < and >=, <= and >, == and != swapped
          (comments, preprocessor lines, << and >> skipped)
   const  the body's first float literal x -> 1.5 x (0 -> 0.5), or without one its first
          integer literal + 1
 
+Edits stay on their line (the return goes after the body's `{`), so diagnostics keep their lines.
 A mutant's id is MODULE:FUNCTION:OVERLOAD:KIND (OVERLOAD: the definition's index among the
-module's definitions of FUNCTION, in file order, from 0).
+module's definitions of FUNCTION, in file order, from 0); the list is deterministic (--list).
 
 Which checks cover a module is traced, not listed: the runner appends every file it reads to
 $PENUMBRA_SOURCE_LOG, so each registered check (the list `penumbra check` prints for an unknown
-name) is run once on the unmutated root and covers the modules it read (cached per root content,
-binary and API under --work). A mutant runs its module's covering checks, the module's own check
-first and then the fastest, and stops at the first that fails. A module no check reads fails the
-run ("no check covers"). --checks own runs only the module's own check (the check named as the
-module; without a trace: what the CTest subset does), and still requires the check to have read
-the mutated file.
+name) is run once on the unmutated root and covers every module it read (cached under --work,
+keyed by the root's content, the binary and the API). A mutant runs its module's covering checks,
+the module's own check (named as the module) first, then the fastest first, and stops at the
+first that fails. A module no check reads fails the run ("no check covers"). --checks own skips
+the trace: the module's own check, and `exports` where the module has an export entry
+(glsl/exports/<module>.comp); the CTest subset runs so.
 
-Results: killed (a check failed), killed by timeout (--timeout, reported apart), survived (every
-covering check passed), stillborn (the mutant does not compile: a fault of this tool, not counted
-in the score), equivalent (a survivor listed with its reason in tests/mutation/equivalent.txt),
-error (exit 2/3 or a signal). Exit 0 when every mutant is killed or listed as equivalent, 1 when
-one survives, is stillborn, errs or a module has no check, 2 on bad options, 77 without a context.
+Results: killed (a check failed), timeout (no verdict within --timeout: killed, counted apart),
+survived (every covering check passed, and read the mutated file), unread (they passed without
+reading it), stillborn (the mutant does not compile: a fault of this tool, not in the score),
+equivalent (a survivor listed with its reason in tests/mutation/equivalent.txt), error (exit 2/3,
+a signal). Exit 0 when every mutant is killed or listed as equivalent; 1 when one survives, is
+unread, stillborn or errs, or a module has no check; 2 on bad options; 77 without a context.
 
-  --quick          the CTest subset: ret0/ret1 of QUICK_CALLS, each on its module's own check
-  --modules a,b    modules (names as the table prints them: blur, passes/gbuffer_receiver_plane)
+  --quick          the CTest subset: ret0/ret1 of QUICK_CALLS, --checks own
+  --modules a,b    modules (as the table names them: blur, passes/gbuffer_receiver_plane)
   --functions f,g  only these calls;  --kinds ret0,ret1,cmp,const;  --api gl450|es310|vulkan|hlsl
-  --jobs N         mutants run in parallel (default 1);  --timeout S  seconds a check run may take
-  --markdown F, --json F   the score table / every mutant's record;  --list  the mutants, no runs
+  --jobs N         mutants run at once (default 1);  --timeout S  seconds a check run may take
+  --markdown F, --json F   the score table / every mutant's record;  --list  the mutants, no run
 """
 import argparse
 import concurrent.futures
@@ -55,11 +60,12 @@ import time
 KINDS = ('ret0', 'ret1', 'cmp', 'const')
 
 # The CTest subset (--quick): the return-constant mutants of these calls, each run on its module's
-# own check only. Chosen for checks that take a few seconds on llvmpipe, one call of each kind of
-# module (a technique's one-call, building blocks, a struct result), so the subset stays within
-# its ~60 s budget on two cores.
-QUICK_CALLS = ('pnPoissonOcclusion', 'pnPcfBilinearVisibility', 'pnPcfWindow', 'pnSampleSet',
-               'pnVogelOffset', 'pnBlur1D', 'pnReceiverPlaneGradient', 'pnCascadeBlend')
+# own check (and `exports` where the module has an export entry). Chosen for checks of a few
+# seconds on llvmpipe: a technique's one-call in both overloads (pnPcf: the three-argument one is
+# killed by `exports` only), building blocks of each result type (float, bool, int, vec2, vec4, a
+# struct), so that the subset stays within its ~60 s of the suite on two cores.
+QUICK_CALLS = ('pnPcf', 'pnPcfWindow', 'pnPoissonOcclusion', 'pnVogelOffset', 'pnSampleSet', 'pnReuseSimilar',
+               'pnReceiverPlaneGradient', 'pnCascadeBlend', 'pnBlur1DVec4', 'pnVsmChebyshev')
 
 SCALARS = {'float': '0.0', 'int': '0', 'uint': '0u', 'bool': 'false', 'double': '0.0lf'}
 ONES = {'float': '1.0', 'bool': 'true'}
@@ -244,6 +250,51 @@ def modules(root):
     return found
 
 
+def reachable(root):
+    """{pn* name: the entry shaders (passes/, exports/ with a main) that reach it}: each entry's
+    calls followed through the definitions of the files it includes (#include, transitively), by
+    name. For a survivor: whether any shader the runner compiles calls the function at all."""
+    texts, includes, defs = {}, {}, {}
+    for path in sorted(walk(root, ('.glsl', '.comp', '.frag', '.vert', '.h'))):
+        rel = os.path.relpath(path, root).replace(os.sep, '/')
+        with open(path, encoding='utf-8', errors='replace') as f:
+            texts[rel] = f.read()
+    for rel, text in texts.items():
+        found = []
+        for name in re.findall(r'^\s*#\s*include\s+"([^"]+)"', text, re.M):
+            for cand in (os.path.normpath(os.path.join(os.path.dirname(rel), name)), os.path.normpath(name)):
+                if cand.replace(os.sep, '/') in texts:
+                    found.append(cand.replace(os.sep, '/'))
+                    break
+        includes[rel] = found
+        s = blank(text)
+        for name, _, open_, close in definitions(text, s):
+            defs.setdefault(rel, []).append((name, set(re.findall(r'\b(pn[A-Z]\w*)\s*\(', s[open_:close]))))
+    reached = {}
+    for entry in texts:
+        if not entry.startswith(('passes/', 'exports/')) or not any(n == 'main' for n, _ in defs.get(entry, [])):
+            continue
+        closure, todo = set(), [entry]
+        while todo:
+            f = todo.pop()
+            if f not in closure:
+                closure.add(f)
+                todo.extend(includes.get(f, ()))
+        calls = {}
+        for f in closure:
+            for name, called in defs.get(f, []):
+                calls.setdefault(name, set()).update(called)
+        seen, todo = set(), list(calls.get('main', ()))
+        while todo:
+            name = todo.pop()
+            if name not in seen:
+                seen.add(name)
+                todo.extend(calls.get(name, ()))
+        for name in seen:
+            reached.setdefault(name, []).append(entry)
+    return reached
+
+
 def format_float(x):
     r = repr(x)
     return r if ('.' in r or 'e' in r or 'inf' in r or 'nan' in r) else r + '.0'
@@ -393,20 +444,24 @@ def coverage(args, checks, work):
             raise Usage(f'check {check} does not pass on the unmutated root {args.glsl_root} '
                         f'(exit {code}): mutants are measured against a passing root\n{out}')
         reads = sorted(read_log(log))
-        if not reads:
-            raise Usage(f'check {check}: the runner logged no file read into $PENUMBRA_SOURCE_LOG '
-                        f'(a runner built before the log?)')
         data[check] = {'reads': reads, 'seconds': round(seconds, 2)}
         print(f'traced {check}: {len(reads)} files, {seconds:.1f} s', flush=True)
+    if not any(d['reads'] for d in data.values()):
+        raise Usage('the runner logged no file read into $PENUMBRA_SOURCE_LOG (a runner built before the log?)')
     with open(cache, 'w') as f:
         json.dump(data, f, indent=1, sort_keys=True)
     return data
 
 
-def covering_checks(module, rel, checks, trace, mode):
+def covering_checks(module, rel, checks, trace, mode, root):
     own = module.split('/')[-1]
     if mode == 'own':
-        return [own] if own in checks else []
+        # The module's own check, and `exports` where the module has an export entry
+        # (glsl/exports/<module>.comp: the entry the exports check runs).
+        cover = [own] if own in checks else []
+        if 'exports' in checks and own != 'exports' and os.path.exists(os.path.join(root, 'exports', own + '.comp')):
+            cover.append('exports')
+        return cover
     cover = [c for c in checks if rel in trace[c]['reads']]
     cover.sort(key=lambda c: (c != own, trace[c]['seconds'], c))
     return cover
@@ -571,7 +626,7 @@ def main(argv):
     trace = coverage(args, checks, work) if mode == 'traced' else None
     plan, uncovered = [], []
     for m in todo:
-        cover = covering_checks(m['module'], m['file'], checks, trace, mode)
+        cover = covering_checks(m['module'], m['file'], checks, trace, mode, args.glsl_root)
         if not cover:
             uncovered.append(m['module'])
         else:
@@ -592,7 +647,19 @@ def main(argv):
             print(f'{r["id"]}: {r["result"]}{by} ({r["seconds"]:.1f} s): {r["what"]}: {r["detail"]}', flush=True)
 
     explained = load_equivalent(args.equivalent)
+    reached = reachable(args.glsl_root)
     for r in records:
+        if r['result'] in ('survived', 'unread'):
+            entries = sorted(reached.get(r['function'], []))
+            r['reached_by'] = entries
+            ran = None if trace is None else {f for c in r['checks'] for f in trace[c]['reads']}
+            run = entries if ran is None else [e for e in entries if e in ran]
+            if not entries:
+                r['detail'] += '; no pass or export calls it: no check can see it'
+            elif not run:
+                r['detail'] += f'; only {", ".join(entries)} call it, which no check runs'
+            else:
+                r['detail'] += f'; called from {", ".join(run[:3])}{", …" if len(run) > 3 else ""}'
         if r['result'] == 'survived' and r['id'] in explained:
             r['result'] = 'equivalent'
             r['reason'] = explained[r['id']]
