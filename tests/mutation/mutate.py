@@ -537,7 +537,7 @@ def score_table(records, api):
         rs = by_module[module]
         cells = []
         for kind in KINDS + ('all',):
-            counted = [r for r in rs if (kind == 'all' or r['kind'] == kind) and r['result'] != 'stillborn']
+            counted = [r for r in rs if (kind == 'all' or r['kind'] == kind) and r['result'] not in ('stillborn', 'equivalent')]
             killed = sum(r['result'] in ('killed', 'timeout') for r in counted)
             totals[kind][0] += killed
             totals[kind][1] += len(counted)
