@@ -1,6 +1,8 @@
 #include "shader/source_tree.h"
 
+#include <cstdlib>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 
 #include "core/error.h"
@@ -8,6 +10,22 @@
 namespace fs = std::filesystem;
 
 namespace pn {
+
+namespace {
+
+// PENUMBRA_SOURCE_LOG=FILE: each file read is appended to FILE, one name a line, relative to the
+// root (tests/mutation/mutate.py learns from it which modules a check's passes read). A test's
+// hook: a log that cannot be opened is not written, and never fails the command.
+void log_read(const std::string& name) {
+  static std::mutex mutex;
+  const char* log = std::getenv("PENUMBRA_SOURCE_LOG");
+  if (log == nullptr || *log == '\0') return;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::ofstream out(log, std::ios::app);
+  if (out) out << name << '\n';
+}
+
+}  // namespace
 
 SourceTree::SourceTree(const fs::path& root) {
   std::error_code ec;
@@ -98,6 +116,7 @@ std::string SourceTree::read(const fs::path& canonical) const {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw Error("'" + diagnostic_path(canonical) + "': read failed");
+  log_read(display_name(canonical));
   // A UTF-8 byte-order mark (an editor's) is not GLSL: dropped, as compilers of UTF-8 text do
   // (issue 39 C21: it used to reach the driver, which then reported "lacks `main'").
   std::string source = text.str();
