@@ -29,30 +29,32 @@
 #include "backprojection.h"
 #include "check/module_check.h"
 #include "check/pcss_compare.h"
+#include "check/vsm_tolerance.h"
 #include "core/format.h"
-#include "scenes.h"
+#include "core/seeded_random.h"
+#include "fast_pcss.h"
+#include "fixture/texture_fixture.h"
 #include "gl/std140.h"
+#include "hqepcss.h"
+#include "modules/vogel_pcss.h"
 #include "passes/depth_pyramid_pass.h"
 #include "passes/export_pass.h"
 #include "passes/minmax_mip_pass.h"
-#include "passes/vsm_pass.h"
-#include "check/vsm_tolerance.h"
-#include "fixture/texture_fixture.h"
-#include "reference/vsm_reference.h"
+#include "passes/shade_pass.h"
 #include "passes/summed_area_pass.h"
 #include "passes/traversal_pass.h"
+#include "passes/vsm_pass.h"
 #include "pipeline/pcss_settings.h"
-#include "sampling/sample_table.h"
-#include "core/seeded_random.h"
-#include "passes/shade_pass.h"
 #include "reference/backprojection_reference.h"
 #include "reference/disk_pcss_reference.h"
 #include "reference/pcss_reference.h"
 #include "reference/vogel_pcss_reference.h"
-#include "modules/vogel_pcss.h"
+#include "reference/vsm_reference.h"
 #include "sampling/poisson_disk.h"
+#include "sampling/sample_table.h"
 #include "scene/light_block.h"
 #include "scene/scene.h"
+#include "scenes.h"
 
 namespace pn::glsl {
 #include "exports/exact_pcss.h"
@@ -298,6 +300,18 @@ void vsm_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
   }
 }
 
+// A call's `pnXDefaults` (the export's block asks for it with filterScale or side <= 0) against
+// the same call with the documented defaults written into the block (the module's header
+// constants): equal bit for bit, so the defaults function returns what the header says.
+CaseResult defaults_case(const std::string& name, const std::vector<float>& from_defaults,
+                         const std::vector<float>& from_header) {
+  Image expected(static_cast<int>(from_header.size()), 1), observed(static_cast<int>(from_header.size()), 1);
+  for (std::size_t k = 0; k < from_header.size(); ++k)
+    expected.at(static_cast<int>(k), 0) = from_header[k], observed.at(static_cast<int>(k), 0) = from_defaults[k];
+  return {name + " (" + std::to_string(from_header.size()) + " receivers, receiver k at (k, 0))", Tolerance::exact(),
+          compare(expected, observed, Tolerance::exact())};
+}
+
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss");
   const ExportPass pcf(env.device, env.tree, "pcf");
@@ -456,6 +470,38 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                       bp_expected,
                                       backprojection.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture}},
                                                          bp_receivers, query_block(bb))));
+
+      // The shipped defaults of the calls whose defaults are not exact (sampled leaves, patches).
+      glsl::PnFastPcssExport fast_defaults = exact_fast_block(scene.light, bias, 1.0f), fast_header = fast_defaults;
+      fast_defaults.filterScale = 0.0f;
+      fast_header.refineIterations = PN_FAST_PCSS_REFINE_ITERATIONS, fast_header.regionMode = PN_REGION_EXACT;
+      fast_header.leafSide = PN_FAST_PCSS_LEAF_SIDE, fast_header.leafDivisor = 0, fast_header.leafMode = PN_LEAF_SAMPLED;
+      fast_header.blockerLeafMode = PN_FAST_PCSS_SAME_LEAF_MODE, fast_header.nodeBudget = PN_FAST_PCSS_NODE_BUDGET;
+      fast_header.depthSums = PN_DEPTH_SUMS_MIDPOINT, fast_header.grid = PN_FAST_PCSS_GRID;
+      const std::vector<QueryTexture> fast_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+                                                    {PN_EXPORT_SAMPLE_TABLE_BINDING, *table}};
+      results.push_back(defaults_case(where + "exports/fast_pcss: pnFastPcssDefaults(bias) = fast_pcss.h's defaults",
+                                      fast.run(stage, fast_textures, s.receivers, query_block(fast_defaults)),
+                                      fast.run(stage, fast_textures, s.receivers, query_block(fast_header))));
+      glsl::PnHqepcssExport hq_defaults = hqepcss_block, hq_header = hqepcss_block;
+      hq_defaults.filterScale = 0.0f;
+      hq_header.refineIterations = PN_HQEPCSS_REFINE_ITERATIONS, hq_header.regionMode = PN_REGION_WINDOW;
+      hq_header.leafSide = PN_HQEPCSS_LEAF_SIDE, hq_header.leafDivisor = 0, hq_header.nodeBudget = PN_TRAVERSAL_NO_BUDGET;
+      const std::vector<QueryTexture> hq_textures{{PN_EXPORT_PYRAMID_BINDING, *pyramid.texture},
+                                                  {PN_EXPORT_DEPTH_MAP_BINDING, *map}};
+      results.push_back(defaults_case(where + "exports/hqepcss: pnHqepcssDefaults(bias) = hqepcss.h's defaults",
+                                      hqepcss.run(stage, hq_textures, s.receivers, query_block(hq_defaults)),
+                                      hqepcss.run(stage, hq_textures, s.receivers, query_block(hq_header))));
+      glsl::PnBackprojectionExport bp_defaults = bb, bp_header = bb;
+      bp_defaults.side = 0;
+      bp_header.side = PN_BACKPROJECTION_DEFAULT_SIDE;
+      bp_header.tolerance = static_cast<float>(PN_BACKPROJECTION_DEFAULT_TOLERANCE);
+      bp_header.budget = PN_BACKPROJECTION_DEFAULT_BUDGET;
+      const std::vector<QueryTexture> bp_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture}};
+      results.push_back(defaults_case(
+          where + "exports/backprojection: pnBackprojectionDefaults() = backprojection.h's defaults",
+          backprojection.run(stage, bp_textures, bp_receivers, query_block(bp_defaults)),
+          backprojection.run(stage, bp_textures, bp_receivers, query_block(bp_header))));
     }
   }
   return results;
