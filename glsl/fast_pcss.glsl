@@ -148,7 +148,7 @@ float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 recei
 
 float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
                  PnFastPcssSettings settings) {
-  return pnFastPcssEstimate(mip, sampleTable, light, receiver, vec2(0.0), pixel, settings).visibility;
+  return pnFastPcssEstimate(mip, sampleTable, light, receiver, pixel, settings).visibility;
 }
 
 #endif  // PENUMBRA_FAST_PCSS_GLSL

@@ -224,7 +224,7 @@ float pnPoissonPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 recei
 
 float pnPoissonPcss(sampler2D depthMap, PnLight light, vec3 receiver, PnPoissonPcssSettings settings,
                     vec2 rotation) {
-  return pnPoissonPcssEstimate(depthMap, light, receiver, vec2(0.0), settings, rotation).visibility;
+  return pnPoissonPcssEstimate(depthMap, light, receiver, settings, rotation).visibility;
 }
 #endif
 
