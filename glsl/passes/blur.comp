@@ -46,6 +46,25 @@ layout(r32f, binding = PN_BLUR_TARGET_BINDING) writeonly uniform image2D pnBlurT
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnBlurTarget)))) return;
+#if PN_BLUR_PASS_CHANNELS == 1
+  // One channel (a soft-shadow map; the blur check's images): the scalar calls an engine blurring
+  // a visibility makes, so the checks run them (each is its …Vec4 form's .r).
+  float s;
+  if (PN_BLUR_PASS_ADAPTIVE) {
+    if (PN_BLUR_PASS_DEPTH_AWARE)
+      s = pnBlur1DDepthAwareAdaptive(pnBlurSource, pnBlurDepth, pnBlurFilterMap, p, pnParams.axis, pnParams.radius,
+                                     pnParams.sigma, pnParams.depthTolerance, pnParams.pixelsPerTexel);
+    else
+      s = pnBlur1DAdaptive(pnBlurSource, pnBlurFilterMap, p, pnParams.axis, pnParams.radius, pnParams.sigma,
+                           pnParams.pixelsPerTexel);
+  } else if (PN_BLUR_PASS_DEPTH_AWARE) {
+    s = pnBlur1DDepthAware(pnBlurSource, pnBlurDepth, p, pnParams.axis, pnParams.radius, pnParams.sigma,
+                           pnParams.depthTolerance);
+  } else {
+    s = pnBlur1D(pnBlurSource, p, pnParams.axis, pnParams.radius, pnParams.sigma);
+  }
+  vec4 v = vec4(s, 0.0, 0.0, 0.0);
+#else
   vec4 v;
   if (PN_BLUR_PASS_ADAPTIVE) {
     if (PN_BLUR_PASS_DEPTH_AWARE)
@@ -61,6 +80,7 @@ void main() {
   } else {
     v = pnBlur1DVec4(pnBlurSource, p, pnParams.axis, pnParams.radius, pnParams.sigma);
   }
+#endif
 #if PN_BLUR_PASS_CHANNELS == 4
   imageStore(pnBlurTarget, p, v);
 #elif PN_BLUR_PASS_CHANNELS == 2

@@ -4,7 +4,8 @@
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0),
 //          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the
 //          traversal with that plane (pnTraverseRegionPlane, pnTraverseRegionMipPlane,
-//          pnGridRegionMip; gradient 0: none).
+//          pnGridRegionMip; gradient 0: none; on the pyramid a square without a plane goes
+//          through pnTraverseWindow, the same traversal).
 // Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches, 0, 0).
 // Bindings and the parameter block: traversal_query.h.
 
@@ -39,6 +40,9 @@ void main() {
       ? pnTraverseRegionMipPlane(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
                                  vec3(e.xy, b.x), e.zw, pnParams.bias, pnParams.leafSide, pnParams.leafMode,
                                  pnParams.nodeBudget, pnParams.depthSums, ivec2(b.yz))
+      : (all(equal(e.zw, vec2(0.0))) && a.z == a.w)  // a square without a plane: region.glsl's window form
+      ? pnTraverseWindow(pnPyramid, pnSampleTable, PnWindow(ivec2(a.xy), int(a.z), 0), b.x, pnParams.bias,
+                         pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz))
       : pnTraverseRegionPlane(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
                               pnParams.bias, pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
   imageStore(pnResultC, p, vec4(r.occluders, r.depthSum, r.texels, 0.0));
