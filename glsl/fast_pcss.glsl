@@ -121,7 +121,7 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
   r.blockerNodes = blockers.nodes;
   r.fetches += blockers.fetches;
   bool hasBlocker = blockers.occluders > 0.0;
-  r.blockerMean = hasBlocker ? blockers.depthSum / blockers.occluders : 0.0;
+  r.blockerMean = pnTraversalBlockerMean(blockers);
   r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
   if (pnEntryLit(r.filterEntry)) {
     r.blockerMean = 0.0;
@@ -132,7 +132,7 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
                                              PN_DEPTH_SUMS_NONE, pixel);
   r.occlusionNodes = occlusion.nodes;
   r.fetches += occlusion.fetches;
-  r.visibility = 1.0 - (occlusion.texels > 0.0 ? occlusion.occluders / occlusion.texels : 0.0);
+  r.visibility = 1.0 - pnTraversalOccludedFraction(occlusion);
   return r;
 }
 

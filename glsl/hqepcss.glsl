@@ -67,7 +67,7 @@ float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 
                                                pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size),
                                                PN_LEAF_MIN, s.nodeBudget, ivec2(0));
   bool hasBlocker = blockers.occluders > 0.0;
-  vec4 filterEntry = pnFilterEntry(light, search, hasBlocker ? blockers.depthSum / blockers.occluders : 0.0,
+  vec4 filterEntry = pnFilterEntry(light, search, pnTraversalBlockerMean(blockers),
                                    hasBlocker, s.filterScale);
   if (pnEntryLit(filterEntry)) return 1.0;
   PnRect filterRect = pnEntryRect(filterEntry, n);

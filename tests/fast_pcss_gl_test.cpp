@@ -24,9 +24,9 @@ TEST_CASE("the one calls equal the staged passes in compute and fragment stage, 
   pn::test::check_all_pass(results);
 }
 
-TEST_CASE("negative: a copy of fast_pcss.glsl that halves the occluded fraction fails in both stages, the rest passes") {
-  const pn::test::BrokenCopy copy("fast_pcss.glsl", "? occlusion.occluders / occlusion.texels : 0.0",
-                                  "? 0.5 * occlusion.occluders / occlusion.texels : 0.0");
+TEST_CASE("negative: a copy that halves Fast PCSS's occluded fraction fails in both stages, the rest passes") {
+  // (traversal.glsl's pnTraversalOccludedFraction: only fast_pcss.glsl's call calls it)
+  const pn::test::BrokenCopy copy("traversal.glsl", "? r.occluders / r.texels : 0.0", "? 0.5 * r.occluders / r.texels : 0.0");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(fast_pcss(), copy.root());
   size_t fast_failing = 0;
