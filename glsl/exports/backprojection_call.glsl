@@ -4,13 +4,13 @@
 #include "backprojection.h"
 #include "backprojection.glsl"
 
-layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+#include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
 layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain
 
 #define PN_EXPORT_CALL
 
 float pnExportCall(ivec2 p) {
-  vec3 r = texelFetch(pnReceivers, p, 0).xyz;
+  vec3 r = pnExportReceiver(p).xyz;
   // side <= 0: the shipped defaults (pnBackprojectionDefaults, in the export too).
   PnBackprojectionSettings settings = pnBackprojectionDefaults();
   if (pnExport.side > 0)

@@ -4,15 +4,14 @@
 #include "exact_pcss.h"
 #include "exact_pcss.glsl"
 
-layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
-layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+#include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
 layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 
 #define PN_EXPORT_CALL
 
 float pnExportCall(ivec2 p) {
-  vec4 r = texelFetch(pnReceivers, p, 0);
-  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  vec4 r = pnExportReceiver(p);
+  vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
   return r.w != 0.0 ? pnExactPcss(pnDepthMap, light, r.xyz, plane, pnExport.bias, pnExport.filterScale)
                     : pnExactPcss(pnDepthMap, light, r.xyz, pnExport.bias, pnExport.filterScale);

@@ -9,16 +9,15 @@ layout(binding = PN_EXPORT_SUM_TABLE_BINDING) uniform highp usampler2D pnDepthSu
 #endif
 #include "fast_pcss.glsl"
 
-layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
-layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+#include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
 layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain
 layout(binding = PN_EXPORT_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
 
 #define PN_EXPORT_CALL
 
 float pnExportCall(ivec2 p) {
-  vec4 r = texelFetch(pnReceivers, p, 0);
-  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  vec4 r = pnExportReceiver(p);
+  vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
   // filterScale <= 0: the shipped defaults with the block's bias (pnFastPcssDefaults, in the export too).
   PnFastPcssSettings settings = pnFastPcssDefaults(pnExport.bias);

@@ -4,16 +4,15 @@
 #include "hqepcss.h"
 #include "hqepcss.glsl"
 
-layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
-layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+#include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
 layout(binding = PN_EXPORT_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;  // the decreased depth pyramid
 layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;    // the shadow map, linear depth
 
 #define PN_EXPORT_CALL
 
 float pnExportCall(ivec2 p) {
-  vec4 r = texelFetch(pnReceivers, p, 0);
-  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  vec4 r = pnExportReceiver(p);
+  vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
   // filterScale <= 0: the shipped defaults with the block's bias (pnHqepcssDefaults, in the export too).
   PnHqepcssSettings settings = pnHqepcssDefaults(pnExport.bias);

@@ -8,15 +8,14 @@
 #define PN_POISSON_FILTER_DISK pnExport.filterPoints
 #include "poisson_pcss.glsl"
 
-layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
-layout(binding = PN_EXPORT_PLANES_BINDING) uniform sampler2D pnReceiverPlanes;
+#include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
 layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 
 #define PN_EXPORT_CALL
 
 float pnExportCall(ivec2 p) {
-  vec4 r = texelFetch(pnReceivers, p, 0);
-  vec2 plane = texelFetch(pnReceiverPlanes, p, 0).xy;
+  vec4 r = pnExportReceiver(p);
+  vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
   vec2 rotation = vec2(pnExport.rotationCos, pnExport.rotationSin);
   // filterScale <= 0: the shipped defaults with the block's bias (pnPoissonPcssDefaults, in the export too).

@@ -4,14 +4,14 @@
 #include "savsm.h"
 #include "savsm.glsl"
 
-layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+#include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
 layout(binding = PN_EXPORT_MOMENT_TABLE_BINDING) uniform PN_SAVSM_TABLE_SAMPLER pnTable;
 layout(binding = PN_EXPORT_MIP_BINDING) uniform sampler2D pnMip;
 
 #define PN_EXPORT_CALL
 
 float pnExportCall(ivec2 p) {
-  vec4 r = texelFetch(pnReceivers, p, 0);
+  vec4 r = pnExportReceiver(p);
   PnSavsmSettings settings = PnSavsmSettings(pnExport.bias, pnExport.filterScale, pnExport.minVariance,
                                              pnExport.bleedingReduction, pnExport.blockerMode, pnExport.bound != 0);
   return pnSavsm(pnTable, pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r.xyz, vec2(pnExport.unitNear, pnExport.unitScale),

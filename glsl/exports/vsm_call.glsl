@@ -4,14 +4,14 @@
 #include "vsm.h"
 #include "vsm.glsl"
 
-layout(binding = PN_EXPORT_RECEIVERS_BINDING) uniform sampler2D pnReceivers;
+#include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
 layout(binding = PN_EXPORT_MOMENTS_BINDING) uniform sampler2D pnMoments;
 layout(binding = PN_EXPORT_VSM_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
 
 #define PN_EXPORT_CALL
 
 float pnExportCall(ivec2 p) {
-  vec3 r = texelFetch(pnReceivers, p, 0).xyz;
+  vec3 r = pnExportReceiver(p).xyz;
   vec2 range = vec2(pnExport.depthNear, pnExport.depthFar);
   if (pnExport.kind == PN_EXPORT_EVSM2)
     return pnEvsm2(pnMoments, pnPyramid, r, pnExport.radius, pnExport.bias, range, pnExport.evsm2Exponent,
