@@ -32,19 +32,21 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   vec4 e = texelFetch(pnQueryE, p, 0);
+  // The leaf side as Fast PCSS and HQEPCSS take it (no divisor: the block's side itself).
+  int leafSide = pnTraversalLeafSide(pnParams.leafSide, 0, ivec2(a.zw));
   PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP && pnParams.grid > 0)
       ? pnGridRegionMip(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
-                        pnParams.bias, pnParams.grid, pnParams.leafSide, pnParams.leafMode, pnParams.depthSums,
+                        pnParams.bias, pnParams.grid, leafSide, pnParams.leafMode, pnParams.depthSums,
                         ivec2(b.yz))
       : (pnParams.structure == PN_STRUCTURE_MIP)
       ? pnTraverseRegionMipPlane(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
-                                 vec3(e.xy, b.x), e.zw, pnParams.bias, pnParams.leafSide, pnParams.leafMode,
+                                 vec3(e.xy, b.x), e.zw, pnParams.bias, leafSide, pnParams.leafMode,
                                  pnParams.nodeBudget, pnParams.depthSums, ivec2(b.yz))
       : (all(equal(e.zw, vec2(0.0))) && a.z == a.w)  // a square without a plane: region.glsl's window form
       ? pnTraverseWindow(pnPyramid, pnSampleTable, PnWindow(ivec2(a.xy), int(a.z), 0), b.x, pnParams.bias,
-                         pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz))
+                         leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz))
       : pnTraverseRegionPlane(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
-                              pnParams.bias, pnParams.leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
+                              pnParams.bias, leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
   imageStore(pnResultC, p, vec4(r.occluders, r.depthSum, r.texels, 0.0));
   imageStore(pnResultD, p, vec4(float(r.nodes), float(r.fetches), 0.0, 0.0));
 }
