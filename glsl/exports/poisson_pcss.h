@@ -19,6 +19,8 @@ PN_UNIFORM_BLOCK(PnPoissonPcssExport, PN_EXPORT_PARAMS_BINDING)
   int filterSamples;
   float rotationCos;  // the disks' rotation (cos, sin); (1, 0): none
   float rotationSin;
+  float rotationAngle;     // with rotationFromAngle != 0 instead: pnPoissonRotation(rotationAngle)
+  int rotationFromAngle;
   PN_VEC2_ARRAY(blockerPoints, PN_POISSON_MAX_SAMPLES)
   PN_VEC2_ARRAY(filterPoints, PN_POISSON_MAX_SAMPLES)
 PN_END_UNIFORM_BLOCK(pnExport)

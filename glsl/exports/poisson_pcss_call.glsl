@@ -17,7 +17,8 @@ float pnExportCall(ivec2 p) {
   vec4 r = pnExportReceiver(p);
   vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
-  vec2 rotation = vec2(pnExport.rotationCos, pnExport.rotationSin);
+  vec2 rotation = pnExport.rotationFromAngle != 0 ? pnPoissonRotation(pnExport.rotationAngle)
+                                                  : vec2(pnExport.rotationCos, pnExport.rotationSin);
   // filterScale <= 0: the shipped defaults with the block's bias (pnPoissonPcssDefaults, in the export too).
   PnPoissonPcssSettings settings = pnPoissonPcssDefaults(pnExport.bias);
   if (pnExport.filterScale > 0.0)

@@ -66,7 +66,8 @@ namespace pn::glsl {
 #include "exports/backprojection.h"
 #include "exports/vsm.h"
 PN_STD140_OFFSET(PnPoissonPcssExport, rotationSin, 44);
-PN_STD140_OFFSET(PnPoissonPcssExport, blockerPoints, 48);
+PN_STD140_OFFSET(PnPoissonPcssExport, rotationFromAngle, 52);
+PN_STD140_OFFSET(PnPoissonPcssExport, blockerPoints, 64);
 PN_STD140_OFFSET(PnVogelPcssExport, filterSamples, 36);
 PN_STD140_OFFSET(PnBackprojectionExport, thickness, 44);
 PN_STD140_OFFSET(PnVsmExport, kind, 36);
@@ -82,6 +83,7 @@ namespace pn {
 namespace {
 
 constexpr int kMap = 64, kScreen = 48;  // brute force on the CPU stays fast
+constexpr double kRotation = 0.7;       // the Poisson disks' rotation, radians
 
 struct SceneImages {
   Image map, gbuffer;
@@ -173,11 +175,15 @@ SceneImages one_depth_blockers(std::uint32_t seed) {
 
 // Where sample k of a Poisson disk of `diameter` around the centre lies (poisson_pcss.glsl:
 // c + (s / 2) R o_k), with the float position's error and what the diameter's error moves it.
-DiskLayout poisson_layout(const std::vector<Sample>& disk, int count, double rotation_cos, double rotation_sin) {
-  return [&disk, count, rotation_cos, rotation_sin](double cx, double cy, double diameter, double diameter_error) {
+// `trig`: the absolute error of the rotation's cos and sin (0 when the block gives them; Vulkan's
+// precision table's 2^-11 when the shader takes them of an angle, pnPoissonRotation).
+DiskLayout poisson_layout(const std::vector<Sample>& disk, int count, double rotation_cos, double rotation_sin,
+                          double trig = 0.0) {
+  return [&disk, count, rotation_cos, rotation_sin, trig](double cx, double cy, double diameter, double diameter_error) {
     std::vector<DiskSamplePosition> out;
     const double r = 0.5 * diameter, unit = std::ldexp(1.0, -24);
-    const double error = 4.0 * unit * (std::max(std::fabs(cx), std::fabs(cy)) + r + 1.0) + 0.5 * diameter_error;
+    const double error =
+        4.0 * unit * (std::max(std::fabs(cx), std::fabs(cy)) + r + 1.0) + 2.0 * trig * r + 0.5 * diameter_error;
     for (int k = 0; k < std::min<int>(count, static_cast<int>(disk.size())); ++k) {
       const double ox = disk[static_cast<std::size_t>(k)].x, oy = disk[static_cast<std::size_t>(k)].y;
       out.push_back({cx + r * (rotation_cos * ox - rotation_sin * oy), cy + r * (rotation_sin * ox + rotation_cos * oy),
@@ -369,7 +375,8 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
     };
     std::vector<DiskCase> disk_cases{{0.0f, PN_POISSON_BLOCKER_SAMPLES, PN_POISSON_PCF_SAMPLES, {}, {}},
                                      {0.5f, 16, 24, {}, {}}};
-    const double rotation_cos = std::cos(0.7), rotation_sin = std::sin(0.7);
+    const double rotation_cos = std::cos(static_cast<double>(static_cast<float>(kRotation))),
+                 rotation_sin = std::sin(static_cast<double>(static_cast<float>(kRotation)));
     for (DiskCase& d : disk_cases) {
       const double scale = d.filter_scale > 0.0f ? d.filter_scale : 1.0;
       const int vogel_blockers = d.filter_scale > 0.0f ? d.blocker_samples : PN_VOGEL_BLOCKER_SAMPLES;
@@ -377,9 +384,12 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       for (std::size_t k = 0; k < disks.size(); ++k) {
         const ExportReceiver& r = disks[k];
         const DiskPcssReceiver receiver{r.u, r.v, r.depth, r.plane ? r.du : 0.0, r.plane ? r.dv : 0.0};
+        // The defaults' case takes its rotation of an angle in the shader (pnPoissonRotation).
+        const double trig = d.filter_scale > 0.0f ? 0.0 : 1.0 / 2048.0;
         d.poisson.push_back(disk_pcss_reference(
-            s.map, scene.light, receiver, bias, scale, poisson_layout(blocker_disk, d.blocker_samples, rotation_cos, rotation_sin),
-            poisson_layout(filter_disk, d.filter_samples, rotation_cos, rotation_sin)));
+            s.map, scene.light, receiver, bias, scale,
+            poisson_layout(blocker_disk, d.blocker_samples, rotation_cos, rotation_sin, trig),
+            poisson_layout(filter_disk, d.filter_samples, rotation_cos, rotation_sin, trig)));
         const auto [px, py] = ExportPass::texel(k, disks.size());
         d.vogel.push_back(disk_pcss_reference(s.map, scene.light, receiver, bias, scale,
                                               vogel_layout(vogel_blockers, px, py), vogel_layout(vogel_filter, px, py)));
@@ -443,12 +453,15 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
         pb.bias = bias, pb.filterScale = d.filter_scale;
         pb.blockerSamples = d.blocker_samples, pb.filterSamples = d.filter_samples;
         pb.rotationCos = static_cast<float>(rotation_cos), pb.rotationSin = static_cast<float>(rotation_sin);
+        pb.rotationAngle = static_cast<float>(kRotation), pb.rotationFromAngle = d.filter_scale > 0.0f ? 0 : 1;
         for (int k = 0; k < PN_POISSON_MAX_SAMPLES; ++k) {
           pb.blockerPoints[k] = {blocker_disk[static_cast<std::size_t>(k)].x, blocker_disk[static_cast<std::size_t>(k)].y};
           pb.filterPoints[k] = {filter_disk[static_cast<std::size_t>(k)].x, filter_disk[static_cast<std::size_t>(k)].y};
         }
         results.push_back(interval_case(where + "exports/poisson_pcss (pnPoissonPcss, " + settings +
-                                            ", both overloads, rotated) vs Poisson-disk PCSS on the CPU",
+                                            ", both overloads, rotated" +
+                                            (d.filter_scale > 0.0f ? "" : " by pnPoissonRotation(angle)") +
+                                            ") vs Poisson-disk PCSS on the CPU",
                                         d.poisson,
                                         poisson.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, disks, query_block(pb))));
         glsl::PnVogelPcssExport vb{};
