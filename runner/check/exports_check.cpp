@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "backprojection.h"
+#include "check/disk_layouts.h"
 #include "check/module_check.h"
 #include "check/pcss_compare.h"
 #include "check/vsm_tolerance.h"
@@ -172,49 +173,6 @@ SceneImages one_depth_blockers(std::uint32_t seed) {
   return out;
 }
 
-
-// Where sample k of a Poisson disk of `diameter` around the centre lies (poisson_pcss.glsl:
-// c + (s / 2) R o_k), with the float position's error and what the diameter's error moves it.
-// `trig`: the absolute error of the rotation's cos and sin (0 when the block gives them; Vulkan's
-// precision table's 2^-11 when the shader takes them of an angle, pnPoissonRotation).
-DiskLayout poisson_layout(const std::vector<Sample>& disk, int count, double rotation_cos, double rotation_sin,
-                          double trig = 0.0) {
-  return [&disk, count, rotation_cos, rotation_sin, trig](double cx, double cy, double diameter, double diameter_error) {
-    std::vector<DiskSamplePosition> out;
-    const double r = 0.5 * diameter, unit = std::ldexp(1.0, -24);
-    const double error =
-        4.0 * unit * (std::max(std::fabs(cx), std::fabs(cy)) + r + 1.0) + 2.0 * trig * r + 0.5 * diameter_error;
-    for (int k = 0; k < std::min<int>(count, static_cast<int>(disk.size())); ++k) {
-      const double ox = disk[static_cast<std::size_t>(k)].x, oy = disk[static_cast<std::size_t>(k)].y;
-      out.push_back({cx + r * (rotation_cos * ox - rotation_sin * oy), cy + r * (rotation_sin * ox + rotation_cos * oy),
-                     error});
-    }
-    return out;
-  };
-}
-
-// Vogel's samples for the pixel (px, py) (vogel_pcss.glsl), with the float position's error: the
-// sin and cos of Vulkan's precision table, the turn's noise in float, the diameter's error.
-DiskLayout vogel_layout(int count, int px, int py) {
-  return [count, px, py](double cx, double cy, double diameter, double diameter_error) {
-    const double unit = std::ldexp(1.0, -24), trig = 1.0 / 2048.0;
-    const double noise = 53.0 * unit * (3.1 * (PN_IGN_X * (px + 0.5) + PN_IGN_Y * (py + 0.5)) + 2.0);
-    VogelPcssQuery q;
-    q.centre_x = cx, q.centre_y = cy, q.diameter = diameter, q.count = count;
-    q.turn = interleaved_gradient_noise(px + 0.5, py + 0.5);
-    const int n = std::clamp(count, 0, kVogelMaxSamples);
-    std::vector<DiskSamplePosition> out;
-    const double r = 0.5 * diameter;
-    for (int k = 0; k < n; ++k) {
-      const VogelPcssPosition p = vogel_pcss_position(q, k, n);
-      const double angle = 2.0 * M_PI * (4.0 * unit * (0.382 * k + 2.0) + noise);
-      out.push_back({p.x, p.y,
-                     r * (trig + angle + 8.0 * unit) + 4.0 * unit * (std::max(std::fabs(cx), std::fabs(cy)) + r + 1.0) +
-                         0.5 * diameter_error});
-    }
-    return out;
-  };
-}
 
 // The disk receivers: those of the scene, half with a small receiver plane of their own.
 std::vector<ExportReceiver> disk_receivers(const SceneImages& s) {

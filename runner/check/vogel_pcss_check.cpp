@@ -28,6 +28,7 @@
 #include <cmath>
 #include <string>
 
+#include "check/disk_layouts.h"
 #include "check/module_check.h"
 #include "core/error.h"
 #include "core/seeded_random.h"
@@ -41,20 +42,8 @@ namespace pn {
 namespace {
 
 constexpr int kMapSize = 257;
-constexpr double kUnit = 1.0 / 16777216.0;  // u = 2^-24
-constexpr double kTrigError = 1.0 / 2048.0;  // |sin, cos error| on [-π, π] (Vulkan's precision table)
-constexpr double kAmbiguousLimit = 0.02;     // samples left open by rounding, at most
-
-double position_error(const VogelPcssQuery& q, int k) {
-  const double r = 0.5 * q.diameter;
-  const double angle = 2.0 * M_PI * 4.0 * kUnit * (0.382 * k + 2.0);
-  const double centre = std::max(std::fabs(q.centre_x), std::fabs(q.centre_y));
-  return r * (kTrigError + angle + 8.0 * kUnit) + 4.0 * kUnit * (centre + r + 1.0);
-}
-
-double noise_bound(double x, double y) {
-  return 53.0 * kUnit * (3.1 * (PN_IGN_X * std::fabs(x) + PN_IGN_Y * std::fabs(y)) + 2.0);
-}
+constexpr double kUnit = kFloatUnit;
+constexpr double kAmbiguousLimit = 0.02;  // samples left open by rounding, at most
 
 }  // namespace
 
@@ -122,7 +111,7 @@ std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
       // The threshold's rounding: none for t = dP exactly (bias 0, no plane), else within
       // 4 FLT_EPSILON of its terms (dP - bias, then the plane's two products and sums).
       const bool rounded = g.bias != 0.0f || g.gradient_x != 0.0f || g.gradient_y != 0.0f;
-      const VogelPcssBounds b = vogel_pcss_bounds(map, q, [&q](int i, int) { return position_error(q, i); },
+      const VogelPcssBounds b = vogel_pcss_bounds(map, q, [&q](int i, int) { return vogel_position_error(q, i); },
                                                   rounded ? 4.0 * FLT_EPSILON : 0.0);
       const VogelPcssGpuResult& o = observed[k];
       const int x = static_cast<int>(k);
@@ -135,7 +124,7 @@ std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
       double e = interleaved_gradient_noise(g.centre_x, g.centre_y);
       if (o.noise - e > 0.5) e += 1.0;  // turns: compared on the circle
       if (e - o.noise > 0.5) e -= 1.0;
-      noise.add(e, o.noise, noise_bound(g.centre_x, g.centre_y), x, 0);
+      noise.add(e, o.noise, vogel_noise_bound(g.centre_x, g.centre_y), x, 0);
     }
     const std::string count = " (" + std::to_string(gpu.size()) + " queries, query k at (k, 0))";
     const auto add = [&](const std::string& what, const BoundedElements& elements) {
