@@ -69,9 +69,10 @@ DiskPcssResult disk_pcss_reference(const Image& depth, const LightModel& light, 
                             16.0 * kUnit * side;
   const DiskBounds filtered = disk_bounds(depth, filter_disk(r.u, r.v, side, side_error), t, r.gradient_x,
                                           r.gradient_y, r.u, r.v, kTie);
-  const double samples = static_cast<double>(std::max<long>(filtered.samples, 1));
-  out.visibility_lo = filtered.samples > 0 ? 1.0 - static_cast<double>(filtered.occluders_hi) / samples : 1.0;
-  out.visibility_hi = filtered.samples > 0 ? 1.0 - static_cast<double>(filtered.occluders_lo) / samples : 1.0;
+  if (filtered.samples == 0) return out;  // no sample: nothing occludes, lit (the module's 0 / 0 = 0)
+  const double samples = static_cast<double>(filtered.samples);
+  out.visibility_lo = 1.0 - static_cast<double>(filtered.occluders_hi) / samples;
+  out.visibility_hi = 1.0 - static_cast<double>(filtered.occluders_lo) / samples;
   return out;
 }
 
