@@ -60,8 +60,8 @@
 // cost: per node visited one fetch, per texel four more (its neighbours); per
 //   patch side² / 32 mask words and four samples tested one by one; per wall
 //   the samples not yet set in its box on the light, one by one. Bounded by
-//   `budget` nodes, PN_BACKPROJECTION_MAX_WORK loop iterations and a stack of
-//   48; what bounds it in practice is the number of occluding texels whose
+//   `budget` nodes and PN_BACKPROJECTION_MAX_WORK loop iterations (the walk
+//   is stackless: no local array); what bounds it in practice is the number of occluding texels whose
 //   segments reach: the penumbra's area in texels.
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL
@@ -71,7 +71,8 @@
 #include "light_model.glsl"
 #include "minmax_mip.glsl"
 
-#define PN_BACKPROJECTION_STACK 48
+// Nodes visited after the budget is spent: the siblings still to come, at most 3 a level.
+#define PN_BACKPROJECTION_TAIL 48
 
 struct PnBackprojectionSettings {
   int side;         // samples side × side (4, 8 or 16)
@@ -282,6 +283,18 @@ int pnBackprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, f
   return spent;
 }
 
+// The node after `node` in depth-first order once its subtree is done: its next sibling (children
+// in the order (0,0), (1,0), (0,1), (1,1)), else its parent's next, and so on; level top + 1 when
+// none is left.
+ivec3 pnBackprojectionNext(ivec3 node, int top) {
+  for (int level = node.x; level < top; ++level) {
+    if ((node.y & 1) == 0) return ivec3(node.x, node.y + 1, node.z);      // (0, y) -> (1, y)
+    if ((node.z & 1) == 0) return ivec3(node.x, node.y - 1, node.z + 1);  // (1, 0) -> (0, 1)
+    node = ivec3(node.x + 1, node.yz >> 1);                               // (1, 1): up
+  }
+  return ivec3(top + 1, 0, 0);
+}
+
 PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, float bias,
                                       PnBackprojectionSettings s) {
   PnBackprojection result = PnBackprojection(1.0, 0.0, 0.0, 0.0);
@@ -292,41 +305,39 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
   uint mask[PN_BACKPROJECTION_MASK_WORDS];
   for (int w = 0; w < PN_BACKPROJECTION_MASK_WORDS; ++w) mask[w] = 0u;
   int budget = clamp(s.budget, 1, PN_BACKPROJECTION_MAX_BUDGET);
-  // The stack of nodes still to visit: (level, node x, node y).
-  ivec3 stack[PN_BACKPROJECTION_STACK];
-  int top = 0;
-  stack[top++] = ivec3(pnMipMaxLevel(mip), 0, 0);
-  int visited = 0, work = 0;  // nodes; loop iterations in all (PN_BACKPROJECTION_MAX_WORK)
-  for (int step = 0; step < PN_BACKPROJECTION_MAX_BUDGET + PN_BACKPROJECTION_STACK && top > 0; ++step) {
-    ivec3 node = stack[--top];
+  // Depth first over the chain without a stack (a stack of nodes in a local array is scratch
+  // memory on a GPU: 36 KB a wave on RDNA 2, docs/isa.md): the next node is the first child, or the
+  // next sibling of the node or of its nearest ancestor that has one (pnBackprojectionNext).
+  int top = pnMipMaxLevel(mip);
+  ivec3 node = ivec3(top, 0, 0);  // (level, node x, node y)
+  int visited = 0, work = 0;      // nodes; loop iterations in all (PN_BACKPROJECTION_MAX_WORK)
+  for (int step = 0; step < PN_BACKPROJECTION_MAX_BUDGET + PN_BACKPROJECTION_TAIL && node.x <= top; ++step) {
     vec2 range = pnMipFetch(mip, node.x, node.yz);
     ++visited;
     ++work;
-    if (!(range.x + bias < dP)) continue;  // nothing in it can occlude (or no texel: +Inf)
-    // Every patch and wall of the node lies at a depth >= its min: at most W(min) from the receiver.
-    float reach = pnLightBlockerWindowTexels(light, dP, range.x);
-    int size = 1 << node.x;
-    vec2 lo = vec2(node.yz * size) - receiver.xy, hi = lo + float(size);
-    if (any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach)))) continue;
-    if (node.x == 0) {
-      work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, 0, node.yz, range.x, lo, hi, side, mask);
-      continue;
+    bool resolve = false;
+    if (range.x + bias < dP) {  // else nothing in it can occlude (or no texel: +Inf)
+      // Every patch and wall of the node lies at a depth >= its min: at most W(min) from the receiver.
+      float reach = pnLightBlockerWindowTexels(light, dP, range.x);
+      int size = 1 << node.x;
+      vec2 lo = vec2(node.yz * size) - receiver.xy, hi = lo + float(size);
+      bool within = !(any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach))));
+      if (within && node.x == 0) {
+        work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, 0, node.yz, range.x, lo, hi, side, mask);
+      } else if (within) {
+        resolve = visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&
+                  range.y - range.x >= s.tolerance * (dP - range.x);
+        if (!resolve) {
+          // A node standing as one patch at the middle of its range (in front of the receiver), with walls
+          // toward the neighbour nodes deeper than it, by the texels' rule applied to the nodes' mins.
+          result.patches += 1.0;
+          float depth = 0.5 * (range.x + min(range.y, dP - bias));
+          work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi, side,
+                                    mask);
+        }
+      }
     }
-    bool resolve = visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&
-                   range.y - range.x >= s.tolerance * (dP - range.x) && top + 4 <= PN_BACKPROJECTION_STACK;
-    if (resolve) {  // the four children, the first on top
-      ivec2 child = node.yz * 2;
-      stack[top++] = ivec3(node.x - 1, child + ivec2(1, 1));
-      stack[top++] = ivec3(node.x - 1, child + ivec2(0, 1));
-      stack[top++] = ivec3(node.x - 1, child + ivec2(1, 0));
-      stack[top++] = ivec3(node.x - 1, child);
-      continue;
-    }
-    // A node standing as one patch at the middle of its range (in front of the receiver), with walls
-    // toward the neighbour nodes deeper than it, by the texels' rule applied to the nodes' mins.
-    result.patches += 1.0;
-    float depth = 0.5 * (range.x + min(range.y, dP - bias));
-    work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi, side, mask);
+    node = resolve ? ivec3(node.x - 1, node.yz * 2) : pnBackprojectionNext(node, top);
   }
   int blocked = 0;
   for (int w = 0; w < PN_BACKPROJECTION_MASK_WORDS; ++w) blocked += bitCount(mask[w]);

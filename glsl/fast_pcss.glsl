@@ -115,24 +115,30 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
 
+  // Step 4 (the blockers, with depth sums) and Step 5 (the occlusion, without) are one traversal
+  // body run twice, not two inlined copies: half the code and registers on a GPU (docs/isa.md).
   int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
-  PnTraversal blockers = pnFastPcssTraverse(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
-                                            s.depthSums, pixel);
-  r.blockerNodes = blockers.nodes;
-  r.fetches += blockers.fetches;
-  bool hasBlocker = blockers.occluders > 0.0;
-  r.blockerMean = pnTraversalBlockerMean(blockers);
-  r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
-  if (pnEntryLit(r.filterEntry)) {
-    r.blockerMean = 0.0;
-    return r;
+  vec4 entry = r.searchEntry;
+  for (int step = 4; step <= 5; ++step) {
+    bool blockers = step == 4;
+    PnTraversal t = pnFastPcssTraverse(mip, sampleTable, n, entry, receiverPlane, s,
+                                       blockers ? blockerLeafMode : s.leafMode,
+                                       blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
+    r.fetches += t.fetches;
+    if (!blockers) {
+      r.occlusionNodes = t.nodes;
+      r.visibility = 1.0 - pnTraversalOccludedFraction(t);
+      break;
+    }
+    r.blockerNodes = t.nodes;
+    r.blockerMean = pnTraversalBlockerMean(t);
+    r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, t.occluders > 0.0, s.filterScale);
+    if (pnEntryLit(r.filterEntry)) {
+      r.blockerMean = 0.0;
+      break;
+    }
+    entry = r.filterEntry;
   }
-
-  PnTraversal occlusion = pnFastPcssTraverse(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
-                                             PN_DEPTH_SUMS_NONE, pixel);
-  r.occlusionNodes = occlusion.nodes;
-  r.fetches += occlusion.fetches;
-  r.visibility = 1.0 - pnTraversalOccludedFraction(occlusion);
   return r;
 }
 

@@ -13,6 +13,9 @@ float pnExportCall(ivec2 p) {
   vec3 r = pnExportReceiver(p).xyz;
   // side <= 0: the shipped defaults (pnBackprojectionDefaults, in the export too).
   PnBackprojectionSettings settings = pnBackprojectionDefaults();
+#ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the shipped defaults
+  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, pnExport.bias, settings);
+#endif
   if (pnExport.side > 0)
     settings = PnBackprojectionSettings(pnExport.side, pnExport.tolerance, pnExport.budget, pnExport.gap,
                                         pnExport.thickness);

@@ -13,6 +13,9 @@ float pnExportCall(ivec2 p) {
   vec4 r = pnExportReceiver(p);
   vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+#ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): integration.md's overload
+  return pnExactPcss(pnDepthMap, light, r.xyz, pnExport.bias, pnExport.filterScale);
+#endif
   return r.w != 0.0 ? pnExactPcss(pnDepthMap, light, r.xyz, plane, pnExport.bias, pnExport.filterScale)
                     : pnExactPcss(pnDepthMap, light, r.xyz, pnExport.bias, pnExport.filterScale);
 }

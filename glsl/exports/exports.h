@@ -7,6 +7,10 @@
 // export then holds the call and everything it calls, with the parameters' names. X.frag makes the
 // same call in a fragment shader. The bindings are an example; an engine calls the exported
 // function from its own shader with its own resources.
+//
+// PN_EXPORT_ENGINE (defined by `penumbra isa`, docs/isa.md): the call as an engine compiles it —
+// the overload docs/integration.md shows, with the module's shipped defaults as constants (only
+// the bias and the light from the block) — instead of every overload with settings from the block.
 
 #ifndef PENUMBRA_EXPORTS_EXPORTS_H
 #define PENUMBRA_EXPORTS_EXPORTS_H

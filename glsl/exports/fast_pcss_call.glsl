@@ -19,6 +19,9 @@ float pnExportCall(ivec2 p) {
   vec4 r = pnExportReceiver(p);
   vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+#ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the shipped defaults, integration.md's overload
+  return pnFastPcss(pnMip, pnSampleTable, light, r.xyz, p, pnFastPcssDefaults(pnExport.bias));
+#endif
   // filterScale <= 0: the shipped defaults with the block's bias (pnFastPcssDefaults, in the export too).
   PnFastPcssSettings settings = pnFastPcssDefaults(pnExport.bias);
   if (pnExport.filterScale > 0.0)

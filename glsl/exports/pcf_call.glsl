@@ -11,6 +11,9 @@ layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 
 float pnExportCall(ivec2 p) {
   vec4 r = pnExportReceiver(p);
+#ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): integration.md's overload
+  return pnPcf(pnDepthMap, r.xyz, pnExport.bias);
+#endif
   vec2 plane = pnExportReceiverPlane(p);
   return r.w != 0.0 ? pnPcf(pnDepthMap, r.xyz, plane, pnExport.bias) : pnPcf(pnDepthMap, r.xyz, pnExport.bias);
 }

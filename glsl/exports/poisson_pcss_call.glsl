@@ -17,6 +17,9 @@ float pnExportCall(ivec2 p) {
   vec4 r = pnExportReceiver(p);
   vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+#ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the shipped defaults, integration.md's overload
+  return pnPoissonPcss(pnDepthMap, light, r.xyz, pnPoissonPcssDefaults(pnExport.bias), vec2(1.0, 0.0));
+#endif
   vec2 rotation = pnExport.rotationFromAngle != 0 ? pnPoissonRotation(pnExport.rotationAngle)
                                                   : vec2(pnExport.rotationCos, pnExport.rotationSin);
   // filterScale <= 0: the shipped defaults with the block's bias (pnPoissonPcssDefaults, in the export too).

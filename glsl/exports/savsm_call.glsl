@@ -12,8 +12,13 @@ layout(binding = PN_EXPORT_MIP_BINDING) uniform sampler2D pnMip;
 
 float pnExportCall(ivec2 p) {
   vec4 r = pnExportReceiver(p);
+#ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the runner's blocker and bound as constants
+  PnSavsmSettings settings = PnSavsmSettings(pnExport.bias, pnExport.filterScale, pnExport.minVariance,
+                                             pnExport.bleedingReduction, PN_SAVSM_BLOCKER_MIN, true);
+#else
   PnSavsmSettings settings = PnSavsmSettings(pnExport.bias, pnExport.filterScale, pnExport.minVariance,
                                              pnExport.bleedingReduction, pnExport.blockerMode, pnExport.bound != 0);
+#endif
   return pnSavsm(pnTable, pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r.xyz, vec2(pnExport.unitNear, pnExport.unitScale),
                  settings);
 }

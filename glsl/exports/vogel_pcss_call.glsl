@@ -14,6 +14,9 @@ float pnExportCall(ivec2 p) {
   vec4 r = pnExportReceiver(p);
   vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
+#ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the shipped defaults, integration.md's overload
+  return pnVogelPcss(pnDepthMap, light, r.xyz, p, pnVogelPcssDefaults(pnExport.bias));
+#endif
   // filterScale <= 0: the shipped defaults with the block's bias (pnVogelPcssDefaults, in the export too).
   PnVogelPcssSettings settings = pnVogelPcssDefaults(pnExport.bias);
   if (pnExport.filterScale > 0.0)

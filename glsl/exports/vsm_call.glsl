@@ -13,10 +13,15 @@ layout(binding = PN_EXPORT_VSM_PYRAMID_BINDING) uniform sampler2DArray pnPyramid
 float pnExportCall(ivec2 p) {
   vec3 r = pnExportReceiver(p).xyz;
   vec2 range = vec2(pnExport.depthNear, pnExport.depthFar);
-  if (pnExport.kind == PN_EXPORT_EVSM2)
+#ifdef PN_EXPORT_VSM_KIND  // one call compiled (penumbra isa): the kind a constant
+  const int kind = PN_EXPORT_VSM_KIND;
+#else
+  int kind = pnExport.kind;
+#endif
+  if (kind == PN_EXPORT_EVSM2)
     return pnEvsm2(pnMoments, pnPyramid, r, pnExport.radius, pnExport.bias, range, pnExport.evsm2Exponent,
                    pnExport.minVariance, pnExport.bleedingReduction);
-  if (pnExport.kind == PN_EXPORT_EVSM4)
+  if (kind == PN_EXPORT_EVSM4)
     return pnEvsm4(pnMoments, pnPyramid, r, pnExport.radius, pnExport.bias, range,
                    vec2(pnExport.evsm4Positive, pnExport.evsm4Negative), pnExport.minVariance,
                    pnExport.bleedingReduction);

@@ -89,11 +89,6 @@ PN_UNIFORM_BLOCK(PnPoissonFilterDisk, PN_PCSS_POISSON_FILTER_DISK_BINDING)
   PN_VEC2_ARRAY(points, PN_POISSON_MAX_SAMPLES)
 PN_END_UNIFORM_BLOCK(pnFilterDisk)
 
-// Which call pcss_one_call.glsl makes (PN_PCSS_ONE_CALL, a compile-time switch).
-#define PN_ONE_CALL_FAST 0     // pnFastPcss (fast_pcss.glsl)
-#define PN_ONE_CALL_POISSON 1  // pnPoissonPcss (poisson_pcss.glsl)
-#define PN_ONE_CALL_EXACT 2    // pnExactPcss (exact_pcss.glsl)
-#define PN_ONE_CALL_HQEPCSS 3  // pnHqepcss (hqepcss.glsl)
-#define PN_ONE_CALL_VOGEL 4    // pnVogelPcss (vogel_pcss.glsl)
+#include "pcss_one_call.h"  // PN_ONE_CALL_*: which call pcss_one_call.glsl makes
 
 #endif  // PENUMBRA_PASSES_PCSS_PARAMS_H

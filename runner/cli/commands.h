@@ -31,6 +31,7 @@ void add_figures_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_poisson_command(CLI::App& app, int& exit_code);
 void add_sample_table_command(CLI::App& app, int& exit_code);
 void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code);
+void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 
 // Helpers for the commands.
 std::string default_glsl_root();

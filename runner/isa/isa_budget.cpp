@@ -1,0 +1,89 @@
+#include "isa/isa_budget.h"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace pn {
+
+namespace {
+
+const char* kMarker = "// isa budget:";
+
+double figure(const IsaFigures& f, const std::string& key) {
+  if (key == "vgprs") return f.vgprs;
+  if (key == "instructions") return f.instructions;
+  if (key == "code") return f.code;
+  return f.scratch;  // "scratch"
+}
+
+std::string format(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+std::optional<IsaBudget> read_budget(const SourceTree& tree, const std::string& module) {
+  const std::string file = module + ".glsl";
+  std::ifstream in(tree.root() / file);
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (line.rfind(kMarker, 0) != 0) continue;
+    IsaBudget b{module, file, number, {}};
+    std::istringstream items(line.substr(std::string(kMarker).size()));
+    for (std::string item; std::getline(items, item, ',');) {
+      std::istringstream kv(item);
+      std::string key, value, rest;
+      kv >> key >> value >> rest;
+      char* end = nullptr;
+      const double v = std::strtod(value.c_str(), &end);
+      if ((key != "vgprs" && key != "instructions" && key != "code" && key != "scratch") || value.empty() || *end != '\0' ||
+          !rest.empty())
+        throw Error(file + ":" + std::to_string(number) + ": isa budget item '" + item +
+                    "': expected 'vgprs N', 'instructions N', 'code BYTES' or 'scratch BYTES'");
+      b.limits.emplace_back(key, v);
+    }
+    return b;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> budget_breaches(const SourceTree& tree, const std::vector<IsaProgram>& programs,
+                                         const IsaTargetResult& result) {
+  std::vector<std::string> out;
+  std::map<std::string, std::optional<IsaBudget>> budgets;
+  for (size_t i = 0; i < programs.size() && i < result.shaders.size(); ++i) {
+    const IsaEntry& entry = programs[i].entry;
+    const IsaShader& shader = result.shaders[i];
+    if (!shader.error.empty()) {
+      out.push_back(entry.label() + ": did not compile on " + result.target.family + ": " + shader.error);
+      continue;
+    }
+    const ShaderExecutable* own = shader.own(entry.stage);
+    if (!own) continue;
+    const IsaFigures f = isa_figures(*own, result.target.wave, result.target.family);
+    std::optional<IsaBudget> budget;
+    if (!entry.module.empty()) {
+      if (!budgets.count(entry.module)) budgets[entry.module] = read_budget(tree, entry.module);
+      budget = budgets[entry.module];
+    }
+    bool scratch_budgeted = false;
+    if (budget)
+      for (const auto& [key, limit] : budget->limits) {
+        scratch_budgeted |= key == "scratch";
+        if (figure(f, key) > limit)
+          out.push_back(entry.label() + ": " + format(figure(f, key)) + " " + key + " > " + format(limit) + " (" +
+                        budget->file + ":" + std::to_string(budget->line) + ")");
+      }
+    if (!scratch_budgeted && f.scratch > 0)
+      out.push_back(entry.label() + ": " + format(f.scratch) + " bytes of scratch (a local array or a spill: no entry may use scratch)");
+  }
+  return out;
+}
+
+}  // namespace pn

@@ -1,0 +1,213 @@
+#include "isa/isa_run.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.h"
+#include "shader/flatten.h"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace pn {
+
+namespace {
+
+std::vector<std::uint32_t> spirv_of(const GlslangProcess& glslang, const SourceTree& tree, const std::string& file,
+                                    const std::vector<Define>& defines) {
+  const CompileResult r =
+      compile_with_glslang(glslang, standalone_source(flatten(tree, file), Target::vulkan, defines), Target::vulkan);
+  if (!r.ok) throw Error(first_error(r, file + ": does not compile for vulkan"), ExitCode::failed);
+  return r.spirv;
+}
+
+const char* stage_name(Stage s) { return s == Stage::fragment ? "fragment" : s == Stage::vertex ? "vertex" : "compute"; }
+Stage stage_named(const std::string& s) { return s == "fragment" ? Stage::fragment : s == "vertex" ? Stage::vertex : Stage::compute; }
+
+json executable_json(const ShaderExecutable& e) {
+  json stats = json::array();
+  for (const auto& [name, value] : e.statistics) stats.push_back({name, value});
+  return {{"stage", stage_name(e.stage)}, {"name", e.name}, {"statistics", stats}, {"isa", e.isa}};
+}
+
+ShaderExecutable executable_from(const json& j) {
+  ShaderExecutable e;
+  e.stage = stage_named(j.at("stage").get<std::string>());
+  e.name = j.at("name").get<std::string>();
+  for (const json& s : j.at("statistics")) e.statistics.emplace_back(s.at(0).get<std::string>(), s.at(1).get<double>());
+  e.isa = j.at("isa").get<std::string>();
+  return e;
+}
+
+// The child: compiles every program on `target`, writes {"device", "min_wave", "shaders"} to `out`.
+[[noreturn]] void child(const std::vector<IsaProgram>& programs, const RadvTarget& target, const std::string& manifest,
+                        const std::string& out, const std::string& runtime_dir) {
+  int code = 0;
+  try {
+    set_radv_environment(target, manifest, runtime_dir);
+    const RadvNullDevice device;
+    json shaders = json::array();
+    const bool wave_ok = target.wave == 64 || device.min_wave() <= target.wave;
+    for (const IsaProgram& p : programs) {
+      json shader = {{"error", ""}, {"executables", json::array()}};
+      if (!wave_ok) {
+        shader["error"] = "no wave" + std::to_string(target.wave) + " on this family";
+      } else {
+        try {
+          const std::vector<ShaderExecutable> made =
+              p.entry.stage == Stage::fragment ? device.compile_graphics(p.vertex, p.spirv, p.entry.label())
+                                               : device.compile_compute(p.spirv, p.entry.label());
+          for (const ShaderExecutable& e : made) shader["executables"].push_back(executable_json(e));
+        } catch (const Error& e) {
+          shader["error"] = e.what();
+        }
+      }
+      shaders.push_back(shader);
+    }
+    std::ofstream(out) << json{{"device", device.device_name()}, {"min_wave", device.min_wave()}, {"shaders", shaders}};
+  } catch (const std::exception& e) {
+    std::ofstream(out) << json{{"error", e.what()}};
+    code = 1;
+  }
+  std::_Exit(code);
+}
+
+IsaTargetResult read_child(const RadvTarget& target, const std::string& file, int status, size_t count) {
+  IsaTargetResult r;
+  r.target = target;
+  if (WIFSIGNALED(status)) {
+    r.error = "the driver died (signal " + std::to_string(WTERMSIG(status)) + ")";
+  } else {
+    std::ifstream in(file);
+    json j = json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) {
+      r.error = "the child wrote no result (exit " + std::to_string(WEXITSTATUS(status)) + ")";
+    } else if (j.contains("error")) {
+      r.error = j["error"].get<std::string>();
+    } else {
+      r.device = j["device"].get<std::string>();
+      for (const json& s : j["shaders"]) {
+        IsaShader shader;
+        shader.error = s["error"].get<std::string>();
+        for (const json& e : s["executables"]) shader.executables.push_back(executable_from(e));
+        r.shaders.push_back(std::move(shader));
+      }
+    }
+  }
+  if (r.error.empty() && r.shaders.size() != count) r.error = "the child's result lists " + std::to_string(r.shaders.size()) + " shaders, not " + std::to_string(count);
+  if (!r.error.empty()) r.shaders.assign(count, IsaShader{r.error, {}});
+  return r;
+}
+
+// A fresh directory for the children's results and RADV's XDG_RUNTIME_DIR, removed on the way out.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "penumbra-isa-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw Error("isa: cannot make a temporary directory under " + fs::temp_directory_path().string(), ExitCode::failed);
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+}  // namespace
+
+std::vector<IsaProgram> compile_isa_programs(const GlslangProcess& glslang, const SourceTree& tree,
+                                             const std::vector<IsaEntry>& entries) {
+  std::vector<IsaProgram> out;
+  for (const IsaEntry& e : entries) {
+    IsaProgram p{e, spirv_of(glslang, tree, e.file, e.defines), {}};
+    if (e.stage == Stage::fragment) p.vertex = spirv_of(glslang, tree, e.vertex, {});
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+const ShaderExecutable* IsaShader::own(Stage stage) const {
+  for (const ShaderExecutable& e : executables)
+    if (e.stage == stage) return &e;
+  return nullptr;
+}
+
+IsaFigures isa_figures(const ShaderExecutable& e, int wave, const std::string& family) {
+  IsaFigures f;
+  const auto stat = [&](const char* name) { return std::max(0.0, e.statistic(name)); };
+  f.vgprs = stat("VGPRs");
+  f.sgprs = stat("SGPRs");
+  f.spilled_vgprs = stat("Spilled VGPRs");
+  f.spilled_sgprs = stat("Spilled SGPRs");
+  f.scratch = stat("Scratch size");
+  f.code = stat("Code size");
+  f.instructions = stat("Instructions");
+  f.branches = stat("Branches");
+  f.latency = stat("Latency");
+  f.throughput = stat("Inverse Throughput");
+  // RADV counts subgroups per SIMD in wave32 units on gfx10 and later: a wave64 is two.
+  const bool rdna = !(family.rfind("polaris", 0) == 0 || family.rfind("vega", 0) == 0 || family.rfind("tonga", 0) == 0 ||
+                      family.rfind("fiji", 0) == 0 || family.rfind("raven", 0) == 0 || family.rfind("renoir", 0) == 0);
+  f.waves = stat("Subgroups per SIMD") / (rdna && wave == 64 ? 2.0 : 1.0);
+  std::istringstream isa(e.isa);
+  for (std::string line; std::getline(isa, line);) {
+    const size_t start = line.find_first_not_of(" \t");
+    if (start != std::string::npos && line.compare(start, 6, "image_") == 0) ++f.image;
+  }
+  return f;
+}
+
+bool supports_wave(const std::string& family, int wave) {
+  return wave == 64 || !(family.rfind("polaris", 0) == 0 || family.rfind("vega", 0) == 0);
+}
+
+std::vector<IsaTargetResult> run_isa(const std::vector<IsaProgram>& programs, const std::vector<RadvTarget>& targets,
+                                     int jobs, const std::function<void(const std::string&)>& progress) {
+  const std::string manifest = radeon_icd_manifest();
+  if (manifest.empty())
+    throw Error("isa: no radeon ICD (radeon_icd.*.json under /usr/share/vulkan/icd.d): install mesa-vulkan-drivers "
+                "(scripts/install-deps.sh does)",
+                ExitCode::failed);
+  const TempDir temp;
+  std::vector<IsaTargetResult> out(targets.size());
+  std::vector<std::pair<pid_t, size_t>> running;
+  const auto file_of = [&](size_t i) { return (temp.path() / ("target-" + std::to_string(i) + ".json")).string(); };
+  const auto reap = [&] {
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    for (auto it = running.begin(); it != running.end(); ++it) {
+      if (it->first != pid) continue;
+      const size_t i = it->second;
+      out[i] = read_child(targets[i], file_of(i), status, programs.size());
+      running.erase(it);
+      progress(targets[i].family + " wave" + std::to_string(targets[i].wave) + ": " +
+               (out[i].error.empty() ? out[i].device : out[i].error));
+      return;
+    }
+  };
+  for (size_t i = 0; i < targets.size(); ++i) {
+    while (static_cast<int>(running.size()) >= std::max(1, jobs)) reap();
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) throw Error("isa: fork failed", ExitCode::failed);
+    if (pid == 0) child(programs, targets[i], manifest, file_of(i), temp.path().string());
+    running.push_back({pid, i});
+  }
+  while (!running.empty()) reap();
+  return out;
+}
+
+}  // namespace pn
