@@ -53,6 +53,9 @@
 // cost: Step 3 <= 9 fetches a refinement; each traversal one fetch a node
 //   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
 //   receiver stops after Step 3.
+//
+// isa budget: vgprs 48, instructions 1600, code 8192, scratch 0
+//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_FAST_PCSS_GLSL
 #define PENUMBRA_FAST_PCSS_GLSL
@@ -104,6 +107,30 @@ PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize
                                   s.nodeBudget, depthSums, pixel);
 }
 
+// The walk of an entry's region (pnFastPcssTraverse's, one node a step); its leaf side in `leafSide`.
+PnTraversalWalk pnFastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTraversalTest test, PnFastPcssSettings s,
+                               out int leafSide) {
+  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
+  leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size);
+  return pnTraversalWalkBegin(shape, mapSize, region.origin, region.size, test, pnTraversalBudget(s.nodeBudget));
+}
+
+// Step 4's count done: the blocker mean and the filter entry (lit: no blocker mean).
+void pnFastPcssBlockersDone(inout PnFastPcssResult r, PnTraversal blockers, PnLight light, PnFastPcssSettings s) {
+  r.blockerNodes = blockers.nodes;
+  r.fetches += blockers.fetches;
+  r.blockerMean = pnTraversalBlockerMean(blockers);
+  r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, blockers.occluders > 0.0, s.filterScale);
+  if (pnEntryLit(r.filterEntry)) r.blockerMean = 0.0;
+}
+
+// Step 5's count done: the visibility.
+void pnFastPcssOcclusionDone(inout PnFastPcssResult r, PnTraversal occlusion) {
+  r.occlusionNodes = occlusion.nodes;
+  r.fetches += occlusion.fetches;
+  r.visibility = 1.0 - pnTraversalOccludedFraction(occlusion);
+}
+
 PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                     vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   int n = int(light.mapSize);
@@ -115,29 +142,41 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
 
-  // Step 4 (the blockers, with depth sums) and Step 5 (the occlusion, without) are one traversal
-  // body run twice, not two inlined copies: half the code and registers on a GPU (docs/isa.md).
   int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
-  vec4 entry = r.searchEntry;
-  for (int step = 4; step <= 5; ++step) {
-    bool blockers = step == 4;
-    PnTraversal t = pnFastPcssTraverse(mip, sampleTable, n, entry, receiverPlane, s,
-                                       blockers ? blockerLeafMode : s.leafMode,
-                                       blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
-    r.fetches += t.fetches;
-    if (!blockers) {
-      r.occlusionNodes = t.nodes;
-      r.visibility = 1.0 - pnTraversalOccludedFraction(t);
+  if (s.grid > 0) {  // the bounded-work ablation: two grid passes
+    PnTraversal blockers = pnFastPcssTraverse(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
+                                              s.depthSums, pixel);
+    pnFastPcssBlockersDone(r, blockers, light, s);
+    if (pnEntryLit(r.filterEntry)) return r;
+    pnFastPcssOcclusionDone(r, pnFastPcssTraverse(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
+                                                  PN_DEPTH_SUMS_NONE, pixel));
+    return r;
+  }
+  // Step 4 (the blockers, with depth sums) then Step 5 (the occlusion, without) as one loop over
+  // two walks of the chain: one traversal body in the program, not two inlined copies — half the
+  // code and registers on a GPU (docs/isa.md). Each walk gets its own iterations, as alone.
+  // Both regions are tested against one receiver (the filter entry keeps the search entry's
+  // (d, u, v)): one test for both walks.
+  PnMipShape shape = pnMipShape(mip);
+  PnTraversalTest test = PnTraversalTest(r.searchEntry.x - s.bias, receiverPlane, r.searchEntry.yz);
+  int budget = pnTraversalBudget(s.nodeBudget);
+  int leafSide;
+  PnTraversalWalk w = pnFastPcssWalk(shape, n, r.searchEntry, test, s, leafSide);
+  bool blockers = true;
+  int limit = max(w.iterations, 1);
+  for (int it = 0; it < limit; ++it) {
+    pnTraversalWalkStep(w, mip, shape, sampleTable, test, leafSide, blockers ? blockerLeafMode : s.leafMode, budget,
+                        blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
+    if (!w.done && it + 1 < limit) continue;
+    if (!blockers) {  // Step 5 is over
+      pnFastPcssOcclusionDone(r, w.r);
       break;
     }
-    r.blockerNodes = t.nodes;
-    r.blockerMean = pnTraversalBlockerMean(t);
-    r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, t.occluders > 0.0, s.filterScale);
-    if (pnEntryLit(r.filterEntry)) {
-      r.blockerMean = 0.0;
-      break;
-    }
-    entry = r.filterEntry;
+    pnFastPcssBlockersDone(r, w.r, light, s);
+    if (pnEntryLit(r.filterEntry)) break;
+    blockers = false;
+    w = pnFastPcssWalk(shape, n, r.filterEntry, test, s, leafSide);
+    limit = it + 1 + max(w.iterations, 1);
   }
   return r;
 }

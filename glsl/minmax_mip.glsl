@@ -80,23 +80,56 @@ int pnMipMaxLevel(sampler2D mip) {
   return findMSB(max(textureSize(mip, 0).y, 1));
 }
 
-// Texel `texel` of `level`: two nodes' (min, max); both empty outside the level.
-vec4 pnMipTexel(sampler2D mip, int level, ivec2 texel) {
-  int l = clamp(level, 0, pnMipMaxLevel(mip));
+// The chain's height P (level 0's rows) and top level, read once by a caller that reads many
+// nodes: textureSize is an instruction of its own on a GPU, and the level arithmetic around it
+// would be repeated at every fetch (docs/isa.md).
+struct PnMipShape {
+  int rows;  // textureSize(mip, 0).y
+  int top;   // pnMipMaxLevel(mip)
+};
+
+PnMipShape pnMipShape(sampler2D mip) {
+  int rows = textureSize(mip, 0).y;
+  return PnMipShape(rows, findMSB(max(rows, 1)));
+}
+
+// Texel `texel` of `level` when `wanted`: two nodes' (min, max); both empty outside the level or
+// when not wanted. Without a branch: the fetch is made at a clamped texel and its value selected,
+// so a GPU runs no divergent code around it (docs/isa.md); PN_ON_TEXEL_FETCH counts only the
+// fetches whose value is used.
+vec4 pnMipTexelIf(sampler2D mip, PnMipShape shape, int level, ivec2 texel, bool wanted) {
+  int l = clamp(level, 0, shape.top);
   // The level's size from level 0's: textureSize with a level that differs
   // between invocations is not computed per invocation by every driver (llvmpipe).
-  int rows = textureSize(mip, 0).y >> l;
+  int rows = shape.rows >> l;
   ivec2 size = ivec2(max(rows >> 1, 1), rows);
-  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return vec4(pnMipEmpty(), pnMipEmpty());
-  PN_ON_TEXEL_FETCH();
-  return texelFetch(mip, texel, l);
+  bool inside = wanted && all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
+  if (inside) PN_ON_TEXEL_FETCH();
+  vec4 t = texelFetch(mip, clamp(texel, ivec2(0), max(size - 1, ivec2(0))), l);
+  return inside ? t : vec4(pnMipEmpty(), pnMipEmpty());
+}
+
+vec4 pnMipTexelOf(sampler2D mip, PnMipShape shape, int level, ivec2 texel) {
+  return pnMipTexelIf(mip, shape, level, texel, true);
+}
+
+vec4 pnMipTexel(sampler2D mip, int level, ivec2 texel) {
+  return pnMipTexelOf(mip, pnMipShape(mip), level, texel);
+}
+
+// Node `node` of `level` when `wanted`, else (and outside the level) the empty pair.
+vec2 pnMipFetchIf(sampler2D mip, PnMipShape shape, int level, ivec2 node, bool wanted) {
+  int nodes = max(shape.rows >> clamp(level, 0, shape.top), 1);
+  vec4 t = pnMipTexelIf(mip, shape, level, ivec2(node.x >> 1, node.y), wanted && node.x < nodes);
+  return (node.x & 1) != 0 ? t.zw : t.xy;
+}
+
+vec2 pnMipFetchOf(sampler2D mip, PnMipShape shape, int level, ivec2 node) {
+  return pnMipFetchIf(mip, shape, level, node, true);
 }
 
 vec2 pnMipFetch(sampler2D mip, int level, ivec2 node) {
-  int nodes = max(textureSize(mip, 0).y >> clamp(level, 0, pnMipMaxLevel(mip)), 1);
-  if (node.x >= nodes) return pnMipEmpty();
-  vec4 t = pnMipTexel(mip, level, ivec2(node.x >> 1, node.y));
-  return (node.x & 1) != 0 ? t.zw : t.xy;
+  return pnMipFetchOf(mip, pnMipShape(mip), level, node);
 }
 
 // Level 0 node p of the map: (d, d), d sanitized; empty outside the map (the padding).
@@ -133,9 +166,9 @@ vec2 pnMipUnion(vec2 a, vec2 b) {
 }
 
 // Node first + offset of a square's cover, or the empty pair beyond `last`.
-vec2 pnMipSquareNode(sampler2D mip, int level, ivec2 first, ivec2 last, ivec2 offset) {
+vec2 pnMipSquareNode(sampler2D mip, PnMipShape shape, int level, ivec2 first, ivec2 last, ivec2 offset) {
   ivec2 node = first + offset;
-  return any(greaterThan(node, last)) ? pnMipEmpty() : pnMipFetch(mip, level, node);
+  return pnMipFetchIf(mip, shape, level, node, !any(greaterThan(node, last)));
 }
 
 vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
@@ -145,21 +178,22 @@ vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
   if (any(greaterThanEqual(lo, hi))) return pnMipEmpty();
   int s = max(hi.x - lo.x, hi.y - lo.y);
   // Nodes of side 2^level >= s / 2: at most 3 touch the square on each axis.
-  int level = min(max(findMSB(s - 1), 0), pnMipMaxLevel(mip));
+  PnMipShape shape = pnMipShape(mip);
+  int level = min(max(findMSB(s - 1), 0), shape.top);
   ivec2 first = lo >> level;
   ivec2 last = (hi - ivec2(1)) >> level;
   // The 3×3 nodes from `first`, those beyond `last` left out: written out, not
   // looped (llvmpipe runs a loop's control per invocation group; the fetches
   // themselves are cheap).
-  vec2 result = pnMipSquareNode(mip, level, first, last, ivec2(0, 0));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(1, 0)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(2, 0)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(0, 1)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(1, 1)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(2, 1)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(0, 2)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(1, 2)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, level, first, last, ivec2(2, 2)));
+  vec2 result = pnMipSquareNode(mip, shape, level, first, last, ivec2(0, 0));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(1, 0)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(2, 0)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(0, 1)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(1, 1)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(2, 1)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(0, 2)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(1, 2)));
+  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(2, 2)));
   return result;
 }
 

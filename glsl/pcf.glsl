@@ -69,6 +69,9 @@
 //
 // cost: one texelFetch and one compare per covered texel; w·h fetches for a
 //   w×h window (exact PCSS: O(s²) per pixel for a side-s region).
+//
+// isa budget: vgprs 16, instructions 200, code 1024, scratch 0
+//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_PCF_GLSL
 #define PENUMBRA_PCF_GLSL

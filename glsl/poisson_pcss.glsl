@@ -47,8 +47,6 @@
 //                                                 rotation = (1, 0), or pnPoissonRotation(angle) per pixel
 //   PnPoissonPcssSettings pnPoissonPcssDefaults(float bias)   36 / 64 samples, filterScale 1
 //   PnPoissonPcssResult pnPoissonPcssEstimate(... the same ...)  visibility, the regions, the mean
-//   PnPoisson pnPoissonOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
-//                                float bias, vec2 points[PN_POISSON_MAX_SAMPLES], int count, vec2 rotation)
 //   PnPoisson pnPoissonOcclusionDisk(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth,
 //                                    float bias, int count, vec2 rotation)   (with PN_POISSON_DISK_ARRAY)
 //   PnPoisson pnPoissonAddSamplePlane(... the same ..., float threshold, vec2 gradient, PnPoisson sums)
@@ -71,6 +69,9 @@
 //
 // cost: per sample one texelFetch, ~8 ALU operations; `count` samples per call,
 //   independent of the disk's size.
+//
+// isa budget: vgprs 16, instructions 400, code 2048, scratch 0
+//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_POISSON_PCSS_GLSL
 #define PENUMBRA_POISSON_PCSS_GLSL
@@ -120,19 +121,6 @@ PnPoisson pnPoissonAddSamplePlane(sampler2D depthMap, vec2 centre, float radius,
 PnPoisson pnPoissonAddSample(sampler2D depthMap, vec2 centre, float radius, vec2 offset, vec2 rotation,
                              float threshold, PnPoisson sums) {
   return pnPoissonAddSamplePlane(depthMap, centre, radius, offset, rotation, threshold, vec2(0.0), sums);
-}
-
-PnPoisson pnPoissonOcclusion(sampler2D depthMap, vec2 centre, float diameter, float receiverDepth, float bias,
-                             vec2 points[PN_POISSON_MAX_SAMPLES], int count, vec2 rotation) {
-  PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
-  float radius = 0.5 * diameter;
-  float t = receiverDepth - bias;
-  int k = clamp(count, 0, PN_POISSON_MAX_SAMPLES);
-  for (int i = 0; i < PN_POISSON_MAX_SAMPLES; ++i) {
-    if (i >= k) break;
-    sums = pnPoissonAddSample(depthMap, centre, radius, points[i], rotation, t, sums);
-  }
-  return sums;
 }
 
 #ifdef PN_POISSON_DISK_ARRAY

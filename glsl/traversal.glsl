@@ -199,23 +199,23 @@ void pnTraversalAddSampled(inout PnTraversal r, ivec2 size, float occluding, flo
 // One sample of a leaf [lo, lo + size) over the mip chain's level 0, at a
 // table position in [0, 1)².
 void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                         vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
+                         PnMipShape shape, vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
   ivec2 p = pnSampleTexel(position, lo, size);
-  pnTraversalCountSample(occluding, depthSum, r, pnMipFetch(mip, 0, p).x, p, test);
+  pnTraversalCountSample(occluding, depthSum, r, pnMipFetchOf(mip, shape, 0, p).x, p, test);
 }
 
 // Sample i < m of a sampled leaf, its position from the table.
 void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size,
-                          PnTraversalTest test) {
+                          PnMipShape shape, sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo,
+                          ivec2 size, PnTraversalTest test) {
   if (i >= m) return;
-  pnTraversalSampleAt(occluding, depthSum, r, mip, pnSample(sampleTable, first + i, set), lo, size, test);
+  pnTraversalSampleAt(occluding, depthSum, r, mip, shape, pnSample(sampleTable, first + i, set), lo, size, test);
 }
 
 // Eq. 5 / 6 over the rectangle [lo, lo + size) with the samples of a node of
 // side `side` over the mip chain's level 0, each sample against its own
 // texel's threshold.
-void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D sampleTable, ivec2 lo,
+void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable, ivec2 lo,
                            ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
   int m = pnSampleCount(k);
@@ -229,18 +229,19 @@ void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, sampler2D samp
   // plane's threshold made the loop too long to unroll): the first four
   // samples are taken without a loop, the rest (16-sample leaves, at most a
   // sixteenth of the region's texels) four a step.
-  pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 0, m, lo, size, test);
+  pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 0, m, lo, size, test);
   if (m > 1) {
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 1, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 2, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, 3, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 1, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 2, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 3, m, lo, size, test);
   }
-  for (int g = 4; g < PN_SAMPLE_MAX_COUNT; g += 4) {
-    if (g >= m) break;
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 1, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 2, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, sampleTable, first, set, g + 3, m, lo, size, test);
+  // The bound is min(m, 16), not 16 with a break at m: a loop with a constant trip count and a
+  // second exit is unrolled whole by Mesa's NIR (16 copies of a sample in the GPU's code).
+  for (int g = 4; g < m; g += 4) {
+    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 1, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 2, m, lo, size, test);
+    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 3, m, lo, size, test);
   }
   pnTraversalAddSampled(r, size, occluding, depthSum, m);
 }
@@ -443,9 +444,9 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2
 // (min, max) in `nodeRange`.
 // The test's thresholds over the part (receiver_plane.glsl): all below the
 // lowest -> every texel occludes; none below the highest -> none does.
-bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, int level, ivec2 origin,
+bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, int level, ivec2 origin,
                              ivec2 lo, ivec2 hi, PnTraversalTest test, int depthSums, out vec2 nodeRange) {
-  vec2 node = pnMipFetch(mip, level, origin >> level);
+  vec2 node = pnMipFetchOf(mip, shape, level, origin >> level);
   r.nodes += 1;
   r.fetches += 1;
   nodeRange = node;
@@ -460,24 +461,24 @@ bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, int level, ivec
 // A node that will not be descended: its clipped part classified, and
 // estimated by the leaf mode when ambiguous (samples spread over the part).
 // Without samples (min, ramp) a sloped test is taken at the part's centre.
-void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, sampler2D sampleTable,
+void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
                               int level, ivec2 origin, ivec2 lo, ivec2 hi, PnTraversalTest test, int leafMode,
                               int depthSums, ivec2 pixel) {
   vec2 range;
-  if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) return;
+  if (!pnTraversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
     ivec2 size = hi - lo;
     pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), pnTraversalTestAtCentre(test, lo, hi));
   } else {
-    pnTraversalSampleLeafMip(r, mip, sampleTable, lo, hi - lo, 1 << level, test, pixel);
+    pnTraversalSampleLeafMip(r, mip, shape, sampleTable, lo, hi - lo, 1 << level, test, pixel);
   }
 }
 
 // The four level-0 children (texels) of a level-1 node at `origin`, clipped to the region.
-void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, ivec2 origin,
+void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, PnMipShape shape, ivec2 origin,
                             ivec2 regionStart, ivec2 regionEnd, PnTraversalTest test, int depthSums) {
-  vec4 pair0 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y));
-  vec4 pair1 = pnMipTexel(mip, 0, ivec2(origin.x >> 1, origin.y + 1));
+  vec4 pair0 = pnMipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y));
+  vec4 pair1 = pnMipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y + 1));
   vec4 depths = vec4(pair0.x, pair0.z, pair1.x, pair1.z);  // (0,0), (1,0), (0,1), (1,1): min = max = depth
   r.fetches += 2;
   r.nodes += 4;
@@ -496,60 +497,90 @@ void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, ivec2 origin,
   if (depthSums != PN_DEPTH_SUMS_NONE) r.depthSum += dot(occluding, mix(vec4(0.0), depths, greaterThan(occluding, vec4(0.0))));
 }
 
+// A traversal of the mip chain one node at a time: pnTraverseRegionMipPlane is its loop, and a
+// caller that traverses two regions (Fast PCSS's Steps 4 and 5) runs one loop over both, so a GPU
+// compiles one copy of the body, not one a region (docs/isa.md). The walk holds only what changes
+// from node to node; the test and the settings are the caller's, passed to every step (the same
+// for both of Fast PCSS's regions: kept out of the loop's registers).
+struct PnTraversalWalk {
+  PnTraversal r;
+  ivec2 regionStart, regionEnd, rootOrigin;
+  int rootLevel, level, iterations;
+  uint code;
+  bool done;
+};
+
+int pnTraversalBudget(int nodeBudget) {
+  return clamp(nodeBudget, 1, PN_TRAVERSAL_NO_BUDGET);
+}
+
+PnTraversalWalk pnTraversalWalkBegin(PnMipShape shape, int mapSize, ivec2 regionOrigin, ivec2 regionSize,
+                                     PnTraversalTest test, int budget) {
+  PnTraversalWalk w;
+  w.r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), w.regionStart, w.regionEnd);
+  ivec2 size = w.regionEnd - w.regionStart;
+  w.done = isnan(test.threshold) || w.r.texels == 0.0;
+  // The 2×2 aligned nodes of level `top` at the region's aligned corner cover
+  // it (side <= 2^top); they are the children of a virtual root one level up,
+  // which is never read: the walk starts at its first child.
+  int top = min(findMSB(max(size.x, size.y) - 1) + 1, shape.top);
+  w.rootLevel = top + 1;
+  w.rootOrigin = (w.regionStart >> top) << top;
+  w.level = top;
+  w.code = 0u;
+  // One node a step (four texels at level 1); once the budget is spent no node
+  // descends, and at most 3 siblings a level remain.
+  w.iterations = w.done ? 0 : budget + 3 * w.rootLevel + 4;
+  return w;
+}
+
+// The walk's next node (none once done). budget: pnTraversalBudget's.
+void pnTraversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
+                         PnTraversalTest test, int leafSide, int leafMode, int budget, int depthSums, ivec2 pixel) {
+  if (w.done) return;
+  int side = 1 << w.level;
+  ivec2 origin = pnTraversalNodeOrigin(w.rootOrigin, side, w.code);
+  ivec2 lo = max(origin, w.regionStart);
+  ivec2 hi = min(origin + side, w.regionEnd);
+  bool descend = false;
+  if (all(lessThan(lo, hi))) {
+    bool spent = w.r.nodes + 1 >= budget;
+    if (side <= leafSide || spent) {
+      pnTraversalVisitLeafPart(w.r, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums, pixel);
+    } else {
+      vec2 range;
+      if (pnTraversalClassifyPart(w.r, mip, shape, w.level, origin, lo, hi, test, depthSums, range)) {
+        if (side == 2) {
+          // Texels: never ambiguous, so classified here, four at a time and
+          // without a sampling loop: with leaf children visited inline (as
+          // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
+          // iterations per invocation ended the exact (leaf 1) traversal of
+          // a 256² fine checker early; one sampling site a step does not.
+          pnTraversalVisitTexels(w.r, mip, shape, origin, w.regionStart, w.regionEnd, test, depthSums);
+        } else {
+          descend = true;
+        }
+      }
+    }
+  } else {
+    w.r.nodes += 1;  // outside the region: visited, nothing to read
+  }
+  // The virtual root's four children done: the walk is over.
+  w.done = pnTraversalNext(w.level, w.code, descend, w.rootLevel);
+}
+
 PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int mapSize,
                                      ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias,
                                      int leafSide, int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
-  ivec2 regionStart, regionEnd;
-  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, textureSize(mip, 0).y), regionStart,
-                                   regionEnd);
-  ivec2 size = regionEnd - regionStart;
+  PnMipShape shape = pnMipShape(mip);
   PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
-  if (isnan(test.threshold) || r.texels == 0.0) return r;
-
-  // The 2×2 aligned nodes of level `top` at the region's aligned corner cover
-  // it (side <= 2^top); they are the children of a virtual root one level up,
-  // which is never read: the loop starts at its first child.
-  int top = min(findMSB(max(size.x, size.y) - 1) + 1, pnMipMaxLevel(mip));
-  int rootLevel = top + 1;
-  ivec2 rootOrigin = (regionStart >> top) << top;
-  int budget = clamp(nodeBudget, 1, PN_TRAVERSAL_NO_BUDGET);
-  int level = top;
-  uint code = 0u;
-  // One node a step (four texels at level 1); once the budget is spent no node
-  // descends, and at most 3 siblings a level remain.
-  int iterations = budget + 3 * rootLevel + 4;
-  for (int it = 0; it < iterations; ++it) {
-    int side = 1 << level;
-    ivec2 origin = pnTraversalNodeOrigin(rootOrigin, side, code);
-    ivec2 lo = max(origin, regionStart);
-    ivec2 hi = min(origin + side, regionEnd);
-    bool descend = false;
-    if (all(lessThan(lo, hi))) {
-      bool spent = r.nodes + 1 >= budget;
-      if (side <= leafSide || spent) {
-        pnTraversalVisitLeafPart(r, mip, sampleTable, level, origin, lo, hi, test, leafMode, depthSums, pixel);
-      } else {
-        vec2 range;
-        if (pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) {
-          int h = side >> 1;
-          if (h == 1) {
-            // Texels: never ambiguous, so classified here, four at a time and
-            // without a sampling loop: with leaf children visited inline (as
-            // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
-            // iterations per invocation ended the exact (leaf 1) traversal of
-            // a 256² fine checker early; one sampling site a step does not.
-            pnTraversalVisitTexels(r, mip, origin, regionStart, regionEnd, test, depthSums);
-          } else {
-            descend = true;
-          }
-        }
-      }
-    } else {
-      r.nodes += 1;  // outside the region: visited, nothing to read
-    }
-    if (pnTraversalNext(level, code, descend, rootLevel)) break;  // the virtual root's four children are done
+  int budget = pnTraversalBudget(nodeBudget);
+  PnTraversalWalk w = pnTraversalWalkBegin(shape, mapSize, regionOrigin, regionSize, test, budget);
+  for (int it = 0; it < w.iterations; ++it) {
+    if (w.done) break;
+    pnTraversalWalkStep(w, mip, shape, sampleTable, test, leafSide, leafMode, budget, depthSums, pixel);
   }
-  return r;
+  return w.r;
 }
 
 // The same region counted with bounded work: the aligned nodes of the level
@@ -561,14 +592,15 @@ PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int m
 PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
                             ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
                             int leafMode, int depthSums, ivec2 pixel) {
+  PnMipShape shape = pnMipShape(mip);
   ivec2 start, end;
-  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, textureSize(mip, 0).y), start, end);
+  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), start, end);
   ivec2 size = end - start;
   PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
   if (isnan(test.threshold) || r.texels == 0.0) return r;
   int cells = clamp(grid, 1, PN_GRID_MAX_CELLS);
   int cell = max(1, (max(size.x, size.y) + cells - 1) / cells);
-  int level = min(findMSB(cell - 1) + 1, pnMipMaxLevel(mip));  // ceil(log2 cell)
+  int level = min(findMSB(cell - 1) + 1, shape.top);  // ceil(log2 cell)
   int side = 1 << level;
   ivec2 first = start >> level;
   ivec2 count = ((end - 1) >> level) - first + 1;  // <= cells + 1 a side
@@ -588,7 +620,7 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
       ivec2 origin = (first + ivec2(i, j)) << level;
       ivec2 lo = max(origin, start), hi = min(origin + side, end);
       vec2 range;
-      if (!pnTraversalClassifyPart(r, mip, level, origin, lo, hi, test, depthSums, range)) continue;
+      if (!pnTraversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) continue;
       if (leafMode != PN_LEAF_SAMPLED) {
         pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float((hi.x - lo.x) * (hi.y - lo.y)),
                                 pnTraversalTestAtCentre(test, lo, hi));
@@ -597,7 +629,7 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
         for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
           if (g >= m) break;
           for (int i = g; i < g + 4; ++i) {  // constant trip count: unrolled
-            if (i < m) pnTraversalSampleAt(occluding, depthSum, r, mip, positions[i], lo, hi - lo, test);
+            if (i < m) pnTraversalSampleAt(occluding, depthSum, r, mip, shape, positions[i], lo, hi - lo, test);
           }
         }
         pnTraversalAddSampled(r, hi - lo, occluding, depthSum, m);

@@ -61,6 +61,9 @@
 // cost: per sample one texelFetch, a sqrt, a sin and a cos and ~12 ALU
 //   operations; blockerSamples + filterSamples fetches per shadowed receiver,
 //   blockerSamples per lit one, whatever the penumbra's width.
+//
+// isa budget: vgprs 16, instructions 900, code 5120, scratch 0
+//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_VOGEL_PCSS_GLSL
 #define PENUMBRA_VOGEL_PCSS_GLSL

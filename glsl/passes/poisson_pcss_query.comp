@@ -51,13 +51,6 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   int count = int(b.y);
-  PnPoisson s;
-  if (pnParams.inPlace != 0) {
-    s = pnPoissonOcclusionDisk(pnDepthMap, a.xy, a.z, a.w, b.x, count, b.zw);
-  } else {
-    vec2 points[PN_POISSON_MAX_SAMPLES];
-    for (int i = 0; i < PN_POISSON_MAX_SAMPLES; ++i) points[i] = pnParams.points[i];
-    s = pnPoissonOcclusion(pnDepthMap, a.xy, a.z, a.w, b.x, points, count, b.zw);
-  }
+  PnPoisson s = pnPoissonOcclusionDisk(pnDepthMap, a.xy, a.z, a.w, b.x, count, b.zw);
   imageStore(pnResult, p, vec4(s.occluders, s.depthSum, s.samples, 0.0));
 }

@@ -13,11 +13,10 @@
 #define PN_POISSON_QUERY_RESULT_IMAGE 3  // image2D, rgba32f: (occluders, depth sum, samples, 0)
 #define PN_POISSON_QUERY_PARAMS_BINDING 4
 
-// A disk; inPlace != 0 reads it in place (pnPoissonOcclusionDisk), else it is
-// copied into a parameter array (pnPoissonOcclusion).
+// A disk, read in place (pnPoissonOcclusionDisk) when the pass is compiled with
+// PN_QUERY_DISK_IN_BLOCK.
 PN_UNIFORM_BLOCK(PnPoissonQueryParams, PN_POISSON_QUERY_PARAMS_BINDING)
   PN_VEC2_ARRAY(points, PN_POISSON_MAX_SAMPLES)
-  int inPlace;
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_POISSON_PCSS_QUERY_H

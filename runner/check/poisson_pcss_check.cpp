@@ -5,11 +5,10 @@
 // map, straddling an edge or a corner, and wholly outside; rotation off
 // ((1, 0)) and on (a seeded angle per query); receivers at the centre texel's
 // depth (bias 0: a texel equal to dP - bias must not occlude), random with
-// bias 0.01, above and below every depth, NaN and +Inf. Three disks:
-// - the pipeline's 64-point PCF disk as a parameter array (vec2
-//   points[PN_POISSON_MAX_SAMPLES], pnPoissonOcclusion) and read in place from a
-//   uniform block (PN_POISSON_DISK_ARRAY, pnPoissonOcclusionDisk, what
-//   pcss_poisson.comp does): counts 1, 16, 36, 64 and the clamped 0, 70, -3;
+// bias 0.01, above and below every depth, NaN and +Inf. Two disks:
+// - the pipeline's 64-point PCF disk read in place from a uniform block
+//   (PN_POISSON_DISK_ARRAY, pnPoissonOcclusionDisk, what pcss_poisson.comp
+//   does): counts 1, 16, 36, 64 and the clamped 0, 70, -3;
 // - the constant array pasted into the pass from `penumbra poisson --count 16
 //   --seed 1`, read in place (pnPoissonOcclusionDisk): counts 1, 9, 16 and the
 //   clamped 0, 40 — which also checks that the pasted text is the generator's disk.
@@ -40,7 +39,7 @@ namespace pn {
 namespace {
 
 constexpr int kMapSize = 257;
-constexpr std::uint32_t kParameterDiskSeed = 0x5eed0064u;  // the pipeline's PCF disk
+constexpr std::uint32_t kBlockDiskSeed = 0x5eed0064u;  // the pipeline's PCF disk
 
 // Whether float rounding may change which texel a sample reads, or how a read texel compares.
 bool ambiguous(const Image& map, const std::vector<Sample>& points, const PoissonPcssQuery& q) {
@@ -70,7 +69,7 @@ OcclusionSums sums(const PoissonPcssGpuResult& s) { return {s.occluders, s.depth
 
 std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
   const PoissonPcssQueryPass pass(env.device, env.tree);
-  const std::vector<Sample> parameter_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, kParameterDiskSeed).points;
+  const std::vector<Sample> block_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, kBlockDiskSeed).points;
   const std::vector<Sample> const_disk = poisson_disk(kPoissonQueryConstCount, kPoissonQueryConstSeed).points;
   std::vector<CaseResult> results;
   long queries_total = 0, left_out_total = 0;
@@ -85,9 +84,9 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
     const std::string label = std::string(fixture.name) + " " + std::to_string(kMapSize) + "x" + std::to_string(kMapSize);
 
     for (const PoissonDiskSource source :
-         {PoissonDiskSource::parameter, PoissonDiskSource::block, PoissonDiskSource::constant}) {
+         {PoissonDiskSource::block, PoissonDiskSource::constant}) {
       const bool constant = source == PoissonDiskSource::constant;
-      const std::vector<Sample>& points = constant ? const_disk : parameter_disk;
+      const std::vector<Sample>& points = constant ? const_disk : block_disk;
       const std::vector<int> counts = constant ? std::vector<int>{1, 9, 16, 0, 40}
                                                : std::vector<int>{1, 16, 36, PN_POISSON_MAX_SAMPLES, 0,
                                                                   PN_POISSON_MAX_SAMPLES + 6, -3};
@@ -125,7 +124,7 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
               gpu.push_back({x, y, diameter, receiver, bias, count, rx, ry});
               cpu.push_back({x, y, diameter, receiver, bias, count, rx, ry});
             }
-      const std::vector<PoissonPcssGpuResult> observed = pass.run(texture, parameter_disk, source, gpu);
+      const std::vector<PoissonPcssGpuResult> observed = pass.run(texture, block_disk, source, gpu);
       OcclusionBatch groups[2];  // rotation off, on
       for (size_t k = 0; k < cpu.size(); ++k) {
         OcclusionBatch& g = groups[cpu[k].rotation_y != 0.0 || cpu[k].rotation_x != 1.0 ? 1 : 0];
@@ -139,8 +138,7 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
       queries_total += static_cast<long>(cpu.size());
       left_out_total += groups[0].left_out + groups[1].left_out;
       const std::string disk = constant ? " constant disk (16 in place, pnPoissonOcclusionDisk)"
-                               : source == PoissonDiskSource::block ? " block disk (64 in place, pnPoissonOcclusionDisk)"
-                                                                    : " parameter disk (64, pnPoissonOcclusion)";
+                                        : " block disk (64 in place, pnPoissonOcclusionDisk)";
       add_occlusion_cases(results, label + disk + ", rotation off", groups[0], "samples", "a sample on a texel edge or a tie");
       add_occlusion_cases(results, label + disk + ", rotation on", groups[1], "samples", "a sample on a texel edge or a tie");
     }

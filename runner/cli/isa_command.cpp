@@ -66,6 +66,7 @@ void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     for (const std::string& name : opt->only)
       if (std::none_of(entries.begin(), entries.end(), [&](const IsaEntry& e) { return e.name == name; }))
         throw Error("--only '" + name + "': no entry of that name among the kinds asked for");
+    const IsaBudgets budgets = opt->budgets ? read_budgets(tree, entries) : IsaBudgets{};
     const GlslangProcess glslang;
     const std::vector<IsaProgram> programs = compile_isa_programs(glslang, tree, entries);
     std::cerr << "isa: " << programs.size() << " shaders on " << targets.size() << " targets\n";
@@ -82,7 +83,7 @@ void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     if (opt->budgets) {
       for (const IsaTargetResult& r : results) {
         if (r.target.family != kBudgetFamily || r.target.wave != kBudgetWave) continue;
-        const std::vector<std::string> breaches = budget_breaches(tree, programs, r);
+        const std::vector<std::string> breaches = budget_breaches(budgets, programs, r);
         for (const std::string& b : breaches) std::cout << "isa: over budget: " << b << "\n";
         std::cout << "isa: budgets (" << kBudgetFamily << " wave" << kBudgetWave << "): "
                   << (breaches.empty() ? "every entry within" : std::to_string(breaches.size()) + " breaches") << "\n";

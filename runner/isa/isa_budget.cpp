@@ -1,7 +1,6 @@
 #include "isa/isa_budget.h"
 
 #include <fstream>
-#include <map>
 #include <sstream>
 
 #include "core/error.h"
@@ -37,6 +36,7 @@ std::optional<IsaBudget> read_budget(const SourceTree& tree, const std::string& 
     IsaBudget b{module, file, number, {}};
     std::istringstream items(line.substr(std::string(kMarker).size()));
     for (std::string item; std::getline(items, item, ',');) {
+      item.erase(0, item.find_first_not_of(' '));
       std::istringstream kv(item);
       std::string key, value, rest;
       kv >> key >> value >> rest;
@@ -53,10 +53,16 @@ std::optional<IsaBudget> read_budget(const SourceTree& tree, const std::string& 
   return std::nullopt;
 }
 
-std::vector<std::string> budget_breaches(const SourceTree& tree, const std::vector<IsaProgram>& programs,
+IsaBudgets read_budgets(const SourceTree& tree, const std::vector<IsaEntry>& entries) {
+  IsaBudgets out;
+  for (const IsaEntry& e : entries)
+    if (!e.module.empty() && !out.count(e.module)) out[e.module] = read_budget(tree, e.module);
+  return out;
+}
+
+std::vector<std::string> budget_breaches(const IsaBudgets& budgets, const std::vector<IsaProgram>& programs,
                                          const IsaTargetResult& result) {
   std::vector<std::string> out;
-  std::map<std::string, std::optional<IsaBudget>> budgets;
   for (size_t i = 0; i < programs.size() && i < result.shaders.size(); ++i) {
     const IsaEntry& entry = programs[i].entry;
     const IsaShader& shader = result.shaders[i];
@@ -67,11 +73,8 @@ std::vector<std::string> budget_breaches(const SourceTree& tree, const std::vect
     const ShaderExecutable* own = shader.own(entry.stage);
     if (!own) continue;
     const IsaFigures f = isa_figures(*own, result.target.wave, result.target.family);
-    std::optional<IsaBudget> budget;
-    if (!entry.module.empty()) {
-      if (!budgets.count(entry.module)) budgets[entry.module] = read_budget(tree, entry.module);
-      budget = budgets[entry.module];
-    }
+    const auto found = budgets.find(entry.module);
+    const std::optional<IsaBudget> budget = found == budgets.end() ? std::nullopt : found->second;
     bool scratch_budgeted = false;
     if (budget)
       for (const auto& [key, limit] : budget->limits) {

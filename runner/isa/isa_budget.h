@@ -5,6 +5,7 @@
 // any entry it compiled.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,9 +29,14 @@ struct IsaBudget {
 // line that does not parse (an unknown key, a value that is not a number).
 std::optional<IsaBudget> read_budget(const SourceTree& tree, const std::string& module);
 
+// The budgets of every module an entry of `entries` answers to, by module (nothing for a module
+// without a budget line). Throws as read_budget: read before any compile.
+using IsaBudgets = std::map<std::string, std::optional<IsaBudget>>;
+IsaBudgets read_budgets(const SourceTree& tree, const std::vector<IsaEntry>& entries);
+
 // One line a breach ("fast_pcss engine compute: 3120 instructions > 1500 (fast_pcss.glsl:60)"),
 // for the entries of `result` (which must be navi21 wave64).
-std::vector<std::string> budget_breaches(const SourceTree& tree, const std::vector<IsaProgram>& programs,
+std::vector<std::string> budget_breaches(const IsaBudgets& budgets, const std::vector<IsaProgram>& programs,
                                          const IsaTargetResult& result);
 
 }  // namespace pn

@@ -12,9 +12,8 @@
 
 namespace pn::glsl {
 #include "passes/poisson_pcss_query.h"
-PN_STD140_SIZE(PnPoissonQueryParams, 16 * PN_POISSON_MAX_SAMPLES + 16);
+PN_STD140_SIZE(PnPoissonQueryParams, 16 * PN_POISSON_MAX_SAMPLES);
 PN_STD140_OFFSET(PnPoissonQueryParams, points[1], 16);
-PN_STD140_OFFSET(PnPoissonQueryParams, inPlace, 16 * PN_POISSON_MAX_SAMPLES);
 }  // namespace pn::glsl
 
 namespace pn {
@@ -39,7 +38,6 @@ std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const DeviceTexture&
                 std::to_string(PN_POISSON_MAX_SAMPLES));
   glsl::PnPoissonQueryParams block{};
   for (size_t i = 0; i < points.size(); ++i) block.points[i] = {points[i].x, points[i].y};
-  block.inPlace = source == PoissonDiskSource::parameter ? 0 : 1;
 
   std::vector<Query> a, b;
   for (const PoissonPcssGpuQuery& q : queries) {

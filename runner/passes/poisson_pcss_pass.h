@@ -1,7 +1,6 @@
 // Runner side of glsl/passes/poisson_pcss_query.comp: poisson_pcss.glsl over a
-// batch of disks, the disk as a parameter array, read in place from the pass's
-// uniform block, or read in place from the pass's constant (`penumbra poisson
-// --count 16 --seed 1`, pasted into the pass).
+// batch of disks, the disk read in place from the pass's uniform block, or from the
+// pass's constant (`penumbra poisson --count 16 --seed 1`, pasted into the pass).
 #pragma once
 
 #include <vector>
@@ -14,7 +13,6 @@ namespace pn {
 
 // Where the pass takes its disk from.
 enum class PoissonDiskSource {
-  parameter,  // the block's points copied into vec2 points[PN_POISSON_MAX_SAMPLES] (pnPoissonOcclusion)
   block,      // the block's points in place (PN_POISSON_DISK_ARRAY, pnPoissonOcclusionDisk), as the pipeline
   constant,   // the pasted constant in place (PN_POISSON_DISK_ARRAY, pnPoissonOcclusionDisk)
 };

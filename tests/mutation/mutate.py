@@ -67,7 +67,7 @@ KINDS = ('ret0', 'ret1', 'cmp', 'const')
 # The techniques' one calls an engine makes (issue 39's false PASSes) and a few parts of modules
 # whose own checks are short.
 QUICK_CALLS = ('pnPcf', 'pnPoissonPcss', 'pnVogelPcss', 'pnFastPcss', 'pnBackprojection', 'pnSavsm', 'pnVsm',
-               'pnPoissonOcclusion', 'pnReceiverPlaneGradient', 'pnBlur1DVec4')
+               'pnPoissonOcclusionDisk', 'pnReceiverPlaneGradient', 'pnBlur1DVec4')
 
 SCALARS = {'float': '0.0', 'int': '0', 'uint': '0u', 'bool': 'false', 'double': '0.0lf'}
 ONES = {'float': '1.0', 'bool': 'true'}

@@ -1,0 +1,61 @@
+#!/bin/sh
+# isa_budgets.sh PENUMBRA GLSL_DIR SCRATCH
+# `penumbra isa --budgets` on RDNA 2 wave64 (Mesa's RADV on its null device: no GPU): every
+# technique's call as an engine compiles it within the budget its module's header writes, and no
+# entry (engine calls, the runner's technique passes, every pass) uses scratch. Then three copies
+# of GLSL_DIR that must fail: Fast PCSS's call keeping a local array (scratch), its budget line
+# lowered below what it takes, and a budget line that does not parse.
+set -u
+penumbra=$1 glsl=$2 scratch=$3
+rm -rf "$scratch" && mkdir -p "$scratch" || exit 1
+out=$("$penumbra" isa --families navi21 --waves 64 --budgets --json "$scratch/isa.json" 2>&1)
+status=$?
+printf '%s\n' "$out" | grep "isa: \(budgets\|over budget\)"
+[ "$status" -eq 0 ] || { printf '%s\n' "$out" | tail -5; echo "expected exit 0 on the library, got $status"; exit 1; }
+python3 - "$scratch/isa.json" <<'PY' || exit 1
+import json, sys
+j = json.load(open(sys.argv[1]))
+t = j["targets"][0]
+assert t["family"] == "navi21" and t["wave"] == 64 and "NAVI21" in t["device"], t["device"]
+kinds = {(s["name"], s["kind"], s["stage"]) for s in t["shaders"]}
+for need in [("fast_pcss", "engine", "compute"), ("fast_pcss", "engine", "fragment"), ("fast", "runner", "compute"),
+             ("poisson_pcss", "engine", "compute"), ("passes/blur.comp", "pass", "compute")]:
+    assert need in kinds, need
+for s in t["shaders"]:
+    f = s["figures"]
+    assert f["vgprs"] > 0 and f["instructions"] > 0 and f["code_bytes"] > 0, s["name"]
+    assert f["scratch_bytes"] == 0, s["name"]
+print("isa json: %d shaders, every one with registers, instructions and code, none with scratch" % len(t["shaders"]))
+PY
+
+copy="$scratch/glsl"
+# Fast PCSS's call keeps a local array indexed per pixel: scratch memory.
+cp -r "$glsl" "$copy" || exit 1
+perl -0pi -e 's/(float pnFastPcss\(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,\n\s*PnFastPcssSettings settings\) \{\n)/$1  float kept[256];\n  for (int i = 0; i < 256; ++i) kept[i] = receiver.z * float(i);\n  if (kept[(pixel.x * 7 + pixel.y) & 255] < 0.0) return 0.5;\n/' "$copy/fast_pcss.glsl"
+grep -q "float kept\[256\]" "$copy/fast_pcss.glsl" || { echo "could not put the local array into the copy"; exit 1; }
+out=$("$penumbra" isa --families navi21 --waves 64 --kinds engine --only fast_pcss --budgets --glsl-root "$copy" 2>&1)
+status=$?
+printf '%s\n' "$out" | grep "isa: \(budgets\|over budget\)"
+[ "$status" -eq 1 ] || { echo "expected exit 1 on the copy with a local array, got $status"; exit 1; }
+printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine compute: [0-9]* scratch > 0 (fast_pcss.glsl:" ||
+  { echo "no line naming Fast PCSS's scratch and its budget"; exit 1; }
+
+# The budget lowered below what the call takes.
+rm -rf "$copy" && cp -r "$glsl" "$copy" || exit 1
+perl -pi -e 's/^(\/\/ isa budget: vgprs \d+, instructions )\d+/${1}100/' "$copy/fast_pcss.glsl"
+out=$("$penumbra" isa --families navi21 --waves 64 --kinds engine --only fast_pcss --budgets --glsl-root "$copy" 2>&1)
+status=$?
+[ "$status" -eq 1 ] || { echo "expected exit 1 with the budget at 100 instructions, got $status"; exit 1; }
+printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine fragment: [0-9]* instructions > 100" ||
+  { echo "no line naming the instructions over budget"; exit 1; }
+
+# A budget line that does not parse: a bad-input error naming the line.
+rm -rf "$copy" && cp -r "$glsl" "$copy" || exit 1
+perl -pi -e 's/^\/\/ isa budget: vgprs \d+/\/\/ isa budget: vgprs lots/' "$copy/fast_pcss.glsl"
+out=$("$penumbra" isa --families navi21 --waves 64 --kinds engine --only fast_pcss --budgets --glsl-root "$copy" 2>&1)
+status=$?
+[ "$status" -eq 2 ] || { echo "expected exit 2 for an unreadable budget line, got $status"; exit 1; }
+printf '%s\n' "$out" | grep -q "fast_pcss.glsl:[0-9]*: isa budget item 'vgprs lots'" ||
+  { printf '%s\n' "$out"; echo "no line naming the unreadable budget item"; exit 1; }
+rm -rf "$scratch"
+echo "isa budgets: the library within; a local array, a lowered budget and a bad budget line caught"
