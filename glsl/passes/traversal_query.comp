@@ -32,8 +32,8 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   vec4 e = texelFetch(pnQueryE, p, 0);
-  // The leaf side as Fast PCSS and HQEPCSS take it (no divisor: the block's side itself).
-  int leafSide = pnTraversalLeafSide(pnParams.leafSide, 0, ivec2(a.zw));
+  // The leaf side as Fast PCSS and HQEPCSS take it (divisor 0: the block's side itself).
+  int leafSide = pnTraversalLeafSide(pnParams.leafSide, pnParams.leafDivisor, ivec2(a.zw));
   PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP && pnParams.grid > 0)
       ? pnGridRegionMip(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
                         pnParams.bias, pnParams.grid, leafSide, pnParams.leafMode, pnParams.depthSums,

@@ -29,6 +29,10 @@ PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   int depthSums;     // the mip chain's traversal: PN_DEPTH_SUMS_* (traversal.h)
   int mapSize;       // the mip chain's map side N
   int grid;          // the mip chain: > 0: pnGridRegionMip with this many cells a side
+  int leafDivisor;   // pnTraversalLeafSide's: the leaf side at least the region's longer side / this (0: off)
+  int pad0;          // the block a whole number of 16-byte rows
+  int pad1;
+  int pad2;
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_TRAVERSAL_QUERY_H

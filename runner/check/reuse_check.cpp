@@ -1,5 +1,5 @@
 // Cases of the reuse check: on seeded region maps (smooth fields with steps,
-// zeros and NaN entries) of several sizes, for tiles 2, 4, 8 and several
+// zeros and NaN entries) of several sizes, for tiles 1 (no reuse), 2, 4, 8 and several
 // sigmas, the GPU's parent codes, representatives and gathered values equal
 // the CPU reference (explicit parent pointers and root finding) exactly, and
 // no group crosses a tile. The fraction of representatives is in each name.
@@ -53,7 +53,8 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
     const std::unique_ptr<DeviceTexture> entry_texture = env.device.upload(entries);
     const std::unique_ptr<DeviceTexture> value_texture = env.device.upload(values);
     for (ReuseParams params : {ReuseParams{0.0f, 0.1f, 0.1f, 4}, ReuseParams{0.0f, 0.1f, 0.1f, 2},
-                               ReuseParams{0.0f, 0.1f, 0.1f, 8}, ReuseParams{0.0f, 0.0f, 0.0f, 4},
+                               ReuseParams{0.0f, 0.1f, 0.1f, 8}, ReuseParams{0.0f, 0.1f, 0.1f, 1},
+                               ReuseParams{0.0f, 0.0f, 0.0f, 4},
                                ReuseParams{0.5f, 0.3f, 0.3f, 4}}) {
       const std::unique_ptr<DeviceTexture> parents = pass.link(*entry_texture, size.w, size.h, params);
       const std::unique_ptr<DeviceTexture> gathered = pass.gather(*parents, *value_texture, size.w, size.h, params.tile);
@@ -87,6 +88,16 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
                          compare(channels_of(expected, 0, 3), channels_of(observed, 0, 3), exact)});
       results.push_back({name + ": no group crosses a tile", exact, compare(same_tile, observed_same_tile, exact)});
     }
+    // Tile 1 over links made for tile 2: a group is one pixel whatever the links say (the walk
+    // takes 2 (k - 1) = 0 steps), so every pixel is its own representative.
+    const std::unique_ptr<DeviceTexture> pairs = pass.link(*entry_texture, size.w, size.h, ReuseParams{0.0f, 0.1f, 0.1f, 2});
+    const Image alone = env.device.read_texture(*pass.gather(*pairs, *value_texture, size.w, size.h, 1));
+    Image own(size.w, size.h, 3);
+    for (int y = 0; y < size.h; ++y)
+      for (int x = 0; x < size.w; ++x) own.at(x, y, 0) = float(x), own.at(x, y, 1) = float(y), own.at(x, y, 2) = values.at(x, y);
+    results.push_back({std::to_string(size.w) + "x" + std::to_string(size.h) +
+                           " k=1 over k=2 links: every pixel its own representative", exact,
+                       compare(own, channels_of(alone, 0, 3), exact)});
   }
   return results;
 }

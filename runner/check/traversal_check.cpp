@@ -249,6 +249,25 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
                          mode == LeafMode::ramp);
         }
 
+    // The leaf side from the region (pnTraversalLeafSide's divisor, Fast PCSS's `leafDivisor`): the
+    // recursion with the side the definition gives, max(leaf, the region's longer side / divisor).
+    for (const Structure& st : structures)
+      for (int divisor : {1, 4}) {
+        TraversalSettings s;
+        s.leaf_side = 2, s.leaf_divisor = divisor, s.bias = 0.001f;
+        std::vector<TraversalResult> expected;
+        for (const TraversalQuery& q : leaf_queries) {
+          TraversalSettings own = s;
+          own.leaf_side = std::max(s.leaf_side, std::max(q.region.width, q.region.height) / divisor);
+          expected.push_back(recursion(st, scene, {q}, own)[0]);
+        }
+        const auto observed = observe(st, scene, leaf_queries, s);
+        add_comparison(results,
+                       label + st.label + " sampled leaves of side max(2, the region's side / " +
+                           std::to_string(divisor) + "):",
+                       scene, expected, observed, expected, true, true, false);
+      }
+
     // The grid (pnGridRegionMip) over the mip chain: against the CPU's grid with the same decisions and
     // samples, and with grid >= the region's side (texels) against brute force.
     for (int grid : {1, 4, 16})

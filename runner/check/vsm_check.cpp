@@ -27,6 +27,7 @@
 //                  front of and behind each (bias 0), against a brute-force scan.
 //   visibility     the module's pnVsmVisibility / pnEvsmVisibility2/4: the
 //                  decision where it decides (exact), else the reduced bound.
+// VSM again at radius 0 (no blur, the bound over the texel alone) on the noise and step-edge maps.
 // Light bleeding on kTwoOccluders (receivers on the plane behind both
 // occluders, every texel): the exact Gaussian-weighted PCF visibility over the
 // blur's window by brute force, and the mean light in excess of it, for the
@@ -257,6 +258,12 @@ std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env) {
     for (const Map& map : all) map_cases(gpu, map, params, results);
     bleeding_cases(gpu, params, results);
   }
+  // Radius 0 (no blur; the depth-range bound over the receiver's texel alone: `vsm:radius=0`, the
+  // cascades bench's configuration), VSM on the noise and step-edge maps.
+  VsmParams unblurred = params_for(VsmKind::vsm);
+  unblurred.blur.radius = 0;
+  for (const Map& map : all)
+    if (map.name.rfind("noise ", 0) == 0 || map.name.rfind("step_edge ", 0) == 0) map_cases(gpu, map, unblurred, results);
   return results;
 }
 

@@ -7,7 +7,8 @@
 namespace pn::glsl {
 #include "passes/traversal_query.h"
 #include "passes/window_scan.h"
-PN_STD140_SIZE(PnTraversalQueryParams, 32);
+PN_STD140_SIZE(PnTraversalQueryParams, 48);
+PN_STD140_OFFSET(PnTraversalQueryParams, leafDivisor, 32);
 PN_STD140_OFFSET(PnTraversalQueryParams, mapSize, 24);
 PN_STD140_OFFSET(PnTraversalQueryParams, grid, 28);
 PN_STD140_OFFSET(PnTraversalQueryParams, leafSide, 4);
@@ -69,7 +70,11 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const DeviceTe
                                            mip ? PN_STRUCTURE_MIP : PN_STRUCTURE_PYRAMID,
                                            static_cast<int>(settings.depth_sums),
                                            mip ? structure.mip->map_size : 0,
-                                           settings.grid};
+                                           settings.grid,
+                                           settings.leaf_divisor,
+                                           0,
+                                           0,
+                                           0};
   query_.dispatch(*batch.batch_,
                   {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? *empty_array_ : *structure.pyramid->texture},
                    {PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? *structure.mip->texture : *empty_2d_},

@@ -33,6 +33,7 @@ struct TraversalSettings {
   int node_budget = PN_TRAVERSAL_NO_BUDGET;
   DepthSums depth_sums = DepthSums::table;  // the mip chain's traversal
   int grid = 0;  // the mip chain: > 0 counts over pnGridRegionMip's grid instead of traversing
+  int leaf_divisor = 0;  // > 0: leaves of at least the region's longer side / this (pnTraversalLeafSide)
 };
 
 // What a traversal reads: the decreased pyramid, or the aligned mip chain
