@@ -17,6 +17,7 @@
 //   the rest estimated, never dropped.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,16 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
                                std::to_string(side) + "x" + std::to_string(side) + " samples";
       const Receivers exact = gbuffer_receivers(gbuffer, side, 0.0f, PN_BACKPROJECTION_MAX_BUDGET);
       const std::vector<BackprojectionResult> got = pass.run(mip, light, exact.queries);
+      if (first && side == 4) {  // receivers with no depth to shade (0, behind the light, +Inf, NaN): lit
+        std::vector<BackprojectionQuery> none;
+        for (const float depth : {0.0f, -0.5f, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()})
+          for (size_t k = 0; k < exact.queries.size(); k += exact.queries.size() / 4 + 1) {
+            none.push_back(exact.queries[k]);
+            none.back().depth = depth;
+          }
+        results.push_back(exact_case(what + ", receivers at depth 0, -0.5, +Inf and NaN", map, light, none,
+                                     pass.run(mip, light, none)));
+      }
       results.push_back(exact_case(what + ", every texel resolved, vs the rays through the map's surface on the CPU", map,
                                    light, exact.queries, got));
       if (&light != &wide.light) continue;
