@@ -40,7 +40,9 @@ void main() {
   int rows = int(b.z);
   PnPcf s;
   if (rows <= 0) {
-    s = pnPcfWindow(pnDepthMap, origin, size, b.x, b.y);
+    // The whole window: every other query through the plane's form with a flat plane (the same sums).
+    s = (p.x % 2 == 1) ? pnPcfWindowPlane(pnDepthMap, origin, size, vec3(vec2(origin), b.x), vec2(0.0), b.y)
+                       : pnPcfWindow(pnDepthMap, origin, size, b.x, b.y);
   } else {
     s = pnPcfZero();
     int height = textureSize(pnDepthMap, 0).y;

@@ -130,8 +130,20 @@ WorstErrors map_cases(const CheckEnvironment& env, const SummedAreaMomentsPass& 
   const int w = map.depth.width, h = map.depth.height;
   const std::vector<MomentsQueryResult> fixed =
       pass.query(pass.build(*texture, w, h, MomentsTableKind::fixed, unit), map.rects);
-  const std::vector<MomentsQueryResult> floating =
-      pass.query(pass.build(*texture, w, h, MomentsTableKind::floating, unit), map.rects);
+  const MomentsTable float_table = pass.build(*texture, w, h, MomentsTableKind::floating, unit);
+  const std::vector<MomentsQueryResult> floating = pass.query(float_table, map.rects);
+  {  // The float table's row 0 and column 0 are the empty prefix, 0: a rectangle's four-corner
+     // difference cancels a constant there, so the queries alone could not tell.
+    const Image table = env.device.read_texture(*float_table.texture);
+    Image border(table.width + table.height, 1, table.channels, 0.0f);
+    for (int x = 0; x < table.width; ++x)
+      for (int c = 0; c < table.channels; ++c) border.at(x, 0, c) = table.at(x, 0, c);
+    for (int y = 0; y < table.height; ++y)
+      for (int c = 0; c < table.channels; ++c) border.at(table.width + y, 0, c) = table.at(0, y, c);
+    results.push_back({map.name + ": float table's row 0 and column 0 (texel k of the row, then of the column) are 0",
+                       Tolerance::exact(),
+                       compare(Image(border.width, 1, border.channels, 0.0f), border, Tolerance::exact())});
+  }
   const SummedAreaMomentsReference reference(map.depth, range, map.bits);
 
   const int n = static_cast<int>(map.rects.size());

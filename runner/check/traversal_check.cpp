@@ -169,11 +169,12 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     // texels within rounding of their own threshold.
     {
       std::vector<TraversalQuery> plane_queries;
-      const float gradients[][2] = {{0.004f, -0.003f}, {-0.03f, 0.02f}, {0.2f, -0.1f}};
+      // (0.5, 0.5): steep, and a gradient with both components equal, as a flat test's (0, 0) has.
+      const float gradients[][2] = {{0.004f, -0.003f}, {-0.03f, 0.02f}, {0.2f, -0.1f}, {0.5f, 0.5f}};
       for (size_t i = 0; i < regions.size(); i += 2) {
         const Rect& r = regions[i];
         const std::vector<float> rs = receivers_for(scene.depth, r);
-        for (size_t g = 0; g < 3; ++g)
+        for (size_t g = 0; g < std::size(gradients); ++g)
           for (size_t k = 1; k < 4; ++k) {  // at the region's min, middle and max: the plane crosses its depths
             if (!std::isfinite(rs[k])) continue;  // a -Inf min: every texel's threshold is -Inf
             TraversalQuery q{r, rs[k], static_cast<int>(plane_queries.size()), 0};
