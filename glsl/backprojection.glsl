@@ -288,14 +288,15 @@ int pnBackprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, f
 
 // The node after `node` in depth-first order once its subtree is done: its next sibling (children
 // in the order (0,0), (1,0), (0,1), (1,1)), else its parent's next, and so on; level top + 1 when
-// none is left.
+// none is left. No loop: the levels to climb are the node's trailing (1, 1) children, the trailing
+// ones of x & y (a loop here would count against llvmpipe's one limit of loop iterations an
+// invocation, which the walk's own steps and walls approach on wide penumbrae).
 ivec3 pnBackprojectionNext(ivec3 node, int top) {
-  for (int level = node.x; level < top; ++level) {
-    if ((node.y & 1) == 0) return ivec3(node.x, node.y + 1, node.z);      // (0, y) -> (1, y)
-    if ((node.z & 1) == 0) return ivec3(node.x, node.y - 1, node.z + 1);  // (1, 0) -> (0, 1)
-    node = ivec3(node.x + 1, node.yz >> 1);                               // (1, 1): up
-  }
-  return ivec3(top + 1, 0, 0);
+  int climb = min(findLSB(~(node.y & node.z)), top - node.x);
+  ivec3 up = ivec3(node.x + climb, node.yz >> climb);
+  if (up.x >= top) return ivec3(top + 1, 0, 0);
+  return (up.y & 1) == 0 ? ivec3(up.x, up.y + 1, up.z)       // (0, y) -> (1, y)
+                         : ivec3(up.x, up.y - 1, up.z + 1);  // (1, 0) -> (0, 1)
 }
 
 PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, float bias,
