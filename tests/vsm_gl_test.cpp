@@ -21,9 +21,10 @@ const pn::ModuleCheck& vsm() { return pn::find_module_check("vsm"); }
 TEST_CASE("vsm moments, blurred moments, Chebyshev, reduction, depth-range bound and bleeding equal the reference") {
   const auto results = pn::test::run_check(vsm(), PENUMBRA_GLSL_DIR);
   // maps (fixtures at 37² and 64², the two-occluder map) × (moments, a blur case a channel, 4 query cases),
-  // for VSM (2 channels), EVSM-2 (2) and EVSM-4 (4); and 3 bleeding cases a kind.
+  // for VSM (2 channels), EVSM-2 (2) and EVSM-4 (4); 3 bleeding cases a kind; and VSM at radius 0
+  // on the noise and step-edge maps (2 sizes each).
   const size_t maps = std::size(pn::fixtures::kTextureFixtures) * 2 + 1;
-  CHECK(results.size() == maps * ((1 + 2 + 4) + (1 + 2 + 4) + (1 + 4 + 4)) + 3 * 3);
+  CHECK(results.size() == maps * ((1 + 2 + 4) + (1 + 2 + 4) + (1 + 4 + 4)) + 3 * 3 + 4 * (1 + 2 + 4));
   pn::test::check_all_pass(results);
 }
 
@@ -50,7 +51,7 @@ TEST_CASE("negative: a copy whose depth-range bound calls a receiver at the wind
     if (named(r, "depth-range bound at")) bound_failures += r.comparison.pass ? 0 : 1;
     else CHECK(r.comparison.pass);  // at t = min, t <= mu: the Chebyshev bound is 1 too
   }
-  CHECK(bound_failures == (std::size(pn::fixtures::kTextureFixtures) * 2 + 1) * 3);
+  CHECK(bound_failures == (std::size(pn::fixtures::kTextureFixtures) * 2 + 1) * 3 + 4);  // + VSM at radius 0
 }
 
 TEST_CASE("negative: a copy with a wrong EVSM warp fails EVSM's moment cases and no VSM case") {
