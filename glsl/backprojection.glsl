@@ -64,7 +64,7 @@
 //   is stackless: no local array); what bounds it in practice is the number of occluding texels whose
 //   segments reach: the penumbra's area in texels.
 //
-// isa budget: vgprs 64, instructions 5600, code 30720, scratch 0
+// isa budget: vgprs 56, instructions 5600, code 30720, scratch 0
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL
