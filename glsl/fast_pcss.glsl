@@ -95,19 +95,16 @@ PnFastPcssSettings pnFastPcssDefaults(float bias) {
                             PN_DEPTH_SUMS_MIDPOINT, PN_FAST_PCSS_GRID);
 }
 
-// One traversal of an entry's region (Step 4 with depth sums, Step 5 without).
-PnTraversal pnFastPcssTraverse(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
-                               PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
+// The bounded-work ablation's count of an entry's region (settings.grid > 0): pnGridRegionMip's
+// grid (Step 4 with depth sums, Step 5 without).
+PnTraversal pnFastPcssGrid(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
+                           PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
-  if (s.grid > 0)
-    return pnGridRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
-                           s.grid, s.leafSide, leafMode, depthSums, pixel);
-  return pnTraverseRegionMipPlane(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane,
-                                  s.bias, pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size), leafMode,
-                                  s.nodeBudget, depthSums, pixel);
+  return pnGridRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
+                         s.grid, s.leafSide, leafMode, depthSums, pixel);
 }
 
-// The walk of an entry's region (pnFastPcssTraverse's, one node a step); its leaf side in `leafSide`.
+// The walk of an entry's region over the chain, one node a step; its leaf side in `leafSide`.
 PnTraversalWalk pnFastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTraversalTest test, PnFastPcssSettings s,
                                out int leafSide) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
@@ -144,12 +141,12 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
 
   int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
   if (s.grid > 0) {  // the bounded-work ablation: two grid passes
-    PnTraversal blockers = pnFastPcssTraverse(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
-                                              s.depthSums, pixel);
+    PnTraversal blockers = pnFastPcssGrid(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
+                                          s.depthSums, pixel);
     pnFastPcssBlockersDone(r, blockers, light, s);
     if (pnEntryLit(r.filterEntry)) return r;
-    pnFastPcssOcclusionDone(r, pnFastPcssTraverse(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
-                                                  PN_DEPTH_SUMS_NONE, pixel));
+    pnFastPcssOcclusionDone(r, pnFastPcssGrid(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
+                                              PN_DEPTH_SUMS_NONE, pixel));
     return r;
   }
   // Step 4 (the blockers, with depth sums) then Step 5 (the occlusion, without) as one loop over
