@@ -72,7 +72,7 @@ std::vector<std::string> budget_breaches(const IsaBudgets& budgets, const std::v
     }
     const ShaderExecutable* own = shader.own(entry.stage);
     if (!own) continue;
-    const IsaFigures f = isa_figures(*own, result.target.wave, result.target.family);
+    const IsaFigures f = isa_figures(*own, result.target.wave, result.min_wave);
     const auto found = budgets.find(entry.module);
     const std::optional<IsaBudget> budget = found == budgets.end() ? std::nullopt : found->second;
     bool scratch_budgeted = false;

@@ -26,7 +26,7 @@ IsaKind parse_isa_kind(const std::string& name) {
 }
 
 std::string IsaEntry::label() const {
-  return name + " " + isa_kind_name(kind) + " " + (stage == Stage::fragment ? "fragment" : "compute");
+  return name + " " + isa_kind_name(kind) + " " + stage_name(stage);
 }
 
 namespace {

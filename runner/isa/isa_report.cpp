@@ -41,13 +41,13 @@ std::string isa_table(const std::vector<IsaProgram>& programs, const IsaTargetRe
   for (size_t i = 0; i < programs.size(); ++i) {
     const IsaEntry& e = programs[i].entry;
     const IsaShader& s = result.shaders[i];
-    out << "| " << e.name << " | " << isa_kind_name(e.kind) << " | " << (e.stage == Stage::fragment ? "fragment" : "compute");
+    out << "| " << e.name << " | " << isa_kind_name(e.kind) << " | " << stage_name(e.stage);
     const ShaderExecutable* own = s.own(e.stage);
     if (!s.error.empty() || !own) {
       out << " | " << (s.error.empty() ? "no executable of its stage" : s.error) << " |||||||||||\n";
       continue;
     }
-    const IsaFigures f = isa_figures(*own, result.target.wave, result.target.family);
+    const IsaFigures f = isa_figures(*own, result.target.wave, result.min_wave);
     out << " | " << number(f.vgprs) << " | " << number(f.sgprs) << " | " << number(f.spilled_vgprs + f.spilled_sgprs)
         << " | " << (f.scratch > 0 ? kb(f.scratch) : "0") << " | " << kb(f.code) << " | " << number(f.instructions)
         << " | " << number(f.branches) << " | " << number(f.image) << " | " << number(f.waves) << " | "
@@ -65,10 +65,10 @@ nlohmann::json isa_json(const std::vector<IsaProgram>& programs, const std::vect
       const IsaEntry& e = programs[i].entry;
       json defines = json::object();
       for (const Define& d : e.defines) defines[d.name] = d.value;
-      json s = {{"name", e.name}, {"kind", isa_kind_name(e.kind)}, {"stage", e.stage == Stage::fragment ? "fragment" : "compute"},
+      json s = {{"name", e.name}, {"kind", isa_kind_name(e.kind)}, {"stage", stage_name(e.stage)},
                 {"file", e.file}, {"defines", defines}, {"error", r.shaders[i].error}};
       if (const ShaderExecutable* own = r.shaders[i].own(e.stage)) {
-        const IsaFigures f = isa_figures(*own, r.target.wave, r.target.family);
+        const IsaFigures f = isa_figures(*own, r.target.wave, r.min_wave);
         s["figures"] = {{"vgprs", f.vgprs}, {"sgprs", f.sgprs}, {"spilled_vgprs", f.spilled_vgprs},
                         {"spilled_sgprs", f.spilled_sgprs}, {"scratch_bytes", f.scratch}, {"code_bytes", f.code},
                         {"instructions", f.instructions}, {"branches", f.branches}, {"image_instructions", f.image},

@@ -28,8 +28,11 @@ std::vector<std::uint32_t> spirv_of(const GlslangProcess& glslang, const SourceT
   return r.spirv;
 }
 
-const char* stage_name(Stage s) { return s == Stage::fragment ? "fragment" : s == Stage::vertex ? "vertex" : "compute"; }
-Stage stage_named(const std::string& s) { return s == "fragment" ? Stage::fragment : s == "vertex" ? Stage::vertex : Stage::compute; }
+Stage stage_named(const std::string& name) {
+  for (Stage s : {Stage::vertex, Stage::fragment})
+    if (name == stage_name(s)) return s;
+  return Stage::compute;
+}
 
 json executable_json(const ShaderExecutable& e) {
   json stats = json::array();
@@ -93,6 +96,7 @@ IsaTargetResult read_child(const RadvTarget& target, const std::string& file, in
       r.error = j["error"].get<std::string>();
     } else {
       r.device = j["device"].get<std::string>();
+      r.min_wave = j["min_wave"].get<int>();
       for (const json& s : j["shaders"]) {
         IsaShader shader;
         shader.error = s["error"].get<std::string>();
@@ -145,7 +149,7 @@ const ShaderExecutable* IsaShader::own(Stage stage) const {
   return nullptr;
 }
 
-IsaFigures isa_figures(const ShaderExecutable& e, int wave, const std::string& family) {
+IsaFigures isa_figures(const ShaderExecutable& e, int wave, int min_wave) {
   IsaFigures f;
   const auto stat = [&](const char* name) { return std::max(0.0, e.statistic(name)); };
   f.vgprs = stat("VGPRs");
@@ -159,9 +163,7 @@ IsaFigures isa_figures(const ShaderExecutable& e, int wave, const std::string& f
   f.latency = stat("Latency");
   f.throughput = stat("Inverse Throughput");
   // RADV counts subgroups per SIMD in wave32 units on gfx10 and later: a wave64 is two.
-  const bool rdna = !(family.rfind("polaris", 0) == 0 || family.rfind("vega", 0) == 0 || family.rfind("tonga", 0) == 0 ||
-                      family.rfind("fiji", 0) == 0 || family.rfind("raven", 0) == 0 || family.rfind("renoir", 0) == 0);
-  f.waves = stat("Subgroups per SIMD") / (rdna && wave == 64 ? 2.0 : 1.0);
+  f.waves = stat("Subgroups per SIMD") / (min_wave == 32 && wave == 64 ? 2.0 : 1.0);
   std::istringstream isa(e.isa);
   for (std::string line; std::getline(isa, line);) {
     const size_t start = line.find_first_not_of(" \t");

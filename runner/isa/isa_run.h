@@ -31,8 +31,9 @@ struct IsaFigures {
          branches = 0, image = 0, latency = 0, throughput = 0, waves = 0;
 };
 // `e`'s figures: the driver's statistics, image instructions counted in its ISA, and waves per
-// SIMD in waves of `wave` lanes (RADV counts gfx10+ subgroups in wave32 units).
-IsaFigures isa_figures(const ShaderExecutable& e, int wave, const std::string& family);
+// SIMD in waves of `wave` lanes (RADV counts subgroups in wave32 units on a device with wave32,
+// `min_wave` 32: gfx10 and later).
+IsaFigures isa_figures(const ShaderExecutable& e, int wave, int min_wave);
 
 struct IsaShader {
   std::string error;                        // the pipeline did not compile ("" when it did)
@@ -45,6 +46,7 @@ struct IsaShader {
 struct IsaTargetResult {
   RadvTarget target;
   std::string device;                 // "Null hardware (RADV NAVI21)"
+  int min_wave = 64;                  // the device's least subgroup size (RadvNullDevice::min_wave)
   std::string error;                  // the target did not run at all ("" when it did)
   std::vector<IsaShader> shaders;     // one an entry, in the programs' order
 };

@@ -2,14 +2,13 @@
 
 #include <vulkan/vulkan.h>
 
-#include <algorithm>
 #include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
 
 #include "core/error.h"
-#include "shader/spirv_cross.h"
+#include "vk/vulkan_pipeline_parts.h"
 
 // Vulkan's create-info structs are written {sType} with the rest zero, as the API means them.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -49,24 +48,6 @@ double ShaderExecutable::statistic(const std::string& wanted) const {
 
 namespace {
 
-void vk_check(VkResult result, const std::string& what) {
-  if (result != VK_SUCCESS)
-    throw Error("the RADV null device: " + what + " failed (VkResult " + std::to_string(static_cast<int>(result)) + ")",
-                ExitCode::failed);
-}
-
-VkDescriptorType descriptor_type(DescriptorKind kind) {
-  switch (kind) {
-    case DescriptorKind::combined_image_sampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    case DescriptorKind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-    case DescriptorKind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
-    case DescriptorKind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    case DescriptorKind::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    case DescriptorKind::storage_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  }
-  return VK_DESCRIPTOR_TYPE_MAX_ENUM;
-}
-
 // A Vulkan handle destroyed by `destroy` when it goes.
 template <typename Handle>
 class Owned {
@@ -104,31 +85,14 @@ struct RadvNullDevice::State {
     if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
   }
 
-  VkShaderModule module(const std::vector<std::uint32_t>& spirv, const std::string& name) const {
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = spirv.size() * sizeof(std::uint32_t);
-    info.pCode = spirv.data();
-    VkShaderModule m = VK_NULL_HANDLE;
-    vk_check(vkCreateShaderModule(device, &info, nullptr, &m), name + ": a shader module");
-    return m;
-  }
-
-  // The set layout every stage's resources need (set 0, one binding each, merged across stages).
-  VkDescriptorSetLayout set_layout(const std::vector<std::pair<const std::vector<std::uint32_t>*, VkShaderStageFlags>>& stages,
-                                   const std::string& name) const {
-    std::vector<VkDescriptorSetLayoutBinding> layout;
-    for (const auto& [spirv, stage] : stages)
-      for (const SpirvBinding& b : reflect_spirv(*spirv, true).bindings) {
-        const auto same = std::find_if(layout.begin(), layout.end(), [&](const auto& l) { return l.binding == b.binding; });
-        if (same != layout.end()) {
-          same->stageFlags |= stage;
-          continue;
-        }
-        layout.push_back({b.binding, descriptor_type(b.kind), 1, stage, nullptr});
-      }
+  // The set layout every stage's resources need (vk/vulkan_pipeline_parts.h).
+  VkDescriptorSetLayout set_layout(
+      const std::vector<std::pair<const std::vector<std::uint32_t>*, VkShaderStageFlagBits>>& stages,
+      const std::string& name) const {
+    const SetLayoutBindings set = set_layout_bindings(stages, name);
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    info.bindingCount = static_cast<uint32_t>(layout.size());
-    info.pBindings = layout.data();
+    info.bindingCount = static_cast<uint32_t>(set.layout.size());
+    info.pBindings = set.layout.data();
     VkDescriptorSetLayout l = VK_NULL_HANDLE;
     vk_check(vkCreateDescriptorSetLayout(device, &info, nullptr, &l), name + ": a set layout");
     return l;
@@ -195,7 +159,7 @@ RadvNullDevice::RadvNullDevice() : s_(std::make_unique<State>()) {
   app.apiVersion = VK_API_VERSION_1_1;
   VkInstanceCreateInfo instance_info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   instance_info.pApplicationInfo = &app;
-  vk_check(vkCreateInstance(&instance_info, nullptr, &s_->instance), "vkCreateInstance");
+  vk_check(vkCreateInstance(&instance_info, nullptr, &s_->instance), "the RADV null device: vkCreateInstance");
   uint32_t count = 0;
   vkEnumeratePhysicalDevices(s_->instance, &count, nullptr);
   std::vector<VkPhysicalDevice> devices(count);
@@ -257,7 +221,7 @@ std::vector<ShaderExecutable> RadvNullDevice::compile_compute(const std::vector<
   const State& s = *s_;
   const VkDevice device = s.device;
   Owned<VkShaderModule> module([device](VkShaderModule m) { vkDestroyShaderModule(device, m, nullptr); });
-  module.handle = s.module(spirv, name);
+  module.handle = make_shader_module(device, spirv, name);
   Owned<VkDescriptorSetLayout> set([device](VkDescriptorSetLayout l) { vkDestroyDescriptorSetLayout(device, l, nullptr); });
   set.handle = s.set_layout({{&spirv, VK_SHADER_STAGE_COMPUTE_BIT}}, name);
   Owned<VkPipelineLayout> layout([device](VkPipelineLayout l) { vkDestroyPipelineLayout(device, l, nullptr); });
@@ -284,8 +248,8 @@ std::vector<ShaderExecutable> RadvNullDevice::compile_graphics(const std::vector
   const VkDevice device = s.device;
   auto destroy_module = [device](VkShaderModule m) { vkDestroyShaderModule(device, m, nullptr); };
   Owned<VkShaderModule> vs(destroy_module), fs(destroy_module);
-  vs.handle = s.module(vertex, name + " (vertex)");
-  fs.handle = s.module(fragment, name);
+  vs.handle = make_shader_module(device, vertex, name + " (vertex)");
+  fs.handle = make_shader_module(device, fragment, name);
   Owned<VkDescriptorSetLayout> set([device](VkDescriptorSetLayout l) { vkDestroyDescriptorSetLayout(device, l, nullptr); });
   set.handle = s.set_layout({{&vertex, VK_SHADER_STAGE_VERTEX_BIT}, {&fragment, VK_SHADER_STAGE_FRAGMENT_BIT}}, name);
   Owned<VkPipelineLayout> layout([device](VkPipelineLayout l) { vkDestroyPipelineLayout(device, l, nullptr); });

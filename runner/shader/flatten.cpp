@@ -189,6 +189,10 @@ Stage stage_of(const fs::path& file) {
   return Stage::compute;
 }
 
+const char* stage_name(Stage stage) {
+  return stage == Stage::fragment ? "fragment" : stage == Stage::vertex ? "vertex" : "compute";
+}
+
 FlatSource flatten(const SourceTree& tree, const fs::path& entry) {
   FlatSource flat = Flattener(tree).run(tree.locate(entry));
   flat.stage = stage_of(entry);

@@ -17,6 +17,7 @@ namespace pn {
 // vertex and fragment passes; .comp passes and .glsl modules are compute.
 enum class Stage { compute, vertex, fragment };
 Stage stage_of(const std::filesystem::path& file);
+const char* stage_name(Stage stage);  // "compute", "vertex", "fragment"
 
 struct FlatSource {
   std::string text;                // flattened GLSL, no #version

@@ -22,6 +22,7 @@
 #include "shader/loop_guard.h"
 #include "shader/spirv_cross.h"
 #include "shader/target.h"
+#include "vk/vulkan_pipeline_parts.h"
 
 // Vulkan's create-info structs are named by their sType and then filled field by field.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -33,12 +34,6 @@ namespace {
 // The storage buffer of the loop guard (shader/loop_guard.h) on Vulkan: below the HLSL samplers'
 // shifted bindings, above every pass's own.
 constexpr unsigned kGuardBinding = kHlslSamplerBindingShift - 1;
-
-void vk_check(VkResult result, const std::string& what) {
-  if (result != VK_SUCCESS)
-    throw Error("vulkan: " + what + " failed (VkResult " + std::to_string(static_cast<int>(result)) + ")",
-                ExitCode::failed);
-}
 
 std::string version_text(uint32_t v) {
   return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
@@ -626,27 +621,6 @@ class VulkanQueryBatch final : public QueryBatch {
   int width_ = 0, height_ = 0;
 };
 
-VkDescriptorType descriptor_type(DescriptorKind kind) {
-  switch (kind) {
-    case DescriptorKind::combined_image_sampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    case DescriptorKind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-    case DescriptorKind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
-    case DescriptorKind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    case DescriptorKind::uniform_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    case DescriptorKind::storage_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  }
-  return VK_DESCRIPTOR_TYPE_MAX_ENUM;
-}
-
-VkShaderModule make_module(const VulkanDevice::State& s, const std::vector<std::uint32_t>& spirv, const std::string& name) {
-  VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  module_info.codeSize = spirv.size() * 4;
-  module_info.pCode = spirv.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  vk_check(vkCreateShaderModule(s.device, &module_info, nullptr, &module), name + ": a shader module");
-  return module;
-}
-
 // The resources of one dispatch or draw in a descriptor set of its own (a pool a set), with the
 // uniform block's buffer and the loop guard's.
 struct BoundSet {
@@ -681,29 +655,11 @@ class VulkanProgram : public QueryProgram {
   VulkanProgram(const VulkanDevice::State& s, std::string name,
                 const std::vector<std::pair<const std::vector<std::uint32_t>*, VkShaderStageFlagBits>>& stages)
       : s_(&s), name_(std::move(name)) {
-    std::vector<VkDescriptorSetLayoutBinding> layout;
-    for (const auto& [spirv, stage] : stages) {
-      modules_.push_back(make_module(s, *spirv, name_));
-      const SpirvReflection reflection = reflect_spirv(*spirv, true);
-      if (stage == VK_SHADER_STAGE_COMPUTE_BIT) std::copy(std::begin(reflection.local_size), std::end(reflection.local_size), local_size_);
-      for (const SpirvBinding& b : reflection.bindings) {
-        if (b.set != 0)
-          throw Error(name_ + ": '" + b.name + "' is in descriptor set " + std::to_string(b.set) + ": expected set 0",
-                      ExitCode::failed);
-        const auto same = std::find_if(bindings_.begin(), bindings_.end(),
-                                       [&](const SpirvBinding& known) { return known.binding == b.binding; });
-        if (same != bindings_.end()) {
-          if (same->kind != b.kind)
-            throw Error(name_ + ": binding " + std::to_string(b.binding) + " is '" + same->name + "' in one stage and '" +
-                            b.name + "', of another kind, in another",
-                        ExitCode::failed);
-          layout[static_cast<std::size_t>(same - bindings_.begin())].stageFlags |= stage;
-          continue;
-        }
-        bindings_.push_back(b);
-        layout.push_back({b.binding, descriptor_type(b.kind), 1, static_cast<VkShaderStageFlags>(stage), nullptr});
-      }
-    }
+    for (const auto& [spirv, stage] : stages) modules_.push_back(make_shader_module(s.device, *spirv, name_));
+    SetLayoutBindings set = set_layout_bindings(stages, name_);
+    bindings_ = std::move(set.bindings);
+    std::copy(std::begin(set.local_size), std::end(set.local_size), local_size_);
+    const std::vector<VkDescriptorSetLayoutBinding>& layout = set.layout;
     VkDescriptorSetLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layout_info.bindingCount = static_cast<uint32_t>(layout.size());
     layout_info.pBindings = layout.data();

@@ -29,32 +29,32 @@ print("isa json: %d shaders, every one with registers, instructions and code, no
 PY
 
 copy="$scratch/glsl"
+# on_copy EDIT MARK STATUS WHAT: a copy of GLSL_DIR with the perl substitution EDIT made in
+# fast_pcss.glsl (whole file, /m), which must then hold MARK; `isa --budgets` on its Fast PCSS call
+# must exit STATUS. Leaves the output in $out.
+on_copy() {
+  rm -rf "$copy" && cp -r "$glsl" "$copy" || exit 1
+  perl -0pi -e "$1" "$copy/fast_pcss.glsl"
+  grep -q -- "$2" "$copy/fast_pcss.glsl" || { echo "could not put $4 into the copy"; exit 1; }
+  out=$("$penumbra" isa --families navi21 --waves 64 --kinds engine --only fast_pcss --budgets --glsl-root "$copy" 2>&1)
+  status=$?
+  printf '%s\n' "$out" | grep "isa: \(budgets\|over budget\)"
+  [ "$status" -eq "$3" ] || { printf '%s\n' "$out"; echo "expected exit $3 with $4, got $status"; exit 1; }
+}
+
 # Fast PCSS's call keeps a local array indexed per pixel: scratch memory.
-cp -r "$glsl" "$copy" || exit 1
-perl -0pi -e 's/(float pnFastPcss\(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,\n\s*PnFastPcssSettings settings\) \{\n)/$1  float kept[256];\n  for (int i = 0; i < 256; ++i) kept[i] = receiver.z * float(i);\n  if (kept[(pixel.x * 7 + pixel.y) & 255] < 0.0) return 0.5;\n/' "$copy/fast_pcss.glsl"
-grep -q "float kept\[256\]" "$copy/fast_pcss.glsl" || { echo "could not put the local array into the copy"; exit 1; }
-out=$("$penumbra" isa --families navi21 --waves 64 --kinds engine --only fast_pcss --budgets --glsl-root "$copy" 2>&1)
-status=$?
-printf '%s\n' "$out" | grep "isa: \(budgets\|over budget\)"
-[ "$status" -eq 1 ] || { echo "expected exit 1 on the copy with a local array, got $status"; exit 1; }
+on_copy 's/(float pnFastPcss\(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,\n\s*PnFastPcssSettings settings\) \{\n)/$1  float kept[256];\n  for (int i = 0; i < 256; ++i) kept[i] = receiver.z * float(i);\n  if (kept[(pixel.x * 7 + pixel.y) & 255] < 0.0) return 0.5;\n/' \
+  'float kept\[256\]' 1 "a local array"
 printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine compute: [0-9]* scratch > 0 (fast_pcss.glsl:" ||
   { echo "no line naming Fast PCSS's scratch and its budget"; exit 1; }
 
 # The budget lowered below what the call takes.
-rm -rf "$copy" && cp -r "$glsl" "$copy" || exit 1
-perl -pi -e 's/^(\/\/ isa budget: vgprs \d+, instructions )\d+/${1}100/' "$copy/fast_pcss.glsl"
-out=$("$penumbra" isa --families navi21 --waves 64 --kinds engine --only fast_pcss --budgets --glsl-root "$copy" 2>&1)
-status=$?
-[ "$status" -eq 1 ] || { echo "expected exit 1 with the budget at 100 instructions, got $status"; exit 1; }
+on_copy 's/^(\/\/ isa budget: vgprs \d+, instructions )\d+/${1}100/m' 'instructions 100,' 1 "the budget at 100 instructions"
 printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine fragment: [0-9]* instructions > 100" ||
   { echo "no line naming the instructions over budget"; exit 1; }
 
 # A budget line that does not parse: a bad-input error naming the line.
-rm -rf "$copy" && cp -r "$glsl" "$copy" || exit 1
-perl -pi -e 's/^\/\/ isa budget: vgprs \d+/\/\/ isa budget: vgprs lots/' "$copy/fast_pcss.glsl"
-out=$("$penumbra" isa --families navi21 --waves 64 --kinds engine --only fast_pcss --budgets --glsl-root "$copy" 2>&1)
-status=$?
-[ "$status" -eq 2 ] || { echo "expected exit 2 for an unreadable budget line, got $status"; exit 1; }
+on_copy 's/^\/\/ isa budget: vgprs \d+/\/\/ isa budget: vgprs lots/m' 'vgprs lots' 2 "an unreadable budget line"
 printf '%s\n' "$out" | grep -q "fast_pcss.glsl:[0-9]*: isa budget item 'vgprs lots'" ||
   { printf '%s\n' "$out"; echo "no line naming the unreadable budget item"; exit 1; }
 rm -rf "$scratch"

@@ -1,0 +1,38 @@
+// What every Vulkan pipeline here is built from, shared by the executor (vulkan_device.cpp) and
+// `penumbra isa`'s null device (isa/radv_null.cpp): a call's result checked, a shader module, and
+// the one descriptor set a pipeline's stages need, from their SPIR-V's own reflection.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "shader/spirv_cross.h"
+
+namespace pn {
+
+// Throws Error(ExitCode::failed) "vulkan: WHAT failed (VkResult N)" unless `result` is VK_SUCCESS.
+void vk_check(VkResult result, const std::string& what);
+
+VkDescriptorType descriptor_type(DescriptorKind kind);
+
+// `name`: the pass, for the error. Throws as vk_check.
+VkShaderModule make_shader_module(VkDevice device, const std::vector<std::uint32_t>& spirv, const std::string& name);
+
+// Set 0 of a pipeline: every stage's resources (those it uses), a binding two stages use one entry
+// with both stage bits, and the compute stage's work group size.
+struct SetLayoutBindings {
+  std::vector<SpirvBinding> bindings;              // the reflection's, one a binding number
+  std::vector<VkDescriptorSetLayoutBinding> layout;  // the same order
+  unsigned local_size[3] = {1, 1, 1};
+};
+// Throws Error(ExitCode::failed) naming `name` for a resource outside set 0, or one binding number
+// of two kinds in two stages.
+SetLayoutBindings set_layout_bindings(
+    const std::vector<std::pair<const std::vector<std::uint32_t>*, VkShaderStageFlagBits>>& stages,
+    const std::string& name);
+
+}  // namespace pn
