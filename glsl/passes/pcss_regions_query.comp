@@ -2,11 +2,13 @@
 // Query k is texel k of query images A, B, C; its kind (B.x) picks the entry:
 //   search: pnSearchEntry over the pyramid (receiver A, bias C.x, iterations B.z, mode B.y)
 //   search over the mip chain: pnSearchEntryMip, the same inputs
+//   counted search over the mip chain: pnSearchEntryMipCounted, the same inputs
 //   filter: pnFilterEntry (search entry A, blocker mean C.y, has blocker B.w, scale C.z)
 //   entry:  A as given
 // and result k is that entry, pnEntryRect of it, pnEntryWindow of it in mode B.y
-// with pnEntryLit, and pnEntryLinkKey in mode B.y. Integers travel as floats
-// (exact below 2^24). Bindings, kinds and the parameter block: pcss_regions_query.h.
+// with pnEntryLit (plus 2 × the counted search's refinements: the four
+// images are GLSL ES 3.10's minimum), and pnEntryLinkKey in mode B.y. Integers
+// travel as floats (exact below 2^24). Bindings, kinds and the parameter block: pcss_regions_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -34,13 +36,16 @@ void main() {
   int n = int(pnParams.mapSize);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnParams);
   vec4 entry = a;
-  if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z));
+  int refinements = 0;
+  if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED)
+    entry = pnSearchEntryMipCounted(pnMip, n, light, a, c.x, int(b.z), refinements);
+  else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP) entry = pnSearchEntryMip(pnMip, n, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_FILTER) entry = pnFilterEntry(light, a, c.y, b.w != 0.0, c.z);
   PnRect r = pnEntryRect(entry, n);
   PnWindow w = pnEntryWindow(entry, n, mode);
   imageStore(pnEntries, p, entry);
   imageStore(pnRects, p, vec4(vec2(r.origin), vec2(r.size)));
-  imageStore(pnWindows, p, vec4(vec2(w.origin), float(w.side), pnEntryLit(entry) ? 1.0 : 0.0));
+  imageStore(pnWindows, p, vec4(vec2(w.origin), float(w.side), (pnEntryLit(entry) ? 1.0 : 0.0) + 2.0 * float(refinements)));
   imageStore(pnKeys, p, pnEntryLinkKey(entry, n, mode));
 }

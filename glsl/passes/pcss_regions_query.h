@@ -13,6 +13,7 @@
 #define PN_PCSS_REGIONS_QUERY_ENTRY_BINDING 0    // image2D, rgba32f out: the entry (d, x, y, s)
 #define PN_PCSS_REGIONS_QUERY_RECT_BINDING 1     // image2D, rgba32f out: pnEntryRect (origin, size)
 #define PN_PCSS_REGIONS_QUERY_WINDOW_BINDING 2   // image2D, rgba32f out: pnEntryWindow (origin, side), pnEntryLit
+                                                 // + 2 × the refinements of SEARCH_MIP_COUNTED (else 0)
 #define PN_PCSS_REGIONS_QUERY_KEY_BINDING 3      // image2D, rgba32f out: pnEntryLinkKey
 #define PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING 4  // sampler2DArray: the depth pyramid (depth_pyramid.glsl)
 #define PN_PCSS_REGIONS_QUERY_A_BINDING 5        // sampler2D, RGBA32F: receiver (u, v, d, valid) or entry
@@ -26,6 +27,7 @@
 #define PN_PCSS_REGIONS_QUERY_FILTER 1  // pnFilterEntry(light, A, C.y, B.w != 0, C.z)
 #define PN_PCSS_REGIONS_QUERY_ENTRY 2   // A itself
 #define PN_PCSS_REGIONS_QUERY_SEARCH_MIP 3  // pnSearchEntryMip(mip, N, light, A, C.x, int(B.z))
+#define PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED 4  // pnSearchEntryMipCounted: the same, and its refinements
 
 PN_UNIFORM_BLOCK(PnPcssRegionsQueryParams, PN_PCSS_REGIONS_QUERY_PARAMS_BINDING)
   PN_LIGHT_FIELDS  // PnLight (light_model.glsl); mapSize is N, the pyramid's size

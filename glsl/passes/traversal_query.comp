@@ -6,7 +6,8 @@
 //          traversal with that plane (pnTraverseRegionPlane, pnTraverseRegionMipPlane,
 //          pnGridRegionMip; gradient 0: none; on the pyramid a square without a plane goes
 //          through pnTraverseWindow, the same traversal).
-// Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches, 0, 0).
+// Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches,
+//          pnTraversalBlockerMean, pnTraversalOccludedFraction).
 // Bindings and the parameter block: traversal_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -48,5 +49,5 @@ void main() {
       : pnTraverseRegionPlane(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
                               pnParams.bias, leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
   imageStore(pnResultC, p, vec4(r.occluders, r.depthSum, r.texels, 0.0));
-  imageStore(pnResultD, p, vec4(float(r.nodes), float(r.fetches), 0.0, 0.0));
+  imageStore(pnResultD, p, vec4(float(r.nodes), float(r.fetches), pnTraversalBlockerMean(r), pnTraversalOccludedFraction(r)));
 }

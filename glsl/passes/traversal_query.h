@@ -13,7 +13,7 @@
 #define PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING 1  // sampler2D, RG32F (sample_table.glsl)
 #define PN_TRAVERSAL_QUERY_A_BINDING 2             // sampler2D, RGBA32F: region origin x, y, width, height
 #define PN_TRAVERSAL_QUERY_RESULT_C_BINDING 3      // image2D, rgba32f: occluders, depth sum, texels, 0
-#define PN_TRAVERSAL_QUERY_RESULT_D_BINDING 4      // image2D, rgba32f: nodes, fetches, 0, 0
+#define PN_TRAVERSAL_QUERY_RESULT_D_BINDING 4      // image2D, rgba32f: nodes, fetches, blocker mean, occluded fraction
 #define PN_TRAVERSAL_QUERY_B_BINDING 5             // sampler2D, RGBA32F: receiver depth, pixel x, y, 0
 #define PN_TRAVERSAL_QUERY_PARAMS_BINDING 6
 #define PN_TRAVERSAL_QUERY_MIP_BINDING 7           // sampler2D, RGBA32F (minmax_mip.glsl)

@@ -78,7 +78,7 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
   progress.step("brute force, " + std::to_string(queries.size()) + " receivers");
   TraversalBenchRow brute{"brute force", 0};
   brute.gpu_ms = time_median([&] { scan.dispatch(pyramid, batch, 0.0f); });
-  const std::vector<TraversalResult> exact = batch.read();
+  const std::vector<TraversalReadback> exact = batch.read();
   for (const auto& e : exact) brute.fetches_per_receiver += e.fetches / receivers;
   rows.push_back(brute);
 
@@ -92,7 +92,7 @@ std::vector<TraversalBenchRow> bench_traversal(const Context& context, const Sou
                                 std::to_string(leaf),
                             leaf};
       row.gpu_ms = time_median([&] { traversal.dispatch(pyramid, *table, batch, settings); });
-      const std::vector<TraversalResult> got = batch.read();
+      const std::vector<TraversalReadback> got = batch.read();
       double with_blockers = 0;
       for (size_t k = 0; k < got.size(); ++k) {
         row.nodes_per_receiver += got[k].nodes / receivers;

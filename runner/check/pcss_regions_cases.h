@@ -41,12 +41,16 @@ struct EntryGroup {
   std::vector<float> e_decisions, o_decisions;  // lit (1/0), d, x, y
   std::vector<float> e_sides, o_sides;          // s of entries unlit on both sides; -1 else
   std::vector<float> e_regions, o_regions;      // the regions of an entry as the module defines them
+  std::vector<float> e_refinements, o_refinements;  // counted searches: the squares whose min was read
   long queries = 0, left_out = 0, regions_tied = 0, lit = 0;
 };
-void add_entry(EntryGroup& g, const RegionEntry& expected, bool ambiguous, const PcssRegionsResult& o);
+// `expected_refinements` >= 0: a counted search's (PcssRegionsQuery::Kind::search_mip_counted) count too.
+void add_entry(EntryGroup& g, const RegionEntry& expected, bool ambiguous, const PcssRegionsResult& o,
+               int expected_refinements = -1);
 void add_regions(EntryGroup& g, const PcssRegionsResult& o, int n, RegionMode mode);
 void push_group(std::vector<CaseResult>& results, const std::string& name, const EntryGroup& g, const char* what);
 
+// Over the mip chain every other receiver's query is the counted search (pnSearchEntryMipCounted).
 std::vector<PcssRegionsQuery> search_queries(const std::vector<RegionReceiver>& receivers, RegionMode mode, int iterations,
                                              float bias, Structure structure = Structure::pyramid);
 

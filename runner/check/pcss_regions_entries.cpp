@@ -81,11 +81,16 @@ std::vector<NamedLight> fixture_lights(int n) {
   return {{"light 0.25", make(0.25)}, {"light 1", make(1.0)}, {"zero-size light", make(0.0)}};
 }
 
-void add_entry(EntryGroup& g, const RegionEntry& expected, bool ambiguous, const PcssRegionsResult& o) {
+void add_entry(EntryGroup& g, const RegionEntry& expected, bool ambiguous, const PcssRegionsResult& o,
+               int expected_refinements) {
   ++g.queries;
   if (ambiguous) {
     ++g.left_out;
     return;
+  }
+  if (expected_refinements >= 0) {
+    g.e_refinements.push_back(static_cast<float>(expected_refinements));
+    g.o_refinements.push_back(static_cast<float>(o.refinements));
   }
   const bool o_lit = !(o.entry[3] >= 0.0f);
   g.lit += expected.lit() ? 1 : 0;
@@ -121,6 +126,10 @@ void push_group(std::vector<CaseResult>& results, const std::string& name, const
     results.push_back({name + ": " + count + " — sides of unlit entries", side,
                        compare(row_image(g.e_sides, 1), row_image(g.o_sides, 1), side)});
   }
+  if (!g.e_refinements.empty())
+    results.push_back({name + ": " + std::to_string(g.e_refinements.size()) +
+                           " counted searches (pnSearchEntryMipCounted) — refinements, the squares whose min was read",
+                       exact, compare(row_image(g.e_refinements, 1), row_image(g.o_refinements, 1), exact)});
   if (!g.e_regions.empty()) {
     const std::string left = g.regions_tied > 0 ? ", " + std::to_string(g.regions_tied) +
                                                       " squares at a float tie: either rounding accepted"
@@ -136,7 +145,9 @@ std::vector<PcssRegionsQuery> search_queries(const std::vector<RegionReceiver>& 
   std::vector<PcssRegionsQuery> out;
   for (const RegionReceiver& r : receivers) {
     PcssRegionsQuery q;
-    q.kind = structure == Structure::mip ? PcssRegionsQuery::Kind::search_mip : PcssRegionsQuery::Kind::search;
+    q.kind = structure == Structure::pyramid ? PcssRegionsQuery::Kind::search
+             : out.size() % 2 == 0           ? PcssRegionsQuery::Kind::search_mip
+                                             : PcssRegionsQuery::Kind::search_mip_counted;
     q.mode = mode, q.input = {r.u, r.v, r.depth, r.valid};
     q.bias = bias, q.iterations = iterations;
     out.push_back(q);

@@ -160,12 +160,14 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
       for (size_t k = 0; k < queries.size(); ++k) {
         const PcssRegionsQuery& q = queries[k];
         const RegionReceiver& r = receivers[k % receivers.size()];
-        const bool from_mip = q.kind == PcssRegionsQuery::Kind::search_mip;
+        const bool counted = q.kind == PcssRegionsQuery::Kind::search_mip_counted;
+        const bool from_mip = q.kind == PcssRegionsQuery::Kind::search_mip || counted;
         Rounding rounding{kAmbiguity};
+        int refinements = 0;
         const RegionEntry expected = search_entry(scan, l.light, r, q.bias, q.iterations, &rounding,
-                                                  from_mip ? Structure::mip : Structure::pyramid);
+                                                  from_mip ? Structure::mip : Structure::pyramid, &refinements);
         EntryGroup& g = groups[from_mip ? 3 : static_cast<int>(q.mode)];
-        add_entry(g, expected, rounding.ambiguous, observed[k]);
+        add_entry(g, expected, rounding.ambiguous, observed[k], counted ? refinements : -1);
         add_regions(g, observed[k], n, q.mode);
         if (q.iterations > 0)  // the property: every mode, refining count and bias
           count_receiver(coverage, violations, scan, l.light, r, observed[k], q.bias, false);
@@ -178,7 +180,7 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
                  ("search entries (3 lights, " + counts + " iterations, bias 0/0.01)").c_str());
     }
     tally.searched += groups[3].queries, tally.left_out += groups[3].left_out;
-    push_group(results, f.name + ", from the mip chain (pnSearchEntryMip), exact region", groups[3],
+    push_group(results, f.name + ", from the mip chain (pnSearchEntryMip and …Counted), exact region", groups[3],
                ("search entries (3 lights, " + counts + " iterations, bias 0/0.01)").c_str());
     results.push_back(property_case(f.name + ", every region mode and the mip chain, " + refining + " iterations",
                                     violations, coverage, ""));

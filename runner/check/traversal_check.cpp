@@ -1,4 +1,6 @@
-// Cases of the traversal check:
+// Cases of the traversal check (each comparison also reads the module's own
+// pnTraversalBlockerMean and pnTraversalOccludedFraction of the GPU's counts
+// against the expected counts' mean and fraction):
 // - leaf side 1 (exact): occluder counts equal brute force exactly and the
 //   blocker mean to float rounding, for power-of-two windows of side 1…256
 //   and for exact (non-power-of-two) regions, on every fixture, with
@@ -60,38 +62,49 @@ std::vector<float> receivers_for(const Image& depth, const Rect& r) {
 }
 
 // Compares GPU results with expected ones: (occluders, nodes, fetches) exactly
-// when `compare_counters`, occluders alone otherwise; the blocker mean within
-// (terms + 2 levels + 4) ulps of the largest depth, terms = nodes + fetches of the reference.
+// when `compare_counters`, occluders alone otherwise; the module's blocker mean
+// (pnTraversalBlockerMean) within (terms + 2 levels + 4) ulps of the largest
+// depth, terms = nodes + fetches of the reference; its occluded fraction
+// (pnTraversalOccludedFraction) within the counts' bound over the smallest
+// region plus 4 ulps (GLSL's division is not correctly rounded).
 void add_comparison(std::vector<CaseResult>& results, const std::string& name, const Scene& scene,
-                    const std::vector<TraversalResult>& expected, const std::vector<TraversalResult>& observed,
+                    const std::vector<TraversalResult>& expected, const std::vector<TraversalReadback>& observed,
                     const std::vector<TraversalResult>& decisions, bool compare_counters,
                     bool compare_means = true, bool fractional_counts = false) {
   const int n = static_cast<int>(expected.size());
-  Image e_counts(n, 1, 3), o_counts(n, 1, 3), e_mean(n, 1), o_mean(n, 1);
+  Image e_counts(n, 1, 3), o_counts(n, 1, 3), e_mean(n, 1), o_mean(n, 1), e_fraction(n, 1), o_fraction(n, 1);
   double terms = 0;
   for (int k = 0; k < n; ++k) {
     const TraversalResult& e = expected[static_cast<size_t>(k)];
-    const TraversalResult& o = observed[static_cast<size_t>(k)];
+    const TraversalReadback& o = observed[static_cast<size_t>(k)];
     const TraversalResult& d = decisions[static_cast<size_t>(k)];
     e_counts.at(k, 0, 0) = static_cast<float>(e.occluders), o_counts.at(k, 0, 0) = static_cast<float>(o.occluders);
     if (compare_counters) {
       e_counts.at(k, 0, 1) = static_cast<float>(e.nodes), o_counts.at(k, 0, 1) = static_cast<float>(o.nodes);
       e_counts.at(k, 0, 2) = static_cast<float>(e.fetches), o_counts.at(k, 0, 2) = static_cast<float>(o.fetches);
     }
-    e_mean.at(k, 0) = static_cast<float>(e.blocker_mean()), o_mean.at(k, 0) = static_cast<float>(o.blocker_mean());
+    e_mean.at(k, 0) = static_cast<float>(e.blocker_mean()), o_mean.at(k, 0) = static_cast<float>(o.called_blocker_mean);
+    e_fraction.at(k, 0) = static_cast<float>(e.occluded_fraction());
+    o_fraction.at(k, 0) = static_cast<float>(o.called_occluded_fraction);
     terms = std::max(terms, static_cast<double>(d.nodes + d.fetches));
   }
   // Ramp leaves add non-dyadic fractions: the float sum of `terms` of them, each at most a region's
   // texels, within (terms + 4) ulps of the largest region (nodes and fetches stay integers far apart).
-  double largest_region = 1.0;
-  for (const TraversalResult& e : expected) largest_region = std::max(largest_region, e.texels);
-  const Tolerance counts = fractional_counts ? Tolerance::absolute((terms + 4.0) * FLT_EPSILON * largest_region)
-                                             : Tolerance::exact();
+  double largest_region = 1.0, smallest_region = INFINITY;
+  for (const TraversalResult& e : expected) {
+    largest_region = std::max(largest_region, e.texels);
+    if (e.texels > 0) smallest_region = std::min(smallest_region, e.texels);
+  }
+  const double count_bound = fractional_counts ? (terms + 4.0) * FLT_EPSILON * largest_region : 0.0;
+  const Tolerance counts = fractional_counts ? Tolerance::absolute(count_bound) : Tolerance::exact();
   const std::string what = compare_counters ? " occluders, nodes, fetches" : " occluders";
   results.push_back({name + what + " (query k at (k, 0))", counts, compare(e_counts, o_counts, counts)});
   const Tolerance mean_tol =
       Tolerance::absolute((terms + 2.0 * scene.pyramid.levels + 4.0) * FLT_EPSILON * scene.largest);
   if (compare_means) results.push_back({name + " blocker mean", mean_tol, compare(e_mean, o_mean, mean_tol)});
+  const Tolerance fraction_tol =
+      Tolerance::absolute((std::isfinite(smallest_region) ? count_bound / smallest_region : 0.0) + 4.0 * FLT_EPSILON);
+  results.push_back({name + " occluded fraction", fraction_tol, compare(e_fraction, o_fraction, fraction_tol)});
 }
 
 }  // namespace

@@ -157,7 +157,7 @@ Canvas traversal_figure(const Context& context, const SourceTree& tree) {
     settings.leaf_side = leaf;
     settings.bias = 0.03f;
     pass.dispatch(pyramid, *table, batch, settings);
-    const std::vector<TraversalResult> results = batch.read();
+    const std::vector<TraversalReadback> results = batch.read();
     long most = 1;
     for (const auto& r : results) most = std::max(most, r.nodes);
     for (int k = 0; k < n * n; ++k) {

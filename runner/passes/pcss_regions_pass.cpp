@@ -2,6 +2,7 @@
 
 #include "gl/query_device_gl.h"
 
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -22,7 +23,8 @@ namespace pn {
 static_assert(static_cast<int>(PcssRegionsQuery::Kind::search) == PN_PCSS_REGIONS_QUERY_SEARCH &&
                   static_cast<int>(PcssRegionsQuery::Kind::filter) == PN_PCSS_REGIONS_QUERY_FILTER &&
                   static_cast<int>(PcssRegionsQuery::Kind::entry) == PN_PCSS_REGIONS_QUERY_ENTRY &&
-                  static_cast<int>(PcssRegionsQuery::Kind::search_mip) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP,
+                  static_cast<int>(PcssRegionsQuery::Kind::search_mip) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP &&
+                  static_cast<int>(PcssRegionsQuery::Kind::search_mip_counted) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED,
               "query kinds as pcss_regions_query.h numbers them");
 
 PcssRegionsQueryPass::PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree)
@@ -40,7 +42,7 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
     throw Error("pcss_regions query: light map size " + std::to_string(light.map_size) + ": expected the mip chain's " +
                 std::to_string(mip->map_size));
   for (const PcssRegionsQuery& q : queries)
-    if (q.kind == PcssRegionsQuery::Kind::search_mip && !mip)
+    if ((q.kind == PcssRegionsQuery::Kind::search_mip || q.kind == PcssRegionsQuery::Kind::search_mip_counted) && !mip)
       throw Error("pcss_regions query: a search over the mip chain needs the chain");
   if (light.map_size != pyramid.map_size)
     throw Error("pcss_regions query: light map size " + std::to_string(light.map_size) + ": expected the pyramid's " +
@@ -59,8 +61,12 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
                                      {PN_PCSS_REGIONS_QUERY_MIP_BINDING, mip ? *mip->texture : *no_mip_}},
                                     query_block(block));
   std::vector<PcssRegionsResult> out(queries.size());
-  for (size_t i = 0; i < queries.size(); ++i)
+  for (size_t i = 0; i < queries.size(); ++i) {
     out[i] = {r.at(0, i), r.at(1, i), r.at(2, i), r.at(3, i)};
+    const float packed = out[i].window[3];  // pnEntryLit + 2 × refinements
+    out[i].refinements = static_cast<int>(std::floor(packed / 2.0f));
+    out[i].window[3] = packed - 2.0f * static_cast<float>(out[i].refinements);
+  }
   return out;
 }
 

@@ -16,7 +16,8 @@
 namespace pn {
 
 struct PcssRegionsQuery {
-  enum class Kind { search = 0, filter = 1, entry = 2, search_mip = 3 };  // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h)
+  // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h); search_mip_counted also reports its refinements
+  enum class Kind { search = 0, filter = 1, entry = 2, search_mip = 3, search_mip_counted = 4 };
   Kind kind = Kind::search;
   RegionMode mode = RegionMode::window;
   std::array<float, 4> input{};  // search: receiver (u, v, d, valid); filter: search entry; entry: the entry
@@ -32,6 +33,7 @@ struct PcssRegionsResult {
   std::array<float, 4> rect{};    // pnEntryRect: origin x, y, size x, y
   std::array<float, 4> window{};  // pnEntryWindow in the query's mode: origin x, y, side; then pnEntryLit (1 or 0)
   std::array<float, 4> key{};     // pnEntryLinkKey in the query's mode
+  int refinements = 0;            // search_mip_counted: pnSearchEntryMipCounted's count (else 0)
 };
 
 class PcssRegionsQueryPass {

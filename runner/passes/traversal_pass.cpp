@@ -40,12 +40,16 @@ std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries) {
 TraversalBatch::TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries)
     : count_(queries.size()), batch_(device.make_batch(batch_inputs(queries), 2, 0)) {}
 
-std::vector<TraversalResult> TraversalBatch::read() const {
+std::vector<TraversalReadback> TraversalBatch::read() const {
   const QueryResults r = batch_->read();
-  std::vector<TraversalResult> out;
+  std::vector<TraversalReadback> out;
   for (std::size_t k = 0; k < count_; ++k) {
     const Query c = r.at(0, k), d = r.at(1, k);
-    out.push_back({c[0], c[1], c[2], static_cast<long>(d[0]), static_cast<long>(d[1])});
+    TraversalReadback o;
+    o.occluders = c[0], o.depth_sum = c[1], o.texels = c[2];
+    o.nodes = static_cast<long>(d[0]), o.fetches = static_cast<long>(d[1]);
+    o.called_blocker_mean = d[2], o.called_occluded_fraction = d[3];
+    out.push_back(o);
   }
   return out;
 }

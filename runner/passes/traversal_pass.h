@@ -46,11 +46,19 @@ struct TraversalStructure {
 
 std::unique_ptr<DeviceTexture> upload_sample_table(const QueryDevice& device, const SampleTable& table);
 
+// A query's result as the GPU returns it: the counts, and the module's own blocker mean and
+// occluded fraction of them (pnTraversalBlockerMean, pnTraversalOccludedFraction), so a check
+// proves those calls rather than recomputing them here.
+struct TraversalReadback : TraversalResult {
+  double called_blocker_mean = 0.0;
+  double called_occluded_fraction = 0.0;
+};
+
 // Queries on the GPU and their result images; read() returns one result per query.
 class TraversalBatch {
  public:
   TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries);
-  std::vector<TraversalResult> read() const;
+  std::vector<TraversalReadback> read() const;
 
  private:
   friend class TraversalPass;

@@ -33,7 +33,8 @@ std::vector<Step3> candidate_steps(const Entry4& centre, const Entry4& minus, co
 
 // The pixel's receiver plane, and whether float arithmetic could decide it otherwise: the
 // candidate steps' planes differ by more than 1e-4 of the slope, the steps lie within 0.1 % of the
-// parallel bound, or the slope within 0.01 % of its clamp.
+// parallel bound, or the unclamped slope within 0.01 % of the clamp (whether it clamps; a clamped
+// plane's own rounding is the decisions' margin's).
 std::array<double, 2> plane_at(const Image& gbuffer, int px, int py, double max_slope, bool& unsure) {
   const Entry4 c = entry_at(gbuffer, px, py);
   const Entry4 left = entry_at(gbuffer, px - 1, py), right = entry_at(gbuffer, px + 1, py);
@@ -50,7 +51,8 @@ std::array<double, 2> plane_at(const Image& gbuffer, int px, int py, double max_
       const double bound = PN_RECEIVER_PLANE_MIN_SINE * std::hypot(sa[0], sa[1]) * std::hypot(sb[0], sb[1]);
       if (std::fabs(std::fabs(det) - bound) <= 1e-3 * bound) unsure = true;
     }
-  if (std::fabs(slope - max_slope) <= 1e-4 * max_slope) unsure = true;
+  const std::array<double, 2> unclamped = receiver_plane_gradient(a, b, INFINITY);
+  if (std::fabs(std::hypot(unclamped[0], unclamped[1]) - max_slope) <= 1e-4 * max_slope) unsure = true;
   return g;
 }
 

@@ -110,7 +110,10 @@ double DepthScan::min(const Rect& r) const {
 }
 
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, Rounding* rounding, Structure structure) {
+                         int iterations, Rounding* rounding, Structure structure, int* refinements) {
+  int reads = 0;
+  if (!refinements) refinements = &reads;
+  *refinements = 0;
   const double d = receiver.depth;
   if (receiver.valid == 0.0f || std::isnan(d)) return {0.0, 0.0, 0.0, kRegionLit};
   const int n = scan.size();
@@ -120,6 +123,7 @@ RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const R
     if (rounding) note_region(e, n, RegionMode::exact, *rounding);
     const double zmin =
         scan.min(structure == Structure::mip ? mip_search_cover(e, n) : search_min_square(e, n));
+    ++*refinements;
     if (rounding && bias != 0.0 && std::isfinite(zmin) && std::isfinite(threshold) &&
         std::fabs(zmin - threshold) <= rounding->relative * std::fabs(threshold))
       rounding->ambiguous = true;  // float rounds d - bias

@@ -94,9 +94,11 @@ struct Rounding {
 
 // Step 3. Invalid receivers and NaN depths: lit (0, 0, 0, lit). `iterations` is
 // bounded by kRefineMaxIterations; 0 gives PCSS's search width as is.
-// `structure`: which square's min refinement reads (search_min_square, or mip_search_cover).
+// `structure`: which square's min refinement reads (search_min_square, or mip_search_cover);
+// `refinements` (optional): how many squares' mins it read.
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, Rounding* rounding = nullptr, Structure structure = Structure::pyramid);
+                         int iterations, Rounding* rounding = nullptr, Structure structure = Structure::pyramid,
+                         int* refinements = nullptr);
 
 // Step 4, from the search entry and the blocker mean of its pixel.
 RegionEntry filter_entry(const LightModel& light, const RegionEntry& search, double blocker_mean, bool has_blocker,
