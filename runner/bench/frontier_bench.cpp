@@ -107,20 +107,36 @@ void validate_frontier_setup(const FrontierBenchSetup& s) {
   for (const std::string& m : s.methods) parse_technique(m)->validate();
 }
 
-void mark_frontier(FrontierPoint& point) {
+namespace {
+
+// The frontier of the rows by `time` (each row's time, or none), into `flag`, and what beats the
+// default by it into `beats`.
+template <class Time>
+void mark_by(FrontierPoint& point, Time time, bool FrontierRow::*flag, std::optional<FrontierRow>& beats) {
   for (FrontierRow& r : point.rows) {
-    r.on_frontier = true;
+    r.*flag = time(r).has_value();
     for (const FrontierRow& o : point.rows)
-      if (&o != &r && o.ms <= r.ms && o.mae <= r.mae && (o.ms < r.ms || o.mae < r.mae)) r.on_frontier = false;
+      if (&o != &r && time(o) && time(r) && *time(o) <= *time(r) && o.mae <= r.mae && (*time(o) < *time(r) || o.mae < r.mae))
+        r.*flag = false;
   }
-  point.beats_default.reset();
+  beats.reset();
   const auto fast = std::find_if(point.rows.begin(), point.rows.end(),
                                  [](const FrontierRow& r) { return r.method == kFrontierDefault; });
-  if (fast == point.rows.end()) return;
+  if (fast == point.rows.end() || !time(*fast)) return;
   for (const FrontierRow& o : point.rows)
-    if (o.family != fast->family && o.mae <= fast->mae && o.ms < fast->ms &&
-        (!point.beats_default || o.ms < point.beats_default->ms))
-      point.beats_default = o;
+    if (o.family != fast->family && time(o) && o.mae <= fast->mae && *time(o) < *time(*fast) &&
+        (!beats || *time(o) < *time(*beats)))
+      beats = o;
+}
+
+}  // namespace
+
+void mark_frontier(FrontierPoint& point) {
+  mark_by(point, [](const FrontierRow& r) { return std::optional<double>(r.ms); }, &FrontierRow::on_frontier,
+          point.beats_default);
+  const bool estimated = std::all_of(point.rows.begin(), point.rows.end(), [](const FrontierRow& r) { return r.estimate_ms.has_value(); });
+  const auto estimate = [estimated](const FrontierRow& r) { return estimated ? r.estimate_ms : std::nullopt; };
+  mark_by(point, estimate, &FrontierRow::on_estimate_frontier, point.beats_default_estimate);
 }
 
 std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTree& tree, const FrontierBenchSetup& setup) {
@@ -129,6 +145,8 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
   for (const std::string& m : setup.methods.empty() ? frontier_techniques() : setup.methods)
     configs.push_back(parse_technique(m));
   std::vector<FrontierPoint> points;
+  std::optional<GpuEstimator> estimator;
+  if (setup.estimate) estimator.emplace(tree, *setup.estimate);
   Progress progress("bench frontier", setup.scenes.size() * setup.sizes.size() * setup.widths.size());
   for (const std::string& name : setup.scenes)
     for (int n : setup.sizes)
@@ -139,6 +157,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
         cs.screen_size = n;
         cs.repeats = setup.repeats;
         cs.truth_samples = setup.truth_samples;
+        cs.census = estimator.has_value();
         if (find_city_scene_fixture_or_null(name)) {
           CascadeSettings c;
           c.count = kFrontierCascades, c.map_size = n, c.stable = true;
@@ -146,7 +165,8 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
         }
         for (const auto& c : configs)
           if (w <= setup.exact_up_to || !scans_filter_region(c->name())) cs.techniques.push_back(c.get());
-        const Comparison result = compare_techniques(context, tree, frontier_scene(name, n, w), cs);
+        Comparison result = compare_techniques(context, tree, frontier_scene(name, n, w), cs);
+        const std::vector<GpuEstimate> estimates = estimator ? estimator->estimate(result) : std::vector<GpuEstimate>{};
         FrontierPoint p;
         p.scene = name, p.size = n, p.width = w;
         for (const TechniqueResult& r : result.results) {
@@ -157,6 +177,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
           row.bias = r.vs_truth.bias;
           row.fetches = stat(r.measurement.frame.stats, kFetchStat);
           row.tile_max = stat(r.measurement.frame.stats, kFetchTileMaxStat);
+          if (const GpuEstimate* e = estimate_of(result, estimates, r.name)) row.estimate_ms = e->ms;
           p.rows.push_back(row);
         }
         mark_frontier(p);
@@ -165,7 +186,8 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
   return points;
 }
 
-void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& points) {
+void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& points,
+                          const std::optional<GpuEstimateSetup>& estimate) {
   for (const FrontierPoint& p : points) {
     std::vector<std::string> names;
     for (const FrontierRow& r : p.rows) names.push_back(r.method);
@@ -174,7 +196,7 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
         << "; light-facing pixels vs the ray-traced truth, by time:\n"
         << std::left << std::setw(w) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(8) << "SSIM"
         << std::setw(9) << "MAE" << std::setw(8) << "acne" << std::setw(8) << "leak" << std::setw(10) << "fetch/px"
-        << std::setw(10) << "tile max" << "  frontier\n";
+        << std::setw(10) << "tile max" << (estimate ? "    est. us" : "") << "  frontier\n";
     std::vector<const FrontierRow*> sorted;
     for (const FrontierRow& r : p.rows) sorted.push_back(&r);
     std::stable_sort(sorted.begin(), sorted.end(), [](const FrontierRow* a, const FrontierRow* b) { return a->ms < b->ms; });
@@ -184,7 +206,11 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
           << r->bias.acne << std::setw(8) << r->bias.leak << std::setprecision(1);
       if (r->fetches) out << std::setw(10) << *r->fetches << std::setw(10) << *r->tile_max;
       else out << std::setw(10) << "-" << std::setw(10) << "-";
-      out << (r->on_frontier ? "  *" : "") << "\n";
+      if (estimate) {
+        if (r->estimate_ms) out << std::setw(11) << 1e3 * *r->estimate_ms;
+        else out << std::setw(11) << "-";
+      }
+      out << (r->on_frontier ? "  *" : "") << (r->on_estimate_frontier ? "  (est. *)" : "") << "\n";
     }
     out.unsetf(std::ios::floatfield);
     const auto fast = std::find_if(p.rows.begin(), p.rows.end(),
@@ -196,6 +222,15 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
         out << "no: " << p.beats_default->method << " reaches MAE " << format_number("%.4f", p.beats_default->mae)
             << " <= " << format_number("%.4f", fast->mae) << " in " << format_number("%.2f", p.beats_default->ms)
             << " ms, " << format_number("%.2f", fast->ms / p.beats_default->ms) << "x less time\n";
+      if (estimate && fast->estimate_ms) {
+        out << kFrontierDefault << " on the estimate's frontier (" << gpu_estimate_label(*estimate) << "): ";
+        if (!p.beats_default_estimate) out << "yes\n";
+        else
+          out << "no: " << p.beats_default_estimate->method << " reaches MAE "
+              << format_number("%.4f", p.beats_default_estimate->mae) << " in an estimated "
+              << format_number("%.1f", 1e3 * *p.beats_default_estimate->estimate_ms) << " us, "
+              << format_number("%.2f", *fast->estimate_ms / *p.beats_default_estimate->estimate_ms) << "x less\n";
+      }
     }
     out << "\n";
   }
@@ -213,7 +248,9 @@ nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::v
                           {"leak", r.bias.leak},
                           {"fetches_per_pixel", r.fetches ? nlohmann::json(*r.fetches) : nlohmann::json(nullptr)},
                           {"fetch_tile_max", r.tile_max ? nlohmann::json(*r.tile_max) : nlohmann::json(nullptr)},
-                          {"on_frontier", r.on_frontier}};
+                          {"on_frontier", r.on_frontier},
+                          {"estimate_ms", r.estimate_ms ? nlohmann::json(*r.estimate_ms) : nlohmann::json(nullptr)},
+                          {"on_estimate_frontier", r.on_estimate_frontier}};
   };
   for (const FrontierPoint& p : points) {
     nlohmann::json rows = nlohmann::json::array();
@@ -223,49 +260,59 @@ nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::v
                     {"width", p.width},
                     {"rows", rows},
                     {"default", kFrontierDefault},
-                    {"beats_default", p.beats_default ? row_json(*p.beats_default) : nlohmann::json(nullptr)}});
+                    {"beats_default", p.beats_default ? row_json(*p.beats_default) : nlohmann::json(nullptr)},
+                    {"beats_default_by_estimate",
+                     p.beats_default_estimate ? row_json(*p.beats_default_estimate) : nlohmann::json(nullptr)}});
   }
   return {{"scenes", setup.scenes}, {"widths", setup.widths}, {"sizes", setup.sizes},
           {"repeats", setup.repeats}, {"truth_samples", setup.truth_samples},
-          {"exact_up_to", setup.exact_up_to}, {"points", list}};
+          {"exact_up_to", setup.exact_up_to},
+          {"estimate", setup.estimate ? nlohmann::json(gpu_estimate_label(*setup.estimate)) : nlohmann::json(nullptr)},
+          {"points", list}};
 }
 
-Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title) {
+Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title,
+                            const std::optional<GpuEstimateSetup>& estimate) {
   const std::vector<std::pair<std::string, Rgb>> families{
       {"poisson", {31, 119, 180}}, {"vogel", {23, 190, 207}}, {"fast", {214, 39, 40}},  {"hqepcss", {148, 103, 189}},
       {"savsm", {44, 160, 44}},    {"vsm", {188, 189, 34}},   {"pcf", {127, 127, 127}}, {"exact", {140, 86, 75}},
       {"backprojection", {255, 127, 14}}};
   std::vector<ChartPanel> panels;
   int columns = 1;
-  for (const FrontierPoint& p : points) {
-    ChartPanel panel;
-    panel.title = p.scene + " " + std::to_string(p.size) + "², light " + width_text(p.width);
-    panel.x_label = "GPU ms (log)";
-    panel.y_label = "MAE vs truth, light-facing";
-    panel.log_x = true;
-    ChartSeries frontier{"Pareto frontier", {0, 0, 0}, true, {}};
-    frontier.marker = 0;  // a line under the points
-    for (const FrontierRow& r : p.rows)
-      if (r.on_frontier) frontier.points.emplace_back(r.ms, r.mae);
-    std::sort(frontier.points.begin(), frontier.points.end());
-    panel.series.push_back(frontier);
-    for (const auto& [family, colour] : families) {
-      ChartSeries s{family, colour, false, {}};
-      s.lines = false;
+  // The panels by measured time, then (with an estimate) the same by the estimate.
+  for (const bool by_estimate : {false, true}) {
+    if (by_estimate && !estimate) break;
+    const auto time = [by_estimate](const FrontierRow& r) { return by_estimate ? r.estimate_ms : std::optional<double>(r.ms); };
+    for (const FrontierPoint& p : points) {
+      ChartPanel panel;
+      panel.title = p.scene + " " + std::to_string(p.size) + "², light " + width_text(p.width) + (by_estimate ? ", estimate" : "");
+      panel.x_label = by_estimate ? "estimated GPU ms, " + gpu_estimate_label(*estimate) + " (log)" : "GPU ms (log)";
+      panel.y_label = "MAE vs truth, light-facing";
+      panel.log_x = true;
+      ChartSeries frontier{"Pareto frontier", {0, 0, 0}, true, {}};
+      frontier.marker = 0;  // a line under the points
       for (const FrontierRow& r : p.rows)
-        if (r.family == family) s.points.emplace_back(r.ms, r.mae);
-      panel.series.push_back(s);
+        if ((by_estimate ? r.on_estimate_frontier : r.on_frontier) && time(r)) frontier.points.emplace_back(*time(r), r.mae);
+      std::sort(frontier.points.begin(), frontier.points.end());
+      panel.series.push_back(frontier);
+      for (const auto& [family, colour] : families) {
+        ChartSeries s{family, colour, false, {}};
+        s.lines = false;
+        for (const FrontierRow& r : p.rows)
+          if (r.family == family && time(r)) s.points.emplace_back(*time(r), r.mae);
+        panel.series.push_back(s);
+      }
+      ChartSeries chosen{std::string(kFrontierDefault) + " (the default: large)", {214, 39, 40}, false, {}};
+      chosen.lines = false;
+      chosen.marker = 13;
+      for (const FrontierRow& r : p.rows)
+        if (r.method == kFrontierDefault && time(r)) chosen.points.emplace_back(*time(r), r.mae);
+      panel.series.push_back(chosen);
+      panels.push_back(panel);
+      columns = std::max(columns, static_cast<int>(std::count_if(points.begin(), points.end(), [&](const FrontierPoint& q) {
+                                    return q.scene == p.scene && q.size == p.size;
+                                  })));
     }
-    ChartSeries chosen{std::string(kFrontierDefault) + " (the default: large)", {214, 39, 40}, false, {}};
-    chosen.lines = false;
-    chosen.marker = 13;
-    for (const FrontierRow& r : p.rows)
-      if (r.method == kFrontierDefault) chosen.points.emplace_back(r.ms, r.mae);
-    panel.series.push_back(chosen);
-    panels.push_back(panel);
-    columns = std::max(columns, static_cast<int>(std::count_if(points.begin(), points.end(), [&](const FrontierPoint& q) {
-                                  return q.scene == p.scene && q.size == p.size;
-                                })));
   }
   return draw_line_charts(title, panels, columns);
 }

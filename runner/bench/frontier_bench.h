@@ -19,6 +19,7 @@
 
 #include "draw/canvas.h"
 #include "metrics/scores.h"
+#include "bench/gpu_estimate.h"
 #include "gl/context.h"
 #include "shader/source_tree.h"
 
@@ -36,6 +37,7 @@ struct FrontierBenchSetup {
   // width²: at 512² ×8 one HQEPCSS frame takes about a minute on llvmpipe) only at factors <= this.
   double exact_up_to = 2.0;
   std::vector<std::string> methods;   // empty: frontier_techniques()
+  std::optional<GpuEstimateSetup> estimate = GpuEstimateSetup{};  // none: no GPU cost estimate
 };
 
 inline constexpr int kFrontierCascades = 3;
@@ -58,6 +60,8 @@ struct FrontierRow {
   BiasErrors bias;               // acne and leak on them (metrics/scores.h)
   std::optional<double> fetches, tile_max;  // the cost proxy, where the technique counts its fetches
   bool on_frontier = false;    // no other row is as fast and as close, and strictly better in one
+  std::optional<double> estimate_ms;  // the GPU cost estimate (bench/gpu_estimate.h), where there is one
+  bool on_estimate_frontier = false;  // the same frontier with estimate_ms for the time (every row has one)
 };
 
 struct FrontierPoint {
@@ -68,6 +72,7 @@ struct FrontierPoint {
   // The default's standing: the fastest row of another family with MAE <= the default's and less
   // time, if any.
   std::optional<FrontierRow> beats_default;
+  std::optional<FrontierRow> beats_default_estimate;  // the same by estimate_ms
 };
 
 std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTree& tree, const FrontierBenchSetup& setup);
@@ -75,10 +80,13 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
 // Marks rows on the Pareto frontier and finds what beats the default (no GL; the bench calls it).
 void mark_frontier(FrontierPoint& point);
 
-void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& points);
+void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& points,
+                          const std::optional<GpuEstimateSetup>& estimate);
 nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::vector<FrontierPoint>& points);
 // One panel per scene × width (a row of panels per scene and size), time (log) against MAE, each
-// family's configurations as points, the frontier drawn, the default marked.
-Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title);
+// family's configurations as points, the frontier drawn, the default marked; with `estimate`,
+// the same panels again below with the GPU cost estimate for the time.
+Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title,
+                            const std::optional<GpuEstimateSetup>& estimate);
 
 }  // namespace pn

@@ -43,6 +43,9 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
   cs.repeats = setup.repeats;
   cs.truth_samples = setup.truth_samples;
   cs.techniques = chosen_or_default_techniques(setup.methods, bench_techniques(), own);
+  cs.census = setup.estimate.has_value();
+  std::optional<GpuEstimator> estimator;
+  if (setup.estimate) estimator.emplace(tree, *setup.estimate);
 
   std::vector<PipelineBenchSize> out;
   Progress progress("bench pipeline", setup.sizes.size());
@@ -59,6 +62,8 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
     const auto ratio = [](const TechniqueResult* base, const TechniqueResult& r) {
       return base ? base->measurement.total_ms / r.measurement.total_ms : 0.0;
     };
+    if (estimator) s.estimates = estimator->estimate(s.comparison);
+    s.estimate_vs_poisson = estimate_ratios(s.comparison, s.estimates, kPoissonTechnique);
     for (const TechniqueResult& r : s.comparison.results) {
       s.speedup_vs_exact.push_back(ratio(exact, r));
       s.speedup_vs_poisson.push_back(ratio(poisson, r));
@@ -69,7 +74,8 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
   return out;
 }
 
-void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize>& sizes) {
+void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize>& sizes,
+                          const std::optional<GpuEstimateSetup>& estimate) {
   for (const PipelineBenchSize& s : sizes) {
     out << "size " << s.size << " (shadow map = screen), shadow map " << std::fixed << std::setprecision(2)
         << s.comparison.shadow_map_ms << " ms:\n";
@@ -78,19 +84,23 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
     const int name = name_column_width(names);
     const bool staged = s.comparison.find(kStagedPoissonTechnique) != nullptr;
     out << std::left << std::setw(name) << "method" << std::right << std::setw(11) << "total ms" << std::setw(10)
-        << "x exact" << std::setw(10) << "x Poisson" << (staged ? "  x staged P." : "") << "   stages (ms)\n";
+        << "x exact" << std::setw(10) << "x Poisson" << (staged ? "  x staged P." : "");
+    if (estimate) out << std::setw(11) << "est. us" << std::setw(10) << "est. x P.";
+    out << "   stages (ms)\n";
     for (size_t i = 0; i < s.comparison.results.size(); ++i) {
       const TechniqueResult& r = s.comparison.results[i];
       out << std::left << std::setw(name) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(11)
           << r.measurement.total_ms << std::setw(10) << s.speedup_vs_exact[i] << std::setw(10)
           << s.speedup_vs_poisson[i];
       if (staged) out << std::setw(13) << s.speedup_vs_staged_poisson[i];
+      if (estimate) print_estimate_cells(out, s.estimates, s.estimate_vs_poisson, i);
       out << "  ";
       for (const auto& [name, ms] : r.measurement.stage_ms)
         if (ms > 0.005) out << " " << name << " " << ms << ";";
       out << "\n";
     }
     out.unsetf(std::ios::floatfield);
+    if (estimate) print_estimate_note(out, *estimate, s.estimates);
     print_score_tables(out, s.comparison);
   }
 }
@@ -110,6 +120,10 @@ nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::v
                       {"speedup_vs_staged_poisson", s.speedup_vs_staged_poisson[i]},
                       {"vs_truth", scores_json(r.vs_truth)},
                       {"vs_exact", r.vs_exact ? scores_json(*r.vs_exact) : nlohmann::json(nullptr)}});
+      if (setup.estimate && i < s.estimates.size()) {
+        list.back()["gpu_estimate"] = gpu_estimate_json(s.estimates[i], *setup.estimate);
+        list.back()["estimate_speedup_vs_poisson"] = s.estimate_vs_poisson[i];
+      }
     }
   nlohmann::json truth = nlohmann::json::array();
   for (const PipelineBenchSize& s : sizes)

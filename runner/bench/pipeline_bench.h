@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/gpu_estimate.h"
 #include "gl/context.h"
 #include "shader/source_tree.h"
 #include "technique/comparison.h"
@@ -27,6 +28,7 @@ struct PipelineBenchSetup {
   int repeats = 5;
   int truth_samples = 16;
   std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: bench_techniques()
+  std::optional<GpuEstimateSetup> estimate = GpuEstimateSetup{};  // none: no GPU cost estimate
 };
 
 struct PipelineBenchSize {
@@ -35,6 +37,10 @@ struct PipelineBenchSize {
   // Per result: exact PCSS's / Poisson PCSS's (one pass, as engines ship it) / the staged Poisson
   // passes' total over its own (0 when that baseline did not run).
   std::vector<double> speedup_vs_exact, speedup_vs_poisson, speedup_vs_staged_poisson;
+  // Per result: the GPU cost estimate (bench/gpu_estimate.h; empty without one), and Poisson
+  // PCSS's estimate over its own.
+  std::vector<GpuEstimate> estimates;
+  std::vector<double> estimate_vs_poisson;
 };
 
 // Throws Error for an unknown scene, sizes outside 16..4096, repeats < 1 or truth samples outside
@@ -45,7 +51,8 @@ void validate_pipeline_bench_setup(const PipelineBenchSetup& setup);
 std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const SourceTree& tree,
                                               const PipelineBenchSetup& setup);
 
-void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize>& sizes);
+void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize>& sizes,
+                          const std::optional<GpuEstimateSetup>& estimate);
 nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::vector<PipelineBenchSize>& sizes);
 
 }  // namespace pn

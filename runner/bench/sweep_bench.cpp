@@ -58,6 +58,9 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
 
   SweepBench bench;
   bench.exact_up_to = setup.exact_up_to;
+  bench.estimate = setup.estimate;
+  std::optional<GpuEstimator> estimator;
+  if (setup.estimate) estimator.emplace(tree, *setup.estimate);
   for (const TechniqueConfig* c : all) bench.methods.push_back(c->name());
   Progress progress("bench sweep", setup.scenes.size() * setup.sizes.size() * setup.factors.size());
   for (const std::string& name : setup.scenes) {
@@ -69,6 +72,7 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
         cs.screen_size = n;
         cs.repeats = setup.repeats;
         cs.truth_samples = setup.truth_samples;
+        cs.census = estimator.has_value();
         for (const TechniqueConfig* c : all)
           if (factor <= setup.exact_up_to || !is_exact_spec(c->name())) cs.techniques.push_back(c);
         if (cs.techniques.empty()) continue;  // only exact PCSS was asked for, and not at this factor
@@ -79,6 +83,7 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
         const Scene scene = sweep_scene(fixture, n, factor);
         p.light_width = scene.light.width;
         p.comparison = compare_techniques(context, tree, scene, cs);
+        if (estimator) p.estimates = estimator->estimate(p.comparison);
         bench.points.push_back(std::move(p));
       }
   }
@@ -121,7 +126,9 @@ void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
     out << "scene " << scene << ", " << size << "x" << size << " (shadow map = screen); light-facing pixels:\n"
         << std::right << std::setw(7) << "factor" << std::setw(8) << "width" << "  " << std::left << std::setw(kName)
         << "method" << std::right << std::setw(11) << "GPU ms" << std::setw(11) << "SSIM truth" << std::setw(10)
-        << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10) << "MAE exact" << "\n";
+        << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10) << "MAE exact";
+    if (bench.estimate) out << std::setw(11) << "est. us" << std::setw(10) << "est. x P.";
+    out << "\n";
     for (const SweepPoint* p : points) {
       for (const std::string& method : bench.methods) {
         out << std::right << std::setw(7) << factor_text(p->factor) << std::fixed << std::setprecision(2)
@@ -137,6 +144,12 @@ void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
           out << std::setw(11) << r->vs_exact->light_facing.ssim << std::setw(10) << r->vs_exact->light_facing.mae;
         else
           out << std::setw(11) << "-" << std::setw(10) << "-";
+        if (bench.estimate) {
+          const std::vector<double> ratios = estimate_ratios(p->comparison, p->estimates, kPoissonTechnique);
+          for (std::size_t k = 0; k < p->comparison.results.size(); ++k)
+            if (p->comparison.results[k].name == method) print_estimate_cells(out, p->estimates, ratios, k);
+          out << std::setprecision(2);
+        }
         out << "\n";
       }
       out << std::right << std::setw(7) << factor_text(p->factor) << std::fixed << std::setprecision(2) << std::setw(8)
@@ -154,6 +167,11 @@ void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
     }
     out << "\n";
     out.unsetf(std::ios::floatfield);
+    if (bench.estimate) {
+      std::vector<GpuEstimate> all;
+      for (const SweepPoint* p : points) all.insert(all.end(), p->estimates.begin(), p->estimates.end());
+      print_estimate_note(out, *bench.estimate, all);
+    }
   });
 }
 
@@ -177,6 +195,12 @@ nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& 
         row["stats"] = named_json(r->measurement.frame.stats);
         row["vs_truth"] = scores_json(r->vs_truth);
         row["vs_exact"] = r->vs_exact ? scores_json(*r->vs_exact) : nlohmann::json(nullptr);
+        if (setup.estimate)
+          for (std::size_t k = 0; k < p.comparison.results.size() && k < p.estimates.size(); ++k)
+            if (p.comparison.results[k].name == method) {
+              row["gpu_estimate"] = gpu_estimate_json(p.estimates[k], *setup.estimate);
+              row["estimate_speedup_vs_poisson"] = estimate_ratios(p.comparison, p.estimates, kPoissonTechnique)[k];
+            }
       }
       rows.push_back(row);
     }

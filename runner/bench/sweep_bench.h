@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/gpu_estimate.h"
 #include "gl/context.h"
 #include "scene/scene.h"
 #include "shader/source_tree.h"
@@ -34,6 +35,7 @@ struct SweepBenchSetup {
   // takes 4-8 s at x1 and 16-30 s at x2 on the tall blocker, so about a minute from x4 on.
   double exact_up_to = 2.0;
   std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: render_techniques()
+  std::optional<GpuEstimateSetup> estimate = GpuEstimateSetup{};  // none: no GPU cost estimate
 };
 
 // The settings the sweep and the frontier (frontier_bench.h) share: sizes in 16..4096, repeats in
@@ -59,6 +61,7 @@ struct SweepPoint {
   double factor = 1.0;
   double light_width = 0.0;  // world units, after scaling
   Comparison comparison;     // the techniques that ran at this factor
+  std::vector<GpuEstimate> estimates;  // per result of the comparison (bench/gpu_estimate.h), or none
 };
 
 // How a technique's time changed across a scene's sweep: from its first factor with a time to
@@ -74,6 +77,7 @@ struct SweepBench {
   std::vector<std::string> methods;  // every technique's name, in table order
   std::vector<SweepPoint> points;    // per scene, per size, per factor
   double exact_up_to = 2.0;
+  std::optional<GpuEstimateSetup> estimate;
 };
 
 // Throws Error (validate_sweep_setup) before any GL work.

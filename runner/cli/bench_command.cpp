@@ -35,6 +35,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     int max_level = 31;
     std::string json;
     std::string plot;
+    std::string estimate = "navi21";
   };
   auto opt = std::make_shared<Options>();
   // Which benches read each option (issue 26 B18): one given to a bench that does not is refused.
@@ -71,11 +72,12 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   applies_to(cmd->add_option("--size", opt->cascades.size, "cascades: the map size of the count and k sweeps and the path (default 1024)"), {"cascades"});
   applies_to(cmd->add_option("--path-frames", opt->cascades.path_frames, "cascades: frames along the camera path (default 12)"), {"cascades"});
   applies_to(cmd->add_option("--path-methods", opt->cascades.path_methods, "cascades: techniques along the camera path (default pcf,fast)")->delimiter(','), {"cascades"});
+  auto* estimate = applies_to(cmd->add_option("--estimate", opt->estimate, "pipeline, sweep, frontier: the GPU cost estimate beside each time for this RADV family, FAMILY/32 for wave32 (default navi21; off: none; docs/isa.md)"), {"pipeline", "sweep", "frontier"});
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   applies_to(cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG; cascades, frontier: theirs"), {"cache", "cascades", "frontier"});
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
-  cmd->callback([opt, applies, repeats, sizes, truth_samples, screen, scenes, widths, exact_up_to, &global, &exit_code] {
+  cmd->callback([opt, applies, repeats, sizes, truth_samples, screen, scenes, widths, exact_up_to, estimate, &global, &exit_code] {
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep" &&
         opt->what != "frontier" && opt->what != "cache" && opt->what != "cascades" && opt->what != "tables")
       throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, frontier, cache, cascades, tables");
@@ -89,12 +91,14 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
       opt->sweep.methods = opt->pipeline.methods;
+      if (estimate->count() > 0) opt->sweep.estimate = parse_gpu_estimate(opt->estimate);
       if (repeats->count() > 0) opt->sweep.repeats = opt->repeats;
       if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
       if (truth_samples->count() > 0) opt->sweep.truth_samples = opt->pipeline.truth_samples;
       validate_sweep_setup(opt->sweep);
     } else if (opt->what == "frontier") {
       if (opt->quick) opt->frontier = quick_frontier_setup();
+      if (estimate->count() > 0) opt->frontier.estimate = parse_gpu_estimate(opt->estimate);
       if (scenes->count() > 0) opt->frontier.scenes = opt->sweep.scenes;
       if (widths->count() > 0) opt->frontier.widths = opt->sweep.factors;
       if (sizes->count() > 0) opt->frontier.sizes = opt->sizes;
@@ -115,6 +119,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (!opt->pipeline.model.empty()) opt->cache.model = opt->pipeline.model;
       validate_cache_bench_setup(opt->cache);
     } else if (opt->what == "pipeline") {
+      if (estimate->count() > 0) opt->pipeline.estimate = parse_gpu_estimate(opt->estimate);
       if (repeats->count() > 0) opt->pipeline.repeats = opt->repeats;
       if (sizes->count() > 0) opt->pipeline.sizes = opt->sizes;
       validate_pipeline_bench_setup(opt->pipeline);
@@ -153,11 +158,12 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       results = sweep_bench_json(opt->sweep, bench);
     } else if (opt->what == "frontier") {
       const std::vector<FrontierPoint> points = bench_frontier(*context, tree, opt->frontier);
-      print_frontier_bench(std::cout, points);
+      print_frontier_bench(std::cout, points, opt->frontier.estimate);
       results = frontier_bench_json(opt->frontier, points);
       if (!opt->plot.empty()) {
         frontier_bench_chart(points, std::string("penumbra bench frontier") + (opt->quick ? " --quick" : "") +
-                                         ": time against MAE vs the ray-traced truth, " + context->renderer())
+                                         ": time against MAE vs the ray-traced truth, " + context->renderer(),
+                             opt->frontier.estimate)
             .write_png(opt->plot);
         std::cout << "wrote " << opt->plot << "\n";
       }
@@ -183,7 +189,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       }
     } else if (opt->what == "pipeline") {
       const auto rows = bench_pipeline(*context, tree, opt->pipeline);
-      print_pipeline_bench(std::cout, rows);
+      print_pipeline_bench(std::cout, rows, opt->pipeline.estimate);
       results = pipeline_bench_json(opt->pipeline, rows);
     } else {
       const auto rows = bench_traversal(*context, tree, opt->traversal);

@@ -8,6 +8,7 @@
 #include "shader/diagnostic.h"
 #include "shader/flatten.h"
 #include "shader/glslang_compiler.h"
+#include "shader/loop_census.h"
 #include "shader/loop_guard.h"
 
 namespace pn {
@@ -83,13 +84,18 @@ const GlslangProcess& glslang_process() {
   return process;
 }
 
+// The last storage buffer binding: passes number theirs from 0.
+GLuint last_storage_binding(const Context& context) {
+  GLint bindings = 0;
+  context.gl().GetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
+  return static_cast<GLuint>(std::max(bindings, 1) - 1);
+}
+
 // The source as compiled: under DispatchBounds, glslang's preprocessed text with every loop guarded.
 ShaderSource bounded_source(const Context& context, const ShaderSource& source, std::vector<GuardedLoop>& loops,
                             GLuint& binding) {
   if (!context.dispatch_bounds().enabled || source.stage != Stage::compute) return source;
-  GLint bindings = 0;
-  context.gl().GetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
-  binding = static_cast<GLuint>(std::max(bindings, 1) - 1);  // the last: passes number theirs from 0
+  binding = last_storage_binding(context);
   ShaderSource guarded = source;
   loops = guard_loops(glslang_process(), guarded, driver_target(context),
                       {binding, context.dispatch_bounds().loop_iterations});
@@ -98,9 +104,17 @@ ShaderSource bounded_source(const Context& context, const ShaderSource& source, 
 
 }  // namespace
 
-ComputeProgram::ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source)
-    : context_(&context), name_(name) {
-  const ShaderSource compiled = bounded_source(context, source, loops_, guard_binding_);
+ComputeProgram::ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source,
+                               const std::vector<Define>& defines)
+    : context_(&context), name_(name), defines_(defines), census_(context.loop_census()) {
+  ShaderSource compiled;
+  if (census_ && source.stage == Stage::compute) {  // counted, not guarded: the bench's estimate run
+    compiled = source;
+    census_loops_ = census_loops(glslang_process(), compiled, driver_target(context), last_storage_binding(context));
+  } else {
+    census_ = nullptr;
+    compiled = bounded_source(context, source, loops_, guard_binding_);
+  }
   program_ = link_program(context, name, {&compiled});
   context.gl().GetProgramiv(program_.id(), GL_COMPUTE_WORK_GROUP_SIZE, local_size_);
   if (context.dispatch_bounds().enabled) {
@@ -136,11 +150,37 @@ void ComputeProgram::run(const std::string& what, const std::function<void()>& i
   throw_if_loop_tripped(state, loops_, bounds.loop_iterations, name_ + ": " + what);
 }
 
+void ComputeProgram::run_counted(const std::string& what, const int groups[2], const std::function<void()>& issue) const {
+  const auto& gl = context_->gl();
+  LoopCensusRecord r;
+  r.pass = name_, r.defines = defines_, r.loops = census_loops_;
+  for (int k = 0; k < 3; ++k) r.local_size[k] = local_size_[k];
+  r.groups[0] = groups[0], r.groups[1] = groups[1];
+  const std::size_t words = static_cast<std::size_t>(r.invocations()) *
+                            (census_loops_.size() + 1);
+  std::vector<std::uint32_t> words_read(std::max<std::size_t>(words, 1), 0u);
+  const GlObject counts = make_buffer(*context_, words_read.size() * sizeof(std::uint32_t), words_read.data(), GL_DYNAMIC_READ);
+  const GLuint binding = last_storage_binding(*context_);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, counts.id());
+  issue();
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  context_->throw_if_gl_error(name_ + ": " + what + " (loop census)");
+  read_buffer(*context_, counts, 0, words_read.size() * sizeof(std::uint32_t), words_read.data());
+  reduce_census_counts(r, words_read);
+  census_->records.push_back(std::move(r));
+}
+
 void ComputeProgram::dispatch(int width, int height) const {
   const auto& gl = context_->gl();
   gl.UseProgram(program_.id());
   const auto groups = [](int n, GLint local) { return static_cast<GLuint>((n + local - 1) / local); };
-  run("dispatch", [&] { gl.DispatchCompute(groups(width, local_size_[0]), groups(height, local_size_[1]), 1); });
+  if (census_) {
+    const int g[2] = {static_cast<int>(groups(width, local_size_[0])), static_cast<int>(groups(height, local_size_[1]))};
+    run_counted("dispatch", g, [&] { gl.DispatchCompute(g[0], g[1], 1); });
+  } else {
+    run("dispatch", [&] { gl.DispatchCompute(groups(width, local_size_[0]), groups(height, local_size_[1]), 1); });
+  }
   gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   context_->throw_if_gl_error(name_ + ": dispatch");
@@ -151,7 +191,14 @@ void ComputeProgram::dispatch_indirect(const GlObject& buffer) const {
   gl.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   gl.UseProgram(program_.id());
   gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffer.id());
-  run("indirect dispatch", [&] { gl.DispatchComputeIndirect(0); });
+  if (census_) {  // the group counts the GPU wrote, read back to size the count buffer
+    GLuint wrote[3] = {0, 0, 0};
+    read_buffer(*context_, buffer, 0, sizeof wrote, wrote);
+    const int g[2] = {static_cast<int>(wrote[0]), static_cast<int>(wrote[1] * wrote[2])};
+    run_counted("indirect dispatch", g, [&] { gl.DispatchComputeIndirect(0); });
+  } else {
+    run("indirect dispatch", [&] { gl.DispatchComputeIndirect(0); });
+  }
   gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -164,7 +211,8 @@ ComputeProgram compile_pass(const Context& context, const SourceTree& tree, cons
                             const std::vector<Define>& defines) {
   // The runner's own pass: from the root, never from the working directory.
   return ComputeProgram(context, pass,
-                        standalone_source(flatten(tree, tree.locate_in_root(pass)), driver_target(context), defines));
+                        standalone_source(flatten(tree, tree.locate_in_root(pass)), driver_target(context), defines),
+                        defines);
 }
 
 GlObject link_raster_pass(const Context& context, const SourceTree& tree, const std::string& stem) {

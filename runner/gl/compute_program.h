@@ -19,8 +19,10 @@ GlObject link_program(const Context& context, const std::string& name, const std
 
 class ComputeProgram {
  public:
-  // `name` is used in messages. Throws Error(ExitCode::failed) on a compile or link error.
-  ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source);
+  // `name` is used in messages (and as the pass of a loop census record, with `defines`: what
+  // it was compiled with). Throws Error(ExitCode::failed) on a compile or link error.
+  ComputeProgram(const Context& context, const std::string& name, const ShaderSource& source,
+                 const std::vector<Define>& defines = {});
 
   // Runs the program over a width × height grid of invocations (rounded up to
   // whole work groups) and waits for image writes to become visible.
@@ -37,6 +39,9 @@ class ComputeProgram {
   // and cleared, then waits for it with the deadline and throws Error(ExitCode::failed)
   // naming the pass on a timeout or a loop that passed the guard's limit.
   void run(const std::string& what, const std::function<void()>& issue) const;
+  // Under a loop census: issues the dispatch of groups[0] × groups[1] work groups with a zeroed
+  // count buffer bound, and adds its record to the census.
+  void run_counted(const std::string& what, const int groups[2], const std::function<void()>& issue) const;
 
   const Context* context_;
   std::string name_;
@@ -46,6 +51,10 @@ class ComputeProgram {
   std::vector<GuardedLoop> loops_;
   GLuint guard_binding_ = 0;
   GlObject guard_state_;
+  // Compiled under a loop census: its loops and where their counts go.
+  std::vector<Define> defines_;
+  std::vector<CensusLoop> census_loops_;
+  LoopCensus* census_ = nullptr;
 };
 
 // The GLSL target a context's driver compiles: es310 on an OpenGL ES context, else gl450 —

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "device/loop_census.h"
 #include "device/query_device.h"
 #include "shader/loop_guard.h"
 
@@ -60,6 +61,12 @@ class Context : public QueryDevice {
   // Programs compiled and dispatches issued after this call follow `bounds`.
   void set_dispatch_bounds(const DispatchBounds& bounds) { bounds_ = bounds; }
   const DispatchBounds& dispatch_bounds() const { return bounds_; }
+
+  // While `census` is set (null: none), compute passes compiled count their loops
+  // (shader/loop_census.h) and each of their dispatches adds a record to it. A program keeps
+  // what it was compiled with: a census needs programs of its own (the bench's estimate run).
+  void set_loop_census(LoopCensus* census) const { census_ = census; }
+  LoopCensus* loop_census() const { return census_; }
 
   // Forgets pending errors that the caller reports itself (a shader compile
   // log, which the debug output would otherwise repeat).
@@ -125,6 +132,7 @@ class Context : public QueryDevice {
   GladGLContext gl_{};
   mutable std::vector<std::string> debug_errors_;
   DispatchBounds bounds_;
+  mutable LoopCensus* census_ = nullptr;  // borrowed while set: the caller's
 };
 
 // Makes a context of `api` with the given backend, or the first that works in

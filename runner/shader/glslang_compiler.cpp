@@ -5,6 +5,7 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv-tools/libspirv.hpp>
 
+#include "core/error.h"
 #include "shader/spirv_cross.h"
 
 namespace pn {
@@ -184,6 +185,13 @@ Preprocessed preprocess_hlsl_with_glslang(const GlslangProcess&, const std::stri
   const EShMessages messages = hlsl_environment(shader, language);
   const LocationMap by_name = [&](int, int line) { return std::pair<std::string, int>{name, line}; };
   return preprocess(shader, messages, by_name, name);
+}
+
+void throw_unless_preprocessed(const Preprocessed& p) {
+  if (p.ok) return;
+  for (const Diagnostic& d : p.diagnostics)
+    if (d.severity == "error") throw Error(d.str(), ExitCode::failed);
+  throw Error(p.diagnostics.empty() ? "glslang could not preprocess it" : p.diagnostics.front().str(), ExitCode::failed);
 }
 
 }  // namespace pn

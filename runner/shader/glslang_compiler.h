@@ -44,6 +44,9 @@ struct Preprocessed {
 };
 
 Preprocessed preprocess_with_glslang(const GlslangProcess& process, const ShaderSource& source, Target target);
+// Throws Error(ExitCode::failed) with the preprocessor's first error unless `p` is ok (the compiler
+// would refuse the source with it).
+void throw_unless_preprocessed(const Preprocessed& p);
 Preprocessed preprocess_hlsl_with_glslang(const GlslangProcess& process, const std::string& text,
                                           const std::string& name, Stage stage);
 

@@ -6,83 +6,10 @@
 
 #include "core/error.h"
 #include "shader/glslang_compiler.h"
+#include "shader/source_scan.h"
 
 namespace pn {
 namespace {
-
-bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
-
-// The index just past the identifier that starts at `i` (`i` when none does).
-size_t identifier_end(const std::string& s, size_t i) {
-  while (i < s.size() && identifier_char(s[i])) ++i;
-  return i;
-}
-
-bool loop_keyword(const std::string& word) { return word == "for" || word == "while" || word == "do"; }
-
-// The module file and line of position `at` in the flattened source (ShaderSource::origin_of_line).
-std::pair<std::string, int> origin_of(const ShaderSource& source, size_t at) {
-  const std::string& s = source.text;
-  return source.origin_of_line(static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + 1);
-}
-
-// The index just past the directive (`#` first on its line: the preprocessor leaves #version,
-// #extension, #pragma and #line) or comment starting at `i`, or `i` when none starts there. A
-// directive may stand between a loop keyword and its `(` (`while⏎#line 500⏎(…)`, issue 39).
-size_t skip_comment(const std::string& s, size_t i) {
-  if (s[i] == '#') {
-    size_t b = i;
-    while (b > 0 && (s[b - 1] == ' ' || s[b - 1] == '\t')) --b;
-    if (b == 0 || s[b - 1] == '\n') {
-      const size_t end = s.find('\n', i);
-      return end == std::string::npos ? s.size() : end;
-    }
-  }
-  if (s.compare(i, 2, "//") == 0) {
-    const size_t end = s.find('\n', i);
-    return end == std::string::npos ? s.size() : end;
-  }
-  if (s.compare(i, 2, "/*") == 0) {
-    const size_t end = s.find("*/", i + 2);
-    return end == std::string::npos ? s.size() : end + 2;
-  }
-  return i;
-}
-
-size_t skip_space(const std::string& s, size_t i) {
-  while (i < s.size()) {
-    if (std::isspace(static_cast<unsigned char>(s[i])) != 0) ++i;
-    else if (const size_t after = skip_comment(s, i); after != i) i = after;
-    else break;
-  }
-  return i;
-}
-
-// For the bracket at `open` ('(' or '{'): the index of the one that closes it, and of each
-// ';' at its own depth inside it (a for header's two).
-struct Bracketed {
-  size_t close = std::string::npos;
-  std::vector<size_t> semicolons;
-};
-
-Bracketed match_bracket(const std::string& s, size_t open) {
-  const char opening = s[open], closing = opening == '(' ? ')' : '}';
-  Bracketed b;
-  int depth = 0;
-  for (size_t i = open; i < s.size();) {
-    if (const size_t after = skip_comment(s, i); after != i) {
-      i = after;
-      continue;
-    }
-    if (s[i] == opening) ++depth;
-    else if (s[i] == closing && --depth == 0) {
-      b.close = i;
-      return b;
-    } else if (s[i] == ';' && depth == 1) b.semicolons.push_back(i);
-    ++i;
-  }
-  return b;
-}
 
 std::string trimmed(const std::string& s) {
   const size_t a = s.find_first_not_of(" \t\n\r"), b = s.find_last_not_of(" \t\n\r");
@@ -342,15 +269,6 @@ std::string guard_prelude(const LoopGuardSettings& settings, GuardSyntax syntax,
          "  if (pnLoopGuardCounts[loop] > " + limit + ") atomicCompSwap(pnLoopGuardTripped, 0u, loop + 1u);\n"
          "  return false;\n"
          "}\n";
-}
-
-// Throws the preprocessor's first error (it has one when not ok): the compiler would refuse the
-// source with it.
-void throw_unless_preprocessed(const Preprocessed& p) {
-  if (p.ok) return;
-  for (const Diagnostic& d : p.diagnostics)
-    if (d.severity == "error") throw Error(d.str(), ExitCode::failed);
-  throw Error(p.diagnostics.empty() ? "glslang could not preprocess it" : p.diagnostics.front().str(), ExitCode::failed);
 }
 
 }  // namespace

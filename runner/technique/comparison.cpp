@@ -87,10 +87,29 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
     timed.push_back(cascaded ? on_cascades.back().get() : techniques.back().get());
   }
   std::vector<TechniqueMeasurement> measurements = measure_techniques(timed, inputs, setup.repeats);
+  std::vector<LoopCensus> censuses(setup.techniques.size());
+  if (setup.census)
+    for (size_t k = 0; k < setup.techniques.size(); ++k) {
+      // Programs of its own, compiled and run while the census is the context's.
+      struct CensusScope {
+        const Context& context;
+        CensusScope(const Context& c, LoopCensus& census) : context(c) { context.set_loop_census(&census); }
+        ~CensusScope() { context.set_loop_census(nullptr); }
+      } scope(context, censuses[k]);
+      TechniqueResources counted(context, tree);
+      const std::unique_ptr<Technique> technique = setup.techniques[k]->create(counted);
+      if (cascaded) {
+        const CascadedTechnique on_cascades(*technique, counted.shared<CascadeBlendPass>(), context);
+        on_cascades.run(inputs, false);
+      } else {
+        technique->run(inputs, false);
+      }
+    }
   for (size_t k = 0; k < setup.techniques.size(); ++k) {
     TechniqueResult r;
     r.name = setup.techniques[k]->name();
     r.measurement = std::move(measurements[k]);
+    r.census = std::move(censuses[k]);
     r.visibility = context.read_texture(*r.measurement.frame.visibility, 0, 0);
     r.vs_truth = against_truth.score(r.visibility);
     c.results.push_back(std::move(r));

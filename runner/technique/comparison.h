@@ -27,6 +27,9 @@ struct ComparisonSetup {
   int repeats = 3;
   int truth_samples = 16;  // per side: S×S light samples per pixel
   std::vector<const TechniqueConfig*> techniques;  // validated; not owned
+  // After the timed rounds, each technique once more on programs of its own that count their
+  // loops (Context::set_loop_census): TechniqueResult::census, the GPU estimate's input.
+  bool census = false;
 };
 
 struct TechniqueResult {
@@ -35,6 +38,7 @@ struct TechniqueResult {
   Image visibility;                // rows from the bottom
   Scores vs_truth;
   std::optional<Scores> vs_exact;  // when exact PCSS ran
+  LoopCensus census;               // its compute dispatches' loop counts (ComparisonSetup::census)
 };
 
 struct Comparison {
