@@ -55,3 +55,22 @@ TEST_CASE("a census count finds its loop; its marker is not counted; an unrolled
   CHECK(m.straight.loads == 0.0);
   CHECK(m.unmarked_loops == 0);
 }
+
+TEST_CASE("a loop the compiler unrolled twice inside its ISA loop costs half that loop a run") {
+  const std::string isa =
+      "BB1:\n"
+      "\tbuffer_load_dword v6, v4, s[16:19], 0 offen offset:4\n"
+      "\tv_add_nc_u32_e32 v6, 1, v6\n"
+      "\tbuffer_store_dword v6, v4, s[16:19], 0 offen offset:4\n"
+      "\tv_mul_f32_e32 v1, v1, v1\n"
+      "\tbuffer_load_dword v6, v4, s[16:19], 0 offen offset:4\n"
+      "\tv_add_nc_u32_e32 v6, 1, v6\n"
+      "\tbuffer_store_dword v6, v4, s[16:19], 0 offen offset:4\n"
+      "\tv_mul_f32_e32 v1, v1, v1\n"
+      "\ts_cbranch_scc1 BB1\n"
+      "BB2:\n"
+      "\ts_endpgm\n";
+  const pn::IsaCostModel m = pn::isa_cost_model(isa, 1, pn::issue_model("navi21", 32));
+  CHECK(m.in_loop == std::vector<bool>{true});
+  CHECK(m.loop_bodies[0].cycles == 1.5);  // (two v_mul + the branch) / 2
+}

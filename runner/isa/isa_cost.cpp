@@ -156,11 +156,14 @@ IsaCostModel isa_cost_model(const std::string& isa, std::size_t census_loops, co
       if (r >= 0 && std::find(in.begin(), in.end(), r) == in.end()) in.push_back(r);
     if (in.empty()) continue;  // unrolled, or never reached: its code is in the straight part
     m.in_loop[j] = true;
-    // A function's loop inlined at several calls: one count for all of them, each copy the same code.
+    // A function's loop inlined at several calls: one count for all of them, each copy the same
+    // code. A loop unrolled k times inside its ISA loop has k markers there: a run is 1/k of it.
     for (int r : in) {
+      const double copies = static_cast<double>(std::count(marked[j].begin(), marked[j].end(), r));
+      const double share = 1.0 / (static_cast<double>(in.size()) * copies);
       region_marked[static_cast<std::size_t>(r)] = true;
-      m.loop_bodies[j].cycles += region_cost[static_cast<std::size_t>(r)].cycles / static_cast<double>(in.size());
-      m.loop_bodies[j].loads += region_cost[static_cast<std::size_t>(r)].loads / static_cast<double>(in.size());
+      m.loop_bodies[j].cycles += region_cost[static_cast<std::size_t>(r)].cycles * share;
+      m.loop_bodies[j].loads += region_cost[static_cast<std::size_t>(r)].loads * share;
     }
   }
   for (std::size_t r = 0; r < regions.size(); ++r)
