@@ -31,13 +31,18 @@ std::string shell_quoted(const std::string& text) {
   return out + "'";
 }
 
-// The commit the glsl root is checked out at, and whether the root has local changes.
+// Where the glsl root's files come from, the same in every clone (issue 41: no absolute path): the
+// root's path inside its repository, the last commit that changed it (not HEAD: a commit elsewhere
+// changes no bundle), and whether it has local changes.
 std::string provenance(const std::filesystem::path& root) {
   const std::string git = "git -C " + shell_quoted(root.string()) + " ";
   const std::string commit = first_line_of(git + "log -1 --format=%H -- . 2>/dev/null");
-  if (commit.empty()) return root.string() + " (not a git checkout)";
+  if (commit.empty()) return "a copy outside any git checkout (see the hashes)";
+  std::string inside = first_line_of(git + "rev-parse --show-prefix 2>/dev/null");
+  if (inside.empty()) inside = "./";
   const bool changed = !first_line_of(git + "status --porcelain -- . 2>/dev/null").empty();
-  return "commit " + commit + " of " + root.string() + (changed ? ", with local changes (see the hashes)" : "");
+  return inside + " of its repository at commit " + commit + ", the last commit that changed it" +
+         (changed ? ", with local changes (see the hashes)" : "");
 }
 
 }  // namespace
