@@ -3,6 +3,8 @@
 #include <cinttypes>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
+#include <sstream>
 
 #include "core/error.h"
 #include "shader/flatten.h"
@@ -43,18 +45,44 @@ std::string export_entry(const SourceTree& tree, const std::string& module) {
 
 namespace {
 
-const char* kind_register(DescriptorKind kind, CrossLanguage language) {
-  const bool msl = language == CrossLanguage::msl;
-  switch (kind) {
-    case DescriptorKind::combined_image_sampler:
-    case DescriptorKind::sampled_image:
-      return msl ? "[[texture(N)]] + [[sampler(N)]]" : "t<N> + s<N>";
-    case DescriptorKind::sampler: return msl ? "[[sampler(N)]]" : "s<N>";
-    case DescriptorKind::storage_image: return msl ? "[[texture(N)]], read-write" : "u<N>";
-    case DescriptorKind::uniform_buffer: return msl ? "[[buffer(N)]]" : "b<N>";
-    case DescriptorKind::storage_buffer: return msl ? "[[buffer(N)]]" : "u<N>";
+// The declarations in the exported `code` of the resource at GLSL `binding`, as the code spells
+// them (issue 41: the header is read from the code, not written from a rule beside it): HLSL's
+// `… : register(xN)` lines (a read-only storage buffer is a `ByteAddressBuffer` at tN, a
+// combined sampler a texture at tN and its `SamplerState` at sN), MSL's kernel parameters at
+// `[[texture(N)]]`, `[[sampler(N)]]`, `[[buffer(N)]]` (an image written only is `access::write`).
+std::vector<std::string> declarations_of(const std::string& code, CrossLanguage language, unsigned binding) {
+  std::vector<std::string> out;
+  const std::string n = std::to_string(binding);
+  if (language == CrossLanguage::msl) {
+    // The kernel's parameters, split at the commas outside <> and ().
+    const std::size_t kernel = code.find("kernel void ");
+    const std::size_t open = kernel == std::string::npos ? kernel : code.find('(', kernel);
+    if (open == std::string::npos) return out;
+    std::vector<std::string> parameters(1);
+    int depth = 0;
+    for (std::size_t i = open + 1; i < code.size() && depth >= 0; ++i) {
+      const char c = code[i];
+      if (c == '<' || c == '(') ++depth;
+      if (c == '>' || c == ')') --depth;
+      if (depth < 0) break;
+      if (c == ',' && depth == 0) parameters.emplace_back();
+      else parameters.back() += c;
+    }
+    const std::regex at(R"(^\s*(.*\[\[(texture|sampler|buffer)\((\d+)\)\]\])\s*$)");
+    for (const std::string& p : parameters) {
+      std::smatch m;
+      if (std::regex_match(p, m, at) && m[3] == n) out.push_back(m[1].str());
+    }
+    return out;
   }
-  return "?";
+  const std::regex declaration(R"(^\s*(.*?)\s*:\s*register\(([tsub])(\d+)(, space\d+)?\))");
+  std::istringstream lines(code);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, declaration) && m[3] == n)
+      out.push_back(m[1].str() + " : register(" + m[2].str() + n + m[4].str() + ")");
+  }
+  return out;
 }
 
 }  // namespace
@@ -77,16 +105,16 @@ std::string export_source(const GlslangProcess& process, const SourceTree& tree,
   header += "// files (FNV-1a 64 of each):\n";
   for (const std::string& file : flat.files)
     header += "//   " + content_hash(tree.read(tree.locate_in_root(file))) + "  " + file + "\n";
-  header += "// bindings: GLSL binding N -> ";
   header += language == CrossLanguage::msl
-                ? "[[texture(N)]], [[sampler(N)]], [[buffer(N)]]; set 0\n"
-                : "register t<N> (texture), s<N> (its sampler: GLSL's combined samplers are split), u<N> (image), "
-                  "b<N> (cbuffer); space 0\n";
-  for (const SpirvBinding& b : reflect_spirv(compiled.spirv, true).bindings) {
-    std::string where = kind_register(b.kind, language);
-    for (size_t at; (at = where.find('N')) != std::string::npos;) where.replace(at, 1, std::to_string(b.binding));
-    for (size_t at; (at = where.find("<")) != std::string::npos;) where.erase(at, 1);
-    for (size_t at; (at = where.find(">")) != std::string::npos;) where.erase(at, 1);
+                ? "// bindings: GLSL binding N at index N ([[texture(N)]], [[sampler(N)]], [[buffer(N)]]), as the "
+                  "kernel declares each:\n"
+                : "// bindings: GLSL binding N at register N of its kind (t: texture or read-only buffer, s: its "
+                  "sampler, GLSL's combined samplers split; u: image or read-write buffer; b: cbuffer), space 0, as "
+                  "the code declares each:\n";
+  for (const SpirvBinding& b : reflect_spirv(compiled.spirv).bindings) {
+    std::string where;
+    for (const std::string& d : declarations_of(text, language, b.binding)) where += (where.empty() ? "" : "; ") + d;
+    if (where.empty()) where = "unused: not in the code";
     header += "//   " + b.name + " (GLSL binding " + std::to_string(b.binding) + "): " + where + "\n";
   }
   return header + text;

@@ -22,7 +22,11 @@ for p in points:
     fast = [r for r in p["rows"] if r["method"] == "fast"]
     assert fast and fast[0]["fetches_per_pixel"] is not None, f"{where}: fast has no fetch count"
     assert fast[0]["fetch_tile_max"] >= fast[0]["fetches_per_pixel"], f"{where}: tile max below the mean"
-print("frontier.json: 4 points, a frontier in each, fast's fetch proxy")
+    # The GPU cost estimate (docs/isa.md): every row has one, and the estimate's frontier is marked.
+    assert all(r["estimate_ms"] is not None and r["estimate_ms"] > 0 for r in p["rows"]), f"{where}: a row has no estimate"
+    assert any(r["on_estimate_frontier"] for r in p["rows"]), f"{where}: no row on the estimate's frontier"
+assert doc["results"]["estimate"] == "navi21 wave64", doc["results"]["estimate"]
+print("frontier.json: 4 points, a frontier in each, fast's fetch proxy, an estimate for every row")
 PY
 signature=$(head -c 8 "$work/frontier.png" | od -An -tx1 | tr -d ' \n')
 [ "$signature" = "89504e470d0a1a0a" ] || { echo "$work/frontier.png is not a PNG ($signature)"; exit 1; }

@@ -8,6 +8,10 @@
 - the same modules as MSL (which cannot be compiled on Linux): the export is deterministic (two
   runs, the same bytes) and every resource the header lists is in the kernel's signature at the
   index the header names (SPIRV-Cross's reflection);
+- every export and every pass (passes/*.comp), as HLSL 5.0, 6.0 and MSL: the header's binding
+  lines are the code's own declarations (issue 41: a read-only storage buffer is a
+  `ByteAddressBuffer … : register(tN)`, an image written only `access::write`), and every
+  resource the code declares is in the header;
 - a module without an export entry is refused in one line that names the entry it looked for.
 """
 import glob
@@ -23,6 +27,35 @@ def run(*args):
     return subprocess.run(args, capture_output=True, text=True, timeout=300)
 
 
+def header_matches_code(name, language, text):
+    """The failures of one export's header against its code (an empty list when they agree)."""
+    head_end = 0
+    for m in BINDING.finditer(text):
+        head_end = max(head_end, m.end())
+    code = text[head_end:]
+    listed = []
+    failures = []
+    for resource, binding, where in BINDING.findall(text[:head_end]):
+        if where == 'unused: not in the code':  # declared in GLSL, dropped by SPIRV-Cross: nothing to bind
+            continue
+        for declaration in where.split('; '):
+            listed.append(declaration)
+            if declaration not in code:
+                failures.append(f'{name} ({language}): the header says {declaration!r} for {resource}, '
+                                'which the code does not declare')
+    if language == 'MSL':
+        kernel = re.search(r'kernel void main0\((.*?)\)\s*\{', code, re.S)
+        declared = re.findall(r'\[\[(?:texture|sampler|buffer)\(\d+\)\]\]', kernel.group(1)) if kernel else []
+        named = [re.search(r'\[\[\w+\(\d+\)\]\]', d).group(0) for d in listed if '[[' in d]
+    else:
+        declared = re.findall(r'register\([tsub]\d+(?:, space\d+)?\)', code)
+        named = [re.search(r'register\([^)]*\)', d).group(0) for d in listed if 'register(' in d]
+    for d in declared:
+        if d not in named:
+            failures.append(f'{name} ({language}): the code declares {d}, which the header does not list')
+    return failures
+
+
 def main():
     penumbra, validator, glsl, scratch = sys.argv[1:5]
     os.makedirs(scratch, exist_ok=True)
@@ -31,6 +64,7 @@ def main():
     passes = sorted('passes/' + os.path.basename(p) for p in glob.glob(os.path.join(glsl, 'passes', '*_query.comp')))
     if len(modules) < 8:
         failures.append(f'{len(modules)} export entries: expected one per technique (8)')
+    checked = set()  # (entry, language) whose header was read against its code
     for name in [m + '.glsl' for m in modules] + passes:
         for model in ('5.0', '6.0'):
             out = os.path.join(scratch, os.path.basename(name) + model + '.hlsl')
@@ -42,6 +76,8 @@ def main():
             if v.returncode != 0:
                 failures.append(f'{name} (HLSL {model}) refused by glslangValidator -D: {v.stdout.strip()[:300]}')
             text = open(out).read()
+            failures.extend(header_matches_code(name, 'HLSL ' + model, text))
+            checked.add((name, 'HLSL ' + model))
             if name.endswith('.glsl'):
                 call = 'pn' + ''.join(w.capitalize() for w in name[:-5].split('_'))
                 if name == 'vsm.glsl':
@@ -55,16 +91,23 @@ def main():
         if first.returncode != 0 or first.stdout != second.stdout:
             failures.append(f'{name} (MSL): exit {first.returncode}, or two runs differ')
             continue
-        bindings = BINDING.findall(first.stdout)
-        kernel = re.search(r'kernel void main0\((.*?)\)\s*\{', first.stdout, re.S)
-        if not bindings or not kernel:
-            failures.append(f'{name} (MSL): no binding list in the header, or no kernel')
-            continue
-        for resource, binding, where in bindings:
-            index = 'buffer' if 'buffer' in where else 'texture'
-            if not re.search(r'\b' + resource + r'\w*\s*\[\[' + index + r'\(' + binding + r'\)\]\]', kernel.group(1)) and \
-               not re.search(r'&\s*\w+\s*\[\[' + index + r'\(' + binding + r'\)\]\]', kernel.group(1)):
-                failures.append(f'{name} (MSL): {resource} not at [[{index}({binding})]] in the kernel')
+        failures.extend(header_matches_code(name, 'MSL', first.stdout))
+        checked.add((name, 'MSL'))
+    # The header against the code: every export and every pass, each language (shader model 6.0's
+    # registers differ from 5.0's by `, space0` only: the other passes are read in 5.0 and MSL).
+    every_pass = sorted('passes/' + os.path.basename(p) for p in glob.glob(os.path.join(glsl, 'passes', '*.comp')))
+    for name in [m + '.glsl' for m in modules] + every_pass:
+        for target, language in (('--shader-model=5.0', 'HLSL 5.0'), ('--shader-model=6.0', 'HLSL 6.0'), (None, 'MSL')):
+            if (name, language) in checked or language == 'HLSL 6.0':
+                continue
+            args = [penumbra, 'bundle', name, '--target', 'msl' if language == 'MSL' else 'hlsl'] + ([target] if target else [])
+            b = run(*args)
+            if b.returncode != 0:
+                failures.append(f'bundle {name} as {language}: {b.stderr.strip()}')
+                continue
+            failures.extend(header_matches_code(name, language, b.stdout))
+            checked.add((name, language))
+    print(f'{len(checked)} exports: the header read against the code')
     bad = run(penumbra, 'bundle', 'region.glsl', '--target', 'hlsl')
     if bad.returncode != 2 or 'exports/region.comp' not in bad.stderr or len(bad.stderr.strip().splitlines()) != 1:
         failures.append(f'bundle region.glsl --target hlsl: exit {bad.returncode}, {bad.stderr.strip()!r}: expected '
