@@ -8,16 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "shader/source_scan.h"
 #include "shader/target.h"
 
 namespace pn {
 
 class GlslangProcess;  // shader/glslang_compiler.h
 
-struct CensusLoop {
-  std::string file;  // where the loop keyword is (ShaderSource::origin_of_line)
-  int line = 0;
-};
+using CensusLoop = SourceLoop;
 
 // Rewrites preprocessed compute-shader text: the census buffer's declaration before the first
 // #line marker (`uint pnLoopCensusCounts[]` at `binding`, std430), and every for, while and

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "shader/source_scan.h"
 #include "shader/target.h"
 
 namespace pn {
@@ -33,10 +34,7 @@ struct LoopGuardSettings {
 
 enum class GuardSyntax { glsl, hlsl };
 
-struct GuardedLoop {
-  std::string file;  // where the loop keyword is (ShaderSource::origin_of_line)
-  int line = 0;
-};
+using GuardedLoop = SourceLoop;
 
 // Replaces `source.text` (a compute shader from standalone_source) by glslang's preprocessed text
 // for `target` with the guard in: its declarations before the first #line marker, every loop

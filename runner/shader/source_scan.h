@@ -17,6 +17,12 @@ bool identifier_char(char c);
 std::size_t identifier_end(const std::string& s, std::size_t i);
 bool loop_keyword(const std::string& word);  // for, while, do
 
+// A loop of a shader's source: where its keyword is (ShaderSource::origin_of_line).
+struct SourceLoop {
+  std::string file;
+  int line = 0;
+};
+
 // The module file and line of position `at` in the flattened source (ShaderSource::origin_of_line).
 std::pair<std::string, int> origin_of(const ShaderSource& source, std::size_t at);
 
