@@ -46,4 +46,29 @@ GLSL
   done
   echo "$module: the call compiles in a fragment shader for gl450, vulkan, es310"
 done || status=1
+
+# The #include route without an include processor (integration.md): glslangValidator -E expands the
+# includes; its GL output keeps GL_GOOGLE_include_directive and named #line directives, which a GL
+# driver refuses, so they go; what is left compiles as GLSL 4.50 with no include support.
+src="$out/include_route.frag"
+cat > "$src" <<'GLSL'
+#version 450 core
+#extension GL_GOOGLE_include_directive : require
+layout(binding = 0) uniform sampler2D uMip;
+layout(binding = 1) uniform sampler2D uTable;
+#include "fast_pcss.glsl"
+layout(location = 0) in vec3 vReceiver;
+layout(location = 0) out vec4 outColour;
+void main() {
+  PnLight light = PnLight(2.0, 1.0, 2.0, 1024.0, 0.0, 0.0);
+  outColour = vec4(pnFastPcss(uMip, uTable, light, vReceiver, ivec2(gl_FragCoord.xy), pnFastPcssDefaults(0.02)));
+}
+GLSL
+"$validator" -S frag "$src" > "$out/plain.log" 2>&1 && { echo "glslangValidator without -E accepted #include"; status=1; }
+"$validator" -E -S frag -I"$glsl" "$src" > "$out/expanded.frag" 2> "$out/expanded.log" || {
+  cat "$out/expanded.log"; echo "glslangValidator -E could not expand the includes"; status=1; }
+grep -v -e '^#extension GL_GOOGLE_include_directive' -e '^#line ' "$out/expanded.frag" > "$out/for_gl.frag"
+if grep -q '#include' "$out/for_gl.frag"; then echo "an #include is left after -E"; status=1; fi
+"$validator" -S frag "$out/for_gl.frag" > "$out/for_gl.log" 2>&1 || { cat "$out/for_gl.log"; echo "the expanded text does not compile"; status=1; }
+[ $status -eq 0 ] && echo "the #include route: glslangValidator -E, then GLSL 4.50 without includes"
 exit $status
