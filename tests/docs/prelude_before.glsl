@@ -1,0 +1,34 @@
+// The names the docs' snippets use (tests/doc_snippets.py), declared once; a snippet's own
+// declarations shadow them. Before the modules: samplers, disks and plain values.
+S(0) uniform sampler2D mip;
+S(1) uniform sampler2D sampleTable;
+S(2) uniform sampler2D depthMap;
+S(3) uniform sampler2D shadowMap;
+S(4) uniform sampler2D shadowMask;
+S(5) uniform sampler2D screenDepth;
+S(6) uniform sampler2D staticMap;
+S(7) uniform sampler2D dynamicMap;
+S(8) uniform sampler2D entries;
+S(9) uniform sampler2D parents;
+S(10) uniform sampler2D moments;
+S(11) uniform usampler2D rowPrefix;
+S(12) uniform usampler2D table;
+S(13) uniform sampler2DArray pyramid;
+const vec2 PN_BLOCKER_DISK[2] = vec2[](vec2(0.1, 0.2), vec2(-0.3, 0.4));
+const vec2 PN_FILTER_DISK[3] = vec2[](vec2(0.5, 0.0), vec2(0.0, -0.5), vec2(-0.2, 0.1));
+const mat4 lightView = mat4(1.0), lightProjection = mat4(1.0), uLightProjection = mat4(1.0);
+const vec3 receiver = vec3(10.0, 12.0, 3.0), worldPosition = vec3(1.0), lightColor = vec3(1.0);
+vec3 color = vec3(0.0);
+const float bias = 0.02, lambert = 0.5, depthValue = 0.5, depthBufferValue = 0.5, maxSlope = 1.0, filterScale = 1.0;
+const float blockerMean = 2.0, sigma1 = 0.1, sigma2 = 1.0, sigma3 = 0.5, receiverDepth = 3.0, minVariance = 1e-4;
+const float bleedingReduction = 0.2, sigma = 2.0, depthTolerance = 0.05, viewDepth = 5.0, near = 0.1, band = 0.1;
+const float side = 8.0;
+const bool zeroToOneClip = false, hasBlocker = true, fadeLast = true;
+const int mapSize = 512, iterations = 3, k = 2, column = 0, row = 0, x = 0, y = 0, level = 1, count = 3, radius = 3;
+const int leafSide = 16, leafMode = 0, nodeBudget = 1000, depthSums = 0, squareSide = 8;
+const ivec2 p = ivec2(1, 2), texel = ivec2(3, 4), origin = ivec2(0), pixel = ivec2(5, 6), regionOrigin = ivec2(0);
+const ivec2 regionSize = ivec2(16), size = ivec2(4);
+const uvec4 left = uvec4(0u), above = uvec4(0u);
+const vec2 g = vec2(0.01, 0.0), centre = vec2(8.0), unitRange = vec2(0.0, 1.0), depthRange = vec2(0.1, 100.0);
+const vec2 exponents = vec2(40.0, 5.0);
+const vec4 splitFar = vec4(10.0, 20.0, 40.0, 80.0);
