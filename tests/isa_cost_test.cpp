@@ -5,9 +5,9 @@
 
 #include "isa/isa_cost.h"
 
-TEST_CASE("issue cycles follow the family and the wave size") {
-  const pn::IssueModel rdna64 = pn::issue_model("navi21", 64), rdna32 = pn::issue_model("navi21", 32);
-  const pn::IssueModel gcn = pn::issue_model("polaris10", 64), gfx11 = pn::issue_model("gfx1100", 64);
+TEST_CASE("issue cycles follow the family and the wave size (GCN: a device without wave32)") {
+  const pn::IssueModel rdna64 = pn::issue_model("navi21", 64, 32), rdna32 = pn::issue_model("navi21", 32, 32);
+  const pn::IssueModel gcn = pn::issue_model("polaris10", 64, 64), gfx11 = pn::issue_model("gfx1100", 64, 32);
   CHECK(pn::issue_cycles("v_add_f32_e32", rdna64) == 2.0);   // two passes of a SIMD32
   CHECK(pn::issue_cycles("v_add_f32_e32", rdna32) == 1.0);
   CHECK(pn::issue_cycles("v_add_f32_e32", gcn) == 4.0);      // SIMD16
@@ -44,7 +44,7 @@ TEST_CASE("a census count finds its loop; its marker is not counted; an unrolled
       "BB2:\n"
       "\tv_add_f32_e32 v1, v1, v1                          ; 06020301\n"
       "\ts_endpgm                                          ; bf810000\n";
-  const pn::IsaCostModel m = pn::isa_cost_model(isa, 2, pn::issue_model("navi21", 64));
+  const pn::IsaCostModel m = pn::isa_cost_model(isa, 2, pn::issue_model("navi21", 64, 32));
   REQUIRE(m.loop_bodies.size() == 2);
   CHECK(m.in_loop == std::vector<bool>{true, false});
   // The body: image_load 2 + v_mul 2 + s_add 1 + s_cmp 1 + s_cbranch 1.
@@ -70,7 +70,7 @@ TEST_CASE("a loop the compiler unrolled twice inside its ISA loop costs half tha
       "\ts_cbranch_scc1 BB1\n"
       "BB2:\n"
       "\ts_endpgm\n";
-  const pn::IsaCostModel m = pn::isa_cost_model(isa, 1, pn::issue_model("navi21", 32));
+  const pn::IsaCostModel m = pn::isa_cost_model(isa, 1, pn::issue_model("navi21", 32, 32));
   CHECK(m.in_loop == std::vector<bool>{true});
   CHECK(m.loop_bodies[0].cycles == 1.5);  // (two v_mul + the branch) / 2
 }

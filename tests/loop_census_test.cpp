@@ -6,18 +6,11 @@
 
 #include <algorithm>
 
+#include "module_source.h"
 #include "shader/glslang_compiler.h"
 #include "shader/loop_census.h"
 
 namespace {
-
-pn::ShaderSource wrapped(const std::string& body) {
-  pn::FlatSource flat;
-  flat.text = "#line 1 0\n" + body;
-  flat.files = {"m.glsl"};
-  flat.has_main = true;
-  return pn::standalone_source(flat, pn::Target::gl450);
-}
 
 std::string between(const std::string& s, const std::string& from, const std::string& to) {
   const std::size_t a = s.find(from);
@@ -37,7 +30,7 @@ TEST_CASE("the loop census counts every loop body, braced or not, and records wh
       "    if (k > s) for (uint j = 0u; j < k; ++j) { s += j; } else s += 1u;\n"  // 7
       "  return s;\n"
       "}\n";
-  pn::ShaderSource source = wrapped(body);
+  pn::ShaderSource source = pn::test::module_source(body);
   const std::vector<pn::CensusLoop> loops = pn::census_preprocessed_loops(source, 5);
   CHECK(between(source.text, "#line 1 0\n", "\nvoid pnLoopCensus(uint loop) {") ==
         "#line 1 0\n"
@@ -50,12 +43,7 @@ TEST_CASE("the loop census counts every loop body, braced or not, and records wh
         "    { pnLoopCensus(3u); if (k > s) for (uint j = 0u; j < k; ++j) { pnLoopCensus(4u);  s += j; } else s += 1u;}\n"
         "  return s;\n"
         "}\n");
-  std::vector<int> lines;
-  for (const pn::CensusLoop& l : loops) {
-    CHECK(l.file == "m.glsl");
-    lines.push_back(l.line);
-  }
-  CHECK(lines == std::vector<int>{3, 4, 5, 6, 7});
+  CHECK(pn::test::loop_lines(loops) == std::vector<int>{3, 4, 5, 6, 7});
   CHECK(source.text.find("binding = 5") != std::string::npos);
   CHECK(source.text.find("slot * 6u + loop + 1u") != std::string::npos);  // 5 loops, entry 0 unused
 }
@@ -72,11 +60,7 @@ TEST_CASE("a census'd compute shader compiles for gl450, vulkan and es310") {
       "}\n";
   const pn::GlslangProcess glslang;
   for (pn::Target target : {pn::Target::gl450, pn::Target::vulkan, pn::Target::es310}) {
-    pn::FlatSource flat;
-    flat.text = "#line 1 0\n" + body;
-    flat.files = {"m.comp"};
-    flat.has_main = true;
-    pn::ShaderSource source = pn::standalone_source(flat, target);
+    pn::ShaderSource source = pn::test::module_source(body, target);
     const std::vector<pn::CensusLoop> loops = pn::census_loops(glslang, source, target, 3);
     CHECK(loops.size() == 2);
     const pn::CompileResult r = pn::compile_with_glslang(glslang, source, target);

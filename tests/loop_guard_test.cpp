@@ -8,18 +8,12 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "module_source.h"
 #include "shader/glslang_compiler.h"
 #include "shader/loop_guard.h"
 
 namespace {
 
-pn::ShaderSource wrapped(const std::string& body, pn::Target target = pn::Target::gl450) {
-  pn::FlatSource flat;
-  flat.text = "#line 1 0\n" + body;
-  flat.files = {"m.glsl"};
-  flat.has_main = true;  // no entry point appended: the text ends where the module does
-  return pn::standalone_source(flat, target);
-}
 
 // The text after the guard's prelude (the part the rewrite edits loop by loop).
 std::string after_prelude(const pn::ShaderSource& s) { return s.text.substr(s.text.find("\n#line 1 0\n") + 1); }
@@ -40,7 +34,7 @@ TEST_CASE("the loop guard prefixes every loop condition and records where each l
       "    while (whiley < k) whiley++;\n"                        // 10
       "  return s + whiley;\n"
       "}\n";
-  pn::ShaderSource source = wrapped(body);
+  pn::ShaderSource source = pn::test::module_source(body);
   const std::vector<pn::GuardedLoop> loops = pn::guard_preprocessed_loops(source, {7, 1000}, pn::GuardSyntax::glsl);
   CHECK(after_prelude(source) ==
         "#line 1 0\n"
@@ -56,16 +50,11 @@ TEST_CASE("the loop guard prefixes every loop condition and records where each l
         "    while (pnLoopGuard(5u) && (whiley < k)) whiley++;\n"
         "  return s + whiley;\n"
         "}\n");
-  std::vector<int> lines;
-  for (const pn::GuardedLoop& l : loops) {
-    CHECK(l.file == "m.glsl");
-    lines.push_back(l.line);
-  }
-  CHECK(lines == std::vector<int>{3, 4, 5, 6, 9, 10});
+  CHECK(pn::test::loop_lines(loops) == std::vector<int>{3, 4, 5, 6, 9, 10});
   CHECK(source.text.find("binding = 7") != std::string::npos);
   CHECK(source.text.find("1000u") != std::string::npos);
   // The rewrite adds no line: every line of the module keeps its number.
-  const std::string guarded = after_prelude(source), plain = after_prelude(wrapped(body));
+  const std::string guarded = after_prelude(source), plain = after_prelude(pn::test::module_source(body));
   CHECK(std::count(guarded.begin(), guarded.end(), '\n') == std::count(plain.begin(), plain.end(), '\n'));
   const auto at = static_cast<std::ptrdiff_t>(source.text.find("while (pnLoopGuard(1u)"));
   const int physical = static_cast<int>(std::count(source.text.begin(), source.text.begin() + at, '\n')) + 1;
@@ -100,7 +89,7 @@ TEST_CASE("a guarded shader compiles for gl450, vulkan and es310") {
 TEST_CASE("only for loops bounded by construction stay unguarded") {
   const pn::GlslangProcess process;
   const auto guarded = [&](const std::string& loop) {
-    pn::ShaderSource source = wrapped("#define PN_MAX_TAPS 16\n#define PN_TILE 8\nconst int PN_DISK[3] = int[](1, 2, 3);\n"
+    pn::ShaderSource source = pn::test::module_source("#define PN_MAX_TAPS 16\n#define PN_TILE 8\nconst int PN_DISK[3] = int[](1, 2, 3);\n"
                                       "const int PN_FAR = 2000000000;\nint g;\nvoid bump(inout int x) { x = 0; }\n"
                                       "void add(inout int s, int x) { s += x; }\nvoid reset() { g = 0; }\n"
                                       "int f(int n) {\n  int s = 0;\n  " + loop + "\n  return s;\n}\n");
@@ -184,7 +173,7 @@ TEST_CASE("every spelling of a loop is guarded: the guard reads the preprocessed
 
 TEST_CASE("a source the preprocessor refuses is refused by the guard with its first error") {
   const pn::GlslangProcess process;
-  pn::ShaderSource source = wrapped("float g = 1.0;\n#error not this copy\nfloat f() { return g; }\n");
+  pn::ShaderSource source = pn::test::module_source("float g = 1.0;\n#error not this copy\nfloat f() { return g; }\n");
   try {
     pn::guard_loops(process, source, pn::Target::gl450, {3, 100});
     FAIL("no error");

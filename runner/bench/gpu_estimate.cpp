@@ -9,6 +9,7 @@
 #include "isa/isa_run.h"
 #include "shader/flatten.h"
 #include "shader/glslang_compiler.h"
+#include "shader/target.h"
 
 namespace pn {
 namespace {
@@ -18,11 +19,7 @@ constexpr unsigned kCensusBinding = 63;
 // ACO's assumed latency of a vector memory load (aco_statistics.cpp, get_wait_counter_info).
 constexpr double kLoadLatency = 320.0;
 
-std::string variant_key(const LoopCensusRecord& r) {
-  std::string key = r.pass;
-  for (const Define& d : r.defines) key += "|" + d.name + "=" + d.value;
-  return key;
-}
+std::string variant_key(const LoopCensusRecord& r) { return r.pass + "|" + define_key(r.defines); }
 
 std::string loop_where(const CensusLoop& l) { return l.file + ":" + std::to_string(l.line); }
 
@@ -115,7 +112,6 @@ std::vector<GpuEstimate> GpuEstimator::estimate(const std::vector<const LoopCens
     } catch (const Error& e) {
       failed = e.what();
     }
-    const IssueModel model = issue_model(setup_.family, setup_.wave);
     for (std::size_t p = 0; p < programs.size(); ++p) {
       auto own = std::make_shared<Compiled>();
       own->loops = loop_counts[p];
@@ -128,7 +124,8 @@ std::vector<GpuEstimate> GpuEstimator::estimate(const std::vector<const LoopCens
           own->error = programs[p].entry.file + ": " + (shader.error.empty() ? "no compute shader reported" : shader.error);
         } else {
           own->figures = isa_figures(*exe, setup_.wave, results.front().min_wave);
-          own->cost = isa_cost_model(exe->isa, own->loops, model);
+          own->cost = isa_cost_model(exe->isa, own->loops,
+                                     issue_model(setup_.family, setup_.wave, results.front().min_wave));
         }
       }
       compiled_[keys[p]] = own;
@@ -228,17 +225,16 @@ nlohmann::json gpu_estimate_json(const GpuEstimate& e, const GpuEstimateSetup& s
 
 const GpuEstimate* estimate_of(const Comparison& comparison, const std::vector<GpuEstimate>& estimates,
                                const std::string& method) {
-  for (std::size_t k = 0; k < comparison.results.size() && k < estimates.size(); ++k)
-    if (comparison.results[k].name == method) return estimates[k].ok ? &estimates[k] : nullptr;
-  return nullptr;
+  const TechniqueResult* r = comparison.find(method);
+  const std::size_t k = r ? static_cast<std::size_t>(r - comparison.results.data()) : estimates.size();
+  return k < estimates.size() && estimates[k].ok ? &estimates[k] : nullptr;
 }
 
 std::vector<double> estimate_ratios(const Comparison& comparison, const std::vector<GpuEstimate>& estimates,
                                     const std::string& base) {
   std::vector<double> out(comparison.results.size(), 0.0);
-  double base_ms = 0.0;
-  for (std::size_t k = 0; k < comparison.results.size() && k < estimates.size(); ++k)
-    if (comparison.results[k].name == base && estimates[k].ok) base_ms = estimates[k].ms;
+  const GpuEstimate* of_base = estimate_of(comparison, estimates, base);
+  const double base_ms = of_base ? of_base->ms : 0.0;
   for (std::size_t k = 0; k < out.size() && k < estimates.size(); ++k)
     if (base_ms > 0 && estimates[k].ok && estimates[k].ms > 0) out[k] = base_ms / estimates[k].ms;
   return out;

@@ -83,7 +83,10 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
         const Scene scene = sweep_scene(fixture, n, factor);
         p.light_width = scene.light.width;
         p.comparison = compare_techniques(context, tree, scene, cs);
-        if (estimator) p.estimates = estimator->estimate(p.comparison);
+        if (estimator) {
+          p.estimates = estimator->estimate(p.comparison);
+          p.estimate_vs_poisson = estimate_ratios(p.comparison, p.estimates, kPoissonTechnique);
+        }
         bench.points.push_back(std::move(p));
       }
   }
@@ -145,9 +148,8 @@ void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
         else
           out << std::setw(11) << "-" << std::setw(10) << "-";
         if (bench.estimate) {
-          const std::vector<double> ratios = estimate_ratios(p->comparison, p->estimates, kPoissonTechnique);
-          for (std::size_t k = 0; k < p->comparison.results.size(); ++k)
-            if (p->comparison.results[k].name == method) print_estimate_cells(out, p->estimates, ratios, k);
+          print_estimate_cells(out, p->estimates, p->estimate_vs_poisson,
+                               static_cast<std::size_t>(r - p->comparison.results.data()));
           out << std::setprecision(2);
         }
         out << "\n";
@@ -195,12 +197,11 @@ nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& 
         row["stats"] = named_json(r->measurement.frame.stats);
         row["vs_truth"] = scores_json(r->vs_truth);
         row["vs_exact"] = r->vs_exact ? scores_json(*r->vs_exact) : nlohmann::json(nullptr);
-        if (setup.estimate)
-          for (std::size_t k = 0; k < p.comparison.results.size() && k < p.estimates.size(); ++k)
-            if (p.comparison.results[k].name == method) {
-              row["gpu_estimate"] = gpu_estimate_json(p.estimates[k], *setup.estimate);
-              row["estimate_speedup_vs_poisson"] = estimate_ratios(p.comparison, p.estimates, kPoissonTechnique)[k];
-            }
+        const std::size_t k = static_cast<std::size_t>(r - p.comparison.results.data());
+        if (setup.estimate && k < p.estimates.size()) {
+          row["gpu_estimate"] = gpu_estimate_json(p.estimates[k], *setup.estimate);
+          row["estimate_speedup_vs_poisson"] = p.estimate_vs_poisson[k];
+        }
       }
       rows.push_back(row);
     }

@@ -62,6 +62,7 @@ struct SweepPoint {
   double light_width = 0.0;  // world units, after scaling
   Comparison comparison;     // the techniques that ran at this factor
   std::vector<GpuEstimate> estimates;  // per result of the comparison (bench/gpu_estimate.h), or none
+  std::vector<double> estimate_vs_poisson;  // per result: Poisson PCSS's estimate over its own (0: none)
 };
 
 // How a technique's time changed across a scene's sweep: from its first factor with a time to

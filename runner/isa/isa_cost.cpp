@@ -27,11 +27,10 @@ struct Line {
 
 }  // namespace
 
-IssueModel issue_model(const std::string& family, int wave) {
+IssueModel issue_model(const std::string& family, int wave, int min_wave) {
   IssueModel m;
-  m.rdna = !(family == "polaris10" || family == "polaris11" || family == "polaris12" || family == "vega10" ||
-             family == "vega12" || family == "vega20" || family == "raven" || family == "fiji" || family == "tonga");
-  m.gfx11 = starts(family, "gfx11") || starts(family, "navi3");
+  m.rdna = min_wave == 32;
+  m.gfx11 = starts(family, "gfx11");
   m.wave = wave;
   return m;
 }

@@ -15,7 +15,9 @@ struct IssueModel {
   bool gfx11 = false;  // dual-issue of the common VALU operations in wave64
   int wave = 64;
 };
-IssueModel issue_model(const std::string& family, int wave);  // polaris10, vega10: GCN; gfx11xx: gfx11
+// From the device, not a second list of chip names: RDNA has wave32 (`min_wave` 32, RadvNullDevice::min_wave);
+// gfx11 is the family gfx11xx.
+IssueModel issue_model(const std::string& family, int wave, int min_wave);
 
 // Issue cycles of one instruction (its mnemonic, "v_fma_f32") for one wave.
 double issue_cycles(const std::string& mnemonic, const IssueModel& model);
