@@ -45,14 +45,14 @@
 //   exactly (runner/reference/backprojection_reference.cpp).
 //
 // use:
-//   PnBackprojectionSettings { int side; float tolerance; int budget; float gap; float thickness; }
-//   PnBackprojectionSettings pnBackprojectionDefaults()   side 16 (256 samples), tolerance 0.05,
+//   PnBackprojectionSettings { float bias; int side; float tolerance; int budget; float gap; float thickness; }
+//   PnBackprojectionSettings pnBackprojectionDefaults(float bias)   side 16 (256 samples), tolerance 0.05,
 //         budget PN_BACKPROJECTION_DEFAULT_BUDGET, gap 3 texel widths,
 //         thickness PN_BACKPROJECTION_DEFAULT_THICKNESS
-//   float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, float bias, PnBackprojectionSettings s)
+//   float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s)
 //         receiver = (u, v, d) as pnLightProject gives; mip: the map's min/max chain
 //         (minmax_mip.glsl); returns the visibility in [0, 1] (1: no surface, lit)
-//   PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, float bias,
+//   PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver,
 //         PnBackprojectionSettings s)   the same with its work: (visibility, blocked samples,
 //         nodes visited, patches that stood for nodes)
 //   vec2 pnBackprojectionSample(int k, int side)   light sample k, in [-1/2, 1/2]²
@@ -78,6 +78,7 @@
 #define PN_BACKPROJECTION_TAIL 48
 
 struct PnBackprojectionSettings {
+  float bias;       // light-depth units: a surface occludes where it is nearer than d - bias
   int side;         // samples side × side (4, 8 or 16)
   float tolerance;  // a node of depth range <= tolerance · (dP - min) is one patch; 0: texels only
   int budget;       // nodes visited before the rest stand as patches
@@ -92,14 +93,14 @@ struct PnBackprojection {
   float patches;   // nodes that stood as one patch (tolerance or budget)
 };
 
-PnBackprojectionSettings pnBackprojectionDefaults() {
-  return PnBackprojectionSettings(PN_BACKPROJECTION_DEFAULT_SIDE, PN_BACKPROJECTION_DEFAULT_TOLERANCE,
+PnBackprojectionSettings pnBackprojectionDefaults(float bias) {
+  return PnBackprojectionSettings(bias, PN_BACKPROJECTION_DEFAULT_SIDE, PN_BACKPROJECTION_DEFAULT_TOLERANCE,
                                   PN_BACKPROJECTION_DEFAULT_BUDGET, PN_BACKPROJECTION_DEFAULT_GAP,
                                   PN_BACKPROJECTION_DEFAULT_THICKNESS);
 }
 
 // (i · side + j) -> (j · side + i): sample k's fine row, or the sample of fine row k.
-int pnBackprojectionTranspose(int k, int side) {
+int pn_backprojectionTranspose(int k, int side) {
   int shift = findMSB(side);  // side is a power of two
   return ((k & (side - 1)) << shift) + (k >> shift);
 }
@@ -109,26 +110,26 @@ vec2 pnBackprojectionSample(int k, int side) {
   int bits = PN_BACKPROJECTION_JITTER_BITS;
   float unit = 1.0 / float(1 << bits);
   vec2 jitter = vec2(float(h >> uint(32 - bits)), float(h & ((1u << uint(bits)) - 1u))) * unit;
-  vec2 fine = vec2(float(k), float(pnBackprojectionTranspose(k, side)));  // its fine column and row
+  vec2 fine = vec2(float(k), float(pn_backprojectionTranspose(k, side)));  // its fine column and row
   return (fine + jitter) * (1.0 / float(side * side)) - 0.5;
 }
 
 // Bits lo..hi of a word (0 <= lo <= hi <= 31).
-uint pnBackprojectionBits(int lo, int hi) {
+uint pn_backprojectionBits(int lo, int hi) {
   uint upper = hi >= 31 ? 0xffffffffu : (1u << uint(hi + 1)) - 1u;
   return upper & ~((1u << uint(lo)) - 1u);
 }
 
 // Word w of the mask of the samples whose fine column lies in [first, last] (sample k: column k).
-uint pnBackprojectionColumns(int w, int first, int last, int side) {
+uint pn_backprojectionColumns(int w, int first, int last, int side) {
   int lo = max(first - 32 * w, 0), hi = min(min(last, side * side - 1) - 32 * w, 31);
-  return lo > hi ? 0u : pnBackprojectionBits(lo, hi);
+  return lo > hi ? 0u : pn_backprojectionBits(lo, hi);
 }
 
 // Word w of the mask of the samples whose fine row lies in [first, last]: fine row g holds sample
 // (g % side) · side + g / side, so the rows' samples are the transpose of a range — whole strata
 // rows (bit j of every side-bit group) between two partial ones.
-uint pnBackprojectionRows(int w, int first, int last, int side) {
+uint pn_backprojectionRows(int w, int first, int last, int side) {
   first = max(first, 0);
   last = min(last, side * side - 1);
   if (first > last) return 0u;
@@ -144,22 +145,22 @@ uint pnBackprojectionRows(int w, int first, int last, int side) {
     rows = (repeat << uint(row0)) & fromMask & toMask;
   } else {
     rows = ((repeat << uint(row0)) & fromMask) | ((repeat << uint(row1)) & toMask);
-    if (row1 - row0 >= 2) rows |= pnBackprojectionBits(row0 + 1, row1 - 1) * repeat;
+    if (row1 - row0 >= 2) rows |= pn_backprojectionBits(row0 + 1, row1 - 1) * repeat;
   }
   return side * side < 32 ? rows & ((1u << uint(side * side)) - 1u) : rows;
 }
 
 // The fine cells (columns x, rows y) that [lo, hi] of the light's square [-1/2, 1/2]² touches,
 // clamped to [-1, side²].
-ivec4 pnBackprojectionCells(vec2 lo, vec2 hi, int side) {
+ivec4 pn_backprojectionCells(vec2 lo, vec2 hi, int side) {
   float n = float(side * side);
   vec2 a = floor(clamp((lo + 0.5) * n, -1.0, n)), b = floor(clamp((hi + 0.5) * n, -1.0, n));
   return ivec4(a, b);
 }
 
 // Sets the bit of sample k (if it is one) when l_k · window lies in [lo, hi].
-void pnBackprojectSample(int k, vec2 lo, vec2 hi, float window, int side,
-                         inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+void pn_backprojectSample(int k, vec2 lo, vec2 hi, float window, int side,
+                          inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   if (k < 0 || k >= side * side) return;
   vec2 p = pnBackprojectionSample(k, side) * window;
   if (all(greaterThanEqual(p, lo)) && all(lessThanEqual(p, hi))) mask[k >> 5] |= 1u << uint(k & 31);
@@ -167,9 +168,9 @@ void pnBackprojectSample(int k, vec2 lo, vec2 hi, float window, int side,
 
 // Word w of the samples whose fine cells lie inside `cells` (first column, first row, last column,
 // last row; inclusive), if the mask has that word.
-uint pnBackprojectionBox(int w, ivec4 cells, int side) {
+uint pn_backprojectionBox(int w, ivec4 cells, int side) {
   if (32 * w >= side * side) return 0u;
-  return pnBackprojectionColumns(w, cells.x, cells.z, side) & pnBackprojectionRows(w, cells.y, cells.w, side);
+  return pn_backprojectionColumns(w, cells.x, cells.z, side) & pn_backprojectionRows(w, cells.y, cells.w, side);
 }
 
 // Sets the bit of every sample whose ray crosses the patch [lo, hi] (texels, relative to the
@@ -177,37 +178,37 @@ uint pnBackprojectionBox(int w, ivec4 cells, int side) {
 // The samples of the fine cells strictly inside the box in both axes are set by words (each word
 // written out, not a loop: llvmpipe's limit, backprojection.h); the four on its edges (one a fine
 // column or row) are tested one by one. No loop: it adds nothing to the traversal's work count.
-void pnBackprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+void pn_backprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   int count = side * side;
   ivec4 inside;
   if (!(window > 0.0)) {  // every ray stays on the receiver's point: every sample or none
     if (!(all(lessThanEqual(lo, vec2(0.0))) && all(greaterThanEqual(hi, vec2(0.0))))) return;
     inside = ivec4(0, 0, count - 1, count - 1);
   } else {
-    ivec4 cells = pnBackprojectionCells(lo / window, hi / window, side);
+    ivec4 cells = pn_backprojectionCells(lo / window, hi / window, side);
     if (cells.z < 0 || cells.w < 0 || cells.x >= count || cells.y >= count) return;
     inside = cells + ivec4(1, 1, -1, -1);
-    pnBackprojectSample(cells.x, lo, hi, window, side, mask);
-    pnBackprojectSample(cells.z, lo, hi, window, side, mask);
+    pn_backprojectSample(cells.x, lo, hi, window, side, mask);
+    pn_backprojectSample(cells.z, lo, hi, window, side, mask);
     if (cells.y >= 0 && cells.y < count)
-      pnBackprojectSample(pnBackprojectionTranspose(cells.y, side), lo, hi, window, side, mask);
+      pn_backprojectSample(pn_backprojectionTranspose(cells.y, side), lo, hi, window, side, mask);
     if (cells.w >= 0 && cells.w < count)
-      pnBackprojectSample(pnBackprojectionTranspose(cells.w, side), lo, hi, window, side, mask);
+      pn_backprojectSample(pn_backprojectionTranspose(cells.w, side), lo, hi, window, side, mask);
   }
-  mask[0] |= pnBackprojectionBox(0, inside, side);
-  mask[1] |= pnBackprojectionBox(1, inside, side);
-  mask[2] |= pnBackprojectionBox(2, inside, side);
-  mask[3] |= pnBackprojectionBox(3, inside, side);
-  mask[4] |= pnBackprojectionBox(4, inside, side);
-  mask[5] |= pnBackprojectionBox(5, inside, side);
-  mask[6] |= pnBackprojectionBox(6, inside, side);
-  mask[7] |= pnBackprojectionBox(7, inside, side);
+  mask[0] |= pn_backprojectionBox(0, inside, side);
+  mask[1] |= pn_backprojectionBox(1, inside, side);
+  mask[2] |= pn_backprojectionBox(2, inside, side);
+  mask[3] |= pn_backprojectionBox(3, inside, side);
+  mask[4] |= pn_backprojectionBox(4, inside, side);
+  mask[5] |= pn_backprojectionBox(5, inside, side);
+  mask[6] |= pn_backprojectionBox(6, inside, side);
+  mask[7] |= pn_backprojectionBox(7, inside, side);
 }
 
-// The wall's test (pnBackprojectWall) for the candidate samples of word w: each one by one.
+// The wall's test (pn_backprojectWall) for the candidate samples of word w: each one by one.
 // Returns the samples tested.
-int pnBackprojectWallWord(int w, uint candidates, int a, float edge, float from, float to, float near, float far,
-                          int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+int pn_backprojectWallWord(int w, uint candidates, int a, float edge, float from, float to, float near, float far,
+                           int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   int b = 1 - a, tested = 0;
   for (int t = 0; t < 32 && candidates != 0u; ++t) {
     int k = 32 * w + findLSB(candidates);
@@ -227,8 +228,8 @@ int pnBackprojectWallWord(int w, uint candidates, int a, float edge, float from,
 // the samples not yet set inside the wall's bounding box on the light are tested, one by one:
 // l[a] between edge / far and edge / near, l[b] = across / window between the extremes of
 // from and to over those windows. Returns the loop iterations spent (the samples tested).
-int pnBackprojectWall(int a, float edge, float from, float to, float near, float far, int side,
-                      inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+int pn_backprojectWall(int a, float edge, float from, float to, float near, float far, int side,
+                       inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   if (edge == 0.0 || !(far > 0.0)) return 0;
   // |l| <= 1/2 for every sample: a bound past 1 (a window near 0) is the whole light.
   float la0 = edge / far, la1 = near > abs(edge) ? edge / near : sign(edge);
@@ -240,10 +241,10 @@ int pnBackprojectWall(int a, float edge, float from, float to, float near, float
   }
   vec2 lo = a == 0 ? vec2(min(la0, la1), lb.x) : vec2(lb.x, min(la0, la1));
   vec2 hi = a == 0 ? vec2(max(la0, la1), lb.y) : vec2(lb.y, max(la0, la1));
-  ivec4 cells = pnBackprojectionCells(lo, hi, side);
+  ivec4 cells = pn_backprojectionCells(lo, hi, side);
   int tested = 0;
   for (int w = 0; w < (side * side + 31) / 32; ++w)
-    tested += pnBackprojectWallWord(w, pnBackprojectionBox(w, cells, side) & ~mask[w], a, edge, from, to, near, far, side, mask);
+    tested += pn_backprojectWallWord(w, pn_backprojectionBox(w, cells, side) & ~mask[w], a, edge, from, to, near, far, side, mask);
   return tested;
 }
 
@@ -251,9 +252,9 @@ int pnBackprojectWall(int a, float edge, float from, float to, float near, float
 // relative to the receiver) toward its neighbour node in direction `dir`, if deeper (its min): down
 // to the neighbour where the surface continues into it (depth step <= gap texel widths), down to
 // thickness · (dP - d) below d at a silhouette. Returns the loop iterations spent.
-int pnBackprojectNodeWall(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness,
-                          int level, ivec2 q, ivec2 dir, float d, float window, vec2 lo, vec2 hi, int side,
-                          inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+int pn_backprojectNodeWall(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness,
+                           int level, ivec2 q, ivec2 dir, float d, float window, vec2 lo, vec2 hi, int side,
+                           inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   float dP = receiver.z;
   float neighbour = pnMipFetch(mip, level, q + dir).x;  // +Inf outside the map
   if (!(neighbour > d)) return 0;
@@ -263,26 +264,26 @@ int pnBackprojectNodeWall(sampler2D mip, PnLight light, vec3 receiver, float bia
   if (!(deepest > d)) return 0;
   int a = dir.x != 0 ? 0 : 1;
   float edge = (dir[a] > 0 ? hi : lo)[a];
-  return pnBackprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, dP, deepest), window,
-                           side, mask);
+  return pn_backprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, dP, deepest), window,
+                            side, mask);
 }
 
 // Node `q` of `level` as one flat patch at depth d (lo, hi: its square relative to the receiver) with
 // its four walls (written out, not a loop: Mesa's llvmpipe counts every loop iteration of an
 // invocation against one limit, backprojection.h). Exact for a texel (level 0); for a larger node,
 // the estimate of its surface. Returns the loop iterations spent (its walls').
-int pnBackprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness, int level,
-                      ivec2 q, float d, vec2 lo, vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+int pn_backprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness, int level,
+                       ivec2 q, float d, vec2 lo, vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   float window = pnLightBlockerWindowTexels(light, receiver.z, d);
-  pnBackprojectPatch(lo, hi, window, side, mask);
-  int spent = pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(1, 0), d, window, lo, hi,
+  pn_backprojectPatch(lo, hi, window, side, mask);
+  int spent = pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(1, 0), d, window, lo, hi,
                                  side, mask);
-  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(-1, 0), d, window, lo, hi,
-                                 side, mask);
-  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, 1), d, window, lo, hi,
-                                 side, mask);
-  spent += pnBackprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, -1), d, window, lo, hi,
-                                 side, mask);
+  spent += pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(-1, 0), d, window, lo, hi,
+                                  side, mask);
+  spent += pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, 1), d, window, lo, hi,
+                                  side, mask);
+  spent += pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, -1), d, window, lo, hi,
+                                  side, mask);
   return spent;
 }
 
@@ -291,7 +292,7 @@ int pnBackprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, f
 // none is left. No loop: the levels to climb are the node's trailing (1, 1) children, the trailing
 // ones of x & y (a loop here would count against llvmpipe's one limit of loop iterations an
 // invocation, which the walk's own steps and walls approach on wide penumbrae).
-ivec3 pnBackprojectionNext(ivec3 node, int top) {
+ivec3 pn_backprojectionNext(ivec3 node, int top) {
   int climb = min(findLSB(~(node.y & node.z)), top - node.x);
   ivec3 up = ivec3(node.x + climb, node.yz >> climb);
   if (up.x >= top) return ivec3(top + 1, 0, 0);
@@ -299,8 +300,8 @@ ivec3 pnBackprojectionNext(ivec3 node, int top) {
                          : ivec3(up.x, up.y - 1, up.z + 1);  // (1, 0) -> (0, 1)
 }
 
-PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, float bias,
-                                      PnBackprojectionSettings s) {
+PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+  float bias = s.bias;
   PnBackprojection result = PnBackprojection(1.0, 0.0, 0.0, 0.0);
   int side = clamp(s.side, PN_BACKPROJECTION_MIN_SIDE, PN_BACKPROJECTION_MAX_SIDE);
   int count = side * side;
@@ -311,7 +312,7 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
   int budget = clamp(s.budget, 1, PN_BACKPROJECTION_MAX_BUDGET);
   // Depth first over the chain without a stack (a stack of nodes in a local array is scratch
   // memory on a GPU: 36 KB a wave on RDNA 2, docs/isa.md): the next node is the first child, or the
-  // next sibling of the node or of its nearest ancestor that has one (pnBackprojectionNext).
+  // next sibling of the node or of its nearest ancestor that has one (pn_backprojectionNext).
   int top = pnMipMaxLevel(mip);
   ivec3 node = ivec3(top, 0, 0);  // (level, node x, node y)
   int visited = 0, work = 0;      // nodes; loop iterations in all (PN_BACKPROJECTION_MAX_WORK)
@@ -327,7 +328,7 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
       vec2 lo = vec2(node.yz * size) - receiver.xy, hi = lo + float(size);
       bool within = !(any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach))));
       if (within && node.x == 0) {
-        work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, 0, node.yz, range.x, lo, hi, side, mask);
+        work += pn_backprojectNode(mip, light, receiver, bias, s.gap, s.thickness, 0, node.yz, range.x, lo, hi, side, mask);
       } else if (within) {
         resolve = visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&
                   range.y - range.x >= s.tolerance * (dP - range.x);
@@ -336,12 +337,12 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
           // toward the neighbour nodes deeper than it, by the texels' rule applied to the nodes' mins.
           result.patches += 1.0;
           float depth = 0.5 * (range.x + min(range.y, dP - bias));
-          work += pnBackprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi, side,
-                                    mask);
+          work += pn_backprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi, side,
+                                     mask);
         }
       }
     }
-    node = resolve ? ivec3(node.x - 1, node.yz * 2) : pnBackprojectionNext(node, top);
+    node = resolve ? ivec3(node.x - 1, node.yz * 2) : pn_backprojectionNext(node, top);
   }
   int blocked = 0;
   for (int w = 0; w < PN_BACKPROJECTION_MASK_WORDS; ++w) blocked += bitCount(mask[w]);
@@ -351,8 +352,8 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
   return result;
 }
 
-float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, float bias, PnBackprojectionSettings s) {
-  return pnBackprojectionWork(mip, light, receiver, bias, s).visibility;
+float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+  return pnBackprojectionWork(mip, light, receiver, s).visibility;
 }
 
 #endif  // PENUMBRA_BACKPROJECTION_GLSL

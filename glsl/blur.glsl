@@ -76,7 +76,7 @@ struct PnBlurWeights {
   float ratioStep;  // a^2
 };
 
-PnBlurWeights pnBlurWeightsStart(float sigma) {
+PnBlurWeights pn_blurWeightsStart(float sigma) {
   float a = pnBlurGaussian(1, sigma);
   return PnBlurWeights(1.0, a, a * a);
 }
@@ -87,44 +87,44 @@ float pnBlurNextWeight(inout PnBlurWeights g) {
   return g.weight;
 }
 
-bool pnBlurIsFinite(float v) {
+bool pn_blurIsFinite(float v) {
   return !isnan(v) && !isinf(v);
 }
 
 // Each non-finite channel replaced by PN_BLUR_NONFINITE_VALUE (a select, bit-exact).
-vec4 pnBlurSanitize(vec4 v) {
+vec4 pn_blurSanitize(vec4 v) {
   bvec4 bad = bvec4(ivec4(isnan(v)) | ivec4(isinf(v)));
   return mix(v, vec4(float(PN_BLUR_NONFINITE_VALUE)), bad);
 }
 
 // Effective radius: clamped, and 0 when sigma cannot define a Gaussian.
-int pnBlurRadius(int radius, float sigma) {
+int pn_blurRadius(int radius, float sigma) {
   return (sigma > 0.0) ? clamp(radius, 0, PN_BLUR_MAX_RADIUS) : 0;
 }
 
 // Clamp-to-edge fetch; every read stays inside the texture.
-vec4 pnBlurFetch4(sampler2D tex, ivec2 p) {
+vec4 pn_blurFetch4(sampler2D tex, ivec2 p) {
   ivec2 last = textureSize(tex, 0) - ivec2(1);
   return texelFetch(tex, clamp(p, ivec2(0), last), 0);
 }
 
-float pnBlurFetch(sampler2D tex, ivec2 p) {
-  return pnBlurFetch4(tex, p).r;
+float pn_blurFetch(sampler2D tex, ivec2 p) {
+  return pn_blurFetch4(tex, p).r;
 }
 
-vec4 pnBlurValue(sampler2D src, ivec2 p) {
-  return pnBlurSanitize(pnBlurFetch4(src, p));
+vec4 pn_blurValue(sampler2D src, ivec2 p) {
+  return pn_blurSanitize(pn_blurFetch4(src, p));
 }
 
 // The centre (weight 1), then the taps at -i and +i for i = 1..r.
 vec4 pnBlur1DVec4(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma) {
-  int r = pnBlurRadius(radius, sigma);
-  vec4 sum = pnBlurValue(src, p);
+  int r = pn_blurRadius(radius, sigma);
+  vec4 sum = pn_blurValue(src, p);
   float weightSum = 1.0;
-  PnBlurWeights g = pnBlurWeightsStart(sigma);
+  PnBlurWeights g = pn_blurWeightsStart(sigma);
   for (int i = 1; i <= r; ++i) {
     float w = pnBlurNextWeight(g);
-    sum += w * (pnBlurValue(src, p - i * axis) + pnBlurValue(src, p + i * axis));
+    sum += w * (pn_blurValue(src, p - i * axis) + pn_blurValue(src, p + i * axis));
     weightSum += 2.0 * w;
   }
   return sum / weightSum;
@@ -132,9 +132,9 @@ vec4 pnBlur1DVec4(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma) {
 
 // Two depths belong to the same surface when both are finite and within the
 // relative tolerance, or both are non-finite ("no surface", SPEC §3).
-bool pnBlurSameSurface(float centreDepth, float tapDepth, float depthTolerance) {
-  bool centreFinite = pnBlurIsFinite(centreDepth);
-  bool tapFinite = pnBlurIsFinite(tapDepth);
+bool pn_blurSameSurface(float centreDepth, float tapDepth, float depthTolerance) {
+  bool centreFinite = pn_blurIsFinite(centreDepth);
+  bool tapFinite = pn_blurIsFinite(tapDepth);
   if (!centreFinite || !tapFinite) return centreFinite == tapFinite;
   return abs(tapDepth - centreDepth) <= depthTolerance * abs(centreDepth);
 }
@@ -146,17 +146,17 @@ float pnBlur1D(sampler2D src, ivec2 p, ivec2 axis, int radius, float sigma) {
 // The centre always counts (so weightSum >= 1); a tap at -i or +i only on the centre's surface.
 vec4 pnBlur1DDepthAwareVec4(sampler2D src, sampler2D depth, ivec2 p, ivec2 axis, int radius, float sigma,
                             float depthTolerance) {
-  int r = pnBlurRadius(radius, sigma);
-  float centreDepth = pnBlurFetch(depth, p);
-  vec4 sum = pnBlurValue(src, p);
+  int r = pn_blurRadius(radius, sigma);
+  float centreDepth = pn_blurFetch(depth, p);
+  vec4 sum = pn_blurValue(src, p);
   float weightSum = 1.0;
-  PnBlurWeights g = pnBlurWeightsStart(sigma);
+  PnBlurWeights g = pn_blurWeightsStart(sigma);
   for (int i = 1; i <= r; ++i) {
     float w = pnBlurNextWeight(g);
     for (int side = -1; side <= 1; side += 2) {
       ivec2 q = p + side * i * axis;
-      if (!pnBlurSameSurface(centreDepth, pnBlurFetch(depth, q), depthTolerance)) continue;
-      sum += w * pnBlurValue(src, q);
+      if (!pn_blurSameSurface(centreDepth, pn_blurFetch(depth, q), depthTolerance)) continue;
+      sum += w * pn_blurValue(src, q);
       weightSum += w;
     }
   }
@@ -180,7 +180,7 @@ int pnBlurAdaptiveRadius(float filterSide, float pixelsPerTexel, int radius) {
 }
 
 // The filter side of pixel p (.w of its filter-region entry), clamp-to-edge.
-float pnBlurFilterSide(sampler2D filterMap, ivec2 p) {
+float pn_blurFilterSide(sampler2D filterMap, ivec2 p) {
   ivec2 last = textureSize(filterMap, 0) - ivec2(1);
   return texelFetch(filterMap, clamp(p, ivec2(0), last), 0).w;
 }
@@ -190,8 +190,8 @@ float pnBlurFilterSide(sampler2D filterMap, ivec2 p) {
 // (what the 1-tap pass returns, without the depth fetch and the weight).
 vec4 pnBlur1DAdaptiveVec4(sampler2D src, sampler2D filterMap, ivec2 p, ivec2 axis, int radius, float sigma,
                           float pixelsPerTexel) {
-  int r = pnBlurAdaptiveRadius(pnBlurFilterSide(filterMap, p), pixelsPerTexel, pnBlurRadius(radius, sigma));
-  if (r == 0) return pnBlurValue(src, p);
+  int r = pnBlurAdaptiveRadius(pn_blurFilterSide(filterMap, p), pixelsPerTexel, pn_blurRadius(radius, sigma));
+  if (r == 0) return pn_blurValue(src, p);
   return pnBlur1DVec4(src, p, axis, r, sigma);
 }
 
@@ -202,8 +202,8 @@ float pnBlur1DAdaptive(sampler2D src, sampler2D filterMap, ivec2 p, ivec2 axis, 
 
 vec4 pnBlur1DDepthAwareAdaptiveVec4(sampler2D src, sampler2D depth, sampler2D filterMap, ivec2 p, ivec2 axis,
                                     int radius, float sigma, float depthTolerance, float pixelsPerTexel) {
-  int r = pnBlurAdaptiveRadius(pnBlurFilterSide(filterMap, p), pixelsPerTexel, pnBlurRadius(radius, sigma));
-  if (r == 0) return pnBlurValue(src, p);
+  int r = pnBlurAdaptiveRadius(pn_blurFilterSide(filterMap, p), pixelsPerTexel, pn_blurRadius(radius, sigma));
+  if (r == 0) return pn_blurValue(src, p);
   return pnBlur1DDepthAwareVec4(src, depth, p, axis, r, sigma, depthTolerance);
 }
 

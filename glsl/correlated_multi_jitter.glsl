@@ -33,7 +33,7 @@
 #endif
 
 // A pseudo-random permutation of [0, length), selected by `pattern`.
-uint pnCmjPermute(uint i, uint length, uint pattern) {
+uint pn_cmjPermute(uint i, uint length, uint pattern) {
   uint mask = length - 1u;
   mask |= mask >> 1;
   mask |= mask >> 2;
@@ -66,7 +66,7 @@ uint pnCmjPermute(uint i, uint length, uint pattern) {
 }
 
 // A hashed value in [0, 1) for sample i of pattern p.
-float pnCmjRandom(uint i, uint pattern) {
+float pn_cmjRandom(uint i, uint pattern) {
   uint v = i ^ pattern;
   v ^= v >> 17;
   v ^= v >> 10;
@@ -86,10 +86,10 @@ vec2 pnCmjSample(int s, int m, int n, uint pattern) {
   uint um = uint(max(m, 1)), un = uint(max(n, 1));
   uint us = uint(clamp(s, 0, max(m, 1) * max(n, 1) - 1));
   uint column = us % um, row = us / um;
-  uint sx = pnCmjPermute(column, um, pattern * 0xa511e9b3u);
-  uint sy = pnCmjPermute(row, un, pattern * 0x63d83595u);
-  float jx = pnCmjRandom(us, pattern * 0xa399d265u);
-  float jy = pnCmjRandom(us, pattern * 0x711ad6a5u);
+  uint sx = pn_cmjPermute(column, um, pattern * 0xa511e9b3u);
+  uint sy = pn_cmjPermute(row, un, pattern * 0x63d83595u);
+  float jx = pn_cmjRandom(us, pattern * 0xa399d265u);
+  float jy = pn_cmjRandom(us, pattern * 0x711ad6a5u);
   return vec2((float(column) + (float(sy) + jx) / float(un)) / float(um),
               (float(row) + (float(sx) + jy) / float(um)) / float(un));
 }

@@ -41,12 +41,12 @@ float pnDepthCacheFar() {
   return uintBitsToFloat(0x7f800000u);
 }
 
-float pnDepthCacheSanitize(float d) {
+float pn_depthCacheSanitize(float d) {
   return (isnan(d) || isinf(d)) ? pnDepthCacheFar() : d;
 }
 
 float pnDepthCacheCompose(float staticDepth, float dynamicDepth) {
-  return min(pnDepthCacheSanitize(staticDepth), pnDepthCacheSanitize(dynamicDepth));
+  return min(pn_depthCacheSanitize(staticDepth), pn_depthCacheSanitize(dynamicDepth));
 }
 
 float pnDepthCacheComposeAt(sampler2D staticMap, sampler2D dynamicMap, ivec2 texel) {

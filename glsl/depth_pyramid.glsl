@@ -43,12 +43,12 @@
 #define PENUMBRA_DEPTH_PYRAMID_GLSL
 
 // +Inf: the depth of "no occluder".
-float pnPyramidFar() {
+float pn_pyramidFar() {
   return uintBitsToFloat(0x7f800000u);
 }
 
-float pnPyramidSanitizeDepth(float d) {
-  return (isnan(d) || isinf(d)) ? pnPyramidFar() : d;
+float pn_pyramidSanitizeDepth(float d) {
+  return (isnan(d) || isinf(d)) ? pn_pyramidFar() : d;
 }
 
 int pnPyramidMapSize(sampler2DArray pyramid) {
@@ -64,14 +64,14 @@ int pnPyramidLevelSize(int mapSize, int level) {
 }
 
 // floor(log2(n)) for n >= 1.
-int pnPyramidFloorLog2(int n) {
+int pn_pyramidFloorLog2(int n) {
   return findMSB(max(n, 1));
 }
 
 // Level 0 texel p of the shadow map (p clamped into it).
 vec4 pnPyramidLevel0(sampler2D shadowMap, ivec2 p) {
   ivec2 last = textureSize(shadowMap, 0) - ivec2(1);
-  float d = pnPyramidSanitizeDepth(texelFetch(shadowMap, clamp(p, ivec2(0), last), 0).r);
+  float d = pn_pyramidSanitizeDepth(texelFetch(shadowMap, clamp(p, ivec2(0), last), 0).r);
   return vec4(d, d, d, 0.0);
 }
 
@@ -99,12 +99,12 @@ vec2 pnPyramidSquareMinMax(sampler2DArray pyramid, ivec2 origin, int side) {
   int n = pnPyramidMapSize(pyramid);
   int s = clamp(side, 1, n);
   ivec2 o = clamp(origin, ivec2(0), ivec2(n - s));
-  int level = min(pnPyramidFloorLog2(s), pnPyramidMaxLevel(pyramid));
+  int level = min(pn_pyramidFloorLog2(s), pnPyramidMaxLevel(pyramid));
   int w = 1 << level;
   // Windows of side w at o + t*w, the last one flush with the far edge:
   // they cover the square and overlap, which min and max do not mind.
   int count = (s + w - 1) / w;  // 1 or 2 unless the level was capped
-  vec2 result = vec2(pnPyramidFar(), -pnPyramidFar());
+  vec2 result = vec2(pn_pyramidFar(), -pn_pyramidFar());
   for (int j = 0; j < count; ++j) {
     for (int i = 0; i < count; ++i) {
       ivec2 q = o + min(ivec2(i, j) * w, ivec2(s - w));

@@ -5,7 +5,7 @@
 //   SPEC §4.8 ("exact PCSS"). For the receiver (u, v, d):
 //     search  = PCSS's search width for d (blockers as near as the near plane,
 //               light_model.glsl), the exact square of that side around (u, v)
-//               (pcss_regions.glsl: pnSearchStart, pnEntryRect); no surface -> 1
+//               (pcss_regions.glsl: pn_searchStart, pnEntryRect); no surface -> 1
 //     blockers = every texel of the search square with depth < d - bias
 //               (pcf.glsl: pnPcfWindow): mean = their depth sum / count; none -> 1
 //     filter  = the square of side filterScale · penumbra (Eq. 1) around (u, v)
@@ -40,7 +40,7 @@
 float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane, float bias,
                   float filterScale) {
   int n = int(light.mapSize);
-  vec4 search = pnSearchStart(light, vec4(receiver, 1.0));
+  vec4 search = pn_searchStart(light, vec4(receiver, 1.0));
   if (pnEntryLit(search)) return 1.0;
   PnRect searchRect = pnEntryRect(search, n);
   PnPcf blockers = pnPcfWindowPlane(depthMap, searchRect.origin, searchRect.size, receiver, receiverPlane, bias);

@@ -97,23 +97,23 @@ PnFastPcssSettings pnFastPcssDefaults(float bias) {
 
 // The bounded-work ablation's count of an entry's region (settings.grid > 0): pnGridRegionMip's
 // grid (Step 4 with depth sums, Step 5 without).
-PnTraversal pnFastPcssGrid(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
-                           PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
+PnTraversal pn_fastPcssGrid(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
+                            PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
   return pnGridRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
                          s.grid, s.leafSide, leafMode, depthSums, pixel);
 }
 
 // The walk of an entry's region over the chain, one node a step; its leaf side in `leafSide`.
-PnTraversalWalk pnFastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTraversalTest test, PnFastPcssSettings s,
-                               out int leafSide) {
+PnTraversalWalk pn_fastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTraversalTest test, PnFastPcssSettings s,
+                                out int leafSide) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
   leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size);
-  return pnTraversalWalkBegin(shape, mapSize, region.origin, region.size, test, pnTraversalBudget(s.nodeBudget));
+  return pn_traversalWalkBegin(shape, mapSize, region.origin, region.size, test, pn_traversalBudget(s.nodeBudget));
 }
 
 // Step 4's count done: the blocker mean and the filter entry (lit: no blocker mean).
-void pnFastPcssBlockersDone(inout PnFastPcssResult r, PnTraversal blockers, PnLight light, PnFastPcssSettings s) {
+void pn_fastPcssBlockersDone(inout PnFastPcssResult r, PnTraversal blockers, PnLight light, PnFastPcssSettings s) {
   r.blockerNodes = blockers.nodes;
   r.fetches += blockers.fetches;
   r.blockerMean = pnTraversalBlockerMean(blockers);
@@ -122,7 +122,7 @@ void pnFastPcssBlockersDone(inout PnFastPcssResult r, PnTraversal blockers, PnLi
 }
 
 // Step 5's count done: the visibility.
-void pnFastPcssOcclusionDone(inout PnFastPcssResult r, PnTraversal occlusion) {
+void pn_fastPcssOcclusionDone(inout PnFastPcssResult r, PnTraversal occlusion) {
   r.occlusionNodes = occlusion.nodes;
   r.fetches += occlusion.fetches;
   r.visibility = 1.0 - pnTraversalOccludedFraction(occlusion);
@@ -141,11 +141,11 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
 
   int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
   if (s.grid > 0) {  // the bounded-work ablation: two grid passes
-    PnTraversal blockers = pnFastPcssGrid(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
-                                          s.depthSums, pixel);
-    pnFastPcssBlockersDone(r, blockers, light, s);
+    PnTraversal blockers = pn_fastPcssGrid(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
+                                           s.depthSums, pixel);
+    pn_fastPcssBlockersDone(r, blockers, light, s);
     if (pnEntryLit(r.filterEntry)) return r;
-    pnFastPcssOcclusionDone(r, pnFastPcssGrid(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
+    pn_fastPcssOcclusionDone(r, pn_fastPcssGrid(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
                                               PN_DEPTH_SUMS_NONE, pixel));
     return r;
   }
@@ -154,25 +154,25 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
   // code and registers on a GPU (docs/isa.md). Each walk gets its own iterations, as alone.
   // Both regions are tested against one receiver (the filter entry keeps the search entry's
   // (d, u, v)): one test for both walks.
-  PnMipShape shape = pnMipShape(mip);
+  PnMipShape shape = pn_mipShape(mip);
   PnTraversalTest test = PnTraversalTest(r.searchEntry.x - s.bias, receiverPlane, r.searchEntry.yz);
-  int budget = pnTraversalBudget(s.nodeBudget);
+  int budget = pn_traversalBudget(s.nodeBudget);
   int leafSide;
-  PnTraversalWalk w = pnFastPcssWalk(shape, n, r.searchEntry, test, s, leafSide);
+  PnTraversalWalk w = pn_fastPcssWalk(shape, n, r.searchEntry, test, s, leafSide);
   bool blockers = true;
   int limit = max(w.iterations, 1);
   for (int it = 0; it < limit; ++it) {
-    pnTraversalWalkStep(w, mip, shape, sampleTable, test, leafSide, blockers ? blockerLeafMode : s.leafMode, budget,
-                        blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
+    pn_traversalWalkStep(w, mip, shape, sampleTable, test, leafSide, blockers ? blockerLeafMode : s.leafMode, budget,
+                         blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
     if (!w.done && it + 1 < limit) continue;
     if (!blockers) {  // Step 5 is over
-      pnFastPcssOcclusionDone(r, w.r);
+      pn_fastPcssOcclusionDone(r, w.r);
       break;
     }
-    pnFastPcssBlockersDone(r, w.r, light, s);
+    pn_fastPcssBlockersDone(r, w.r, light, s);
     if (pnEntryLit(r.filterEntry)) break;
     blockers = false;
-    w = pnFastPcssWalk(shape, n, r.filterEntry, test, s, leafSide);
+    w = pn_fastPcssWalk(shape, n, r.filterEntry, test, s, leafSide);
     limit = it + 1 + max(w.iterations, 1);
   }
   return r;

@@ -40,8 +40,8 @@
 #include "hqepcss.h"
 #include "light_model.glsl"
 #include "pcf.glsl"
-#include "pcss_regions.glsl"
-#include "traversal.glsl"
+#include "pcss_regions_pyramid.glsl"  // and pcss_regions.glsl
+#include "traversal_pyramid.glsl"  // and traversal.glsl
 
 struct PnHqepcssSettings {
   float bias;            // light-depth units: a texel occludes when its depth < d - bias
@@ -65,10 +65,10 @@ float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 
   if (pnEntryLit(search)) return 1.0;
   PnRect region = pnEntryRegion(search, n, s.regionMode);
   // Min leaves take no samples: the sample table is never read (the map stands in for it).
-  PnTraversal blockers = pnTraverseRegionPlane(pyramid, depthMap, region.origin, region.size, receiver,
-                                               receiverPlane, s.bias,
-                                               pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size),
-                                               PN_LEAF_MIN, s.nodeBudget, ivec2(0));
+  PnTraversal blockers = pn_traverseRegionPlane(pyramid, depthMap, region.origin, region.size, receiver,
+                                                receiverPlane, s.bias,
+                                                pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size),
+                                                PN_LEAF_MIN, s.nodeBudget, ivec2(0));
   bool hasBlocker = blockers.occluders > 0.0;
   vec4 filterEntry = pnFilterEntry(light, search, pnTraversalBlockerMean(blockers),
                                    hasBlocker, s.filterScale);

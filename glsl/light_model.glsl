@@ -73,7 +73,7 @@ struct PnLight {
 };
 
 // x when finite and positive, else 0.
-float pnLightPositiveOrZero(float x) {
+float pn_lightPositiveOrZero(float x) {
   return (x > 0.0 && !isinf(x)) ? x : 0.0;
 }
 
@@ -82,7 +82,7 @@ float pnLightPositiveOrZero(float x) {
 float pnLightTexelWorld(PnLight light, float depth) {
   if (light.texelWorld > 0.0) return light.texelWorld;
   if (!(light.near > 0.0) || !(light.nearPlaneWidth > 0.0) || !(light.mapSize > 0.0)) return 0.0;
-  return pnLightPositiveOrZero(depth * light.nearPlaneWidth / (light.near * light.mapSize));
+  return pn_lightPositiveOrZero(depth * light.nearPlaneWidth / (light.near * light.mapSize));
 }
 
 float pnLightBlockerWindowTexels(PnLight light, float receiverDepth, float blockerDepth) {
@@ -90,7 +90,7 @@ float pnLightBlockerWindowTexels(PnLight light, float receiverDepth, float block
   float texel = pnLightTexelWorld(light, blockerDepth);
   if (!(texel > 0.0)) return 0.0;
   float world = (receiverDepth - blockerDepth) * (light.width / receiverDepth + light.spread);
-  return pnLightPositiveOrZero(world / texel);
+  return pn_lightPositiveOrZero(world / texel);
 }
 
 float pnLightSearchWidthTexels(PnLight light, float receiverDepth) {
@@ -99,14 +99,14 @@ float pnLightSearchWidthTexels(PnLight light, float receiverDepth) {
 
 float pnLightPenumbraWorld(PnLight light, float receiverDepth, float blockerDepth) {
   if (!(receiverDepth > blockerDepth) || !(blockerDepth > 0.0)) return 0.0;
-  return pnLightPositiveOrZero((receiverDepth - blockerDepth) * (light.width / blockerDepth + light.spread));
+  return pn_lightPositiveOrZero((receiverDepth - blockerDepth) * (light.width / blockerDepth + light.spread));
 }
 
 float pnLightPenumbraTexels(PnLight light, float receiverDepth, float blockerDepth) {
   if (!(receiverDepth >= light.near) || !(light.near > 0.0)) return 0.0;
   float texel = pnLightTexelWorld(light, receiverDepth);
   if (!(texel > 0.0)) return 0.0;
-  return pnLightPositiveOrZero(pnLightPenumbraWorld(light, receiverDepth, blockerDepth) / texel);
+  return pn_lightPositiveOrZero(pnLightPenumbraWorld(light, receiverDepth, blockerDepth) / texel);
 }
 
 float pnLightDepthFromDepthBuffer(mat4 lightProjection, float depth, bool zeroToOneClip) {

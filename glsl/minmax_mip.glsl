@@ -68,12 +68,12 @@
 #endif
 
 // +Inf: the depth of "no occluder"; (+Inf, -Inf) the pair of no texel.
-float pnMipFar() {
+float pn_mipFar() {
   return uintBitsToFloat(0x7f800000u);
 }
 
-vec2 pnMipEmpty() {
-  return vec2(pnMipFar(), -pnMipFar());
+vec2 pn_mipEmpty() {
+  return vec2(pn_mipFar(), -pn_mipFar());
 }
 
 int pnMipMaxLevel(sampler2D mip) {
@@ -88,7 +88,7 @@ struct PnMipShape {
   int top;   // pnMipMaxLevel(mip)
 };
 
-PnMipShape pnMipShape(sampler2D mip) {
+PnMipShape pn_mipShape(sampler2D mip) {
   int rows = textureSize(mip, 0).y;
   return PnMipShape(rows, findMSB(max(rows, 1)));
 }
@@ -97,7 +97,7 @@ PnMipShape pnMipShape(sampler2D mip) {
 // when not wanted. Without a branch: the fetch is made at a clamped texel and its value selected,
 // so a GPU runs no divergent code around it (docs/isa.md); PN_ON_TEXEL_FETCH counts only the
 // fetches whose value is used.
-vec4 pnMipTexelIf(sampler2D mip, PnMipShape shape, int level, ivec2 texel, bool wanted) {
+vec4 pn_mipTexelIf(sampler2D mip, PnMipShape shape, int level, ivec2 texel, bool wanted) {
   int l = clamp(level, 0, shape.top);
   // The level's size from level 0's: textureSize with a level that differs
   // between invocations is not computed per invocation by every driver (llvmpipe).
@@ -106,94 +106,94 @@ vec4 pnMipTexelIf(sampler2D mip, PnMipShape shape, int level, ivec2 texel, bool 
   bool inside = wanted && all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
   if (inside) PN_ON_TEXEL_FETCH();
   vec4 t = texelFetch(mip, clamp(texel, ivec2(0), max(size - 1, ivec2(0))), l);
-  return inside ? t : vec4(pnMipEmpty(), pnMipEmpty());
+  return inside ? t : vec4(pn_mipEmpty(), pn_mipEmpty());
 }
 
-vec4 pnMipTexelOf(sampler2D mip, PnMipShape shape, int level, ivec2 texel) {
-  return pnMipTexelIf(mip, shape, level, texel, true);
+vec4 pn_mipTexelOf(sampler2D mip, PnMipShape shape, int level, ivec2 texel) {
+  return pn_mipTexelIf(mip, shape, level, texel, true);
 }
 
-vec4 pnMipTexel(sampler2D mip, int level, ivec2 texel) {
-  return pnMipTexelOf(mip, pnMipShape(mip), level, texel);
+vec4 pn_mipTexel(sampler2D mip, int level, ivec2 texel) {
+  return pn_mipTexelOf(mip, pn_mipShape(mip), level, texel);
 }
 
 // Node `node` of `level` when `wanted`, else (and outside the level) the empty pair.
-vec2 pnMipFetchIf(sampler2D mip, PnMipShape shape, int level, ivec2 node, bool wanted) {
+vec2 pn_mipFetchIf(sampler2D mip, PnMipShape shape, int level, ivec2 node, bool wanted) {
   int nodes = max(shape.rows >> clamp(level, 0, shape.top), 1);
-  vec4 t = pnMipTexelIf(mip, shape, level, ivec2(node.x >> 1, node.y), wanted && node.x < nodes);
+  vec4 t = pn_mipTexelIf(mip, shape, level, ivec2(node.x >> 1, node.y), wanted && node.x < nodes);
   return (node.x & 1) != 0 ? t.zw : t.xy;
 }
 
-vec2 pnMipFetchOf(sampler2D mip, PnMipShape shape, int level, ivec2 node) {
-  return pnMipFetchIf(mip, shape, level, node, true);
+vec2 pn_mipFetchOf(sampler2D mip, PnMipShape shape, int level, ivec2 node) {
+  return pn_mipFetchIf(mip, shape, level, node, true);
 }
 
 vec2 pnMipFetch(sampler2D mip, int level, ivec2 node) {
-  return pnMipFetchOf(mip, pnMipShape(mip), level, node);
+  return pn_mipFetchOf(mip, pn_mipShape(mip), level, node);
 }
 
 // Level 0 node p of the map: (d, d), d sanitized; empty outside the map (the padding).
-vec2 pnMipLevel0Node(sampler2D shadowMap, ivec2 p) {
+vec2 pn_mipLevel0Node(sampler2D shadowMap, ivec2 p) {
   ivec2 size = textureSize(shadowMap, 0);
-  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) return pnMipEmpty();
+  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) return pn_mipEmpty();
   float d = PN_MIP_LEVEL0_DEPTH(texelFetch(shadowMap, p, 0).r);
-  d = (isnan(d) || isinf(d)) ? pnMipFar() : d;
+  d = (isnan(d) || isinf(d)) ? pn_mipFar() : d;
   return vec2(d, d);
 }
 
 vec4 pnMipLevel0Texel(sampler2D shadowMap, ivec2 texel) {
-  return vec4(pnMipLevel0Node(shadowMap, ivec2(2 * texel.x, texel.y)),
-              pnMipLevel0Node(shadowMap, ivec2(2 * texel.x + 1, texel.y)));
+  return vec4(pn_mipLevel0Node(shadowMap, ivec2(2 * texel.x, texel.y)),
+              pn_mipLevel0Node(shadowMap, ivec2(2 * texel.x + 1, texel.y)));
 }
 
 // One node from the two texels below it that hold its four children (each texel's two nodes).
-vec2 pnMipCombineNode(vec4 upper, vec4 lower) {
+vec2 pn_mipCombineNode(vec4 upper, vec4 lower) {
   return vec2(min(min(upper.x, upper.z), min(lower.x, lower.z)), max(max(upper.y, upper.w), max(lower.y, lower.w)));
 }
 
 vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel) {
   int below = max(level, 1) - 1;
   // Nodes 2c and 2c + 1 of this level: children 4c .. 4c + 3 below, texels 2c and 2c + 1 of rows 2r, 2r + 1.
-  vec2 a = pnMipCombineNode(pnMipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y)),
-                            pnMipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y + 1)));
-  vec2 b = pnMipCombineNode(pnMipTexel(mip, below, ivec2(2 * texel.x + 1, 2 * texel.y)),
-                            pnMipTexel(mip, below, ivec2(2 * texel.x + 1, 2 * texel.y + 1)));
+  vec2 a = pn_mipCombineNode(pn_mipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y)),
+                             pn_mipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y + 1)));
+  vec2 b = pn_mipCombineNode(pn_mipTexel(mip, below, ivec2(2 * texel.x + 1, 2 * texel.y)),
+                             pn_mipTexel(mip, below, ivec2(2 * texel.x + 1, 2 * texel.y + 1)));
   return vec4(a, b);
 }
 
-vec2 pnMipUnion(vec2 a, vec2 b) {
+vec2 pn_mipUnion(vec2 a, vec2 b) {
   return vec2(min(a.x, b.x), max(a.y, b.y));
 }
 
 // Node first + offset of a square's cover, or the empty pair beyond `last`.
-vec2 pnMipSquareNode(sampler2D mip, PnMipShape shape, int level, ivec2 first, ivec2 last, ivec2 offset) {
+vec2 pn_mipSquareNode(sampler2D mip, PnMipShape shape, int level, ivec2 first, ivec2 last, ivec2 offset) {
   ivec2 node = first + offset;
-  return pnMipFetchIf(mip, shape, level, node, !any(greaterThan(node, last)));
+  return pn_mipFetchIf(mip, shape, level, node, !any(greaterThan(node, last)));
 }
 
 vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
   int n = max(mapSize, 1);
   ivec2 lo = clamp(origin, ivec2(0), ivec2(n));
   ivec2 hi = clamp(origin + max(side, 0), lo, ivec2(n));
-  if (any(greaterThanEqual(lo, hi))) return pnMipEmpty();
+  if (any(greaterThanEqual(lo, hi))) return pn_mipEmpty();
   int s = max(hi.x - lo.x, hi.y - lo.y);
   // Nodes of side 2^level >= s / 2: at most 3 touch the square on each axis.
-  PnMipShape shape = pnMipShape(mip);
+  PnMipShape shape = pn_mipShape(mip);
   int level = min(max(findMSB(s - 1), 0), shape.top);
   ivec2 first = lo >> level;
   ivec2 last = (hi - ivec2(1)) >> level;
   // The 3×3 nodes from `first`, those beyond `last` left out: written out, not
   // looped (llvmpipe runs a loop's control per invocation group; the fetches
   // themselves are cheap).
-  vec2 result = pnMipSquareNode(mip, shape, level, first, last, ivec2(0, 0));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(1, 0)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(2, 0)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(0, 1)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(1, 1)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(2, 1)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(0, 2)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(1, 2)));
-  result = pnMipUnion(result, pnMipSquareNode(mip, shape, level, first, last, ivec2(2, 2)));
+  vec2 result = pn_mipSquareNode(mip, shape, level, first, last, ivec2(0, 0));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(1, 0)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(2, 0)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(0, 1)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(1, 1)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(2, 1)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(0, 2)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(1, 2)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(2, 2)));
   return result;
 }
 

@@ -153,7 +153,7 @@ PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDe
 
 // The texel at p, clamped to the map: lit (1) unless it occludes its own
 // threshold (the test's at the texel read).
-float pnPcfLitAt(sampler2D depthMap, ivec2 p, vec3 receiver, vec2 gradient, float threshold) {
+float pn_pcfLitAt(sampler2D depthMap, ivec2 p, vec3 receiver, vec2 gradient, float threshold) {
   ivec2 q = clamp(p, ivec2(0), textureSize(depthMap, 0) - ivec2(1));
   float t = pnReceiverPlaneThreshold(threshold, gradient, receiver.xy, q);
   return pnPcfOccludes(texelFetch(depthMap, q, 0).r, t) ? 0.0 : 1.0;
@@ -166,10 +166,10 @@ float pnPcfBilinearVisibilityPlane(sampler2D depthMap, vec3 receiver, vec2 gradi
   if (any(isnan(f)) || any(isinf(receiver.xy))) return 1.0;  // no position: nothing can be tested
   ivec2 i = ivec2(clamp(cell, vec2(-2.0), vec2(textureSize(depthMap, 0))));
   float t = receiver.z - bias;
-  float top = mix(pnPcfLitAt(depthMap, i, receiver, gradient, t),
-                  pnPcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), f.x);
-  float bottom = mix(pnPcfLitAt(depthMap, i + ivec2(0, 1), receiver, gradient, t),
-                     pnPcfLitAt(depthMap, i + ivec2(1, 1), receiver, gradient, t), f.x);
+  float top = mix(pn_pcfLitAt(depthMap, i, receiver, gradient, t),
+                  pn_pcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), f.x);
+  float bottom = mix(pn_pcfLitAt(depthMap, i + ivec2(0, 1), receiver, gradient, t),
+                     pn_pcfLitAt(depthMap, i + ivec2(1, 1), receiver, gradient, t), f.x);
   return mix(top, bottom, f.y);
 }
 

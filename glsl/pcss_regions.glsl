@@ -8,7 +8,8 @@
 //   Step 3 — search region: PCSS's blocker-search width for d (blockers as
 //   near as the near plane, light_model.glsl), then, when refining (HQEPCSS),
 //   repeated at most `iterations` times:
-//     zmin = min depth of a square covering the region (the pyramid, 4 fetches);
+//     zmin = min depth of a square covering the region (the mip chain's
+//            aligned nodes, <= 9 fetches; the pyramid's 4: pcss_regions_pyramid.glsl);
 //     zmin >= d - bias            -> nothing in the region occludes: lit;
 //     s' = width a blocker at zmin needs (light_model.glsl);
 //     s' >= s                     -> stop; else s = s' and repeat.
@@ -28,15 +29,11 @@
 //   is lit. A zero-size light gives s = 0: one texel, a hard shadow.
 //
 // use:
-//   vec4  pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias,
-//                       int iterations)                          receiver = G-buffer (u, v, d, valid)
-//   vec4  pnSearchEntryPlane(sampler2DArray pyramid, PnLight light, vec4 receiver, vec2 gradient, float bias,
-//                            int iterations)   with a receiver plane (receiver_plane.glsl): lit when the
-//                          region's min is not below the plane's highest threshold over the region;
-//                          gradient 0 is pnSearchEntry exactly
 //   vec4  pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias,
-//                          int iterations)   the same from the aligned mip chain (minmax_mip.glsl):
-//                          zmin over the aligned nodes touching the square (<= 9 fetches), a superset
+//                          int iterations)   receiver = G-buffer (u, v, d, valid); zmin from the
+//                          aligned mip chain (minmax_mip.glsl): over the aligned nodes touching the
+//                          square (<= 9 fetches), a superset (pcss_regions_pyramid.glsl: the same
+//                          from the pyramid)
 //   vec4  pnSearchEntryMipCounted(... the same ..., out int refinements)   and how many refinements read
 //                          the chain (<= 9 fetches each: the call's cost)
 //   vec4  pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient,
@@ -59,12 +56,12 @@
 // options:
 //   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement (pcss_regions.h, shared with the runner)
 //
-// cost: search entry: 4 fetches per refinement iteration (9 from the mip chain); filter entry: ALU only.
+// cost: search entry: <= 9 fetches per refinement iteration (4 from the pyramid, pcss_regions_pyramid.glsl);
+//   filter entry: ALU only.
 
 #ifndef PENUMBRA_PCSS_REGIONS_GLSL
 #define PENUMBRA_PCSS_REGIONS_GLSL
 
-#include "depth_pyramid.glsl"
 #include "light_model.glsl"
 #include "minmax_mip.glsl"
 #include "pcss_regions.h"
@@ -89,25 +86,17 @@ vec4 pnEntryLinkKey(vec4 entry, int mapSize, int regionMode) {
   return vec4(entry.xyz, float(pnEntryWindow(entry, mapSize, regionMode).side));
 }
 
-// Min depth over a square that covers the entry's exact region (4 fetches).
-float pnSearchRegionMin(sampler2DArray pyramid, vec4 entry) {
-  int n = pnPyramidMapSize(pyramid);
-  PnRect r = pnEntryRect(entry, n);
-  if (r.size.x == 0 || r.size.y == 0) return pnPyramidFar();
-  return pnPyramidSquareMinMax(pyramid, r.origin, max(r.size.x, r.size.y)).x;
-}
-
 // The same from the aligned mip chain: the min over the aligned nodes that
 // touch that square (<= 9 fetches) — never above the square's min, so the lit
 // decision stays conservative and refinement lossless.
-float pnSearchRegionMinMip(sampler2D mip, int mapSize, vec4 entry) {
+float pn_searchRegionMinMip(sampler2D mip, int mapSize, vec4 entry) {
   PnRect r = pnEntryRect(entry, mapSize);
-  if (r.size.x == 0 || r.size.y == 0) return pnMipFar();
+  if (r.size.x == 0 || r.size.y == 0) return pn_mipFar();
   return pnMipSquareMinMax(mip, mapSize, r.origin, max(r.size.x, r.size.y)).x;
 }
 
 // Step 3's start: PCSS's search width, or lit for a pixel without a surface.
-vec4 pnSearchStart(PnLight light, vec4 receiver) {
+vec4 pn_searchStart(PnLight light, vec4 receiver) {
   float d = receiver.z;
   if (receiver.w == 0.0 || isnan(d)) return vec4(0.0, 0.0, 0.0, PN_REGION_LIT);
   return vec4(d, receiver.xy, pnLightSearchWidthTexels(light, d));
@@ -116,8 +105,8 @@ vec4 pnSearchStart(PnLight light, vec4 receiver) {
 // One refinement step from the region's min depth zmin: lit when no depth is
 // below the receiver plane's highest threshold over the entry's region (the
 // receiver's depth minus the bias when gradient is 0), else shrunk, or `done`.
-vec4 pnSearchRefinePlane(PnLight light, int mapSize, vec4 entry, float zmin, vec2 centre, vec2 gradient, float bias,
-                         out bool done) {
+vec4 pn_searchRefinePlane(PnLight light, int mapSize, vec4 entry, float zmin, vec2 centre, vec2 gradient, float bias,
+                          out bool done) {
   done = true;
   PnRect r = pnEntryRect(entry, mapSize);
   float highestThreshold = pnReceiverPlaneThresholdRange(entry.x - bias, gradient, centre, r.origin, r.origin + r.size).y;
@@ -128,33 +117,16 @@ vec4 pnSearchRefinePlane(PnLight light, int mapSize, vec4 entry, float zmin, vec
   return vec4(entry.xyz, side);
 }
 
-vec4 pnSearchEntryPlane(sampler2DArray pyramid, PnLight light, vec4 receiver, vec2 gradient, float bias,
-                        int iterations) {
-  int n = pnPyramidMapSize(pyramid);
-  vec4 entry = pnSearchStart(light, receiver);
-  for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
-    if (i >= iterations || pnEntryLit(entry)) break;
-    bool done;
-    entry = pnSearchRefinePlane(light, n, entry, pnSearchRegionMin(pyramid, entry), receiver.xy, gradient, bias, done);
-    if (done) break;
-  }
-  return entry;
-}
-
-vec4 pnSearchEntry(sampler2DArray pyramid, PnLight light, vec4 receiver, float bias, int iterations) {
-  return pnSearchEntryPlane(pyramid, light, receiver, vec2(0.0), bias, iterations);
-}
-
 vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient, float bias,
                            int iterations, out int refinements) {
-  vec4 entry = pnSearchStart(light, receiver);
+  vec4 entry = pn_searchStart(light, receiver);
   refinements = 0;
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
     refinements += 1;
-    entry = pnSearchRefinePlane(light, mapSize, entry, pnSearchRegionMinMip(mip, mapSize, entry), receiver.xy,
-                                gradient, bias, done);
+    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, mapSize, entry), receiver.xy,
+                                 gradient, bias, done);
     if (done) break;
   }
   return entry;

@@ -163,8 +163,8 @@ PnPoissonPcssSettings pnPoissonPcssDefaults(float bias) {
   return PnPoissonPcssSettings(bias, 1.0, PN_POISSON_BLOCKER_SAMPLES, PN_POISSON_PCF_SAMPLES);
 }
 
-PnPoisson pnPoissonBlockerSearch(sampler2D depthMap, vec4 entry, float bias, vec2 gradient, int count,
-                                 vec2 rotation) {
+PnPoisson pn_poissonBlockerSearch(sampler2D depthMap, vec4 entry, float bias, vec2 gradient, int count,
+                                  vec2 rotation) {
   PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
   for (int i = 0; i < PN_POISSON_BLOCKER_DISK.length(); ++i) {
     if (i >= count) break;
@@ -174,7 +174,7 @@ PnPoisson pnPoissonBlockerSearch(sampler2D depthMap, vec4 entry, float bias, vec
   return sums;
 }
 
-PnPoisson pnPoissonFilter(sampler2D depthMap, vec4 entry, float bias, vec2 gradient, int count, vec2 rotation) {
+PnPoisson pn_poissonFilter(sampler2D depthMap, vec4 entry, float bias, vec2 gradient, int count, vec2 rotation) {
   PnPoisson sums = PnPoisson(0.0, 0.0, 0.0);
   for (int i = 0; i < PN_POISSON_FILTER_DISK.length(); ++i) {
     if (i >= count) break;
@@ -186,16 +186,16 @@ PnPoisson pnPoissonFilter(sampler2D depthMap, vec4 entry, float bias, vec2 gradi
 
 PnPoissonPcssResult pnPoissonPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane,
                                           PnPoissonPcssSettings s, vec2 rotation) {
-  PnPoissonPcssResult r = PnPoissonPcssResult(1.0, pnSearchStart(light, vec4(receiver, 1.0)), vec4(0.0), 0.0);
+  PnPoissonPcssResult r = PnPoissonPcssResult(1.0, pn_searchStart(light, vec4(receiver, 1.0)), vec4(0.0), 0.0);
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
-  PnPoisson blockers = pnPoissonBlockerSearch(depthMap, r.searchEntry, s.bias, receiverPlane, s.blockerSamples,
-                                              rotation);
+  PnPoisson blockers = pn_poissonBlockerSearch(depthMap, r.searchEntry, s.bias, receiverPlane, s.blockerSamples,
+                                               rotation);
   bool hasBlocker = blockers.occluders > 0.0;
   r.blockerMean = pnPoissonBlockerMean(blockers);
   r.filterEntry = pnFilterEntry(light, r.searchEntry, r.blockerMean, hasBlocker, s.filterScale);
   if (pnEntryLit(r.filterEntry)) return r;  // no blocker: lit, no PCF
-  r.visibility = 1.0 - pnPoissonOccludedFraction(pnPoissonFilter(depthMap, r.filterEntry, s.bias, receiverPlane,
+  r.visibility = 1.0 - pnPoissonOccludedFraction(pn_poissonFilter(depthMap, r.filterEntry, s.bias, receiverPlane,
                                                                  s.filterSamples, rotation));
   return r;
 }

@@ -63,7 +63,7 @@ vec2 pnReceiverPlaneGradient(vec3 a, vec3 b, float maxSlope) {
 
 // The step from `centre` toward the neighbour of the two (`minus` one pixel before, `plus` after) whose
 // depth differs less, as (u, v, d) per pixel; 0 when neither is valid.
-vec3 pnReceiverPlaneStep(vec4 centre, vec4 minus, vec4 plus) {
+vec3 pn_receiverPlaneStep(vec4 centre, vec4 minus, vec4 plus) {
   bool useMinus = minus.w != 0.0, usePlus = plus.w != 0.0;
   if (useMinus && usePlus) {
     usePlus = abs(plus.z - centre.z) <= abs(centre.z - minus.z);
@@ -75,7 +75,7 @@ vec3 pnReceiverPlaneStep(vec4 centre, vec4 minus, vec4 plus) {
 }
 
 vec2 pnReceiverPlaneFromNeighbours(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above, float maxSlope) {
-  return pnReceiverPlaneGradient(pnReceiverPlaneStep(centre, left, right), pnReceiverPlaneStep(centre, below, above),
+  return pnReceiverPlaneGradient(pn_receiverPlaneStep(centre, left, right), pn_receiverPlaneStep(centre, below, above),
                                  maxSlope);
 }
 

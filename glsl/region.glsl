@@ -63,15 +63,15 @@ int pnRegionRoundPow2(int w) {
   return secondBit ? (1 << (top + 1)) : (1 << top);
 }
 
-float pnRegionFiniteOrZero(float v) {
+float pn_regionFiniteOrZero(float v) {
   return isnan(v) ? 0.0 : v;
 }
 
 // Steps 1–5: the clamped bounds (l, t) and the side s'.
-ivec3 pnRegionCornerAndSide(vec2 centre, float side, int mapSize) {
+ivec3 pn_regionCornerAndSide(vec2 centre, float side, int mapSize) {
   int e = max(mapSize, 1);
-  float s = max(pnRegionFiniteOrZero(side), 0.0);
-  vec2 c = vec2(pnRegionFiniteOrZero(centre.x), pnRegionFiniteOrZero(centre.y));
+  float s = max(pn_regionFiniteOrZero(side), 0.0);
+  vec2 c = vec2(pn_regionFiniteOrZero(centre.x), pn_regionFiniteOrZero(centre.y));
   float last = float(e - 1);
   // Bounds are clamped while still float, so huge or infinite inputs never
   // reach an int conversion.
@@ -88,7 +88,7 @@ ivec3 pnRegionCornerAndSide(vec2 centre, float side, int mapSize) {
 
 PnWindow pnRegionApproximate(vec2 centre, float side, int mapSize) {
   int e = max(mapSize, 1);
-  ivec3 lts = pnRegionCornerAndSide(centre, side, e);
+  ivec3 lts = pn_regionCornerAndSide(centre, side, e);
   float halfSide = float(lts.z) * 0.5;
   vec2 c = vec2(lts.xy) + halfSide;  // Step 6
   // Step 7: push back inside on the right and bottom.
@@ -99,8 +99,8 @@ PnWindow pnRegionApproximate(vec2 centre, float side, int mapSize) {
 
 PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize) {
   int e = max(mapSize, 1);
-  int sp = pnRegionCornerAndSide(centre, side, e).z;
-  vec2 c = vec2(pnRegionFiniteOrZero(centre.x), pnRegionFiniteOrZero(centre.y));
+  int sp = pn_regionCornerAndSide(centre, side, e).z;
+  vec2 c = vec2(pn_regionFiniteOrZero(centre.x), pn_regionFiniteOrZero(centre.y));
   vec2 origin = clamp(floor(c - float(sp) * 0.5 + 0.5), vec2(0.0), vec2(float(e - sp)));
   return PnWindow(ivec2(origin), sp, findMSB(sp));
 }
@@ -108,8 +108,8 @@ PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize) {
 PnRect pnRegionSquare(vec2 centre, float side, int mapSize) {
   float e = float(max(mapSize, 1));
   // Clamped while float: an infinite side covers the map, never overflows an int.
-  float n = clamp(round(max(pnRegionFiniteOrZero(side), 0.0)), 1.0, 4.0 * e);
-  vec2 c = clamp(vec2(pnRegionFiniteOrZero(centre.x), pnRegionFiniteOrZero(centre.y)), vec2(-4.0 * e), vec2(5.0 * e));
+  float n = clamp(round(max(pn_regionFiniteOrZero(side), 0.0)), 1.0, 4.0 * e);
+  vec2 c = clamp(vec2(pn_regionFiniteOrZero(centre.x), pn_regionFiniteOrZero(centre.y)), vec2(-4.0 * e), vec2(5.0 * e));
   vec2 lo = floor(c - 0.5 * n + 0.5);
   vec2 start = clamp(lo, vec2(0.0), vec2(e));
   vec2 end = clamp(lo + n, start, vec2(e));

@@ -37,15 +37,15 @@
 
 #include "reuse.h"  // PN_REUSE_MAX_TILE, PN_REUSE_NONE, PN_REUSE_LEFT, PN_REUSE_TOP
 
-bool pnReuseClose(float a, float b, float sigma) {
+bool pn_reuseClose(float a, float b, float sigma) {
   float m = max(abs(a), abs(b));
   if (m == 0.0) return true;  // both are zero
   return abs(a - b) / m <= sigma;
 }
 
 bool pnReuseSimilar(vec4 a, vec4 b, float sigma1, float sigma2, float sigma3) {
-  return pnReuseClose(a.w, b.w, sigma1) && pnReuseClose(a.y, b.y, sigma2) && pnReuseClose(a.z, b.z, sigma2) &&
-         pnReuseClose(a.x, b.x, sigma3);
+  return pn_reuseClose(a.w, b.w, sigma1) && pn_reuseClose(a.y, b.y, sigma2) && pn_reuseClose(a.z, b.z, sigma2) &&
+         pn_reuseClose(a.x, b.x, sigma3);
 }
 
 int pnReuseParent(sampler2D entries, ivec2 p, int k, float sigma1, float sigma2, float sigma3) {

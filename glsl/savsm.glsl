@@ -59,6 +59,8 @@
 //   (near, 1 / (far - near)), what the table was built with.
 //   PnSavsmSettings { float bias; float filterScale; float minVariance; float bleedingReduction;
 //                     int blockerMode; bool bound; }
+//   PnSavsmSettings pnSavsmDefaults(float bias)   filter scale 1, vsm.h's minimum variance and
+//         bleeding reduction (1e-4, 0.2), the MIN blocker, the bound on (savsm.h)
 //   PnSavsm { PnRect searchRect; PnRect filterRect; float blocker; bool hasBlocker;
 //             float filterSide; float mean; float variance; float chebyshev; float reduced;
 //             float bound; float visibility; }   (F's moments and each step's value)
@@ -99,6 +101,13 @@ struct PnSavsmSettings {
   int blockerMode;          // PN_SAVSM_BLOCKER_TABLE or _MIN
   bool bound;               // the mip chain's lit test over S and depth-range bound over F
 };
+
+// The runner's settings for a bias: the filter scale, minimum variance and bleeding reduction of
+// savsm.h and vsm.h, the default blocker mode and the bound.
+PnSavsmSettings pnSavsmDefaults(float bias) {
+  return PnSavsmSettings(bias, PN_SAVSM_FILTER_SCALE, PN_VSM_MIN_VARIANCE, PN_VSM_BLEEDING_REDUCTION,
+                         PN_SAVSM_DEFAULT_BLOCKER, PN_SAVSM_DEFAULT_BOUND != 0);
+}
 
 struct PnSavsmStats {
   float mean;      // depth units
@@ -142,11 +151,11 @@ float pnSavsmBlockerFromMoments(PnSavsmStats s, float t, float minVariance, floa
 // Min and max over the aligned nodes of the mip chain that cover the rectangle's square (side
 // max(size), clipped to the map): a superset of the rectangle, so t <= min and t > max decide
 // conservatively; at most 9 fetches.
-vec2 pnSavsmSquareMinMax(sampler2D mip, int n, PnRect rect) {
+vec2 pn_savsmSquareMinMax(sampler2D mip, int n, PnRect rect) {
   return pnMipSquareMinMax(mip, n, rect.origin, max(rect.size.x, rect.size.y));
 }
 
-PnSavsm pnSavsmLit(PnRect search) {
+PnSavsm pn_savsmLit(PnRect search) {
   PnRect none = PnRect(ivec2(0), ivec2(0));
   return PnSavsm(search, none, 0.0, false, 0.0, 0.0, 0.0, 1.0, 1.0, PN_VSM_BOUND_NONE, 1.0);
 }
@@ -155,16 +164,16 @@ PnSavsm pnSavsmEstimate(PN_SAVSM_TABLE_SAMPLER table, sampler2D mip, PnLight lig
                         vec2 unitRange, PnSavsmSettings settings) {
   PnRect none = PnRect(ivec2(0), ivec2(0));
   float dP = receiver.z;
-  if (!pnSummedAreaFinite(dP) || !pnSummedAreaFinite(receiver.x) || !pnSummedAreaFinite(receiver.y))
-    return pnSavsmLit(none);
+  if (!pn_summedAreaFinite(dP) || !pn_summedAreaFinite(receiver.x) || !pn_summedAreaFinite(receiver.y))
+    return pn_savsmLit(none);
   int n = textureSize(table, 0).x - 1;
   float t = dP - settings.bias;
-  PnSavsm r = pnSavsmLit(pnRegionSquare(receiver.xy, pnLightSearchWidthTexels(light, dP), n));
+  PnSavsm r = pn_savsmLit(pnRegionSquare(receiver.xy, pnLightSearchWidthTexels(light, dP), n));
   if (r.searchRect.size.x == 0 || r.searchRect.size.y == 0) return r;
 
   // 1-2: the blocker search.
   bool readMip = settings.bound || settings.blockerMode == PN_SAVSM_BLOCKER_MIN;
-  vec2 searchMinMax = readMip ? pnSavsmSquareMinMax(mip, n, r.searchRect) : vec2(0.0);
+  vec2 searchMinMax = readMip ? pn_savsmSquareMinMax(mip, n, r.searchRect) : vec2(0.0);
   if (settings.bound && t <= searchMinMax.x) return r;
   if (settings.blockerMode == PN_SAVSM_BLOCKER_MIN) {
     r.hasBlocker = searchMinMax.x < t;
@@ -187,8 +196,8 @@ PnSavsm pnSavsmEstimate(PN_SAVSM_TABLE_SAMPLER table, sampler2D mip, PnLight lig
   r.variance = f.variance;
   r.chebyshev = pnVsmChebyshevMeanVariance(f.mean, f.variance, t, settings.minVariance);
   r.reduced = pnVsmReduceBleeding(r.chebyshev, settings.bleedingReduction);
-  r.bound = settings.bound ? pnVsmDepthRangeBound(pnSavsmSquareMinMax(mip, n, r.filterRect), t) : PN_VSM_BOUND_NONE;
-  r.visibility = pnVsmApplyBound(r.bound, r.reduced);
+  r.bound = settings.bound ? pnVsmDepthRangeBound(pn_savsmSquareMinMax(mip, n, r.filterRect), t) : PN_VSM_BOUND_NONE;
+  r.visibility = pn_vsmApplyBound(r.bound, r.reduced);
   return r;
 }
 

@@ -25,6 +25,11 @@
 #define PN_SAVSM_BLOCKER_TABLE 0
 #define PN_SAVSM_BLOCKER_MIN 1
 
+// pnSavsmDefaults' blocker mode and bound (1 on, 0 off): MIN with the bound is
+// nearer the ray-traced truth than the seed's TABLE (docs/modules/savsm.md).
+#define PN_SAVSM_DEFAULT_BLOCKER PN_SAVSM_BLOCKER_MIN
+#define PN_SAVSM_DEFAULT_BOUND 1
+
 // c: filter side = c · penumbra (as the PCSS family's filter scale).
 #ifndef PN_SAVSM_FILTER_SCALE
 #define PN_SAVSM_FILTER_SCALE 1.0

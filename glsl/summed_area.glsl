@@ -121,24 +121,24 @@ struct PnSummedArea {
 };
 
 // 2^e, exactly (-126 <= e <= 127).
-float pnSummedAreaPow2(int e) {
+float pn_summedAreaPow2(int e) {
   return uintBitsToFloat(uint(127 + e) << 23);
 }
 
 // NaN and ±Inf have every exponent bit set (a bit test: no reliance on isnan).
-bool pnSummedAreaFinite(float v) {
+bool pn_summedAreaFinite(float v) {
   return (floatBitsToUint(v) & 0x7f800000u) != 0x7f800000u;
 }
 
 uvec4 pnSummedAreaTexel(float depth) {
-  if (!pnSummedAreaFinite(depth)) return uvec4(0u);
+  if (!pn_summedAreaFinite(depth)) return uvec4(0u);
   // Each step exact in float: scaling by powers of two, roundEven, floor, and
   // the split x = hi * 2^32 + lo of an integer x <= 2^52.
-  float limit = pnSummedAreaPow2(PN_SUMMED_AREA_MAGNITUDE_BITS - PN_SUMMED_AREA_FRACTION_BITS);
-  float x = roundEven(min(abs(depth), limit) * pnSummedAreaPow2(PN_SUMMED_AREA_FRACTION_BITS));
-  float high = floor(x * pnSummedAreaPow2(-32));
+  float limit = pn_summedAreaPow2(PN_SUMMED_AREA_MAGNITUDE_BITS - PN_SUMMED_AREA_FRACTION_BITS);
+  float x = roundEven(min(abs(depth), limit) * pn_summedAreaPow2(PN_SUMMED_AREA_FRACTION_BITS));
+  float high = floor(x * pn_summedAreaPow2(-32));
   uint hi = uint(high);
-  uint lo = uint(x - high * pnSummedAreaPow2(32));
+  uint lo = uint(x - high * pn_summedAreaPow2(32));
   if (depth < 0.0) {  // two's complement negation of (hi, lo)
     lo = ~lo + 1u;
     hi = ~hi + (lo == 0u ? 1u : 0u);
@@ -147,42 +147,42 @@ uvec4 pnSummedAreaTexel(float depth) {
 }
 
 // 64-bit two's complement numbers as (low word, high word), modulo 2^64.
-uvec2 pnSummedAreaAdd64(uvec2 a, uvec2 b) {
+uvec2 pn_summedAreaAdd64(uvec2 a, uvec2 b) {
   uint lo = a.x + b.x;  // uint arithmetic wraps modulo 2^32
   uint carry = lo < a.x ? 1u : 0u;
   return uvec2(lo, a.y + b.y + carry);
 }
 
-uvec2 pnSummedAreaSub64(uvec2 a, uvec2 b) {
+uvec2 pn_summedAreaSub64(uvec2 a, uvec2 b) {
   uint borrow = a.x < b.x ? 1u : 0u;
   return uvec2(a.x - b.x, a.y - b.y - borrow);
 }
 
 uvec4 pnSummedAreaAdd(uvec4 a, uvec4 b) {
-  return uvec4(pnSummedAreaAdd64(a.xy, b.xy), a.zw + b.zw);
+  return uvec4(pn_summedAreaAdd64(a.xy, b.xy), a.zw + b.zw);
 }
 
 uvec4 pnSummedAreaSub(uvec4 a, uvec4 b) {
-  return uvec4(pnSummedAreaSub64(a.xy, b.xy), a.zw - b.zw);
+  return uvec4(pn_summedAreaSub64(a.xy, b.xy), a.zw - b.zw);
 }
 
 // A non-negative 64-bit number (< 2^64, read unsigned) as a float: two conversions and one
 // addition of non-negative terms, relative error <= 2u + u^2, u = 2^-24.
-float pnSummedAreaUnsignedToFloat(uvec2 q) {
-  return float(q.y) * pnSummedAreaPow2(32) + float(q.x);
+float pn_summedAreaUnsignedToFloat(uvec2 q) {
+  return float(q.y) * pn_summedAreaPow2(32) + float(q.x);
 }
 
 // A two's complement 64-bit number as a float: its magnitude (-2^63 stays 2^63, read unsigned)
 // converted, the sign put back; the same relative error.
-float pnSummedAreaSignedToFloat(uvec2 q) {
+float pn_summedAreaSignedToFloat(uvec2 q) {
   bool negative = q.y >= 0x80000000u;
-  if (negative) q = pnSummedAreaSub64(uvec2(0u), q);
-  float magnitude = pnSummedAreaUnsignedToFloat(q);
+  if (negative) q = pn_summedAreaSub64(uvec2(0u), q);
+  float magnitude = pn_summedAreaUnsignedToFloat(q);
   return negative ? -magnitude : magnitude;
 }
 
 float pnSummedAreaFixedToFloat(uvec2 q) {
-  return pnSummedAreaSignedToFloat(q) * pnSummedAreaPow2(-PN_SUMMED_AREA_FRACTION_BITS);  // exact scaling
+  return pn_summedAreaSignedToFloat(q) * pn_summedAreaPow2(-PN_SUMMED_AREA_FRACTION_BITS);  // exact scaling
 }
 
 ivec2 pnSummedAreaTableSize(ivec2 mapSize) {
@@ -199,24 +199,24 @@ uvec4 pnSummedAreaColumnStep(usampler2D rowPrefix, int column, int y, uvec4 abov
 }
 
 // The rectangle [origin, origin + size) clipped to an n-texel map: corners (lo, hi) of the table.
-ivec4 pnSummedAreaClip(ivec2 n, ivec2 origin, ivec2 size) {
+ivec4 pn_summedAreaClip(ivec2 n, ivec2 origin, ivec2 size) {
   ivec2 lo = clamp(origin, ivec2(0), n);
   ivec2 hi = clamp(origin + max(size, ivec2(0)), lo, n);
   return ivec4(lo, hi);
 }
 
-uvec4 pnSummedAreaFetch(usampler2D table, ivec2 corner) {
+uvec4 pn_summedAreaFetch(usampler2D table, ivec2 corner) {
   PN_ON_TEXEL_FETCH();
   return texelFetch(table, corner, 0);
 }
 
 PnSummedArea pnSummedAreaRectSum(usampler2D table, ivec2 origin, ivec2 size) {
-  ivec4 c = pnSummedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
+  ivec4 c = pn_summedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
   ivec2 lo = c.xy, hi = c.zw;
-  uvec4 topLeft = pnSummedAreaFetch(table, lo);
-  uvec4 topRight = pnSummedAreaFetch(table, ivec2(hi.x, lo.y));
-  uvec4 bottomLeft = pnSummedAreaFetch(table, ivec2(lo.x, hi.y));
-  uvec4 bottomRight = pnSummedAreaFetch(table, hi);
+  uvec4 topLeft = pn_summedAreaFetch(table, lo);
+  uvec4 topRight = pn_summedAreaFetch(table, ivec2(hi.x, lo.y));
+  uvec4 bottomLeft = pn_summedAreaFetch(table, ivec2(lo.x, hi.y));
+  uvec4 bottomRight = pn_summedAreaFetch(table, hi);
   uvec4 s = pnSummedAreaSub(pnSummedAreaAdd(bottomRight, topLeft), pnSummedAreaAdd(topRight, bottomLeft));
   PnSummedArea r;
   r.fixedSum = s.xy;
@@ -239,20 +239,20 @@ struct PnSummedAreaMoments {
 };
 
 float pnSummedAreaUnitDepth(float depth, vec2 unitRange) {
-  if (!pnSummedAreaFinite(depth)) return 1.0;
+  if (!pn_summedAreaFinite(depth)) return 1.0;
   // A subtraction and a multiplication, each correctly rounded (no division, whose GLSL
   // precision is 2.5 ulp): the CPU reference reproduces x bit for bit.
   return clamp((depth - unitRange.x) * unitRange.y, 0.0, 1.0);
 }
 
 uint pnSummedAreaMomentQ(float depth, vec2 unitRange) {
-  return uint(roundEven(pnSummedAreaUnitDepth(depth, unitRange) * pnSummedAreaPow2(PN_SUMMED_AREA_MOMENT_BITS)));
+  return uint(roundEven(pnSummedAreaUnitDepth(depth, unitRange) * pn_summedAreaPow2(PN_SUMMED_AREA_MOMENT_BITS)));
 }
 
 // a · b as 64 bits (low, high word), exact, from 16-bit halves: what GLSL's umulExtended computes,
 // written in operations every shading language has (SPIRV-Cross writes umulExtended's SPIR-V
 // into HLSL as a call HLSL does not have, so the HLSL export could not compile).
-uvec2 pnSummedAreaMulWide(uint a, uint b) {
+uvec2 pn_summedAreaMulWide(uint a, uint b) {
   uint a0 = a & 0xFFFFu, a1 = a >> 16, b0 = b & 0xFFFFu, b1 = b >> 16;
   uint low = a0 * b0, cross0 = a0 * b1, cross1 = a1 * b0;
   uint middle = (low >> 16) + (cross0 & 0xFFFFu) + (cross1 & 0xFFFFu);  // < 3 · 2^16
@@ -261,7 +261,7 @@ uvec2 pnSummedAreaMulWide(uint a, uint b) {
 
 uvec4 pnSummedAreaMomentsTexel(float depth, vec2 unitRange) {
   uint q = pnSummedAreaMomentQ(depth, unitRange);
-  uvec2 square = pnSummedAreaMulWide(q, q);  // q^2 < 2^(2B + 1): exact in 64 bits
+  uvec2 square = pn_summedAreaMulWide(q, q);  // q^2 < 2^(2B + 1): exact in 64 bits
   return uvec4(q, 0u, square);
 }
 
@@ -271,11 +271,11 @@ vec4 pnSummedAreaFloatMomentsTexel(float depth, vec2 unitRange) {
 }
 
 uvec4 pnSummedAreaMomentsAdd(uvec4 a, uvec4 b) {
-  return uvec4(pnSummedAreaAdd64(a.xy, b.xy), pnSummedAreaAdd64(a.zw, b.zw));
+  return uvec4(pn_summedAreaAdd64(a.xy, b.xy), pn_summedAreaAdd64(a.zw, b.zw));
 }
 
 uvec4 pnSummedAreaMomentsSub(uvec4 a, uvec4 b) {
-  return uvec4(pnSummedAreaSub64(a.xy, b.xy), pnSummedAreaSub64(a.zw, b.zw));
+  return uvec4(pn_summedAreaSub64(a.xy, b.xy), pn_summedAreaSub64(a.zw, b.zw));
 }
 
 uvec4 pnSummedAreaMomentsRowStep(sampler2D depthMap, vec2 unitRange, int row, int x, uvec4 left) {
@@ -298,8 +298,8 @@ vec4 pnSummedAreaFloatMomentsColumnStep(sampler2D rowPrefix, int column, int y, 
 }
 
 // (low, high) times a 32-bit m, modulo 2^64.
-uvec2 pnSummedAreaMul64(uvec2 a, uint m) {
-  uvec2 r = pnSummedAreaMulWide(a.x, m);
+uvec2 pn_summedAreaMul64(uvec2 a, uint m) {
+  uvec2 r = pn_summedAreaMulWide(a.x, m);
   r.y += a.y * m;
   return r;
 }
@@ -314,11 +314,11 @@ uvec2 pnSummedAreaMul64(uvec2 a, uint m) {
 // within 8u var(q) + 20u rho^2 (u = 2^-24), the mean within u mean(q) + 6u rho
 // (docs/modules/summed_area.md, "Moments tables").
 uvec4 pnSummedAreaRectMomentSums(usampler2D table, ivec2 origin, ivec2 size, out uint texels) {
-  ivec4 c = pnSummedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
+  ivec4 c = pn_summedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
   texels = uint((c.z - c.x) * (c.w - c.y));
   return pnSummedAreaMomentsSub(
-      pnSummedAreaMomentsAdd(pnSummedAreaFetch(table, c.zw), pnSummedAreaFetch(table, c.xy)),
-      pnSummedAreaMomentsAdd(pnSummedAreaFetch(table, c.zy), pnSummedAreaFetch(table, c.xw)));
+      pnSummedAreaMomentsAdd(pn_summedAreaFetch(table, c.zw), pn_summedAreaFetch(table, c.xy)),
+      pnSummedAreaMomentsAdd(pn_summedAreaFetch(table, c.zy), pn_summedAreaFetch(table, c.xw)));
 }
 
 PnSummedAreaMoments pnSummedAreaRectMoments(usampler2D table, ivec2 origin, ivec2 size) {
@@ -331,20 +331,20 @@ PnSummedAreaMoments pnSummedAreaRectMoments(usampler2D table, ivec2 origin, ivec
     m.variance = 0.0;
     return m;
   }
-  float scale = pnSummedAreaPow2(-PN_SUMMED_AREA_MOMENT_BITS);
-  float qMax = pnSummedAreaPow2(PN_SUMMED_AREA_MOMENT_BITS);
-  uint centre = uint(clamp(roundEven(pnSummedAreaSignedToFloat(s.xy) / m.texels), 0.0, qMax));
-  uvec2 nc = pnSummedAreaMul64(uvec2(centre, 0u), n);                  // n c
-  uvec2 deviation = pnSummedAreaSub64(s.xy, nc);                         // D
-  uvec2 centred = pnSummedAreaSub64(s.zw, pnSummedAreaMul64(s.xy, 2u * centre));  // S2 - 2 c S1
-  centred = pnSummedAreaAdd64(centred, pnSummedAreaMul64(nc, centre));             // + n c^2
-  float d = pnSummedAreaSignedToFloat(deviation) / m.texels;
+  float scale = pn_summedAreaPow2(-PN_SUMMED_AREA_MOMENT_BITS);
+  float qMax = pn_summedAreaPow2(PN_SUMMED_AREA_MOMENT_BITS);
+  uint centre = uint(clamp(roundEven(pn_summedAreaSignedToFloat(s.xy) / m.texels), 0.0, qMax));
+  uvec2 nc = pn_summedAreaMul64(uvec2(centre, 0u), n);                  // n c
+  uvec2 deviation = pn_summedAreaSub64(s.xy, nc);                         // D
+  uvec2 centred = pn_summedAreaSub64(s.zw, pn_summedAreaMul64(s.xy, 2u * centre));  // S2 - 2 c S1
+  centred = pn_summedAreaAdd64(centred, pn_summedAreaMul64(nc, centre));             // + n c^2
+  float d = pn_summedAreaSignedToFloat(deviation) / m.texels;
   m.mean = (float(centre) + d) * scale;
-  m.variance = max(pnSummedAreaUnsignedToFloat(centred) / m.texels - d * d, 0.0) * (scale * scale);
+  m.variance = max(pn_summedAreaUnsignedToFloat(centred) / m.texels - d * d, 0.0) * (scale * scale);
   return m;
 }
 
-vec4 pnSummedAreaFloatFetch(sampler2D table, ivec2 corner) {
+vec4 pn_summedAreaFloatFetch(sampler2D table, ivec2 corner) {
   PN_ON_TEXEL_FETCH();
   return texelFetch(table, corner, 0);
 }
@@ -352,9 +352,9 @@ vec4 pnSummedAreaFloatFetch(sampler2D table, ivec2 corner) {
 // The same from the float table of centred values v = x - 1/2: four float differences, then
 // E[v^2] - E[v]^2 (the cancellation the fixed-point table avoids).
 PnSummedAreaMoments pnSummedAreaRectFloatMoments(sampler2D table, ivec2 origin, ivec2 size) {
-  ivec4 c = pnSummedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
-  vec2 s = (pnSummedAreaFloatFetch(table, c.zw).xy - pnSummedAreaFloatFetch(table, c.zy).xy) -
-           (pnSummedAreaFloatFetch(table, c.xw).xy - pnSummedAreaFloatFetch(table, c.xy).xy);
+  ivec4 c = pn_summedAreaClip(textureSize(table, 0) - ivec2(1), origin, size);
+  vec2 s = (pn_summedAreaFloatFetch(table, c.zw).xy - pn_summedAreaFloatFetch(table, c.zy).xy) -
+           (pn_summedAreaFloatFetch(table, c.xw).xy - pn_summedAreaFloatFetch(table, c.xy).xy);
   PnSummedAreaMoments m;
   m.texels = float((c.z - c.x) * (c.w - c.y));
   if (m.texels == 0.0) {

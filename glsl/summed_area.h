@@ -1,7 +1,7 @@
 // summed_area.h — the constants that glsl/summed_area.glsl and the C++ runner
 // share: the fixed-point step, the magnitude clamp, the loop bound and the
 // two build directions (runner/reference/summed_area_reference.h,
-// runner/passes/summed_area_pass.cpp). Valid as GLSL and as C++: only
+// runner/pass_runners/summed_area_pass.cpp). Valid as GLSL and as C++: only
 // comments and guarded #defines. An engine may define the options before
 // including summed_area.glsl.
 

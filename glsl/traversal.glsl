@@ -2,6 +2,10 @@
 // min/max classification and sampled leaves (Fast PCSS).
 //
 // description:
+//   This file: the counting every walk shares and the walks over the aligned
+//   min/max mip chain (Fast PCSS's structure); traversal_pyramid.glsl walks
+//   depth_pyramid.glsl's decreased pyramid (HQEPCSS) with the same rules, so a
+//   call over the mip chain includes no pyramid code.
 //   Seed 000 §3 (Eq. 5, 6), SPEC §4.4. For a receiver at depth dP, a texel of
 //   depth d occludes when d < t, t = dP - bias (float32). The region is
 //   covered by an implicit quadtree rooted at a power-of-two window; a node is
@@ -21,12 +25,9 @@
 //                PN_LEAF_RAMP     the T texels spread evenly over [min, max]: T (t - min) / (max - min)
 //                  occlude at mean depth (min + t) / 2 (a +Inf max: half of them) — no fetch.
 //   Leaf side 1 is exact: a single texel is never ambiguous.
-//   Regions: pnTraverseRegion takes any rectangle, clipped to the map (the exact,
-//   non-power-of-two region, SPEC §4.4 "beyond the paper"); its root is the
-//   smallest power-of-two square at the region's origin that covers it. Nodes
-//   outside the region are skipped, nodes straddling its border (or above the
-//   pyramid's last level) are descended, never read. For the paper's power-of-
-//   two window (region.glsl) the region is the window and the root itself.
+//   Regions: any rectangle, clipped to the map (the exact, non-power-of-two
+//   region, SPEC §4.4 "beyond the paper"); the roots over the pyramid are in
+//   traversal_pyramid.glsl's header, over the mip chain below.
 //   Budget: each visited node counts; once `nodeBudget` nodes are visited no
 //   node descends any more: an ambiguous node is estimated at its own level
 //   (with its leaf mode; a straddling node is sampled over its part inside the
@@ -48,10 +49,6 @@
 //   float rounding of the per-node sums.
 //
 // use:
-//   PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable,
-//       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias,
-//       int leafSide, int leafMode, int nodeBudget, ivec2 pixel)
-//   PnTraversal pnTraverseWindow(... PnWindow window ...)       the region.glsl window
 //   PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize,
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
 //       int nodeBudget, int depthSums, ivec2 pixel)
@@ -100,12 +97,12 @@
 #ifndef PENUMBRA_TRAVERSAL_GLSL
 #define PENUMBRA_TRAVERSAL_GLSL
 
-#include "depth_pyramid.glsl"
 #include "minmax_mip.glsl"
-#include "region.glsl"
 #include "sample_table.glsl"
 #include "receiver_plane.glsl"
+#ifdef PN_TRAVERSAL_SUM_TABLE  // only a shader that asks for the table's exact sums reads it
 #include "summed_area.glsl"
+#endif
 #include "traversal.h"  // PN_TRAVERSAL_MAX_LEVEL, PN_LEAF_SAMPLED, PN_LEAF_MIN
 
 // The shadow test of a traversal over the mip chain (receiver_plane.glsl): a
@@ -138,7 +135,7 @@ float pnTraversalOccludedFraction(PnTraversal r) {
 }
 
 // The even bits of v, packed: one coordinate of a Morton code.
-int pnTraversalCompactBits(uint v) {
+int pn_traversalCompactBits(uint v) {
   v &= 0x55555555u;
   v = (v | (v >> 1)) & 0x33333333u;
   v = (v | (v >> 2)) & 0x0F0F0F0Fu;
@@ -149,7 +146,7 @@ int pnTraversalCompactBits(uint v) {
 
 // An empty result for the region clipped to an n×n map (and to the largest
 // root), so every read is inside: [start, end), its texels counted.
-PnTraversal pnTraversalBegin(ivec2 regionOrigin, ivec2 regionSize, int n, out ivec2 start, out ivec2 end) {
+PnTraversal pn_traversalBegin(ivec2 regionOrigin, ivec2 regionSize, int n, out ivec2 start, out ivec2 end) {
   start = clamp(regionOrigin, ivec2(0), ivec2(n));
   end = clamp(regionOrigin + max(regionSize, ivec2(0)), start, min(ivec2(n), start + (1 << PN_TRAVERSAL_MAX_LEVEL)));
   ivec2 size = end - start;
@@ -157,14 +154,14 @@ PnTraversal pnTraversalBegin(ivec2 regionOrigin, ivec2 regionSize, int n, out iv
 }
 
 // The node of Morton code `code` and side `side` below a root at `rootOrigin`.
-ivec2 pnTraversalNodeOrigin(ivec2 rootOrigin, int side, uint code) {
-  return rootOrigin + side * ivec2(pnTraversalCompactBits(code), pnTraversalCompactBits(code >> 1));
+ivec2 pn_traversalNodeOrigin(ivec2 rootOrigin, int side, uint code) {
+  return rootOrigin + side * ivec2(pn_traversalCompactBits(code), pn_traversalCompactBits(code >> 1));
 }
 
 // The stackless step: into the first child (descend), or to the next node in
 // Z order — the next sibling, climbing over every level whose last child this
 // was. True when the climb reaches rootLevel: the traversal is done.
-bool pnTraversalNext(inout int level, inout uint code, bool descend, int rootLevel) {
+bool pn_traversalNext(inout int level, inout uint code, bool descend, int rootLevel) {
   if (descend) {
     level -= 1;
     code *= 4u;
@@ -179,8 +176,8 @@ bool pnTraversalNext(inout int level, inout uint code, bool descend, int rootLev
 
 // One sample of depth d read at texel p: counted when it occludes its own
 // texel's threshold.
-void pnTraversalCountSample(inout float occluding, inout float depthSum, inout PnTraversal r, float d, ivec2 p,
-                            PnTraversalTest test) {
+void pn_traversalCountSample(inout float occluding, inout float depthSum, inout PnTraversal r, float d, ivec2 p,
+                             PnTraversalTest test) {
   r.fetches += 1;
   if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
     occluding += 1.0;
@@ -190,7 +187,7 @@ void pnTraversalCountSample(inout float occluding, inout float depthSum, inout P
 
 // Eq. 5 / 6: `occluding` of m samples, with their depth sum, scaled to the
 // leaf's texels.
-void pnTraversalAddSampled(inout PnTraversal r, ivec2 size, float occluding, float depthSum, int m) {
+void pn_traversalAddSampled(inout PnTraversal r, ivec2 size, float occluding, float depthSum, int m) {
   float texels = float(size.x * size.y);
   r.occluders += texels * occluding / float(m);
   r.depthSum += texels * depthSum / float(m);
@@ -198,24 +195,24 @@ void pnTraversalAddSampled(inout PnTraversal r, ivec2 size, float occluding, flo
 
 // One sample of a leaf [lo, lo + size) over the mip chain's level 0, at a
 // table position in [0, 1)².
-void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                         PnMipShape shape, vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
+void pn_traversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
+                          PnMipShape shape, vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
   ivec2 p = pnSampleTexel(position, lo, size);
-  pnTraversalCountSample(occluding, depthSum, r, pnMipFetchOf(mip, shape, 0, p).x, p, test);
+  pn_traversalCountSample(occluding, depthSum, r, pn_mipFetchOf(mip, shape, 0, p).x, p, test);
 }
 
 // Sample i < m of a sampled leaf, its position from the table.
-void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                          PnMipShape shape, sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo,
-                          ivec2 size, PnTraversalTest test) {
+void pn_traversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
+                           PnMipShape shape, sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo,
+                           ivec2 size, PnTraversalTest test) {
   if (i >= m) return;
-  pnTraversalSampleAt(occluding, depthSum, r, mip, shape, pnSample(sampleTable, first + i, set), lo, size, test);
+  pn_traversalSampleAt(occluding, depthSum, r, mip, shape, pnSample(sampleTable, first + i, set), lo, size, test);
 }
 
 // Eq. 5 / 6 over the rectangle [lo, lo + size) with the samples of a node of
 // side `side` over the mip chain's level 0, each sample against its own
 // texel's threshold.
-void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable, ivec2 lo,
+void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable, ivec2 lo,
                            ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
   int m = pnSampleCount(k);
@@ -229,72 +226,32 @@ void pnTraversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape sha
   // plane's threshold made the loop too long to unroll): the first four
   // samples are taken without a loop, the rest (16-sample leaves, at most a
   // sixteenth of the region's texels) four a step.
-  pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 0, m, lo, size, test);
+  pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 0, m, lo, size, test);
   if (m > 1) {
-    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 1, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 2, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 1, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 2, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 3, m, lo, size, test);
   }
   // The bound is min(m, 16), not 16 with a break at m: a loop with a constant trip count and a
   // second exit is unrolled whole by Mesa's NIR (16 copies of a sample in the GPU's code).
   for (int g = 4; g < m; g += 4) {
-    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 1, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 2, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 1, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 2, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 3, m, lo, size, test);
   }
-  pnTraversalAddSampled(r, size, occluding, depthSum, m);
-}
-
-// One sample of a leaf [lo, lo + size) over the pyramid's level 0 (as pnTraversalSampleAt).
-void pnTraversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
-                         vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
-  ivec2 p = pnSampleTexel(position, lo, size);
-  pnTraversalCountSample(occluding, depthSum, r, pnPyramidFetch(pyramid, 0, p).x, p, test);
-}
-
-void pnTraversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
-                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size,
-                          PnTraversalTest test) {
-  if (i >= m) return;
-  pnTraversalSampleAt(occluding, depthSum, r, pyramid, pnSample(sampleTable, first + i, set), lo, size, test);
-}
-
-// The same over the pyramid's level 0.
-void pnTraversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, ivec2 lo,
-                           ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
-  int k = pnSampleGroupLog4(side);
-  int m = pnSampleCount(k);
-  int first = pnSampleFirstColumn(k);
-  int set = pnSampleSet(pixel);
-  float occluding = 0.0;
-  float depthSum = 0.0;
-  // As over the mip chain: the first four without a loop (llvmpipe's loop cut-off).
-  pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 0, m, lo, size, test);
-  if (m > 1) {
-    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 1, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 2, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 3, m, lo, size, test);
-  }
-  for (int g = 4; g < PN_SAMPLE_MAX_COUNT; g += 4) {
-    if (g >= m) break;
-    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 1, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 2, m, lo, size, test);
-    pnTraversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 3, m, lo, size, test);
-  }
-  pnTraversalAddSampled(r, size, occluding, depthSum, m);
+  pn_traversalAddSampled(r, size, occluding, depthSum, m);
 }
 
 // The test's threshold at the centre of the part [lo, hi): what a min or ramp
 // leaf, which has no texel of its own, is estimated against.
-float pnTraversalTestAtCentre(PnTraversalTest test, ivec2 lo, ivec2 hi) {
+float pn_traversalTestAtCentre(PnTraversalTest test, ivec2 lo, ivec2 hi) {
   return test.threshold + dot(test.gradient, 0.5 * vec2(lo + hi) - test.centre);
 }
 
 // PN_LEAF_MIN and PN_LEAF_RAMP over `texels` of an ambiguous leaf of depths
 // (lo, hi), lo < t <= hi (traversal.h).
-void pnTraversalEstimateLeaf(inout PnTraversal r, int leafMode, float lo, float hi, float texels, float t) {
+void pn_traversalEstimateLeaf(inout PnTraversal r, int leafMode, float lo, float hi, float texels, float t) {
   if (leafMode == PN_LEAF_MIN) {
     r.occluders += texels;
     r.depthSum += lo * texels;
@@ -305,114 +262,6 @@ void pnTraversalEstimateLeaf(inout PnTraversal r, int leafMode, float lo, float 
   r.depthSum += fraction * texels * 0.5 * (lo + min(t, hi));
 }
 
-// Reads a node inside the region (with a pyramid level) and counts it: a node
-// whose texels all occlude (below the lowest of the test's thresholds over it)
-// is added whole; returns true when it is ambiguous, with its (min, max) depth
-// in `nodeRange`.
-bool pnTraversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level, ivec2 origin,
-                         PnTraversalTest test, out vec2 nodeRange) {
-  vec4 node = pnPyramidFetch(pyramid, level, origin);
-  r.nodes += 1;
-  r.fetches += 1;
-  nodeRange = node.xy;
-  int side = 1 << level;
-  vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, origin, origin + side);
-  if (node.y < t.x) {
-    float texels = float(side * side);
-    r.occluders += texels;
-    r.depthSum += node.z * texels;
-    return false;
-  }
-  return node.x < t.y;
-}
-
-// A node inside the region, with a pyramid level, that will not be descended:
-// classified, and estimated by the leaf mode when ambiguous (min and ramp
-// against the test's threshold at the node's centre).
-void pnTraversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, int level, ivec2 origin,
-                          PnTraversalTest test, int leafMode, ivec2 pixel) {
-  vec2 range;
-  if (!pnTraversalClassify(r, pyramid, level, origin, test, range)) return;
-  int side = 1 << level;
-  if (leafMode != PN_LEAF_SAMPLED) {
-    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(side * side),
-                            pnTraversalTestAtCentre(test, origin, origin + side));
-  } else {
-    pnTraversalSampleLeaf(r, pyramid, sampleTable, origin, ivec2(side), side, test, pixel);
-  }
-}
-
-PnTraversal pnTraverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin,
-                                  ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int leafSide,
-                                  int leafMode, int nodeBudget, ivec2 pixel) {
-  ivec2 regionStart, regionEnd;
-  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, pnPyramidMapSize(pyramid), regionStart, regionEnd);
-  ivec2 size = regionEnd - regionStart;
-  PnTraversalTest t = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
-  if (isnan(t.threshold) || r.texels == 0.0) return r;
-
-  int rootLevel = findMSB(max(size.x, size.y) - 1) + 1;
-  int maxLevel = pnPyramidMaxLevel(pyramid);
-  int budget = clamp(nodeBudget, 1, PN_TRAVERSAL_NO_BUDGET);
-  int level = rootLevel;
-  uint code = 0u;
-  // One iteration per node, except that a node whose children are all leaves
-  // handles them in the same iteration (they are never descended): the
-  // iteration count stays a quarter of the node count, below llvmpipe's loop
-  // cut-off (65535 iterations of a loop per invocation; traversal.md).
-  int iterations = budget + 3 * rootLevel + 1;
-  for (int it = 0; it < iterations; ++it) {
-    int side = 1 << level;
-    ivec2 origin = pnTraversalNodeOrigin(regionStart, side, code);
-    ivec2 lo = max(origin, regionStart);
-    ivec2 hi = min(origin + side, regionEnd);
-    bool descend = false;
-    if (all(lessThan(lo, hi))) {
-      bool inside = all(equal(lo, origin)) && all(equal(hi, origin + side));
-      bool spent = r.nodes + 1 >= budget;
-      if (inside && level <= maxLevel && (side <= leafSide || spent)) {
-        pnTraversalVisitLeaf(r, pyramid, sampleTable, level, origin, t, leafMode, pixel);
-      } else if (inside && level <= maxLevel) {
-        vec2 range;
-        if (pnTraversalClassify(r, pyramid, level, origin, t, range)) {  // ambiguous: descend
-          if ((side >> 1) <= leafSide) {
-            int h = side >> 1;
-            pnTraversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin, t, leafMode, pixel);
-            pnTraversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(h, 0), t, leafMode, pixel);
-            pnTraversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(0, h), t, leafMode, pixel);
-            pnTraversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(h, h), t, leafMode, pixel);
-          } else {
-            descend = true;
-          }
-        }
-      } else if (!spent) {
-        r.nodes += 1;
-        descend = true;  // straddles the region, or has no pyramid level
-      } else {
-        r.nodes += 1;
-        pnTraversalSampleLeaf(r, pyramid, sampleTable, lo, hi - lo, side, t, pixel);
-      }
-    } else {
-      r.nodes += 1;  // outside the region: visited, nothing to read
-    }
-    if (pnTraversalNext(level, code, descend, rootLevel)) break;  // the root is done
-  }
-  return r;
-}
-
-PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin, ivec2 regionSize,
-                             float receiverDepth, float bias, int leafSide, int leafMode, int nodeBudget,
-                             ivec2 pixel) {
-  return pnTraverseRegionPlane(pyramid, sampleTable, regionOrigin, regionSize, vec3(0.0, 0.0, receiverDepth),
-                               vec2(0.0), bias, leafSide, leafMode, nodeBudget, pixel);
-}
-
-PnTraversal pnTraverseWindow(sampler2DArray pyramid, sampler2D sampleTable, PnWindow window, float receiverDepth,
-                             float bias, int leafSide, int leafMode, int nodeBudget, ivec2 pixel) {
-  return pnTraverseRegion(pyramid, sampleTable, window.origin, ivec2(window.side), receiverDepth, bias, leafSide,
-                          leafMode, nodeBudget, pixel);
-}
-
 // ---- Over the aligned min/max mip chain (minmax_mip.glsl) -------------------
 
 // The clipped part [lo, hi) of a node whose every texel occludes: its texels,
@@ -421,8 +270,8 @@ PnTraversal pnTraverseWindow(sampler2DArray pyramid, sampler2D sampleTable, PnWi
 // level 0 always); else the summed-area table's exact sum over the part
 // (TABLE, 4 fetches) or the node's midpoint (min + max) / 2 times its texels
 // (MIDPOINT, no table); NONE adds no depth (Step 5 only counts).
-void pnTraversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2 hi,
-                                 int depthSums) {
+void pn_traversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2 hi,
+                                  int depthSums) {
   ivec2 size = hi - lo;
   float texels = float(size.x * size.y);
   r.occluders += texels;
@@ -444,15 +293,15 @@ void pnTraversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2
 // (min, max) in `nodeRange`.
 // The test's thresholds over the part (receiver_plane.glsl): all below the
 // lowest -> every texel occludes; none below the highest -> none does.
-bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, int level, ivec2 origin,
-                             ivec2 lo, ivec2 hi, PnTraversalTest test, int depthSums, out vec2 nodeRange) {
-  vec2 node = pnMipFetchOf(mip, shape, level, origin >> level);
+bool pn_traversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, int level, ivec2 origin,
+                              ivec2 lo, ivec2 hi, PnTraversalTest test, int depthSums, out vec2 nodeRange) {
+  vec2 node = pn_mipFetchOf(mip, shape, level, origin >> level);
   r.nodes += 1;
   r.fetches += 1;
   nodeRange = node;
   vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, lo, hi);
   if (node.y < t.x) {
-    pnTraversalAddOccludingPart(r, node, lo, hi, depthSums);
+    pn_traversalAddOccludingPart(r, node, lo, hi, depthSums);
     return false;
   }
   return node.x < t.y;
@@ -461,24 +310,24 @@ bool pnTraversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape shap
 // A node that will not be descended: its clipped part classified, and
 // estimated by the leaf mode when ambiguous (samples spread over the part).
 // Without samples (min, ramp) a sloped test is taken at the part's centre.
-void pnTraversalVisitLeafPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
-                              int level, ivec2 origin, ivec2 lo, ivec2 hi, PnTraversalTest test, int leafMode,
-                              int depthSums, ivec2 pixel) {
+void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
+                               int level, ivec2 origin, ivec2 lo, ivec2 hi, PnTraversalTest test, int leafMode,
+                               int depthSums, ivec2 pixel) {
   vec2 range;
-  if (!pnTraversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) return;
+  if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
     ivec2 size = hi - lo;
-    pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), pnTraversalTestAtCentre(test, lo, hi));
+    pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), pn_traversalTestAtCentre(test, lo, hi));
   } else {
-    pnTraversalSampleLeafMip(r, mip, shape, sampleTable, lo, hi - lo, 1 << level, test, pixel);
+    pn_traversalSampleLeafMip(r, mip, shape, sampleTable, lo, hi - lo, 1 << level, test, pixel);
   }
 }
 
 // The four level-0 children (texels) of a level-1 node at `origin`, clipped to the region.
-void pnTraversalVisitTexels(inout PnTraversal r, sampler2D mip, PnMipShape shape, ivec2 origin,
-                            ivec2 regionStart, ivec2 regionEnd, PnTraversalTest test, int depthSums) {
-  vec4 pair0 = pnMipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y));
-  vec4 pair1 = pnMipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y + 1));
+void pn_traversalVisitTexels(inout PnTraversal r, sampler2D mip, PnMipShape shape, ivec2 origin,
+                             ivec2 regionStart, ivec2 regionEnd, PnTraversalTest test, int depthSums) {
+  vec4 pair0 = pn_mipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y));
+  vec4 pair1 = pn_mipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y + 1));
   vec4 depths = vec4(pair0.x, pair0.z, pair1.x, pair1.z);  // (0,0), (1,0), (0,1), (1,1): min = max = depth
   r.fetches += 2;
   r.nodes += 4;
@@ -510,14 +359,14 @@ struct PnTraversalWalk {
   bool done;
 };
 
-int pnTraversalBudget(int nodeBudget) {
+int pn_traversalBudget(int nodeBudget) {
   return clamp(nodeBudget, 1, PN_TRAVERSAL_NO_BUDGET);
 }
 
-PnTraversalWalk pnTraversalWalkBegin(PnMipShape shape, int mapSize, ivec2 regionOrigin, ivec2 regionSize,
-                                     PnTraversalTest test, int budget) {
+PnTraversalWalk pn_traversalWalkBegin(PnMipShape shape, int mapSize, ivec2 regionOrigin, ivec2 regionSize,
+                                      PnTraversalTest test, int budget) {
   PnTraversalWalk w;
-  w.r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), w.regionStart, w.regionEnd);
+  w.r = pn_traversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), w.regionStart, w.regionEnd);
   ivec2 size = w.regionEnd - w.regionStart;
   w.done = isnan(test.threshold) || w.r.texels == 0.0;
   // The 2×2 aligned nodes of level `top` at the region's aligned corner cover
@@ -534,29 +383,29 @@ PnTraversalWalk pnTraversalWalkBegin(PnMipShape shape, int mapSize, ivec2 region
   return w;
 }
 
-// The walk's next node (none once done). budget: pnTraversalBudget's.
-void pnTraversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
-                         PnTraversalTest test, int leafSide, int leafMode, int budget, int depthSums, ivec2 pixel) {
+// The walk's next node (none once done). budget: pn_traversalBudget's.
+void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
+                          PnTraversalTest test, int leafSide, int leafMode, int budget, int depthSums, ivec2 pixel) {
   if (w.done) return;
   int side = 1 << w.level;
-  ivec2 origin = pnTraversalNodeOrigin(w.rootOrigin, side, w.code);
+  ivec2 origin = pn_traversalNodeOrigin(w.rootOrigin, side, w.code);
   ivec2 lo = max(origin, w.regionStart);
   ivec2 hi = min(origin + side, w.regionEnd);
   bool descend = false;
   if (all(lessThan(lo, hi))) {
     bool spent = w.r.nodes + 1 >= budget;
     if (side <= leafSide || spent) {
-      pnTraversalVisitLeafPart(w.r, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums, pixel);
+      pn_traversalVisitLeafPart(w.r, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums, pixel);
     } else {
       vec2 range;
-      if (pnTraversalClassifyPart(w.r, mip, shape, w.level, origin, lo, hi, test, depthSums, range)) {
+      if (pn_traversalClassifyPart(w.r, mip, shape, w.level, origin, lo, hi, test, depthSums, range)) {
         if (side == 2) {
           // Texels: never ambiguous, so classified here, four at a time and
           // without a sampling loop: with leaf children visited inline (as
           // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
           // iterations per invocation ended the exact (leaf 1) traversal of
           // a 256² fine checker early; one sampling site a step does not.
-          pnTraversalVisitTexels(w.r, mip, shape, origin, w.regionStart, w.regionEnd, test, depthSums);
+          pn_traversalVisitTexels(w.r, mip, shape, origin, w.regionStart, w.regionEnd, test, depthSums);
         } else {
           descend = true;
         }
@@ -566,19 +415,19 @@ void pnTraversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape shap
     w.r.nodes += 1;  // outside the region: visited, nothing to read
   }
   // The virtual root's four children done: the walk is over.
-  w.done = pnTraversalNext(w.level, w.code, descend, w.rootLevel);
+  w.done = pn_traversalNext(w.level, w.code, descend, w.rootLevel);
 }
 
 PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int mapSize,
                                      ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias,
                                      int leafSide, int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
-  PnMipShape shape = pnMipShape(mip);
+  PnMipShape shape = pn_mipShape(mip);
   PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
-  int budget = pnTraversalBudget(nodeBudget);
-  PnTraversalWalk w = pnTraversalWalkBegin(shape, mapSize, regionOrigin, regionSize, test, budget);
+  int budget = pn_traversalBudget(nodeBudget);
+  PnTraversalWalk w = pn_traversalWalkBegin(shape, mapSize, regionOrigin, regionSize, test, budget);
   for (int it = 0; it < w.iterations; ++it) {
     if (w.done) break;
-    pnTraversalWalkStep(w, mip, shape, sampleTable, test, leafSide, leafMode, budget, depthSums, pixel);
+    pn_traversalWalkStep(w, mip, shape, sampleTable, test, leafSide, leafMode, budget, depthSums, pixel);
   }
   return w.r;
 }
@@ -592,9 +441,9 @@ PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int m
 PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
                             ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
                             int leafMode, int depthSums, ivec2 pixel) {
-  PnMipShape shape = pnMipShape(mip);
+  PnMipShape shape = pn_mipShape(mip);
   ivec2 start, end;
-  PnTraversal r = pnTraversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), start, end);
+  PnTraversal r = pn_traversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), start, end);
   ivec2 size = end - start;
   PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
   if (isnan(test.threshold) || r.texels == 0.0) return r;
@@ -620,19 +469,19 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
       ivec2 origin = (first + ivec2(i, j)) << level;
       ivec2 lo = max(origin, start), hi = min(origin + side, end);
       vec2 range;
-      if (!pnTraversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) continue;
+      if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) continue;
       if (leafMode != PN_LEAF_SAMPLED) {
-        pnTraversalEstimateLeaf(r, leafMode, range.x, range.y, float((hi.x - lo.x) * (hi.y - lo.y)),
-                                pnTraversalTestAtCentre(test, lo, hi));
+        pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, float((hi.x - lo.x) * (hi.y - lo.y)),
+                                 pn_traversalTestAtCentre(test, lo, hi));
       } else {
         float occluding = 0.0, depthSum = 0.0;
         for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
           if (g >= m) break;
           for (int i = g; i < g + 4; ++i) {  // constant trip count: unrolled
-            if (i < m) pnTraversalSampleAt(occluding, depthSum, r, mip, shape, positions[i], lo, hi - lo, test);
+            if (i < m) pn_traversalSampleAt(occluding, depthSum, r, mip, shape, positions[i], lo, hi - lo, test);
           }
         }
-        pnTraversalAddSampled(r, hi - lo, occluding, depthSum, m);
+        pn_traversalAddSampled(r, hi - lo, occluding, depthSum, m);
       }
     }
   }

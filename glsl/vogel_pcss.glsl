@@ -119,7 +119,7 @@ PnVogelPcssSettings pnVogelPcssDefaults(float bias) {
 PnVogelPcssResult pnVogelPcssEstimate(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane,
                                       ivec2 pixel, PnVogelPcssSettings s) {
   float turn = pnInterleavedGradientNoise(vec2(pixel) + 0.5);
-  PnVogelPcssResult r = PnVogelPcssResult(1.0, pnSearchStart(light, vec4(receiver, 1.0)), vec4(0.0), 0.0, turn);
+  PnVogelPcssResult r = PnVogelPcssResult(1.0, pn_searchStart(light, vec4(receiver, 1.0)), vec4(0.0), 0.0, turn);
   r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
   if (pnEntryLit(r.searchEntry)) return r;
   PnPoisson blockers = pnVogelOcclusion(depthMap, r.searchEntry.yz, r.searchEntry.w, r.searchEntry.x, s.bias,

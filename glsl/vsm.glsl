@@ -90,37 +90,37 @@
 #include "vsm.h"
 #include "depth_pyramid.glsl"
 
-bool pnVsmIsFinite(float d) {
+bool pn_vsmIsFinite(float d) {
   return !isnan(d) && !isinf(d);
 }
 
 vec2 pnVsmMoments(float depth, float farDepth) {
-  float d = pnVsmIsFinite(depth) ? depth : farDepth;
+  float d = pn_vsmIsFinite(depth) ? depth : farDepth;
   return vec2(d, d * d);
 }
 
 float pnEvsmWarpCoordinate(float depth, vec2 depthRange) {
-  if (!pnVsmIsFinite(depth)) return 1.0;
+  if (!pn_vsmIsFinite(depth)) return 1.0;
   return clamp((depth - depthRange.x) / (depthRange.y - depthRange.x), 0.0, 1.0);
 }
 
-vec2 pnEvsmClampExponents(vec2 exponents) {
+vec2 pn_evsmClampExponents(vec2 exponents) {
   return clamp(exponents, vec2(0.0), vec2(float(PN_EVSM_MAX_EXPONENT)));
 }
 
 // w+ = exp(c+ x), w- = -exp(-c- x): the warped depths of the coordinate x.
-vec2 pnEvsmWarp(float x, vec2 exponents) {
-  vec2 c = pnEvsmClampExponents(exponents);
+vec2 pn_evsmWarp(float x, vec2 exponents) {
+  vec2 c = pn_evsmClampExponents(exponents);
   return vec2(exp(c.x * x), -exp(-c.y * x));
 }
 
 vec2 pnEvsmMoments2(float depth, vec2 depthRange, float exponent) {
-  float w = pnEvsmWarp(pnEvsmWarpCoordinate(depth, depthRange), vec2(exponent, 0.0)).x;
+  float w = pn_evsmWarp(pnEvsmWarpCoordinate(depth, depthRange), vec2(exponent, 0.0)).x;
   return vec2(w, w * w);
 }
 
 vec4 pnEvsmMoments4(float depth, vec2 depthRange, vec2 exponents) {
-  vec2 w = pnEvsmWarp(pnEvsmWarpCoordinate(depth, depthRange), exponents);
+  vec2 w = pn_evsmWarp(pnEvsmWarpCoordinate(depth, depthRange), exponents);
   return vec4(w.x, w.x * w.x, w.y, w.y * w.y);
 }
 
@@ -157,23 +157,23 @@ float pnVsmDepthRangeBound(vec2 minMax, float t) {
 }
 
 // The bound where it decides, else the visibility.
-float pnVsmApplyBound(float bound, float visibility) {
+float pn_vsmApplyBound(float bound, float visibility) {
   return bound == PN_VSM_BOUND_NONE ? visibility : bound;
 }
 
 float pnEvsmBound2(vec2 moments, float t, vec2 depthRange, float exponent, float minVariance) {
   if (isnan(t)) return 1.0;  // as pnVsmChebyshev: a NaN receiver is lit
-  float w = pnEvsmWarp(pnEvsmWarpCoordinate(t, depthRange), vec2(exponent, 0.0)).x;
+  float w = pn_evsmWarp(pnEvsmWarpCoordinate(t, depthRange), vec2(exponent, 0.0)).x;
   return pnVsmChebyshev(moments, w, minVariance);
 }
 
 float pnEvsmBound4(vec4 moments, float t, vec2 depthRange, vec2 exponents, float minVariance) {
   if (isnan(t)) return 1.0;
-  vec2 w = pnEvsmWarp(pnEvsmWarpCoordinate(t, depthRange), exponents);
+  vec2 w = pn_evsmWarp(pnEvsmWarpCoordinate(t, depthRange), exponents);
   return min(pnVsmChebyshev(moments.xy, w.x, minVariance), pnVsmChebyshev(moments.zw, w.y, minVariance));
 }
 
-vec4 pnVsmFetchMoments(sampler2D moments, ivec2 texel) {
+vec4 pn_vsmFetchMoments(sampler2D moments, ivec2 texel) {
   ivec2 last = textureSize(moments, 0) - ivec2(1);
   return texelFetch(moments, clamp(texel, ivec2(0), last), 0);
 }
@@ -181,46 +181,46 @@ vec4 pnVsmFetchMoments(sampler2D moments, ivec2 texel) {
 float pnVsmVisibility(sampler2D moments, sampler2DArray pyramid, ivec2 texel, int radius, float receiverDepth,
                       float bias, float minVariance, float bleedingReduction) {
   float t = receiverDepth - bias;
-  float p = pnVsmChebyshev(pnVsmFetchMoments(moments, texel).xy, t, minVariance);
+  float p = pnVsmChebyshev(pn_vsmFetchMoments(moments, texel).xy, t, minVariance);
   float bound = pnVsmDepthRangeBound(pnVsmWindowMinMax(pyramid, texel, radius), t);
-  return pnVsmApplyBound(bound, pnVsmReduceBleeding(p, bleedingReduction));
+  return pn_vsmApplyBound(bound, pnVsmReduceBleeding(p, bleedingReduction));
 }
 
 float pnEvsmVisibility2(sampler2D moments, sampler2DArray pyramid, ivec2 texel, int radius, float receiverDepth,
                         float bias, vec2 depthRange, float exponent, float minVariance, float bleedingReduction) {
   float t = receiverDepth - bias;
-  float p = pnEvsmBound2(pnVsmFetchMoments(moments, texel).xy, t, depthRange, exponent, minVariance);
+  float p = pnEvsmBound2(pn_vsmFetchMoments(moments, texel).xy, t, depthRange, exponent, minVariance);
   float bound = pnVsmDepthRangeBound(pnVsmWindowMinMax(pyramid, texel, radius), t);
-  return pnVsmApplyBound(bound, pnVsmReduceBleeding(p, bleedingReduction));
+  return pn_vsmApplyBound(bound, pnVsmReduceBleeding(p, bleedingReduction));
 }
 
 float pnEvsmVisibility4(sampler2D moments, sampler2DArray pyramid, ivec2 texel, int radius, float receiverDepth,
                         float bias, vec2 depthRange, vec2 exponents, float minVariance, float bleedingReduction) {
   float t = receiverDepth - bias;
-  float p = pnEvsmBound4(pnVsmFetchMoments(moments, texel), t, depthRange, exponents, minVariance);
+  float p = pnEvsmBound4(pn_vsmFetchMoments(moments, texel), t, depthRange, exponents, minVariance);
   float bound = pnVsmDepthRangeBound(pnVsmWindowMinMax(pyramid, texel, radius), t);
-  return pnVsmApplyBound(bound, pnVsmReduceBleeding(p, bleedingReduction));
+  return pn_vsmApplyBound(bound, pnVsmReduceBleeding(p, bleedingReduction));
 }
 
 // The texel under a receiver's (u, v), clamped to the moments' map; false when its position or
 // depth is not finite (nothing to test: lit).
-bool pnVsmReceiverTexel(sampler2D moments, vec3 receiver, out ivec2 texel) {
+bool pn_vsmReceiverTexel(sampler2D moments, vec3 receiver, out ivec2 texel) {
   ivec2 n = textureSize(moments, 0);
   texel = ivec2(clamp(floor(receiver.xy), vec2(0.0), vec2(n - ivec2(1))));
-  return pnVsmIsFinite(receiver.x) && pnVsmIsFinite(receiver.y) && pnVsmIsFinite(receiver.z);
+  return pn_vsmIsFinite(receiver.x) && pn_vsmIsFinite(receiver.y) && pn_vsmIsFinite(receiver.z);
 }
 
 float pnVsm(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias, float minVariance,
             float bleedingReduction) {
   ivec2 texel;
-  if (!pnVsmReceiverTexel(moments, receiver, texel)) return 1.0;
+  if (!pn_vsmReceiverTexel(moments, receiver, texel)) return 1.0;
   return pnVsmVisibility(moments, pyramid, texel, radius, receiver.z, bias, minVariance, bleedingReduction);
 }
 
 float pnEvsm2(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias, vec2 depthRange,
               float exponent, float minVariance, float bleedingReduction) {
   ivec2 texel;
-  if (!pnVsmReceiverTexel(moments, receiver, texel)) return 1.0;
+  if (!pn_vsmReceiverTexel(moments, receiver, texel)) return 1.0;
   return pnEvsmVisibility2(moments, pyramid, texel, radius, receiver.z, bias, depthRange, exponent, minVariance,
                            bleedingReduction);
 }
@@ -228,7 +228,7 @@ float pnEvsm2(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radi
 float pnEvsm4(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias, vec2 depthRange,
               vec2 exponents, float minVariance, float bleedingReduction) {
   ivec2 texel;
-  if (!pnVsmReceiverTexel(moments, receiver, texel)) return 1.0;
+  if (!pn_vsmReceiverTexel(moments, receiver, texel)) return 1.0;
   return pnEvsmVisibility4(moments, pyramid, texel, radius, receiver.z, bias, depthRange, exponents, minVariance,
                            bleedingReduction);
 }

@@ -6,11 +6,11 @@
 #include "check/module_check.h"
 #include "core/error.h"
 #include "gl/texture.h"
-#include "passes/blur_pass.h"
+#include "pass_runners/blur_pass.h"
 #include "broken_copy.h"
 #include "driver_bundle.h"
 #include "gl_test_context.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "shader/flatten.h"
 #include "shader/target.h"
 

@@ -8,7 +8,7 @@
 #include "broken_copy.h"
 #include "check/depth_cache_check.h"
 #include "check/module_check.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl_test_context.h"
 
 using pn::test::named;
@@ -25,8 +25,8 @@ constexpr const char* kNonfinite = "nonfinite";
 
 TEST_CASE("negative: a copy of depth_cache.glsl that takes the max of the two maps fails every pair of different maps, "
           "the compose pass and the two-map cache's sequence (the dirty-rectangle cache composes by the depth test)") {
-  const pn::test::BrokenCopy copy("depth_cache.glsl", "return min(pnDepthCacheSanitize(staticDepth)",
-                                  "return max(pnDepthCacheSanitize(staticDepth)");
+  const pn::test::BrokenCopy copy("depth_cache.glsl", "return min(pn_depthCacheSanitize(staticDepth)",
+                                  "return max(pn_depthCacheSanitize(staticDepth)");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(depth_cache(), copy.root());
   const auto& fx = pn::fixtures::kTextureFixtures;

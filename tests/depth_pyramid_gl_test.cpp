@@ -6,7 +6,7 @@
 #include "check/module_check.h"
 #include "gl/texture.h"
 #include "gl_test_context.h"
-#include "passes/depth_pyramid_pass.h"
+#include "pass_runners/depth_pyramid_pass.h"
 
 using pn::test::BrokenCopy;
 using pn::test::check_all_pass;

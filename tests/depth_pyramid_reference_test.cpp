@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "core/error.h"
-#include "fixture/texture_fixture.h"
-#include "passes/depth_pyramid_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/depth_pyramid_pass.h"
 #include "reference/depth_pyramid_reference.h"
 
 TEST_CASE("every level of the pyramid reference equals a scan of each window (N 13 and 17, all fixtures)") {

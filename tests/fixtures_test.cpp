@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 
 TEST_CASE("every fixture generates at every check size, including 1x1 and non-powers of two") {
   for (const auto& f : pn::fixtures::kTextureFixtures) {

@@ -4,7 +4,8 @@ in docs/architecture.md ("Floors"), the one place the rules are written.
 
   floor_rules.py ROOT               exit 0 when every include keeps the rules, 1 (each
                                     break on a line: file:line, the include, what the
-                                    folder may include) when one does not, 2 when the
+                                    folder may include) when one does not, or when a
+                                    row names a folder its floor never includes; 2 when the
                                     table cannot be read or is not a floor plan
   floor_rules.py ROOT --broken-copy the same check on a copy of ROOT with one include
                                     added back up a floor: exit 0 only when the check
@@ -72,7 +73,7 @@ def check_plan(rules):
 
 def check_includes(root, rules):
     runner = os.path.join(root, 'runner')
-    breaks, files = [], 0
+    breaks, files, used = [], 0, {}
     folders = sorted(d for d in os.listdir(runner) if os.path.isdir(os.path.join(runner, d)))
     for folder in folders:
         if folder not in rules:
@@ -96,9 +97,14 @@ def check_includes(root, rules):
                             continue
                         if not os.path.isfile(os.path.join(runner, target)):
                             continue  # glsl/, fixtures/ or a library header
+                        used.setdefault(folder, set()).add(head)
                         if head not in rules[folder]:
                             may = ', '.join(f'{d}/' for d in sorted(rules[folder])) or 'nothing above it'
                             breaks.append(f'{rel}:{number}: includes {target}: {folder}/ may include only {may}')
+    for folder in folders:
+        for other in sorted(rules.get(folder, set()) - used.get(folder, set())):
+            breaks.append(f'floor table: {folder}/ lists {other}/, but nothing in runner/{folder}/ includes it '
+                          f'(a row names only what its floor needs)')
     return breaks, files
 
 
@@ -123,7 +129,7 @@ def run(root):
 
 def broken_copy(root):
     """One include back up a floor in a copy: the check must fail on it, and only on it."""
-    victim, back = 'runner/passes/blur_pass.h', 'frame/technique.h'
+    victim, back = 'runner/pass_runners/blur_pass.h', 'frame/technique.h'
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copytree(os.path.join(root, 'runner'), os.path.join(tmp, 'runner'))
         os.makedirs(os.path.join(tmp, 'docs'))

@@ -6,7 +6,7 @@
 
 #include "broken_copy.h"
 #include "check/module_check.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/objects.h"
 #include "driver_bundle.h"
 #include "gl_test_context.h"
@@ -68,8 +68,8 @@ TEST_CASE("the bundles of pcf.glsl, pcf_query.comp and pcss_scan.comp compile wi
 }
 
 TEST_CASE("negative: a bilinear PCF that weights the columns the wrong way round fails the bilinear cases, and only those") {
-  const pn::test::BrokenCopy copy("pcf.glsl", "pnPcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), f.x)",
-                                  "pnPcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), 1.0 - f.x)");
+  const pn::test::BrokenCopy copy("pcf.glsl", "pn_pcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), f.x)",
+                                  "pn_pcfLitAt(depthMap, i + ivec2(1, 0), receiver, gradient, t), 1.0 - f.x)");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(pcf(), copy.root());
   for (const auto& r : results) {

@@ -11,7 +11,7 @@ using pn::test::run_check;
 
 TEST_CASE("negative: a Step 3 that gives every receiver one depth blurs across depth edges and into the sky; "
           "the pipeline check fails there") {
-  const BrokenCopy copy("passes/pcss_search.comp", "vec4(surface ? receiver.z : pnPyramidFar(), 0.0, 0.0, 0.0)",
+  const BrokenCopy copy("passes/pcss_search.comp", "vec4(surface ? receiver.z : pn_pyramidFar(), 0.0, 0.0, 0.0)",
                         "vec4(1.0, 0.0, 0.0, 0.0)");
   REQUIRE(copy.found());
   const auto results = run_check(pn::find_module_check("pipeline"), copy.root());

@@ -6,7 +6,7 @@
 
 #include "broken_copy.h"
 #include "check/module_check.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/objects.h"
 #include "driver_bundle.h"
 #include "gl_test_context.h"

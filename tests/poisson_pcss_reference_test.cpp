@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "passes/poisson_pcss_pass.h"
+#include "pass_runners/poisson_pcss_pass.h"
 #include "poisson_pcss.h"
 #include "reference/poisson_pcss_reference.h"
 #include "sampling/poisson_disk.h"

@@ -61,8 +61,8 @@ TEST_CASE("negative: a copy that reads the filter's moments twice fails the fetc
 }
 
 TEST_CASE("negative: a copy of summed_area.glsl whose variance skips the exact centring fails the variance cases") {
-  const pn::test::BrokenCopy copy("summed_area.glsl", "pnSummedAreaUnsignedToFloat(centred) / m.texels - d * d",
-                                  "pnSummedAreaUnsignedToFloat(s.zw) / m.texels - (float(centre) + d) * (float(centre) + d)");
+  const pn::test::BrokenCopy copy("summed_area.glsl", "pn_summedAreaUnsignedToFloat(centred) / m.texels - d * d",
+                                  "pn_summedAreaUnsignedToFloat(s.zw) / m.texels - (float(centre) + d) * (float(centre) + d)");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(savsm(), copy.root());
   for (const auto& r : results) {

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "metrics/ssim.h"
 #include "reference/blur_reference.h"
 

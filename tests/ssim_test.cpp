@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "metrics/ssim.h"
 
 TEST_CASE("SSIM of an image with itself is 1, and symmetric") {

@@ -12,10 +12,10 @@
 #include "check/module_check.h"
 #include "check/summed_area_check.h"
 #include "driver_bundle.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/texture.h"
 #include "gl_test_context.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/summed_area_pass.h"
 #include "reference/summed_area_reference.h"
 
 using pn::test::named;
@@ -56,8 +56,8 @@ TEST_CASE("summed_area rectangle sums equal direct box sums: 64-bit sums and cou
 }
 
 TEST_CASE("negative: a copy of summed_area.glsl whose bottom-left corner is one row high fails every map from 3x5 on") {
-  const pn::test::BrokenCopy copy("summed_area.glsl", "pnSummedAreaFetch(table, ivec2(lo.x, hi.y))",
-                                  "pnSummedAreaFetch(table, ivec2(lo.x, max(hi.y - 1, lo.y)))");
+  const pn::test::BrokenCopy copy("summed_area.glsl", "pn_summedAreaFetch(table, ivec2(lo.x, hi.y))",
+                                  "pn_summedAreaFetch(table, ivec2(lo.x, max(hi.y - 1, lo.y)))");
   REQUIRE(copy.found());
   const auto results = depth_cases(copy.root());
   size_t fixed = 0;
@@ -137,9 +137,9 @@ TEST_CASE("negative: a copy of summed_area.glsl whose moments variance drops the
           "float) fails the fixed variance at every large map, against the true x on the boxes at 1024^2 and 2048^2") {
   const pn::test::BrokenCopy copy(
       "summed_area.glsl",
-      "  m.variance = max(pnSummedAreaUnsignedToFloat(centred) / m.texels - d * d, 0.0) * (scale * scale);",
-      "  float e1 = pnSummedAreaSignedToFloat(s.xy) / m.texels * scale;\n"
-      "  m.variance = max(pnSummedAreaUnsignedToFloat(s.zw) / m.texels * (scale * scale) - e1 * e1, 0.0);");
+      "  m.variance = max(pn_summedAreaUnsignedToFloat(centred) / m.texels - d * d, 0.0) * (scale * scale);",
+      "  float e1 = pn_summedAreaSignedToFloat(s.xy) / m.texels * scale;\n"
+      "  m.variance = max(pn_summedAreaUnsignedToFloat(s.zw) / m.texels * (scale * scale) - e1 * e1, 0.0);");
   REQUIRE(copy.found());
   const auto results = moments_cases(copy.root());
   size_t quantised = 0, boxes = 0;
@@ -164,8 +164,8 @@ TEST_CASE("negative: a copy of summed_area.glsl whose moments variance drops the
 
 TEST_CASE("negative: a copy of summed_area.glsl whose moment sums read the bottom-left corner a row high fails the "
           "exact sums on every map, the float table's cases still pass") {
-  const pn::test::BrokenCopy copy("summed_area.glsl", "pnSummedAreaFetch(table, c.xw)));",
-                                  "pnSummedAreaFetch(table, ivec2(c.x, max(c.w - 1, c.y)))));");
+  const pn::test::BrokenCopy copy("summed_area.glsl", "pn_summedAreaFetch(table, c.xw)));",
+                                  "pn_summedAreaFetch(table, ivec2(c.x, max(c.w - 1, c.y)))));");
   REQUIRE(copy.found());
   const auto results = moments_cases(copy.root());
   size_t exact = 0;

@@ -7,7 +7,7 @@
 #include "check/compare.h"
 #include "gl/texture.h"
 #include "hand_scene.h"
-#include "passes/surface_pass.h"
+#include "pass_runners/surface_pass.h"
 #include "scene/scene.h"
 #include "gl_test_context.h"
 

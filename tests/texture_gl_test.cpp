@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/pass_bindings.h"
 #include "gl/texture.h"
 #include "gl_test_context.h"

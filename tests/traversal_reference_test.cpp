@@ -1,7 +1,7 @@
 // The traversal recursion on the CPU: exact at leaf 1, bounded by its budget.
 #include <catch2/catch.hpp>
 
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "reference/depth_pyramid_reference.h"
 #include "reference/traversal_reference.h"
 

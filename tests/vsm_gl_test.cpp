@@ -7,7 +7,7 @@
 #include "broken_copy.h"
 #include "check/module_check.h"
 #include "driver_bundle.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl_test_context.h"
 
 using pn::test::named;
@@ -72,7 +72,7 @@ TEST_CASE("negative: a copy with a wrong EVSM warp fails EVSM's moment cases and
 }
 
 TEST_CASE("negative: a copy that lets non-finite depths into the moments fails on the NaN/Inf fixture only") {
-  const pn::test::BrokenCopy copy("vsm.glsl", "float d = pnVsmIsFinite(depth) ? depth : farDepth;",
+  const pn::test::BrokenCopy copy("vsm.glsl", "float d = pn_vsmIsFinite(depth) ? depth : farDepth;",
                                   "float d = depth;");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(vsm(), copy.root());

@@ -11,7 +11,7 @@
 PN_UNIFORM_BLOCK(PnBackprojectionExport, PN_EXPORT_PARAMS_BINDING)
   PN_LIGHT_FIELDS
   float bias;
-  int side;  // <= 0: pnBackprojectionDefaults()
+  int side;  // <= 0: pnBackprojectionDefaults(bias)
   float tolerance;
   int budget;
   float gap;

@@ -12,12 +12,12 @@ layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnMip;  // the a
 float pnExportCall(ivec2 p) {
   vec3 r = pnExportReceiver(p).xyz;
   // side <= 0: the shipped defaults (pnBackprojectionDefaults, in the export too).
-  PnBackprojectionSettings settings = pnBackprojectionDefaults();
+  PnBackprojectionSettings settings = pnBackprojectionDefaults(pnExport.bias);
 #ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the shipped defaults
-  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, pnExport.bias, settings);
+  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
 #endif
   if (pnExport.side > 0)
-    settings = PnBackprojectionSettings(pnExport.side, pnExport.tolerance, pnExport.budget, pnExport.gap,
+    settings = PnBackprojectionSettings(pnExport.bias, pnExport.side, pnExport.tolerance, pnExport.budget, pnExport.gap,
                                         pnExport.thickness);
-  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, pnExport.bias, settings);
+  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
 }

@@ -14,7 +14,7 @@
 PN_UNIFORM_BLOCK(PnSavsmExport, PN_EXPORT_PARAMS_BINDING)
   PN_LIGHT_FIELDS
   float bias;
-  float filterScale;
+  float filterScale;  // <= 0: pnSavsmDefaults(bias)
   float minVariance;
   float bleedingReduction;
   int blockerMode;

@@ -18,6 +18,7 @@ float pnExportCall(ivec2 p) {
 #else
   PnSavsmSettings settings = PnSavsmSettings(pnExport.bias, pnExport.filterScale, pnExport.minVariance,
                                              pnExport.bleedingReduction, pnExport.blockerMode, pnExport.bound != 0);
+  if (pnExport.filterScale <= 0.0) settings = pnSavsmDefaults(pnExport.bias);  // the check's defaults run
 #endif
   return pnSavsm(pnTable, pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r.xyz, vec2(pnExport.unitNear, pnExport.unitScale),
                  settings);

@@ -20,7 +20,7 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   float thickness = texelFetch(pnQueryC, p, 0).x;
-  PnBackprojectionSettings s = PnBackprojectionSettings(int(b.x), b.y, int(b.z), b.w, thickness);
-  PnBackprojection r = pnBackprojectionWork(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, a.w, s);
+  PnBackprojectionSettings s = PnBackprojectionSettings(a.w, int(b.x), b.y, int(b.z), b.w, thickness);
+  PnBackprojection r = pnBackprojectionWork(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s);
   imageStore(pnResult, p, vec4(r.visibility, r.blocked, r.nodes, r.patches));
 }

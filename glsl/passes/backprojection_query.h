@@ -1,5 +1,5 @@
 // backprojection_query.h — what passes/backprojection_query.comp and its runner
-// side (runner/passes/backprojection_pass.cpp) share. Valid as GLSL and as C++.
+// side (runner/pass_runners/backprojection_pass.cpp) share. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_BACKPROJECTION_QUERY_H
 #define PENUMBRA_PASSES_BACKPROJECTION_QUERY_H

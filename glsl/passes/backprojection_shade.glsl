@@ -19,9 +19,9 @@ layout(binding = PN_BACKPROJECTION_SHADE_GBUFFER_BINDING) uniform sampler2D pnGB
 float pnShade(ivec2 p) {
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return 1.0;
-  PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.side, pnParams.tolerance, pnParams.budget,
-                                                        pnParams.gap, pnParams.thickness);
-  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, pnParams.bias, s);
+  PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.bias, pnParams.side, pnParams.tolerance,
+                                                        pnParams.budget, pnParams.gap, pnParams.thickness);
+  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
 }
 
 #endif  // PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL

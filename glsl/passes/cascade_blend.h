@@ -1,5 +1,5 @@
 // cascade_blend.h — what passes/cascade_blend.comp and its runner side
-// (runner/passes/cascade_blend_pass.cpp) share: bindings and the parameter block.
+// (runner/pass_runners/cascade_blend_pass.cpp) share: bindings and the parameter block.
 // Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_CASCADE_BLEND_H

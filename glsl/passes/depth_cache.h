@@ -1,5 +1,5 @@
 // depth_cache.h — what passes/depth_cache_compose.comp, depth_cache_query.comp
-// and their runner side (runner/passes/depth_cache_pass.cpp) share: bindings
+// and their runner side (runner/pass_runners/depth_cache_pass.cpp) share: bindings
 // and parameter blocks. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_DEPTH_CACHE_H

@@ -1,5 +1,5 @@
 // depth_pyramid.h — what passes/depth_pyramid_build.comp, depth_pyramid_query.comp
-// and their runner side (runner/passes/depth_pyramid_pass.cpp) share. Valid as
+// and their runner side (runner/pass_runners/depth_pyramid_pass.cpp) share. Valid as
 // GLSL and as C++ (uniform_block.h).
 
 #ifndef PENUMBRA_PASSES_DEPTH_PYRAMID_H

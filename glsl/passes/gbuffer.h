@@ -1,5 +1,5 @@
 // gbuffer.h — what passes/gbuffer.vert, gbuffer.frag and their runner side
-// (runner/passes/gbuffer_pass.cpp) share: the parameter block, its binding
+// (runner/pass_runners/gbuffer_pass.cpp) share: the parameter block, its binding
 // and the varying between the stages. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_GBUFFER_H

@@ -15,7 +15,7 @@
 #include "receiver_plane.glsl"
 
 // A G-buffer entry, invalid (w = 0) outside the screen.
-vec4 pnGBufferEntry(sampler2D gbuffer, ivec2 p) {
+vec4 pn_gBufferEntry(sampler2D gbuffer, ivec2 p) {
   ivec2 n = textureSize(gbuffer, 0);
   return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, n)) ? texelFetch(gbuffer, p, 0) : vec4(0.0);
 }
@@ -23,10 +23,10 @@ vec4 pnGBufferEntry(sampler2D gbuffer, ivec2 p) {
 vec2 pnGBufferReceiverPlane(sampler2D gbuffer, ivec2 p, vec4 receiver, PnLight light, float maxTan) {
   if (!(maxTan > 0.0)) return vec2(0.0);
   float maxSlope = maxTan * pnLightTexelWorld(light, receiver.z);
-  return pnReceiverPlaneFromNeighbours(receiver, pnGBufferEntry(gbuffer, p - ivec2(1, 0)),
-                                       pnGBufferEntry(gbuffer, p + ivec2(1, 0)),
-                                       pnGBufferEntry(gbuffer, p - ivec2(0, 1)),
-                                       pnGBufferEntry(gbuffer, p + ivec2(0, 1)), maxSlope);
+  return pnReceiverPlaneFromNeighbours(receiver, pn_gBufferEntry(gbuffer, p - ivec2(1, 0)),
+                                       pn_gBufferEntry(gbuffer, p + ivec2(1, 0)),
+                                       pn_gBufferEntry(gbuffer, p - ivec2(0, 1)),
+                                       pn_gBufferEntry(gbuffer, p + ivec2(0, 1)), maxSlope);
 }
 
 #endif  // PENUMBRA_PASSES_GBUFFER_RECEIVER_PLANE_GLSL

@@ -1,5 +1,5 @@
 // light_depth_query.h — what passes/light_depth_query.comp and its runner side
-// (runner/passes/light_depth_query_pass.cpp) share: binding points and the
+// (runner/pass_runners/light_depth_query_pass.cpp) share: binding points and the
 // projection block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_LIGHT_DEPTH_QUERY_H

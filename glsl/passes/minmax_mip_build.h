@@ -1,5 +1,5 @@
 // minmax_mip_build.h — what passes/minmax_mip_build.comp and its runner side
-// (runner/passes/minmax_mip_pass.cpp) share: binding points and the
+// (runner/pass_runners/minmax_mip_pass.cpp) share: binding points and the
 // parameter block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_MINMAX_MIP_BUILD_H

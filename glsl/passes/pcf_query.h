@@ -1,5 +1,5 @@
 // pcf_query.h — what passes/pcf_query.comp and its runner side
-// (runner/passes/pcf_pass.cpp) share. Valid as GLSL and as C++.
+// (runner/pass_runners/pcf_pass.cpp) share. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_PCF_QUERY_H
 #define PENUMBRA_PASSES_PCF_QUERY_H

@@ -1,5 +1,5 @@
 // pcss_regions_query.h — what passes/pcss_regions_query.comp and its runner
-// side (runner/passes/pcss_regions_pass.cpp) share: binding points, the query
+// side (runner/pass_runners/pcss_regions_pass.cpp) share: binding points, the query
 // kinds and the parameter block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_PCSS_REGIONS_QUERY_H

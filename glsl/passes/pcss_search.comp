@@ -16,7 +16,7 @@ layout(rgba32f, binding = PN_PCSS_SEARCH_KEYS_IMAGE) writeonly uniform image2D p
 layout(r32f, binding = PN_PCSS_RECEIVER_DEPTH_IMAGE) writeonly uniform image2D pnReceiverDepth;
 
 #include "pcss_params.glsl"
-#include "pcss_regions.glsl"
+#include "pcss_regions_pyramid.glsl"  // and pcss_regions.glsl
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -27,7 +27,7 @@ void main() {
       ? pnSearchEntryMip(pnMip, n, pnPcssLight(), receiver, pnPcss.bias, pnPcss.refineIterations)
       : pnSearchEntry(pnPyramid, pnPcssLight(), receiver, pnPcss.bias, pnPcss.refineIterations);
   bool surface = receiver.w != 0.0 && !isnan(receiver.z) && !isinf(receiver.z);
-  imageStore(pnReceiverDepth, p, vec4(surface ? receiver.z : pnPyramidFar(), 0.0, 0.0, 0.0));
+  imageStore(pnReceiverDepth, p, vec4(surface ? receiver.z : pn_pyramidFar(), 0.0, 0.0, 0.0));
   imageStore(pnSearchMap, p, entry);
   if (PN_PCSS_WRITE_KEYS) imageStore(pnLinkKeys, p, pnEntryLinkKey(entry, n, PN_PCSS_REGION_MODE));
 }

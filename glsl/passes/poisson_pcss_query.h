@@ -1,5 +1,5 @@
 // poisson_pcss_query.h — what passes/poisson_pcss_query.comp and its runner
-// side (runner/passes/poisson_pcss_pass.cpp) share. Valid as GLSL and as C++.
+// side (runner/pass_runners/poisson_pcss_pass.cpp) share. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_POISSON_PCSS_QUERY_H
 #define PENUMBRA_PASSES_POISSON_PCSS_QUERY_H

@@ -1,5 +1,5 @@
 // receiver_plane_query.h — what passes/receiver_plane_query.comp and its
-// runner side (runner/passes/receiver_plane_pass.cpp) share. Valid as GLSL and as C++.
+// runner side (runner/pass_runners/receiver_plane_pass.cpp) share. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_RECEIVER_PLANE_QUERY_H
 #define PENUMBRA_PASSES_RECEIVER_PLANE_QUERY_H

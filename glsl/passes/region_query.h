@@ -1,5 +1,5 @@
 // region_query.h — what passes/region_query.comp and its runner side
-// (runner/passes/region_pass.cpp) share: binding points and the parameter
+// (runner/pass_runners/region_pass.cpp) share: binding points and the parameter
 // block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_REGION_QUERY_H

@@ -1,5 +1,5 @@
 // reuse_gather.h — what passes/reuse_gather.comp and its runner side
-// (runner/passes/reuse_pass.cpp, ReusePass::gather) share: binding points and
+// (runner/pass_runners/reuse_pass.cpp, ReusePass::gather) share: binding points and
 // the parameter block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_REUSE_GATHER_H

@@ -1,5 +1,5 @@
 // reuse_link.h — what passes/reuse_link.comp and its runner side
-// (runner/passes/reuse_pass.cpp, ReusePass::link) share: binding points and
+// (runner/pass_runners/reuse_pass.cpp, ReusePass::link) share: binding points and
 // the parameter block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_REUSE_LINK_H

@@ -1,5 +1,5 @@
 // savsm_params.h — what passes/savsm_shade.comp, passes/savsm_query.comp and
-// their runner side (runner/passes/savsm_pass.cpp) share: binding points and
+// their runner side (runner/pass_runners/savsm_pass.cpp) share: binding points and
 // the parameter block (the light of light_model.glsl, the table's unit range
 // and savsm.glsl's settings). Valid as GLSL and as C++ (uniform_block.h).
 

@@ -1,5 +1,5 @@
 // scene_raster.h — what every scene raster pass (shadow_depth, gbuffer,
-// surface) shares with runner/passes/scene_draw.cpp, the one draw path that
+// surface) shares with runner/pass_runners/scene_draw.cpp, the one draw path that
 // feeds them: the vertex attribute of world positions and the colour output
 // (the float target, colour attachment 0). Valid as GLSL and as C++.
 

@@ -1,5 +1,5 @@
 // shadow_depth.h — what passes/shadow_depth.vert, shadow_depth.frag and their
-// runner side (runner/passes/shadow_map_pass.cpp) share: the parameter block,
+// runner side (runner/pass_runners/shadow_map_pass.cpp) share: the parameter block,
 // its binding and the varying between the stages. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_SHADOW_DEPTH_H

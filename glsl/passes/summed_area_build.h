@@ -1,5 +1,5 @@
 // summed_area_build.h — what passes/summed_area_build.comp and its runner side
-// (runner/passes/summed_area_pass.cpp) share: binding points and the
+// (runner/pass_runners/summed_area_pass.cpp) share: binding points and the
 // parameter block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_SUMMED_AREA_BUILD_H

@@ -1,5 +1,5 @@
 // summed_area_query.h — what passes/summed_area_query.comp and its runner side
-// (runner/passes/summed_area_pass.cpp) share. Valid as GLSL and as C++.
+// (runner/pass_runners/summed_area_pass.cpp) share. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_SUMMED_AREA_QUERY_H
 #define PENUMBRA_PASSES_SUMMED_AREA_QUERY_H

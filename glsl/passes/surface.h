@@ -1,5 +1,5 @@
 // surface.h — what passes/surface.vert, surface.frag and their runner side
-// (runner/passes/surface_pass.cpp) share: the parameter block, its binding
+// (runner/pass_runners/surface_pass.cpp) share: the parameter block, its binding
 // and the varying between the stages. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_SURFACE_H

@@ -3,7 +3,7 @@
 // Query k: texel k of query image A = (region origin x, y, region width, height),
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0),
 //          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the
-//          traversal with that plane (pnTraverseRegionPlane, pnTraverseRegionMipPlane,
+//          traversal with that plane (pn_traverseRegionPlane, pnTraverseRegionMipPlane,
 //          pnGridRegionMip; gradient 0: none; on the pyramid a square without a plane goes
 //          through pnTraverseWindow, the same traversal).
 // Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches,
@@ -25,7 +25,7 @@ layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_C_BINDING) writeonly uniform
 layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_D_BINDING) writeonly uniform image2D pnResultD;
 
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums  // PN_DEPTH_SUMS_TABLE's exact sums
-#include "traversal.glsl"
+#include "traversal_pyramid.glsl"  // and traversal.glsl
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -46,8 +46,8 @@ void main() {
       : (all(equal(e.zw, vec2(0.0))) && a.z == a.w)  // a square without a plane: region.glsl's window form
       ? pnTraverseWindow(pnPyramid, pnSampleTable, PnWindow(ivec2(a.xy), int(a.z), 0), b.x, pnParams.bias,
                          leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz))
-      : pnTraverseRegionPlane(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
-                              pnParams.bias, leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
+      : pn_traverseRegionPlane(pnPyramid, pnSampleTable, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
+                               pnParams.bias, leafSide, pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz));
   imageStore(pnResultC, p, vec4(r.occluders, r.depthSum, r.texels, 0.0));
   imageStore(pnResultD, p, vec4(float(r.nodes), float(r.fetches), pnTraversalBlockerMean(r), pnTraversalOccludedFraction(r)));
 }

@@ -1,5 +1,5 @@
 // traversal_query.h — what passes/traversal_query.comp and its runner side
-// (runner/passes/traversal_pass.cpp, TraversalPass) share: binding points and
+// (runner/pass_runners/traversal_pass.cpp, TraversalPass) share: binding points and
 // the parameter block. window_scan.h gives its baseline the same layout.
 // Valid as GLSL and as C++.
 

@@ -1,5 +1,5 @@
 // vogel_pcss_query.h — what passes/vogel_pcss_query.comp and its runner side
-// (runner/passes/vogel_pcss_pass.cpp) share. Valid as GLSL and as C++.
+// (runner/pass_runners/vogel_pcss_pass.cpp) share. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_VOGEL_PCSS_QUERY_H
 #define PENUMBRA_PASSES_VOGEL_PCSS_QUERY_H

@@ -1,5 +1,5 @@
 // vsm_moments.h — what passes/vsm_moments.comp and its runner side
-// (runner/passes/vsm_pass.cpp) share: binding points and the parameter block.
+// (runner/pass_runners/vsm_pass.cpp) share: binding points and the parameter block.
 // Valid as GLSL and as C++ (uniform_block.h). The moment kinds PN_VSM_KIND_*
 // are the module's (glsl/vsm.h).
 

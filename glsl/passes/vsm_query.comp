@@ -27,7 +27,7 @@ void main() {
   // The visibility is the module's one call (pnVsm, pnEvsm2, pnEvsm4) for a receiver at the
   // texel's centre, so the check holds the call itself to the reference, not only its parts.
   vec3 receiver = vec3(vec2(texel) + 0.5, q.z);
-  vec4 m = pnVsmFetchMoments(pnMoments, texel);
+  vec4 m = pn_vsmFetchMoments(pnMoments, texel);
   float bound = pnVsmDepthRangeBound(pnVsmWindowMinMax(pnPyramid, texel, pnParams.radius), t);
   float chebyshev;
   float visibility;

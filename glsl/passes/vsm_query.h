@@ -1,5 +1,5 @@
 // vsm_query.h — what passes/vsm_query.comp and its runner side
-// (runner/passes/vsm_pass.cpp) share: binding points and the parameter block.
+// (runner/pass_runners/vsm_pass.cpp) share: binding points and the parameter block.
 // Valid as GLSL and as C++ (uniform_block.h).
 
 #ifndef PENUMBRA_PASSES_VSM_QUERY_H

@@ -1,5 +1,5 @@
 // vsm_shade.h — what passes/vsm_shade.comp and its runner side
-// (runner/passes/vsm_pass.cpp, the vsm and evsm techniques) share: binding
+// (runner/pass_runners/vsm_pass.cpp, the vsm and evsm techniques) share: binding
 // points and the parameter block. Valid as GLSL and as C++ (uniform_block.h).
 
 #ifndef PENUMBRA_PASSES_VSM_SHADE_H

@@ -1,5 +1,5 @@
 // window_scan.h — what passes/window_scan.comp and its runner side
-// (runner/passes/traversal_pass.cpp, WindowScanPass) share: binding points
+// (runner/pass_runners/traversal_pass.cpp, WindowScanPass) share: binding points
 // and the parameter block, laid out like traversal_query.h (the same query
 // and result images) without the sample table. Valid as GLSL and as C++.
 

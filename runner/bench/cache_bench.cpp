@@ -12,7 +12,7 @@
 #include "core/progress.h"
 #include "draw/line_chart.h"
 #include "gl/gpu_timer.h"
-#include "passes/gbuffer_pass.h"
+#include "pass_runners/gbuffer_pass.h"
 #include "scene/animated_scene.h"
 #include "technique/shadow_map_sources.h"
 #include "technique/technique_registry.h"

@@ -6,13 +6,13 @@
 #include "core/bounds.h"
 #include "core/error.h"
 #include "core/progress.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/gpu_timer.h"
 #include "gl/query_device_gl.h"
 #include "gl/texture.h"
-#include "passes/depth_pyramid_pass.h"
-#include "passes/minmax_mip_pass.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/depth_pyramid_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/summed_area_pass.h"
 #include "reference/depth_pyramid_reference.h"
 
 namespace pn {

@@ -6,10 +6,10 @@
 #include "core/bounds.h"
 #include "core/error.h"
 #include "core/progress.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/summed_area_pass.h"
 
 namespace pn {
 namespace {

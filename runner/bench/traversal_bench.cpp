@@ -8,10 +8,10 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "core/seeded_random.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/gpu_timer.h"
 #include "gl/texture.h"
-#include "passes/traversal_pass.h"
+#include "pass_runners/traversal_pass.h"
 #include "reference/depth_pyramid_reference.h"
 #include "reference/region_reference.h"
 

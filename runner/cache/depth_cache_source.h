@@ -27,9 +27,9 @@
 
 #include "frame/map_structures.h"
 #include "cache/object_motion.h"
-#include "passes/depth_cache_pass.h"
+#include "pass_runners/depth_cache_pass.h"
 #include "frame/shadow_map_source.h"
-#include "passes/shadow_map_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 
 namespace pn {
 

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "frame/shadow_map_source.h"
-#include "passes/shadow_map_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 
 namespace pn {
 

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "passes/shadow_map_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 #include "scenes.h"
 
 namespace pn {

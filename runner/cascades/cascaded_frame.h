@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cascades/cascade_fit.h"
-#include "passes/gbuffer_pass.h"
-#include "passes/shadow_map_pass.h"
+#include "pass_runners/gbuffer_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 #include "scene/scene.h"
 #include "frame/technique.h"
 

@@ -18,8 +18,8 @@
 #include "check/blur_tolerance.h"
 #include "check/module_check.h"
 #include "core/integer_hash.h"
-#include "fixture/texture_fixture.h"
-#include "passes/blur_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/blur_pass.h"
 #include "pcss_regions.h"  // PN_REGION_LIT
 #include "reference/blur_reference.h"
 

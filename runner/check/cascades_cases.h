@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "check/module_check.h"
-#include "passes/cascades_query_pass.h"
+#include "pass_runners/cascades_query_pass.h"
 
 namespace pn {
 

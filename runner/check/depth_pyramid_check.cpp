@@ -12,8 +12,8 @@
 #include "core/seeded_random.h"
 #include "check/module_check.h"
 #include "core/query_grid.h"
-#include "fixture/texture_fixture.h"
-#include "passes/depth_pyramid_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/depth_pyramid_pass.h"
 #include "reference/depth_pyramid_reference.h"
 
 namespace pn {

@@ -1,7 +1,7 @@
 #include "check/device_scene.h"
 
-#include "passes/gbuffer_pass.h"
-#include "passes/shadow_map_pass.h"
+#include "pass_runners/gbuffer_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 #include "scenes.h"
 
 namespace pn {

@@ -34,17 +34,17 @@
 #include "core/format.h"
 #include "core/seeded_random.h"
 #include "fast_pcss.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/std140.h"
 #include "hqepcss.h"
 #include "modules/vogel_pcss.h"
-#include "passes/depth_pyramid_pass.h"
-#include "passes/export_pass.h"
-#include "passes/minmax_mip_pass.h"
-#include "passes/shade_pass.h"
-#include "passes/summed_area_pass.h"
-#include "passes/traversal_pass.h"
-#include "passes/vsm_pass.h"
+#include "pass_runners/depth_pyramid_pass.h"
+#include "pass_runners/export_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/shade_pass.h"
+#include "pass_runners/summed_area_pass.h"
+#include "pass_runners/traversal_pass.h"
+#include "pass_runners/vsm_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "reference/backprojection_reference.h"
 #include "reference/disk_pcss_reference.h"
@@ -470,7 +470,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       bp_header.budget = PN_BACKPROJECTION_DEFAULT_BUDGET;
       const std::vector<QueryTexture> bp_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture}};
       results.push_back(defaults_case(
-          where + "exports/backprojection: pnBackprojectionDefaults() = backprojection.h's defaults",
+          where + "exports/backprojection: pnBackprojectionDefaults(bias) = backprojection.h's defaults",
           backprojection.run(stage, bp_textures, bp_receivers, query_block(bp_defaults)),
           backprojection.run(stage, bp_textures, bp_receivers, query_block(bp_header))));
     }

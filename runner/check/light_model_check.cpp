@@ -12,8 +12,8 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/query_grid.h"
-#include "passes/light_depth_query_pass.h"
-#include "passes/light_model_query_pass.h"
+#include "pass_runners/light_depth_query_pass.h"
+#include "pass_runners/light_model_query_pass.h"
 #include "scene/light_model.h"
 
 namespace pn {

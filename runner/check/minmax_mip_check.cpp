@@ -10,8 +10,8 @@
 #include <string>
 
 #include "check/module_check.h"
-#include "fixture/texture_fixture.h"
-#include "passes/minmax_mip_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/minmax_mip_pass.h"
 #include "reference/depth_pyramid_reference.h"
 
 namespace pn {

@@ -27,9 +27,9 @@
 #include "check/module_check.h"
 #include "check/occlusion_sums.h"
 #include "core/error.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/texture.h"
-#include "passes/pcf_pass.h"
+#include "pass_runners/pcf_pass.h"
 #include "reference/pcf_reference.h"
 
 namespace pn {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "check/pcss_regions_check.h"
-#include "passes/pcss_regions_pass.h"
+#include "pass_runners/pcss_regions_pass.h"
 #include "reference/pcss_regions_reference.h"
 
 namespace pn::pcss_regions_cases {

@@ -8,9 +8,9 @@
 
 #include "check/pcss_regions_cases.h"
 #include "core/seeded_random.h"
-#include "fixture/texture_fixture.h"
-#include "passes/depth_pyramid_pass.h"
-#include "passes/minmax_mip_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/depth_pyramid_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
 
 namespace pn::pcss_regions_cases {
 namespace {

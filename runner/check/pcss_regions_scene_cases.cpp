@@ -3,10 +3,10 @@
 // far field (pcss_regions_check.cpp states the tolerances).
 #include "check/pcss_regions_cases.h"
 #include "scenes.h"
-#include "passes/depth_pyramid_pass.h"
-#include "passes/gbuffer_pass.h"
-#include "passes/minmax_mip_pass.h"
-#include "passes/shadow_map_pass.h"
+#include "pass_runners/depth_pyramid_pass.h"
+#include "pass_runners/gbuffer_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "scene/scene.h"
 

@@ -23,7 +23,7 @@
 
 #include "check/module_check.h"
 #include "core/seeded_random.h"
-#include "passes/receiver_plane_pass.h"
+#include "pass_runners/receiver_plane_pass.h"
 #include "receiver_plane.h"
 #include "reference/receiver_plane_reference.h"
 

@@ -10,7 +10,7 @@
 #include "core/seeded_random.h"
 #include "check/module_check.h"
 #include "core/query_grid.h"
-#include "passes/region_pass.h"
+#include "pass_runners/region_pass.h"
 #include "pipeline/pcss_settings.h"
 #include "reference/region_reference.h"
 

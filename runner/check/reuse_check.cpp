@@ -11,7 +11,7 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/seeded_random.h"
-#include "passes/reuse_pass.h"
+#include "pass_runners/reuse_pass.h"
 #include "reference/reuse_reference.h"
 #include "reuse.h"  // glsl/reuse.h: the parent codes PN_REUSE_*
 

@@ -10,7 +10,7 @@
 
 #include "check/module_check.h"
 #include "core/query_grid.h"
-#include "passes/sample_table_query_pass.h"
+#include "pass_runners/sample_table_query_pass.h"
 
 namespace pn {
 namespace {

@@ -47,14 +47,14 @@
 
 #include "check/module_check.h"
 #include "gl/std140.h"
-#include "passes/export_pass.h"
+#include "pass_runners/export_pass.h"
 #include "scene/light_block.h"
 #include "core/format.h"
 #include "core/integer_hash.h"
 #include "core/query_grid.h"
-#include "passes/minmax_mip_pass.h"
-#include "passes/savsm_pass.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/savsm_pass.h"
+#include "pass_runners/summed_area_pass.h"
 #include "reference/pcss_regions_reference.h"
 #include "reference/savsm_reference.h"
 
@@ -312,6 +312,20 @@ void export_cases(const ExportPass& exported, const MomentsTable& table, const D
       c.exported.add(got[k].visibility, v[k], 0.0, static_cast<int>(k) % kGridWidth, static_cast<int>(k) / kGridWidth,
                      stage == ShadeStage::fragment ? 1 : 0);
   }
+  // pnSavsmDefaults(bias) (a filter scale <= 0 asks the export for it) = the header's values written out
+  // (layer 2).
+  glsl::PnSavsmExport defaults = block, header = block;
+  defaults.filterScale = 0.0f, defaults.minVariance = -1.0f, defaults.bleedingReduction = -1.0f;
+  defaults.blockerMode = -1, defaults.bound = -1;
+  header.filterScale = static_cast<float>(PN_SAVSM_FILTER_SCALE), header.minVariance = static_cast<float>(PN_VSM_MIN_VARIANCE);
+  header.bleedingReduction = static_cast<float>(PN_VSM_BLEEDING_REDUCTION), header.blockerMode = PN_SAVSM_DEFAULT_BLOCKER;
+  header.bound = PN_SAVSM_DEFAULT_BOUND;
+  const std::vector<QueryTexture> textures{{PN_EXPORT_MOMENT_TABLE_BINDING, *table.texture}, {PN_EXPORT_MIP_BINDING, mip}};
+  const std::vector<float> from_defaults = exported.run(ShadeStage::compute, textures, receivers, query_block(defaults));
+  const std::vector<float> from_header = exported.run(ShadeStage::compute, textures, receivers, query_block(header));
+  for (std::size_t k = 0; k < rs.size(); ++k)
+    c.exported.add(from_header[k], from_defaults[k], 0.0, static_cast<int>(k) % kGridWidth,
+                   static_cast<int>(k) / kGridWidth, 2);
 }
 
 void push(std::vector<CaseResult>& results, const std::string& name, const BoundedElements& e) {
@@ -366,7 +380,8 @@ std::vector<CaseResult> run_savsm_check(const CheckEnvironment& env) {
       push(results, label + "visibility over the moments' error box", c.visibility);
       if (!c.exported.expected.empty())
         push(results, label + "exports/savsm (pnSavsm as an engine calls it) in compute and fragment = the query's "
-                              "pnSavsm above, bit for bit",
+                              "pnSavsm above, bit for bit; "
+                              "pnSavsmDefaults(bias) = savsm.h's defaults",
              c.exported);
       std::string classes;
       int most = 0;

@@ -8,8 +8,8 @@
 #include "check/module_check.h"
 #include "check/raster_compare.h"
 #include "gl/texture.h"
-#include "passes/gbuffer_pass.h"
-#include "passes/shadow_map_pass.h"
+#include "pass_runners/gbuffer_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 #include "scene/scene.h"
 
 namespace pn {

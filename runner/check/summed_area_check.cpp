@@ -41,9 +41,9 @@
 
 #include "check/summed_area_check.h"
 #include "core/error.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/texture.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/summed_area_pass.h"
 #include "reference/summed_area_reference.h"
 
 namespace pn {

@@ -39,9 +39,9 @@
 #include "check/summed_area_check.h"
 #include "core/error.h"
 #include "core/format.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/texture.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/summed_area_pass.h"
 
 namespace pn {
 namespace {

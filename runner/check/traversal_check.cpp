@@ -9,7 +9,7 @@
 // - sampled and HQEPCSS (min) leaves, leaf sides 2…16: equal to the CPU
 //   recursion with the same table and decisions (nodes, fetches and counts
 //   exactly, blocker mean to float rounding);
-// - leaf side 1 over both structures with a receiver plane (pnTraverseRegionPlane,
+// - leaf side 1 over both structures with a receiver plane (pn_traverseRegionPlane,
 //   pnTraverseRegionMipPlane):
 //   occluders and depth sum within the interval the brute-force definition in
 //   double leaves open to float rounding (texels within a band of their own
@@ -29,8 +29,8 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/seeded_random.h"
-#include "fixture/texture_fixture.h"
-#include "passes/traversal_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/traversal_pass.h"
 #include "reference/depth_pyramid_reference.h"
 #include "reference/traversal_reference.h"
 

@@ -32,10 +32,10 @@
 #include "check/module_check.h"
 #include "core/error.h"
 #include "core/seeded_random.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/texture.h"
 #include "modules/vogel_pcss.h"
-#include "passes/vogel_pcss_pass.h"
+#include "pass_runners/vogel_pcss_pass.h"
 #include "reference/vogel_pcss_reference.h"
 
 namespace pn {

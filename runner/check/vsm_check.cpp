@@ -44,9 +44,9 @@
 #include "check/module_check.h"
 #include "check/vsm_tolerance.h"
 #include "core/format.h"
-#include "fixture/texture_fixture.h"
-#include "passes/depth_pyramid_pass.h"
-#include "passes/vsm_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/depth_pyramid_pass.h"
+#include "pass_runners/vsm_pass.h"
 #include "reference/vsm_reference.h"
 
 namespace pn {

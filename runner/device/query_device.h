@@ -1,7 +1,7 @@
 // The executor seam of the query passes (architecture.md "Queries as textures"): a
 // module's *_query.comp runs over a batch of queries on some device — an OpenGL 4.5 or ES 3.1
 // context (gl/context.h), or a Vulkan device (vk/vulkan_device.h) — and nothing here names
-// either. A query pass (passes/query_pass.h) compiles through this interface, uploads its
+// either. A query pass (pass_runners/query_pass.h) compiles through this interface, uploads its
 // textures through it and dispatches through it, so one check runs on every executor. The passes
 // that build structures (textures of levels and layers, storage buffers, a dispatch over a grid)
 // and the raster passes (a triangle list drawn with depth testing) go through it the same way.

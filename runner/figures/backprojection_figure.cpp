@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "figures/figures.h"
-#include "fixture/texture_fixture.h"
-#include "passes/backprojection_pass.h"
-#include "passes/minmax_mip_pass.h"
+#include "fixture_images/texture_fixture.h"
+#include "pass_runners/backprojection_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
 
 namespace pn {
 

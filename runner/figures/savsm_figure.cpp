@@ -11,12 +11,12 @@
 #include "core/format.h"
 #include "figures/bleeding_panels.h"
 #include "figures/figures.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/query_device_gl.h"
 #include "gl/texture.h"
-#include "passes/minmax_mip_pass.h"
-#include "passes/savsm_pass.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/savsm_pass.h"
+#include "pass_runners/summed_area_pass.h"
 #include "reference/savsm_reference.h"
 
 namespace pn {

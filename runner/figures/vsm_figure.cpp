@@ -9,11 +9,11 @@
 
 #include "figures/bleeding_panels.h"
 #include "figures/figures.h"
-#include "fixture/texture_fixture.h"
+#include "fixture_images/texture_fixture.h"
 #include "gl/query_device_gl.h"
 #include "gl/texture.h"
-#include "passes/depth_pyramid_pass.h"
-#include "passes/vsm_pass.h"
+#include "pass_runners/depth_pyramid_pass.h"
+#include "pass_runners/vsm_pass.h"
 #include "reference/vsm_reference.h"
 
 namespace pn {

@@ -10,8 +10,8 @@
 
 #include "core/texel_rect.h"
 #include "device/texel_list.h"
-#include "passes/depth_pyramid_pass.h"
-#include "passes/minmax_mip_pass.h"
+#include "pass_runners/depth_pyramid_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
 
 namespace pn {
 

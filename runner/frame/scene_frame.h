@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "passes/gbuffer_pass.h"
+#include "pass_runners/gbuffer_pass.h"
 #include "frame/shadow_map_source.h"
 #include "frame/technique.h"
 

@@ -14,15 +14,15 @@
 #include <vector>
 
 #include "device/query_device.h"
-#include "passes/cascade_blend_pass.h"
-#include "passes/shade_pass.h"
+#include "pass_runners/cascade_blend_pass.h"
+#include "pass_runners/shade_pass.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
 
 namespace pn {
 
-struct MinMaxMipChain;  // passes/minmax_mip_pass.h
-struct DepthPyramid;    // passes/depth_pyramid_pass.h
+struct MinMaxMipChain;  // pass_runners/minmax_mip_pass.h
+struct DepthPyramid;    // pass_runners/depth_pyramid_pass.h
 struct CascadeInputs;   // below
 
 // What a technique reads for one frame (non-owning: see SceneFrame).
@@ -44,7 +44,7 @@ struct TechniqueInputs {
 };
 
 // A cascaded frame's layers: each cascade's map, G-buffer and light as one TechniqueInputs, and
-// what blends their visibilities (cascades.glsl, passes/cascade_blend_pass.h).
+// what blends their visibilities (cascades.glsl, pass_runners/cascade_blend_pass.h).
 struct CascadeInputs : CascadeBlend {
   std::vector<TechniqueInputs> layers;  // nearest cascade first, at most PN_CASCADES_MAX
 };

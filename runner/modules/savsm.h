@@ -23,8 +23,8 @@ struct SavsmSettings {
   float filter_scale = static_cast<float>(PN_SAVSM_FILTER_SCALE);             // c
   float min_variance = static_cast<float>(PN_VSM_MIN_VARIANCE);               // relative to mu^2
   float bleeding_reduction = static_cast<float>(PN_VSM_BLEEDING_REDUCTION);  // linstep's a
-  SavsmBlocker blocker = SavsmBlocker::min;  // the truth favours it (docs/modules/savsm.md)
-  bool bound = true;  // the mip chain's lit test over the search square and depth-range bound over the filter
+  SavsmBlocker blocker = static_cast<SavsmBlocker>(PN_SAVSM_DEFAULT_BLOCKER);  // the truth favours MIN (savsm.md)
+  bool bound = PN_SAVSM_DEFAULT_BOUND != 0;  // the mip chain's lit test over the search square, depth-range bound over the filter
 
   // Whether the module reads the min/max mip chain: for the bound, or for the min blocker.
   bool reads_mip() const { return bound || blocker == SavsmBlocker::min; }

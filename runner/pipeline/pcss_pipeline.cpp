@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "gl/std140.h"
-#include "passes/traversal_pass.h"
+#include "pass_runners/traversal_pass.h"
 #include "modules/depth_pyramid.h"
 #include "modules/fast_pcss.h"
 #include "sampling/poisson_disk.h"

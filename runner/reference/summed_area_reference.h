@@ -111,7 +111,7 @@ double summed_area_mean_bound(const SummedAreaSums& s);
 // Each bound adds (n + 2) · 2^-62 for the reference's own long double rounding.
 
 // The depth range of a moments table: the true ends (x's definition) and the float offset and
-// scale the GPU is given (passes/summed_area_pass.h's unit_range rounds them once).
+// scale the GPU is given (pass_runners/summed_area_pass.h's unit_range rounds them once).
 struct MomentsDepthRange {
   double near_depth = 0.0, far_depth = 1.0;
   float offset = 0.0f, scale = 1.0f;

@@ -8,8 +8,8 @@
 #include "frame/setting_value.h"
 #include "frame/settings_config.h"
 #include "gl/std140.h"
-#include "passes/minmax_mip_pass.h"
-#include "passes/shade_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/shade_pass.h"
 #include "scene/light_block.h"
 
 namespace pn::glsl {

@@ -7,7 +7,7 @@
 // the transition bands.
 #pragma once
 
-#include "passes/cascade_blend_pass.h"
+#include "pass_runners/cascade_blend_pass.h"
 #include "frame/technique.h"
 
 namespace pn {

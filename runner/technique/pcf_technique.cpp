@@ -7,7 +7,7 @@
 #include "frame/settings_config.h"
 #include "frame/setting_value.h"
 #include "modules/pcf.h"
-#include "passes/pcf_pass.h"
+#include "pass_runners/pcf_pass.h"
 
 namespace pn {
 namespace {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "passes/minmax_mip_pass.h"
-#include "passes/savsm_pass.h"
-#include "passes/summed_area_pass.h"
+#include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/savsm_pass.h"
+#include "pass_runners/summed_area_pass.h"
 #include "frame/technique.h"
 
 namespace pn {

@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "passes/vsm_pass.h"
+#include "pass_runners/vsm_pass.h"
 #include "frame/technique.h"
 
 namespace pn {

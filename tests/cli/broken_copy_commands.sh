@@ -40,7 +40,7 @@ printf '%s\n' "$out"
 printf '%s\n' "$out" | grep -q "reuse.glsl" || fail "figures: the error does not name reuse.glsl"
 [ -e "$work/figures" ] && fail "figures: wrote $(ls "$work/figures" | wc -l) files before failing"
 cp "$glsl/reuse.glsl" "$work/copy/reuse.glsl" || fail "could not restore reuse.glsl"
-perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1  int i = 0;\n  while (i < 10) {\n    int j = 0;\n    while (j < 10) {\n      sigma = sigma * 1.0000001 + 1e-30;\n    }\n    i++;\n  }\n/' "$work/copy/blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pn_blurWeightsStart\(float sigma\) \{\n)/$1  int i = 0;\n  while (i < 10) {\n    int j = 0;\n    while (j < 10) {\n      sigma = sigma * 1.0000001 + 1e-30;\n    }\n    i++;\n  }\n/' "$work/copy/blur.glsl"
 line=$(grep -n '    while (j < 10) {' "$work/copy/blur.glsl" | cut -d: -f1)
 [ -n "$line" ] || fail "could not put the endless loop into blur.glsl"
 start=$(date +%s)
@@ -57,7 +57,7 @@ printf '%s\n' "$out" | grep -q "^blur: FAIL passes/blur.comp: dispatch: the loop
 # a textual reader (a comment after its `#`, the keyword split by a line continuation), used to pass:
 # the guard reads glslang's preprocessed text, where it is a plain loop.
 cp "$glsl/blur.glsl" "$work/copy/blur.glsl" || fail "could not restore blur.glsl"
-perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1#\/**\/define PN_REPEAT wh\\\nile\n  float x = 0.0;\n  PN_REPEAT (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pn_blurWeightsStart\(float sigma\) \{\n)/$1#\/**\/define PN_REPEAT wh\\\nile\n  float x = 0.0;\n  PN_REPEAT (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
 line=$(grep -n '^  PN_REPEAT (x > -1.0) {' "$work/copy/blur.glsl" | cut -d: -f1)
 grep -q '^#/\*\*/define PN_REPEAT wh\\$' "$work/copy/blur.glsl" && [ -n "$line" ] ||
   fail "could not put the macro-spelled loop into blur.glsl"
@@ -71,7 +71,7 @@ printf '%s\n' "$out" | grep -q "^blur: FAIL passes/blur.comp: dispatch: the loop
 # The keyword from an included header, its condition in blur.glsl: a #line marker stands between them.
 cp "$glsl/blur.glsl" "$work/copy/blur.glsl" && printf '  while\n' > "$work/copy/pn_repeat.h" ||
   fail "could not restore blur.glsl"
-perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1  float x = 0.0;\n#include "pn_repeat.h"\n  (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pn_blurWeightsStart\(float sigma\) \{\n)/$1  float x = 0.0;\n#include "pn_repeat.h"\n  (x > -1.0) {\n    x += 1.0;\n  }\n/' "$work/copy/blur.glsl"
 grep -q '^#include "pn_repeat.h"$' "$work/copy/blur.glsl" || fail "could not put the header's loop into blur.glsl"
 out=$(timeout 120 "$penumbra" check blur --glsl-root "$work/copy" --gpu-timeout 20 2>&1)
 status=$?

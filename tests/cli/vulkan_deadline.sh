@@ -17,9 +17,9 @@ penumbra=$1 glsl=$2 work=$3
 fail() { printf 'vulkan_deadline: %s\n' "$1"; exit 1; }
 rm -rf "$work" && mkdir -p "$work" || fail "cannot make $work"
 for copy in endless slow; do cp -r "$glsl" "$work/$copy" || fail "cannot copy $glsl"; done
-perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1  int i = 0;\n  while (i < 10) {\n    int j = 0;\n    while (j < 10) {\n      sigma = sigma * 1.0000001 + 1e-30;\n    }\n    i++;\n  }\n/' "$work/endless/blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pn_blurWeightsStart\(float sigma\) \{\n)/$1  int i = 0;\n  while (i < 10) {\n    int j = 0;\n    while (j < 10) {\n      sigma = sigma * 1.0000001 + 1e-30;\n    }\n    i++;\n  }\n/' "$work/endless/blur.glsl"
 grep -q '    while (j < 10) {' "$work/endless/blur.glsl" || fail "could not put the endless loop into blur.glsl"
-perl -0pi -e 's/(PnBlurWeights pnBlurWeightsStart\(float sigma\) \{\n)/$1  for (int k = 0; k < 60000; ++k) sigma = sigma * 1.0000001 + 1e-30;\n/' "$work/slow/blur.glsl"
+perl -0pi -e 's/(PnBlurWeights pn_blurWeightsStart\(float sigma\) \{\n)/$1  for (int k = 0; k < 60000; ++k) sigma = sigma * 1.0000001 + 1e-30;\n/' "$work/slow/blur.glsl"
 grep -q 'k < 60000' "$work/slow/blur.glsl" || fail "could not put the slow loop into blur.glsl"
 
 # run MODULE WANT REGEX ARGS…: exit 1 with REGEX under MODULE (WANT=1), or 1 or 0 (WANT=either),

@@ -271,7 +271,7 @@ def reachable(root):
         includes[rel] = found
         s = blank(text)
         for name, _, open_, close in definitions(text, s):
-            defs.setdefault(rel, []).append((name, set(re.findall(r'\b(pn[A-Z]\w*)\s*\(', s[open_:close]))))
+            defs.setdefault(rel, []).append((name, set(re.findall(r'\b(pn(?:_|[A-Z])\w*)\s*\(', s[open_:close]))))
     reached = {}
     for entry in texts:
         if not entry.startswith(('passes/', 'exports/')) or not any(n == 'main' for n, _ in defs.get(entry, [])):

@@ -80,7 +80,7 @@ def make_hostile_inputs(work: pathlib.Path, glsl: pathlib.Path) -> None:
     shutil.copytree(glsl, macro)
     blur = macro / "blur.glsl"
     text = blur.read_text()
-    needle = "PnBlurWeights pnBlurWeightsStart(float sigma) {\n"
+    needle = "PnBlurWeights pn_blurWeightsStart(float sigma) {\n"
     if needle not in text:
         raise SystemExit(f"probe: cannot find {needle!r} in {blur}")
     text = text.replace(needle, needle + "#define PN_REPEAT while\n  float x = 0.0;\n  PN_REPEAT (x > -1.0) {\n"

@@ -1,0 +1,82 @@
+#include "pass_runners/pcf_pass.h"
+
+#include <string>
+
+#include "core/query_grid.h"
+#include "gl/pass_bindings.h"
+#include "gl/std140.h"
+#include "gl/texture.h"
+#include "passes/pcf_query.h"
+#include "scene/light_block.h"
+
+namespace pn::glsl {
+#include "passes/pcf_shade.h"
+PN_STD140_SIZE(PnPcfShadeParams, 32);
+}  // namespace pn::glsl
+
+namespace pn {
+namespace {
+
+std::vector<Define> max_side_define(int max_side) {
+  if (max_side <= 0) return {};
+  return {{"PN_PCF_MAX_SIDE", std::to_string(max_side)}};
+}
+
+}  // namespace
+
+PcfQueryPass::PcfQueryPass(const QueryDevice& device, const SourceTree& tree, int max_side)
+    : query_(device, tree, "passes/pcf_query.comp",
+             {{PN_PCF_QUERY_A_BINDING, PN_PCF_QUERY_B_BINDING}, {PN_PCF_QUERY_RESULT_IMAGE}},
+             max_side_define(max_side)) {}
+
+QueryResults PcfQueryPass::dispatch(const DeviceTexture& depth_map, const std::vector<Query>& a,
+                                    const std::vector<Query>& b) const {
+  return query_.run({a, b}, {{PN_PCF_QUERY_MAP_BINDING, depth_map}});
+}
+
+std::vector<PcfQueryResult> PcfQueryPass::run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries) const {
+  if (queries.empty()) return {};
+  std::vector<Query> a, b;
+  for (const PcfQuery& q : queries) {
+    a.push_back({float(q.x), float(q.y), float(q.width), float(q.height)});
+    b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 0.0f});
+  }
+  const QueryResults r = dispatch(depth_map, a, b);
+  std::vector<PcfQueryResult> out;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const Query q = r.at(0, k);
+    out.push_back({q[0], q[1], q[2]});
+  }
+  return out;
+}
+
+std::vector<float> PcfQueryPass::bilinear(const DeviceTexture& depth_map, const std::vector<PcfBilinearQuery>& queries) const {
+  if (queries.empty()) return {};
+  std::vector<Query> a, b;
+  for (const PcfBilinearQuery& q : queries) {
+    a.push_back({q.x, q.y, q.gradient_u, q.gradient_v});
+    b.push_back({q.receiver_depth, q.bias, 0.0f, 1.0f});
+  }
+  const QueryResults r = dispatch(depth_map, a, b);
+  std::vector<float> out;
+  for (size_t k = 0; k < queries.size(); ++k) out.push_back(r.at(0, k)[0]);
+  return out;
+}
+
+PcfShadePass::PcfShadePass(const QueryDevice& device, const SourceTree& tree)
+    : shade_(device, tree, "passes/pcf_shade", PN_PCF_SHADE_VISIBILITY_IMAGE) {}
+
+std::unique_ptr<DeviceTexture> PcfShadePass::run(const DeviceTexture& shadow_map, const DeviceTexture& gbuffer,
+                                                 int screen_size, const LightModel& light, float bias,
+                                                 float receiver_plane_tan, ShadeStage stage) const {
+  glsl::PnPcfShadeParams block{};
+  set_light_fields(block, light);
+  block.bias = bias;
+  block.receiverPlaneTan = receiver_plane_tan;
+  PassResources resources;
+  resources.block = query_block(block);
+  resources.add_textures({{PN_PCF_SHADE_MAP_BINDING, shadow_map}, {PN_PCF_SHADE_GBUFFER_BINDING, gbuffer}});
+  return shade_.run(stage, {}, screen_size, resources);
+}
+
+}  // namespace pn
