@@ -62,8 +62,8 @@
 
 #include "fast_pcss.h"
 #include "light_model.glsl"
-#include "pcss_regions.glsl"
-#include "traversal.glsl"
+#include "pcss_regions_mip.glsl"  // and pcss_regions.glsl
+#include "traversal_mip.glsl"  // and traversal.glsl
 
 struct PnFastPcssSettings {
   float bias;            // light-depth units: a texel occludes when its depth < d - bias

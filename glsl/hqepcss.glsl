@@ -40,8 +40,8 @@
 #include "hqepcss.h"
 #include "light_model.glsl"
 #include "pcf.glsl"
-#include "pcss_regions_pyramid.glsl"  // and pcss_regions.glsl
-#include "traversal_pyramid.glsl"  // and traversal.glsl
+#include "pcss_regions_pyramid.glsl"
+#include "traversal_pyramid.glsl"
 
 struct PnHqepcssSettings {
   float bias;            // light-depth units: a texel occludes when its depth < d - bias

@@ -8,8 +8,9 @@
 //   Step 3 — search region: PCSS's blocker-search width for d (blockers as
 //   near as the near plane, light_model.glsl), then, when refining (HQEPCSS),
 //   repeated at most `iterations` times:
-//     zmin = min depth of a square covering the region (the mip chain's
-//            aligned nodes, <= 9 fetches; the pyramid's 4: pcss_regions_pyramid.glsl);
+//     zmin = min depth of a square covering the region (pcss_regions_mip.glsl:
+//            the mip chain's aligned nodes, <= 9 fetches; pcss_regions_pyramid.glsl:
+//            the pyramid's square, 4);
 //     zmin >= d - bias            -> nothing in the region occludes: lit;
 //     s' = width a blocker at zmin needs (light_model.glsl);
 //     s' >= s                     -> stop; else s = s' and repeat.
@@ -29,17 +30,6 @@
 //   is lit. A zero-size light gives s = 0: one texel, a hard shadow.
 //
 // use:
-//   vec4  pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias,
-//                          int iterations)   receiver = G-buffer (u, v, d, valid); zmin from the
-//                          aligned mip chain (minmax_mip.glsl): over the aligned nodes touching the
-//                          square (<= 9 fetches), a superset (pcss_regions_pyramid.glsl: the same
-//                          from the pyramid)
-//   vec4  pnSearchEntryMipCounted(... the same ..., out int refinements)   and how many refinements read
-//                          the chain (<= 9 fetches each: the call's cost)
-//   vec4  pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient,
-//                               float bias, int iterations, out int refinements)
-//                          with a receiver plane (receiver_plane.glsl): lit when zmin is not below the
-//                          plane's highest threshold over the region; gradient 0 is ...MipCounted exactly
 //   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
 //   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
@@ -56,14 +46,12 @@
 // options:
 //   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement (pcss_regions.h, shared with the runner)
 //
-// cost: search entry: <= 9 fetches per refinement iteration (4 from the pyramid, pcss_regions_pyramid.glsl);
-//   filter entry: ALU only.
+// cost: entries: ALU only (the search's fetches: pcss_regions_mip.glsl, pcss_regions_pyramid.glsl).
 
 #ifndef PENUMBRA_PCSS_REGIONS_GLSL
 #define PENUMBRA_PCSS_REGIONS_GLSL
 
 #include "light_model.glsl"
-#include "minmax_mip.glsl"
 #include "pcss_regions.h"
 #include "receiver_plane.glsl"
 #include "region.glsl"
@@ -86,15 +74,6 @@ vec4 pnEntryLinkKey(vec4 entry, int mapSize, int regionMode) {
   return vec4(entry.xyz, float(pnEntryWindow(entry, mapSize, regionMode).side));
 }
 
-// The same from the aligned mip chain: the min over the aligned nodes that
-// touch that square (<= 9 fetches) — never above the square's min, so the lit
-// decision stays conservative and refinement lossless.
-float pn_searchRegionMinMip(sampler2D mip, int mapSize, vec4 entry) {
-  PnRect r = pnEntryRect(entry, mapSize);
-  if (r.size.x == 0 || r.size.y == 0) return pn_mipFar();
-  return pnMipSquareMinMax(mip, mapSize, r.origin, max(r.size.x, r.size.y)).x;
-}
-
 // Step 3's start: PCSS's search width, or lit for a pixel without a surface.
 vec4 pn_searchStart(PnLight light, vec4 receiver) {
   float d = receiver.z;
@@ -115,31 +94,6 @@ vec4 pn_searchRefinePlane(PnLight light, int mapSize, vec4 entry, float zmin, ve
   if (!(side < entry.w)) return entry;
   done = false;
   return vec4(entry.xyz, side);
-}
-
-vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient, float bias,
-                           int iterations, out int refinements) {
-  vec4 entry = pn_searchStart(light, receiver);
-  refinements = 0;
-  for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
-    if (i >= iterations || pnEntryLit(entry)) break;
-    bool done;
-    refinements += 1;
-    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, mapSize, entry), receiver.xy,
-                                 gradient, bias, done);
-    if (done) break;
-  }
-  return entry;
-}
-
-vec4 pnSearchEntryMipCounted(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations,
-                             out int refinements) {
-  return pnSearchEntryMipPlane(mip, mapSize, light, receiver, vec2(0.0), bias, iterations, refinements);
-}
-
-vec4 pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations) {
-  int refinements;
-  return pnSearchEntryMipCounted(mip, mapSize, light, receiver, bias, iterations, refinements);
 }
 
 PnRect pnEntryRegion(vec4 entry, int mapSize, int regionMode) {

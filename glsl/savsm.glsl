@@ -15,7 +15,7 @@
 //   2. Blocker depth z (PN_SAVSM_BLOCKER_*, savsm.h):
 //      TABLE — mean mu and variance s2 of S from the moments table
 //              (4 fetches); the unoccluded share is at most
-//              p = Chebyshev(mu, s2, t) (vsm.glsl, minimum variance), and,
+//              p = Chebyshev(mu, s2, t) (variance_bound.glsl, minimum variance), and,
 //              taking the unoccluded texels at depth t,
 //                mu = p t + (1 - p) z   ->   z = (mu - p t) / (1 - p)
 //                                                = mu - s2 / (t - mu)
@@ -85,7 +85,7 @@
 #include "minmax_mip.glsl"
 #include "region.glsl"
 #include "summed_area.glsl"
-#include "vsm.glsl"
+#include "variance_bound.glsl"  // and vsm.h
 
 #if PN_SAVSM_TABLE == PN_SAVSM_TABLE_FLOAT
 #define PN_SAVSM_TABLE_SAMPLER sampler2D

@@ -17,7 +17,7 @@
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias,
 //       int leafSide, int leafMode, int nodeBudget, ivec2 pixel)
 //   PnTraversal pnTraverseWindow(... PnWindow window ...)       the region.glsl window
-//   (PnTraversal, pnTraversalBlockerMean, pnTraversalOccludedFraction: traversal.glsl)
+//   (PnTraversal, pnTraversalLeafSide, pnTraversalBlockerMean, pnTraversalOccludedFraction: traversal.glsl)
 //
 // cost: one fetch per node inside the region, 4^k <= 16 per sampled leaf;
 //   nodes <= min(4/3 · side², nodeBudget + 3 · rootLevel + 1).
@@ -27,6 +27,7 @@
 
 #include "depth_pyramid.glsl"
 #include "region.glsl"
+#include "sample_table.glsl"
 #include "traversal.glsl"
 
 // One sample of a leaf [lo, lo + size) over the pyramid's level 0 (as pn_traversalSampleAt).

@@ -38,19 +38,9 @@
 //   no bound is NaN. A NaN receiver depth is lit (t > mu is false).
 //
 // use:
-//   vec2  pnVsmMoments(float depth, float farDepth)                 (d, d*d)
-//   float pnEvsmWarpCoordinate(float depth, vec2 depthRange)        x in [0, 1]
-//   vec2  pnEvsmMoments2(float depth, vec2 depthRange, float exponent)
-//   vec4  pnEvsmMoments4(float depth, vec2 depthRange, vec2 exponents)   (c+, c-)
-//   float pnVsmChebyshev(vec2 moments, float t, float minVariance)   p_max
-//   float pnVsmChebyshevMeanVariance(float mu, float variance, float t, float minVariance)
-//         the same from a mean and a variance computed elsewhere (savsm.glsl's tables)
-//   float pnVsmFlooredVariance(float mu, float variance, float minVariance)   the variance the bound uses
-//   float pnVsmReduceBleeding(float p, float amount)                 linstep(a, 1, p)
+//   (the moments, Chebyshev's bound, the bleeding reduction and the depth-range bound:
+//   variance_bound.glsl, which this file includes)
 //   vec2  pnVsmWindowMinMax(sampler2DArray pyramid, ivec2 texel, int radius)
-//   float pnVsmDepthRangeBound(vec2 minMax, float t)                 PN_VSM_BOUND_*
-//   float pnEvsmBound2(vec2 moments, float t, vec2 depthRange, float exponent, float minVariance)
-//   float pnEvsmBound4(vec4 moments, float t, vec2 depthRange, vec2 exponents, float minVariance)
 //   The calls (one receiver, from a lighting shader; 1 where the receiver has no finite
 //   position or depth; its texel clamped to the map):
 //   float pnVsm(sampler2D moments, sampler2DArray pyramid, vec3 receiver, int radius, float bias,
@@ -87,90 +77,12 @@
 #ifndef PENUMBRA_VSM_GLSL
 #define PENUMBRA_VSM_GLSL
 
-#include "vsm.h"
 #include "depth_pyramid.glsl"
-
-bool pn_vsmIsFinite(float d) {
-  return !isnan(d) && !isinf(d);
-}
-
-vec2 pnVsmMoments(float depth, float farDepth) {
-  float d = pn_vsmIsFinite(depth) ? depth : farDepth;
-  return vec2(d, d * d);
-}
-
-float pnEvsmWarpCoordinate(float depth, vec2 depthRange) {
-  if (!pn_vsmIsFinite(depth)) return 1.0;
-  return clamp((depth - depthRange.x) / (depthRange.y - depthRange.x), 0.0, 1.0);
-}
-
-vec2 pn_evsmClampExponents(vec2 exponents) {
-  return clamp(exponents, vec2(0.0), vec2(float(PN_EVSM_MAX_EXPONENT)));
-}
-
-// w+ = exp(c+ x), w- = -exp(-c- x): the warped depths of the coordinate x.
-vec2 pn_evsmWarp(float x, vec2 exponents) {
-  vec2 c = pn_evsmClampExponents(exponents);
-  return vec2(exp(c.x * x), -exp(-c.y * x));
-}
-
-vec2 pnEvsmMoments2(float depth, vec2 depthRange, float exponent) {
-  float w = pn_evsmWarp(pnEvsmWarpCoordinate(depth, depthRange), vec2(exponent, 0.0)).x;
-  return vec2(w, w * w);
-}
-
-vec4 pnEvsmMoments4(float depth, vec2 depthRange, vec2 exponents) {
-  vec2 w = pn_evsmWarp(pnEvsmWarpCoordinate(depth, depthRange), exponents);
-  return vec4(w.x, w.x * w.x, w.y, w.y * w.y);
-}
-
-float pnVsmFlooredVariance(float mu, float variance, float minVariance) {
-  float varianceFloor = max(max(minVariance, 0.0) * (mu * mu), float(PN_VSM_VARIANCE_FLOOR));
-  return max(variance, varianceFloor);
-}
-
-float pnVsmChebyshevMeanVariance(float mu, float variance, float t, float minVariance) {
-  if (!(t > mu)) return 1.0;  // t <= mu, or NaN
-  float v = pnVsmFlooredVariance(mu, variance, minVariance);
-  float delta = t - mu;
-  return v / (v + delta * delta);
-}
-
-float pnVsmChebyshev(vec2 moments, float t, float minVariance) {
-  return pnVsmChebyshevMeanVariance(moments.x, moments.y - moments.x * moments.x, t, minVariance);
-}
-
-float pnVsmReduceBleeding(float p, float amount) {
-  float a = clamp(amount, 0.0, float(PN_VSM_MAX_BLEEDING_REDUCTION));
-  return clamp((p - a) / (1.0 - a), 0.0, 1.0);
-}
+#include "variance_bound.glsl"  // and vsm.h
 
 vec2 pnVsmWindowMinMax(sampler2DArray pyramid, ivec2 texel, int radius) {
   int r = max(radius, 0);
   return pnPyramidSquareMinMax(pyramid, texel - ivec2(r), 2 * r + 1);
-}
-
-float pnVsmDepthRangeBound(vec2 minMax, float t) {
-  if (t <= minMax.x) return PN_VSM_BOUND_LIT;
-  if (t > minMax.y) return PN_VSM_BOUND_SHADOWED;
-  return PN_VSM_BOUND_NONE;
-}
-
-// The bound where it decides, else the visibility.
-float pn_vsmApplyBound(float bound, float visibility) {
-  return bound == PN_VSM_BOUND_NONE ? visibility : bound;
-}
-
-float pnEvsmBound2(vec2 moments, float t, vec2 depthRange, float exponent, float minVariance) {
-  if (isnan(t)) return 1.0;  // as pnVsmChebyshev: a NaN receiver is lit
-  float w = pn_evsmWarp(pnEvsmWarpCoordinate(t, depthRange), vec2(exponent, 0.0)).x;
-  return pnVsmChebyshev(moments, w, minVariance);
-}
-
-float pnEvsmBound4(vec4 moments, float t, vec2 depthRange, vec2 exponents, float minVariance) {
-  if (isnan(t)) return 1.0;
-  vec2 w = pn_evsmWarp(pnEvsmWarpCoordinate(t, depthRange), exponents);
-  return min(pnVsmChebyshev(moments.xy, w.x, minVariance), pnVsmChebyshev(moments.zw, w.y, minVariance));
 }
 
 vec4 pn_vsmFetchMoments(sampler2D moments, ivec2 texel) {

@@ -24,7 +24,8 @@ layout(rgba32f, binding = PN_PCSS_REGIONS_QUERY_RECT_BINDING) writeonly uniform 
 layout(rgba32f, binding = PN_PCSS_REGIONS_QUERY_WINDOW_BINDING) writeonly uniform image2D pnWindows;
 layout(rgba32f, binding = PN_PCSS_REGIONS_QUERY_KEY_BINDING) writeonly uniform image2D pnKeys;
 
-#include "pcss_regions_pyramid.glsl"  // and pcss_regions.glsl
+#include "pcss_regions_mip.glsl"      // and pcss_regions.glsl
+#include "pcss_regions_pyramid.glsl"
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);

@@ -16,7 +16,8 @@ layout(rgba32f, binding = PN_PCSS_SEARCH_KEYS_IMAGE) writeonly uniform image2D p
 layout(r32f, binding = PN_PCSS_RECEIVER_DEPTH_IMAGE) writeonly uniform image2D pnReceiverDepth;
 
 #include "pcss_params.glsl"
-#include "pcss_regions_pyramid.glsl"  // and pcss_regions.glsl
+#include "pcss_regions_mip.glsl"      // and pcss_regions.glsl
+#include "pcss_regions_pyramid.glsl"
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);

@@ -18,7 +18,8 @@ layout(rgba32f, binding = PN_PCSS_RESULT_IMAGE) writeonly uniform image2D pnResu
 #include "pcss_regions.glsl"
 #include "pcss_work.glsl"
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums  // PN_DEPTH_SUMS_TABLE's exact sums
-#include "traversal_pyramid.glsl"  // and traversal.glsl
+#include "traversal_mip.glsl"      // and traversal.glsl
+#include "traversal_pyramid.glsl"
 
 void main() {
   ivec2 p;

@@ -25,7 +25,8 @@ layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_C_BINDING) writeonly uniform
 layout(rgba32f, binding = PN_TRAVERSAL_QUERY_RESULT_D_BINDING) writeonly uniform image2D pnResultD;
 
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums  // PN_DEPTH_SUMS_TABLE's exact sums
-#include "traversal_pyramid.glsl"  // and traversal.glsl
+#include "traversal_mip.glsl"      // and traversal.glsl
+#include "traversal_pyramid.glsl"
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);

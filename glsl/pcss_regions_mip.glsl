@@ -1,0 +1,67 @@
+// pcss_regions_mip.glsl — pcss_regions.glsl's search entry (Step 3) with the
+// region's min read from the aligned min/max mip chain (minmax_mip.glsl):
+// Fast PCSS's structure.
+//
+// description:
+//   pcss_regions.glsl's Step 3 (its header: the start, the lit decision, the
+//   lossless refinement), its zmin the min over the chain's aligned nodes that
+//   touch the square covering the exact region (pnMipSquareMinMax, <= 9
+//   fetches): never above the square's min, so the lit decision stays
+//   conservative and refinement lossless.
+//
+// use:
+//   vec4  pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias,
+//                          int iterations)   receiver = G-buffer (u, v, d, valid); zmin from the
+//                          aligned mip chain (minmax_mip.glsl): over the aligned nodes touching the
+//                          square (<= 9 fetches), a superset (pcss_regions_pyramid.glsl: the same
+//                          from the pyramid)
+//   vec4  pnSearchEntryMipCounted(... the same ..., out int refinements)   and how many refinements read
+//                          the chain (<= 9 fetches each: the call's cost)
+//   vec4  pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient,
+//                               float bias, int iterations, out int refinements)
+//                          with a receiver plane (receiver_plane.glsl): lit when zmin is not below the
+//                          plane's highest threshold over the region; gradient 0 is ...MipCounted exactly
+//
+// cost: <= 9 fetches per refinement iteration.
+
+#ifndef PENUMBRA_PCSS_REGIONS_MIP_GLSL
+#define PENUMBRA_PCSS_REGIONS_MIP_GLSL
+
+#include "minmax_mip.glsl"
+#include "pcss_regions.glsl"
+
+// The same from the aligned mip chain: the min over the aligned nodes that
+// touch that square (<= 9 fetches) — never above the square's min, so the lit
+// decision stays conservative and refinement lossless.
+float pn_searchRegionMinMip(sampler2D mip, int mapSize, vec4 entry) {
+  PnRect r = pnEntryRect(entry, mapSize);
+  if (r.size.x == 0 || r.size.y == 0) return pn_mipFar();
+  return pnMipSquareMinMax(mip, mapSize, r.origin, max(r.size.x, r.size.y)).x;
+}
+
+vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient, float bias,
+                           int iterations, out int refinements) {
+  vec4 entry = pn_searchStart(light, receiver);
+  refinements = 0;
+  for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
+    if (i >= iterations || pnEntryLit(entry)) break;
+    bool done;
+    refinements += 1;
+    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, mapSize, entry), receiver.xy,
+                                 gradient, bias, done);
+    if (done) break;
+  }
+  return entry;
+}
+
+vec4 pnSearchEntryMipCounted(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations,
+                             out int refinements) {
+  return pnSearchEntryMipPlane(mip, mapSize, light, receiver, vec2(0.0), bias, iterations, refinements);
+}
+
+vec4 pnSearchEntryMip(sampler2D mip, int mapSize, PnLight light, vec4 receiver, float bias, int iterations) {
+  int refinements;
+  return pnSearchEntryMipCounted(mip, mapSize, light, receiver, bias, iterations, refinements);
+}
+
+#endif  // PENUMBRA_PCSS_REGIONS_MIP_GLSL
