@@ -43,7 +43,7 @@ class VulkanDevice final : public QueryDevice {
   // "on (VK_LAYER_KHRONOS_validation)" or "off (…why)".
   std::string validation() const;
   // Under the bounds every submission is waited for at most bounds.timeout_s (a job past it is
-  // abandoned: vulkan_device.cpp, State), and the submissions since start_budget() together at most
+  // abandoned: vk/vulkan_state.h), and the submissions since start_budget() together at most
   // 10 × that (`check` starts a budget for each check).
   void set_dispatch_bounds(const DispatchBounds& bounds);
   void start_budget();
@@ -92,7 +92,7 @@ class VulkanDevice final : public QueryDevice {
                                                 int size, const float clear[4],
                                                 const PassResources& resources) const override;
 
-  struct State;  // vk/vulkan_device.cpp
+  struct State;  // vk/vulkan_state.h
 
  private:
   friend std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& settings);
@@ -106,7 +106,7 @@ std::unique_ptr<VulkanDevice> create_vulkan_device(const VulkanSettings& setting
 
 // Whether a device was destroyed while a job past its deadline still ran on it (`check
 // --gpu-timeout`): a Vulkan job cannot be cancelled, so that device and everything on it were left
-// as they were (vulkan_device.cpp, State), and the process must end without exit handlers that
+// as they were (vk/vulkan_state.h), and the process must end without exit handlers that
 // could wait for the job's threads: `penumbra` ends by std::_Exit after its output (cli/main.cpp).
 bool vulkan_job_abandoned();
 

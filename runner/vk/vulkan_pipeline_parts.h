@@ -1,4 +1,4 @@
-// What every Vulkan pipeline here is built from, shared by the executor (vulkan_device.cpp) and
+// What every Vulkan pipeline here is built from, shared by the executor (vk/vulkan_program.cpp) and
 // `penumbra isa`'s null device (isa/radv_null.cpp): a call's result checked, a shader module, and
 // the one descriptor set a pipeline's stages need, from their SPIR-V's own reflection.
 #pragma once

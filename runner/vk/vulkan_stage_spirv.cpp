@@ -1,0 +1,66 @@
+#include "vk/vulkan_stage_spirv.h"
+
+#include <filesystem>
+
+#include "core/error.h"
+#include "shader/flatten.h"
+#include "shader/glslang_compiler.h"
+#include "shader/spirv_cross.h"
+#include "vk/vulkan_program.h"
+#include "vk/vulkan_state.h"
+
+namespace pn::vk {
+
+std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const SourceTree& tree, const std::string& pass,
+                                       const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
+  ShaderSource source = standalone_source(flatten(tree, tree.locate_in_root(pass)), Target::vulkan, defines);
+  if (loops != nullptr && s.bounds.enabled)
+    *loops = guard_loops(s.glslang, source, Target::vulkan, {kGuardBinding, s.bounds.loop_iterations});
+  const CompileResult glsl = compile_with_glslang(s.glslang, source, Target::vulkan);
+  if (!glsl.ok) throw Error(pass + ": " + first_error(glsl, "glslang could not compile it for Vulkan"), ExitCode::failed);
+  if (s.settings.language == PassLanguage::glsl) return glsl.spirv;
+
+  std::string name = std::filesystem::path(pass).stem().string() + ".hlsl";
+  std::string hlsl;
+  // The copy stands in for the entry of its name (vk/hlsl_root.h); either way, what ran is recorded
+  // for the check's report, so a check never falls back to the library's export in silence.
+  const std::filesystem::path copy = s.settings.hlsl_root ? *s.settings.hlsl_root / name : std::filesystem::path();
+  const bool has_copy = s.settings.hlsl_root && std::filesystem::is_regular_file(copy);  // links followed
+  if (source.stage == Stage::compute && has_copy && defines.empty()) {
+    const SourceTree root(*s.settings.hlsl_root);  // read as module files are: a regular file, bounded
+    const std::filesystem::path canonical = root.locate_in_root(name);
+    hlsl = root.read(canonical), name = root.diagnostic_path(canonical);
+    if (loops != nullptr)  // the copy's own loops, guarded as the GLSL's are
+      *loops = s.bounds.enabled ? guard_hlsl_loops(s.glslang, hlsl, name, source.stage,
+                                                   {kGuardBinding, s.bounds.loop_iterations})
+                                : std::vector<GuardedLoop>{};
+    s.origins.push_back({pass, name, "", ""});
+    s.copies_read.insert(copy.filename().string());
+  } else {
+    hlsl = cross_compile(glsl.spirv, CrossLanguage::hlsl50);
+    if (s.settings.hlsl_root) {
+      const std::string root = s.settings.hlsl_root->string();
+      if (source.stage != Stage::compute) {
+        s.origins.push_back({pass, "", "vertex and fragment stages (a copy stands in for a compute entry only)", ""});
+      } else if (!defines.empty()) {
+        std::string set;
+        for (const Define& d : defines) set += (set.empty() ? "" : " ") + d.name + (d.value.empty() ? "" : "=" + d.value);
+        s.origins.push_back({pass, "",
+                             std::string("compiled with defines, which a copy (one fixed text) cannot take") +
+                                 (has_copy ? ": its copy in " + root + " not read" : ""),
+                             set});
+      } else {
+        s.origins.push_back({pass, "", "no copy of it in " + root, ""});
+      }
+    }
+  }
+  const CompileResult back = compile_hlsl_with_glslang(s.glslang, hlsl, name, source.stage);
+  if (!back.ok) throw Error(name + ": " + first_error(back, "glslang could not compile the HLSL"), ExitCode::failed);
+  return back.spirv;
+}
+
+std::string program_name(const VulkanDevice::State& s, const std::string& pass) {
+  return s.settings.language == PassLanguage::hlsl ? pass + " (HLSL)" : pass;
+}
+
+}  // namespace pn::vk
