@@ -4,7 +4,15 @@
 
 namespace pn::cli {
 
-std::string default_glsl_root() { return PENUMBRA_GLSL_DIR; }
+// An installed tool's own modules (cmake --install puts them at PENUMBRA_GLSL_DIR_FROM_BIN, relative to the
+// binary's directory); a tool in its build tree finds none there and reads the checkout it was built from.
+std::string default_glsl_root() {
+  std::error_code ec;
+  const std::filesystem::path installed =
+      std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / PENUMBRA_GLSL_DIR_FROM_BIN;
+  if (!ec && std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
+  return PENUMBRA_GLSL_DIR;
+}
 
 std::string glsl_root_or_default(const GlobalOptions& global) {
   return global.glsl_root.empty() ? default_glsl_root() : global.glsl_root;

@@ -1,0 +1,81 @@
+# penumbra_bundle(OUTPUT <file> MODULE <module>
+#                 [TARGET gl450|vulkan|es310|hlsl|msl] [SHADER_MODEL 5.0|6.0] [BARE] [GLSL_ROOT <dir>])
+#
+# Writes OUTPUT at build time with `penumbra bundle MODULE --target TARGET` (docs/cli.md): the module and
+# its includes in one GLSL file, or its HLSL or MSL export; BARE and SHADER_MODEL are the command's --bare
+# and --shader-model. MODULE is a path under the glsl root (fast_pcss.glsl, passes/blur.comp); the root is
+# the tool's own modules, or GLSL_ROOT, a copy of glsl/ (relative: to the calling CMakeLists' directory). A
+# relative OUTPUT is under the current binary directory. The command runs again when the tool or any file
+# under the root changes; OUTPUT is built when a target of the same directory lists it as a source (or an
+# add_custom_target DEPENDS on it).
+#
+# The tool is penumbra::penumbra: the installed one after find_package(penumbra), or the `penumbra` target
+# when this file is included by penumbra's own CMakeLists.txt (in tree, or a checkout added with
+# add_subdirectory or FetchContent). A bad call stops the configure step, naming the argument.
+function(penumbra_bundle)
+  cmake_parse_arguments(PARSE_ARGV 0 arg "BARE" "OUTPUT;MODULE;TARGET;SHADER_MODEL;GLSL_ROOT" "")
+  if(arg_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "penumbra_bundle: '${arg_UNPARSED_ARGUMENTS}': not an argument it takes; expected "
+                        "OUTPUT, MODULE, TARGET, SHADER_MODEL, BARE or GLSL_ROOT")
+  endif()
+  foreach(keyword IN LISTS arg_KEYWORDS_MISSING_VALUES)
+    message(FATAL_ERROR "penumbra_bundle: ${keyword} without a value: expected ${keyword} <value>")
+  endforeach()
+  foreach(keyword OUTPUT MODULE)
+    if("${arg_${keyword}}" STREQUAL "")
+      message(FATAL_ERROR "penumbra_bundle: no ${keyword}: expected OUTPUT <file> MODULE <module under the glsl root>")
+    endif()
+  endforeach()
+  if(NOT TARGET penumbra::penumbra)
+    message(FATAL_ERROR "penumbra_bundle: no penumbra::penumbra in this directory: expected find_package(penumbra) "
+                        "or add_subdirectory(<penumbra checkout>) before the call")
+  endif()
+
+  if(NOT DEFINED arg_TARGET)
+    set(arg_TARGET gl450)  # the command's default
+  endif()
+  set(targets gl450 vulkan es310 hlsl msl)
+  if(NOT arg_TARGET IN_LIST targets)
+    list(JOIN targets ", " expected)
+    message(FATAL_ERROR "penumbra_bundle: TARGET '${arg_TARGET}': expected one of ${expected}")
+  endif()
+  set(options --target ${arg_TARGET})
+  if(DEFINED arg_SHADER_MODEL)
+    if(NOT arg_TARGET STREQUAL "hlsl" OR NOT arg_SHADER_MODEL MATCHES "^(5[.]0|6[.]0)$")
+      message(FATAL_ERROR "penumbra_bundle: SHADER_MODEL '${arg_SHADER_MODEL}': expected 5.0 or 6.0, with TARGET hlsl")
+    endif()
+    list(APPEND options --shader-model ${arg_SHADER_MODEL})
+  endif()
+  if(arg_BARE)
+    if(arg_TARGET STREQUAL "hlsl" OR arg_TARGET STREQUAL "msl")
+      message(FATAL_ERROR "penumbra_bundle: BARE with TARGET ${arg_TARGET}: expected a GLSL target (gl450, vulkan, es310)")
+    endif()
+    list(APPEND options --bare)
+  endif()
+
+  if(DEFINED arg_GLSL_ROOT)
+    cmake_path(ABSOLUTE_PATH arg_GLSL_ROOT BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR} NORMALIZE OUTPUT_VARIABLE root)
+    if(NOT IS_DIRECTORY "${root}")
+      message(FATAL_ERROR "penumbra_bundle: GLSL_ROOT '${arg_GLSL_ROOT}': expected an existing directory (a copy of glsl/)")
+    endif()
+  else()
+    get_target_property(root penumbra::penumbra PENUMBRA_GLSL_DIR)
+  endif()
+  if(IS_ABSOLUTE "${arg_MODULE}" OR NOT EXISTS "${root}/${arg_MODULE}" OR IS_DIRECTORY "${root}/${arg_MODULE}")
+    message(FATAL_ERROR "penumbra_bundle: MODULE '${arg_MODULE}': no such file under the glsl root ${root}: "
+                        "expected a module's path relative to it, e.g. fast_pcss.glsl or passes/blur.comp")
+  endif()
+
+  cmake_path(ABSOLUTE_PATH arg_OUTPUT BASE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} NORMALIZE OUTPUT_VARIABLE output)
+  cmake_path(GET output PARENT_PATH output_dir)
+  file(MAKE_DIRECTORY ${output_dir})
+  # Any file of the root may be included by the module (or be its export entry).
+  file(GLOB_RECURSE root_files CONFIGURE_DEPENDS LIST_DIRECTORIES false ${root}/*)
+  list(JOIN options " " shown_options)
+  add_custom_command(
+    OUTPUT ${output}
+    COMMAND penumbra::penumbra bundle ${arg_MODULE} --glsl-root ${root} ${options} -o ${output}
+    DEPENDS penumbra::penumbra ${root_files}
+    COMMENT "penumbra bundle ${arg_MODULE} ${shown_options}"
+    VERBATIM)
+endfunction()
