@@ -50,7 +50,7 @@ TEST_CASE("negative: a lit decision that lets a texel at exactly d - bias occlud
 
 TEST_CASE("negative: a lit decision over the square of the region's shorter side fails in every mode, "
           "the lit-coverage property included") {
-  const BrokenCopy copy("pcss_regions.glsl", "max(r.size.x, r.size.y)", "min(r.size.x, r.size.y)");
+  const BrokenCopy copy("pcss_regions_pyramid.glsl", "max(r.size.x, r.size.y)", "min(r.size.x, r.size.y)");
   REQUIRE(copy.found());
   const auto results = run_check(regions(), copy.root());
   for (const char* mode : {"exact region: ", "window region: ", "centred region: "})
@@ -79,7 +79,7 @@ TEST_CASE("every region mode's lit decision on the tall-blocker scene misses no 
 TEST_CASE("negative: a lit decision that reads the power-of-two window marks shadowable receivers of the "
           "tall-blocker scene lit") {
   // The literal window of the entry, as the paper's Step 3 read it before issue 11.
-  const BrokenCopy copy("pcss_regions.glsl", "  PnRect r = pnEntryRect(entry, n);\n  if (r.size.x == 0 || r.size.y == 0) return pn_pyramidFar();\n  return pnPyramidSquareMinMax(pyramid, r.origin, max(r.size.x, r.size.y)).x;",
+  const BrokenCopy copy("pcss_regions_pyramid.glsl", "  PnRect r = pnEntryRect(entry, n);\n  if (r.size.x == 0 || r.size.y == 0) return pn_pyramidFar();\n  return pnPyramidSquareMinMax(pyramid, r.origin, max(r.size.x, r.size.y)).x;",
                         "  PnWindow w = pnEntryWindow(entry, n, PN_REGION_WINDOW);\n  return pnPyramidSquareMinMax(pyramid, w.origin, w.side).x;");
   REQUIRE(copy.found());
   const pn::SourceTree tree(copy.root());

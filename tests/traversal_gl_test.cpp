@@ -9,7 +9,7 @@ using pn::test::failing_cases;
 using pn::test::run_check;
 
 TEST_CASE("negative: a traversal that counts a texel at exactly dP - bias as occluding fails the exact check") {
-  const BrokenCopy copy("traversal.glsl", "if (node.y < t.x) {", "if (node.y <= t.x) {");
+  const BrokenCopy copy("traversal_pyramid.glsl", "if (node.y < t.x) {", "if (node.y <= t.x) {");
   REQUIRE(copy.found());
   // The library's run is cli_check_all_gl's (it must pass); the copy's run holds the case count.
   const auto results = run_check(pn::find_module_check("traversal"), copy.root());
@@ -18,7 +18,7 @@ TEST_CASE("negative: a traversal that counts a texel at exactly dP - bias as occ
 }
 
 TEST_CASE("negative: a traversal that drops a child fails the exact check") {
-  const BrokenCopy copy("traversal.glsl",
+  const BrokenCopy copy("traversal_pyramid.glsl",
                         "pn_traversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(h, h), t, leafMode, pixel);",
                         "");
   REQUIRE(copy.found());

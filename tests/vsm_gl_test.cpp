@@ -29,7 +29,7 @@ TEST_CASE("vsm moments, blurred moments, Chebyshev, reduction, depth-range bound
 }
 
 TEST_CASE("negative: a copy with an absolute minimum variance fails the Chebyshev cases, not the moments or bound") {
-  const pn::test::BrokenCopy copy("vsm.glsl", "max(minVariance, 0.0) * (mu * mu)", "max(minVariance, 0.0)");
+  const pn::test::BrokenCopy copy("variance_bound.glsl", "max(minVariance, 0.0) * (mu * mu)", "max(minVariance, 0.0)");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(vsm(), copy.root());
   for (const auto& r : results) {
@@ -41,7 +41,7 @@ TEST_CASE("negative: a copy with an absolute minimum variance fails the Chebyshe
 }
 
 TEST_CASE("negative: a copy whose depth-range bound calls a receiver at the window's min shadowed fails only the bound cases") {
-  const pn::test::BrokenCopy copy("vsm.glsl", "if (t <= minMax.x) return PN_VSM_BOUND_LIT;",
+  const pn::test::BrokenCopy copy("variance_bound.glsl", "if (t <= minMax.x) return PN_VSM_BOUND_LIT;",
                                   "if (t < minMax.x) return PN_VSM_BOUND_LIT;");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(vsm(), copy.root());
@@ -55,7 +55,7 @@ TEST_CASE("negative: a copy whose depth-range bound calls a receiver at the wind
 }
 
 TEST_CASE("negative: a copy with a wrong EVSM warp fails EVSM's moment cases and no VSM case") {
-  const pn::test::BrokenCopy copy("vsm.glsl", "return vec2(exp(c.x * x), -exp(-c.y * x));",
+  const pn::test::BrokenCopy copy("variance_bound.glsl", "return vec2(exp(c.x * x), -exp(-c.y * x));",
                                   "return vec2(exp(1.001 * c.x * x), -exp(-c.y * x));");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(vsm(), copy.root());
@@ -72,7 +72,7 @@ TEST_CASE("negative: a copy with a wrong EVSM warp fails EVSM's moment cases and
 }
 
 TEST_CASE("negative: a copy that lets non-finite depths into the moments fails on the NaN/Inf fixture only") {
-  const pn::test::BrokenCopy copy("vsm.glsl", "float d = pn_vsmIsFinite(depth) ? depth : farDepth;",
+  const pn::test::BrokenCopy copy("variance_bound.glsl", "float d = pn_vsmIsFinite(depth) ? depth : farDepth;",
                                   "float d = depth;");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(vsm(), copy.root());
@@ -90,7 +90,7 @@ TEST_CASE("negative: a copy that lets non-finite depths into the moments fails o
 }
 
 TEST_CASE("negative: a copy without the bleeding reduction fails the reduction and bleeding cases") {
-  const pn::test::BrokenCopy copy("vsm.glsl", "float a = clamp(amount, 0.0, float(PN_VSM_MAX_BLEEDING_REDUCTION));",
+  const pn::test::BrokenCopy copy("variance_bound.glsl", "float a = clamp(amount, 0.0, float(PN_VSM_MAX_BLEEDING_REDUCTION));",
                                   "float a = clamp(0.0 * amount, 0.0, float(PN_VSM_MAX_BLEEDING_REDUCTION));");
   REQUIRE(copy.found());
   const auto results = pn::test::run_check(vsm(), copy.root());
