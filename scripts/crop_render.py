@@ -1,14 +1,14 @@
 #!/usr/bin/python3
-"""crop_render.py RENDER_DIR SCENE X,Y,W,H OUT.png [--grey LO,HI] [--error-limit L] [METHOD...]
+"""crop_render.py RENDER_DIR SCENE X,Y,W,H OUT.png [--grey LO,HI] [--error-limit L] [TECHNIQUE...]
 
 One region of `penumbra render`'s soft-shadow pictures side by side, enlarged
-(nearest neighbour): a column per picture — the truth, then each METHOD
+(nearest neighbour): a column per picture — the truth, then each TECHNIQUE
 (default poisson fast) — read from RENDER_DIR/SCENE_<name>_shadow.png, with
-a second row of each method's signed error against the truth (blue: darker
+a second row of each technique's signed error against the truth (blue: darker
 than the truth, red: brighter, saturating at ±L; default 0.5, as render's
 _error.png). --grey LO,HI stretches the soft shadows' grey scale (LO black,
 HI white; default 0,1) so faint penumbrae show. At the left, the first
-method's whole soft shadow (same grey scale) with the region outlined. X, Y:
+technique's whole soft shadow (same grey scale) with the region outlined. X, Y:
 the region's top-left pixel, from the top left of the image.
 Needs Debian's python3-matplotlib (Agg): run it with /usr/bin/python3.
 Exit 2 with one line for bad arguments or a missing picture.
@@ -44,7 +44,7 @@ def main(argv):
     parser.add_argument("scene")
     parser.add_argument("region")
     parser.add_argument("out")
-    parser.add_argument("methods", nargs="*", default=["poisson", "fast"])
+    parser.add_argument("techniques", nargs="*", default=["poisson", "fast"])
     parser.add_argument("--grey", default="0,1")
     parser.add_argument("--error-limit", type=float, default=0.5)
     args = parser.parse_args(argv[1:])
@@ -77,14 +77,14 @@ def main(argv):
         return image
 
     truth = shadow("truth")
-    columns = ["truth"] + args.methods
+    columns = ["truth"] + args.techniques
     grey = dict(interpolation="nearest", cmap="gray", vmin=lo, vmax=hi)
     fig = plt.figure(figsize=(2.7 * (len(columns) + 2), 5.8))
     grid = fig.add_gridspec(2, len(columns) + 2)
     where = fig.add_subplot(grid[:, 0:2])
-    where.imshow(shadow(args.methods[0]), **grey)
+    where.imshow(shadow(args.techniques[0]), **grey)
     where.add_patch(Rectangle((x - 0.5, y - 0.5), w, h, fill=False, edgecolor="red", linewidth=1.5))
-    where.set_title(f"{args.methods[0]}, whole image: the crop in red", fontsize="medium")
+    where.set_title(f"{args.techniques[0]}, whole image: the crop in red", fontsize="medium")
     where.set_xticks([])
     where.set_yticks([])
     for c, name in enumerate(columns):

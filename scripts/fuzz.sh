@@ -9,7 +9,7 @@
 # A crash inside Assimp in the model loader's import child (runner/scene/model.cpp) is
 # contained by design — the loader refuses the file — and is listed, not failed.
 # Environment: PENUMBRA_FUZZ_BUILD_DIR (default build-fuzz), PENUMBRA_FUZZ_TARGETS
-# (default: flatten diagnostic methods model cli).
+# (default: flatten diagnostic techniques model cli).
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
@@ -17,7 +17,7 @@ case "$seconds" in
   '' | *[!0-9]* | 0) echo "fuzz.sh: error: seconds '$seconds': expected a whole number > 0" >&2; exit 2 ;;
 esac
 build=${PENUMBRA_FUZZ_BUILD_DIR:-$root/build-fuzz}
-targets=${PENUMBRA_FUZZ_TARGETS:-flatten diagnostic methods model cli}
+targets=${PENUMBRA_FUZZ_TARGETS:-flatten diagnostic techniques model cli}
 
 "$root/scripts/install-deps.sh"
 cmake -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \

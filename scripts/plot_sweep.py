@@ -38,23 +38,23 @@ def load(path):
         try:
             if not row["ran"]:
                 continue
-            rows.append((str(row["scene"]), int(row["size"]), float(row["factor"]), str(row["method"]),
+            rows.append((str(row["scene"]), int(row["size"]), float(row["factor"]), str(row["technique"]),
                          float(row["total_ms"]), float(row["vs_truth"]["light_facing"]["ssim"])))
         except (KeyError, TypeError, ValueError) as e:
             fail(f"'{path}': results.rows[{i}]: malformed ({type(e).__name__}: {e})")
     if not rows:
         fail(f"'{path}': no technique ran")
-    listed = results.get("methods", [])
+    listed = results.get("techniques", [])
     if not isinstance(listed, list) or not all(isinstance(m, str) for m in listed):
-        fail(f"'{path}': results.methods: expected a list of method names, found {json.dumps(listed)[:40]}")
-    methods = listed or sorted({r[3] for r in rows})
-    return doc, rows, methods
+        fail(f"'{path}': results.techniques: expected a list of technique names, found {json.dumps(listed)[:40]}")
+    techniques = listed or sorted({r[3] for r in rows})
+    return doc, rows, techniques
 
 
 def main(argv):
     if len(argv) != 3:
         fail("usage: plot_sweep.py JSON PNG")
-    doc, rows, methods = load(argv[1])
+    doc, rows, techniques = load(argv[1])
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -72,12 +72,12 @@ def main(argv):
     for g, (scene, size) in enumerate(groups):
         time_ax, ssim_ax = axes[g]
         factors = sorted({r[2] for r in rows if r[0] == scene and r[1] == size})
-        for m, method in enumerate(methods):
-            points = sorted((r[2], r[4], r[5]) for r in rows if r[:2] == (scene, size) and r[3] == method)
+        for m, technique in enumerate(techniques):
+            points = sorted((r[2], r[4], r[5]) for r in rows if r[:2] == (scene, size) and r[3] == technique)
             if not points:
                 continue
             x = [p[0] for p in points]
-            style = dict(marker=markers[m % len(markers)], label=method)
+            style = dict(marker=markers[m % len(markers)], label=technique)
             time_ax.plot(x, [p[1] for p in points], **style)
             ssim_ax.plot(x, [p[2] for p in points], **style)
         for ax in (time_ax, ssim_ax):

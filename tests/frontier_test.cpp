@@ -17,7 +17,7 @@ TEST_CASE("frontier: the Pareto marks equal a sweep by time with the running min
     const int n = 1 + static_cast<int>(random() % 12);
     for (int i = 0; i < n; ++i) {
       pn::FrontierRow r;
-      r.method = i == 0 ? "fast" : "m" + std::to_string(i);
+      r.technique = i == 0 ? "fast" : "m" + std::to_string(i);
       r.family = i == 0 ? "fast" : (i % 2 ? "poisson" : "fast");
       r.ms = static_cast<double>(random() % 8);  // ties on purpose
       r.mae = static_cast<double>(random() % 8);
@@ -32,7 +32,7 @@ TEST_CASE("frontier: the Pareto marks equal a sweep by time with the running min
       double best_before = INFINITY;
       for (const pn::FrontierRow& o : sorted)
         if (o.ms < r.ms || (o.ms == r.ms && o.mae < r.mae)) best_before = std::min(best_before, o.mae);
-      INFO("trial " << trial << " row " << r.method << " (" << r.ms << ", " << r.mae << ")");
+      INFO("trial " << trial << " row " << r.technique << " (" << r.ms << ", " << r.mae << ")");
       CHECK(r.on_frontier == (r.mae < best_before));
     }
     // The default's challenger: the fastest row of another family at most as far from the truth.

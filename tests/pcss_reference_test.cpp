@@ -1,4 +1,4 @@
-// The exact-PCSS CPU reference on cases worked by hand, and the method
+// The exact-PCSS CPU reference on cases worked by hand, and the technique
 // settings' parsing and validation.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -83,6 +83,6 @@ TEST_CASE("PCSS settings: all-off preset and key=value overrides") {
     pn::set_pcss_setting(s, key, value);
   CHECK((s.leaf_side == 4 && s.search_tile == 0 && s.filter_tile == 0 && s.region == pn::RegionMode::centred &&
          s.filter_scale == 1.5f));
-  CHECK_THROWS_WITH(pn::set_pcss_setting(s, "leaf", "x"), "method 'fast': leaf=x: expected an integer");
-  CHECK_THROWS_WITH(pn::set_pcss_setting(s, "colour", "red"), Catch::StartsWith("method 'fast': unknown setting 'colour': expected refine, region"));
+  CHECK_THROWS_WITH(pn::set_pcss_setting(s, "leaf", "x"), "technique 'fast': leaf=x: expected an integer");
+  CHECK_THROWS_WITH(pn::set_pcss_setting(s, "colour", "red"), Catch::StartsWith("technique 'fast': unknown setting 'colour': expected refine, region"));
 }

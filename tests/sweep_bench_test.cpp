@@ -62,12 +62,12 @@ TEST_CASE("time growth: last counted time over first, from the first factor with
   CHECK_FALSE(pn::time_growth({{1, 10.0}, {2, -1.0}}));
 }
 
-TEST_CASE("exact spec: exact PCSS with or without overrides, nothing else") {
-  CHECK(pn::is_exact_spec("exact"));
-  CHECK(pn::is_exact_spec("exact:bias=0.01"));
-  CHECK_FALSE(pn::is_exact_spec("exactly"));
-  CHECK_FALSE(pn::is_exact_spec("fast"));
-  CHECK_FALSE(pn::is_exact_spec("fast-all-off"));
+TEST_CASE("exact technique: exact PCSS with or without overrides, nothing else") {
+  CHECK(pn::is_exact_technique("exact"));
+  CHECK(pn::is_exact_technique("exact:bias=0.01"));
+  CHECK_FALSE(pn::is_exact_technique("exactly"));
+  CHECK_FALSE(pn::is_exact_technique("fast"));
+  CHECK_FALSE(pn::is_exact_technique("fast-all-off"));
 }
 
 TEST_CASE("sweep setup: the defaults validate; bad settings are refused naming the setting (negative)") {

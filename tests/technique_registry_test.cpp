@@ -1,6 +1,6 @@
 // The technique registry: every entry found by its name, owning its override
-// keys; specs with overrides parsed and validated; bad specs refused with the
-// spec named.
+// keys; techniques with overrides parsed and validated; bad ones refused with the
+// technique named.
 #include <catch2/catch.hpp>
 
 #include <set>
@@ -18,13 +18,13 @@ TEST_CASE("technique registry: every entry parses by its own name, names are uni
     CHECK(!config->keys().empty());
     CHECK(names.insert(e.name).second);
   }
-  for (const std::string& spec : pn::render_techniques()) CHECK(names.count(spec) == 1);
-  for (const std::string& spec : pn::bench_techniques()) CHECK(names.count(spec) == 1);
+  for (const std::string& technique : pn::render_techniques()) CHECK(names.count(technique) == 1);
+  for (const std::string& technique : pn::bench_techniques()) CHECK(names.count(technique) == 1);
   CHECK(names.count(pn::kExactTechnique) == 1);
   CHECK(names.count(pn::kPoissonTechnique) == 1);
 }
 
-TEST_CASE("technique registry: a spec with overrides keeps its full name and its entry's keys") {
+TEST_CASE("technique registry: a technique with overrides keeps its full name and its entry's keys") {
   const auto config = pn::parse_technique("fast:leaf=4:reuse=off:region=centred:c=1.5");
   CHECK(config->name() == "fast:leaf=4:reuse=off:region=centred:c=1.5");
   CHECK(config->keys() == pn::pcss_setting_keys());
@@ -32,12 +32,12 @@ TEST_CASE("technique registry: a spec with overrides keeps its full name and its
   CHECK(copy->name() == config->name());
 }
 
-TEST_CASE("technique registry: bad specs are refused naming the spec (negative)") {
-  CHECK_THROWS_WITH(pn::parse_technique("slow"), Catch::StartsWith("unknown method 'slow': expected one of exact, poisson, hqepcss, fast, fast-paper, fast-no-refine"));
-  CHECK_THROWS_WITH(pn::parse_technique("fast:leaf"), "method 'fast:leaf': 'leaf': expected key=value");
-  CHECK_THROWS_WITH(pn::parse_technique("fast:colour=red"), Catch::StartsWith("method 'fast:colour=red': unknown setting 'colour'"));
-  CHECK_THROWS_WITH(pn::parse_technique("fast:bias=-1"), "method 'fast:bias=-1': bias -1: expected a finite number >= 0");
-  CHECK_THROWS_WITH(pn::parse_technique("fast:search-tile=17"), "method 'fast:search-tile=17': search reuse tile 17: expected 0 (off) or 1..16");
+TEST_CASE("technique registry: bad techniques are refused naming the technique (negative)") {
+  CHECK_THROWS_WITH(pn::parse_technique("slow"), Catch::StartsWith("unknown technique 'slow': expected one of exact, poisson, hqepcss, fast, fast-paper, fast-no-refine"));
+  CHECK_THROWS_WITH(pn::parse_technique("fast:leaf"), "technique 'fast:leaf': 'leaf': expected key=value");
+  CHECK_THROWS_WITH(pn::parse_technique("fast:colour=red"), Catch::StartsWith("technique 'fast:colour=red': unknown setting 'colour'"));
+  CHECK_THROWS_WITH(pn::parse_technique("fast:bias=-1"), "technique 'fast:bias=-1': bias -1: expected a finite number >= 0");
+  CHECK_THROWS_WITH(pn::parse_technique("fast:search-tile=17"), "technique 'fast:search-tile=17': search reuse tile 17: expected 0 (off) or 1..16");
 }
 
 TEST_CASE("technique registry: vsm and evsm take their own keys and refuse values out of range (negative)") {
@@ -46,28 +46,28 @@ TEST_CASE("technique registry: vsm and evsm take their own keys and refuse value
   CHECK(pn::parse_technique("evsm:exponent=30:negative-exponent=10")->name() == "evsm:exponent=30:negative-exponent=10");
   CHECK(pn::parse_technique("evsm2:exponent=20")->name() == "evsm2:exponent=20");
   CHECK_THROWS_WITH(pn::parse_technique("vsm:bleeding=1"),
-                    "method 'vsm:bleeding=1': vsm bleeding reduction 1: expected 0 to 0.99");
+                    "technique 'vsm:bleeding=1': vsm bleeding reduction 1: expected 0 to 0.99");
   CHECK_THROWS_WITH(pn::parse_technique("evsm:exponent=50"),
-                    Catch::StartsWith("method 'evsm:exponent=50': evsm exponent 50: expected 0 to 42"));
+                    Catch::StartsWith("technique 'evsm:exponent=50': evsm exponent 50: expected 0 to 42"));
   CHECK_THROWS_WITH(pn::parse_technique("vsm:radius=17"),
-                    "method 'vsm:radius=17': blur radius 17: expected an integer from 0 to 16");
-  CHECK_THROWS_WITH(pn::parse_technique("vsm:radius=x"), "method 'vsm:radius=x': radius=x: expected an integer");
+                    "technique 'vsm:radius=17': blur radius 17: expected an integer from 0 to 16");
+  CHECK_THROWS_WITH(pn::parse_technique("vsm:radius=x"), "technique 'vsm:radius=x': radius=x: expected an integer");
   CHECK_THROWS_WITH(pn::parse_technique("vsm:colour=red"),
-                    Catch::StartsWith("method 'vsm:colour=red': unknown setting 'colour': expected radius, sigma"));
+                    Catch::StartsWith("technique 'vsm:colour=red': unknown setting 'colour': expected radius, sigma"));
 }
 
 TEST_CASE("technique registry: savsm and its ablations take their own keys and refuse bad values (negative)") {
   for (const char* name : {"savsm", "savsm-table", "savsm-float", "savsm-raw"}) CHECK(pn::parse_technique(name)->name() == name);
-  const char* spec = "savsm:bias=0.05:scale=2:min-variance=1e-5:bleeding=0.3:blocker=table:bound=off:table=float";
-  CHECK(pn::parse_technique(spec)->name() == spec);
-  CHECK_THROWS_WITH(pn::parse_technique("savsm:table=half"), "method 'savsm:table=half': table=half: expected fixed or float");
+  const char* technique = "savsm:bias=0.05:scale=2:min-variance=1e-5:bleeding=0.3:blocker=table:bound=off:table=float";
+  CHECK(pn::parse_technique(technique)->name() == technique);
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:table=half"), "technique 'savsm:table=half': table=half: expected fixed or float");
   CHECK_THROWS_WITH(pn::parse_technique("savsm:blocker=mean"),
-                    "method 'savsm:blocker=mean': blocker=mean: expected table or min");
-  CHECK_THROWS_WITH(pn::parse_technique("savsm:bound=1"), "method 'savsm:bound=1': bound=1: expected on or off");
+                    "technique 'savsm:blocker=mean': blocker=mean: expected table or min");
+  CHECK_THROWS_WITH(pn::parse_technique("savsm:bound=1"), "technique 'savsm:bound=1': bound=1: expected on or off");
   CHECK_THROWS_WITH(pn::parse_technique("savsm:bleeding=1"),
-                    Catch::StartsWith("method 'savsm:bleeding=1': savsm bleeding reduction 1: expected"));
+                    Catch::StartsWith("technique 'savsm:bleeding=1': savsm bleeding reduction 1: expected"));
   CHECK_THROWS_WITH(pn::parse_technique("savsm:scale=-1"),
-                    "method 'savsm:scale=-1': savsm filter scale -1: expected 0..64 (the filter side in penumbrae)");
+                    "technique 'savsm:scale=-1': savsm filter scale -1: expected 0..64 (the filter side in penumbrae)");
   CHECK_THROWS_WITH(pn::parse_technique("savsm:radius=3"),
-                    Catch::StartsWith("method 'savsm:radius=3': unknown setting 'radius': expected bias, scale"));
+                    Catch::StartsWith("technique 'savsm:radius=3': unknown setting 'radius': expected bias, scale"));
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The example_fast_pcss test: fast_pcss_example's pictures against the runner's.
 
-Runs `penumbra render --model MODEL --methods fast` (the runner's Fast PCSS:
+Runs `penumbra render --model MODEL --techniques fast` (the runner's Fast PCSS:
 its G-buffer, then pnFastPcss in a compute pass) and `fast_pcss_example
 --model MODEL` (the same module, bundled, called from a forward fragment
 shader), both on a 512x512 shadow map and screen, and compares
@@ -162,7 +162,7 @@ def main():
     if example.returncode != 0:
         print(f"fast_pcss_example failed (exit {example.returncode})")
         return 1
-    render = run([args.penumbra, "render", "--model", args.model, "--methods", "fast", "--map-size", str(SIZE),
+    render = run([args.penumbra, "render", "--model", args.model, "--techniques", "fast", "--map-size", str(SIZE),
                   "--screen", str(SIZE), "--truth-samples", "1", "--repeats", "1", "--out", render_dir])
     if render.returncode != 0:
         print(f"penumbra render failed (exit {render.returncode})")

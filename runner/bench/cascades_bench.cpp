@@ -88,8 +88,8 @@ void validate_cascades_bench_setup(const CascadesBenchSetup& s) {
   require_list_length("cascades counts", s.counts.size());
   require_list_length("cascades sizes", s.sizes.size());
   require_list_length("cascades ks", s.ks.size());
-  require_list_length("methods", s.methods.size());
-  require_list_length("path methods", s.path_methods.size());
+  require_list_length("techniques", s.techniques.size());
+  require_list_length("path techniques", s.path_techniques.size());
   for (int c : s.counts)
     if (c < 0 || c > PN_CASCADES_MAX) throw Error("cascade count " + std::to_string(c) + ": expected 0 (one map) .. 4");
   if (s.count < 1 || s.count > PN_CASCADES_MAX) throw Error("cascade count " + std::to_string(s.count) + ": expected 1..4");
@@ -102,7 +102,7 @@ void validate_cascades_bench_setup(const CascadesBenchSetup& s) {
   if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
   if (s.truth_samples < 1 || s.truth_samples > 64)
     throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
-  for (const auto& list : {s.methods, s.path_methods})
+  for (const auto& list : {s.techniques, s.path_techniques})
     for (const std::string& m : list) parse_technique(m)->validate();
 }
 
@@ -112,9 +112,9 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
   CascadesBench bench;
   bench.scene = fixture.name;
   bench.count = setup.count, bench.size = setup.size;
-  std::vector<std::unique_ptr<TechniqueConfig>> methods;
+  std::vector<std::unique_ptr<TechniqueConfig>> techniques;
   std::vector<const TechniqueConfig*> chosen;
-  for (const std::string& m : setup.methods) methods.push_back(parse_technique(m)), chosen.push_back(methods.back().get());
+  for (const std::string& m : setup.techniques) techniques.push_back(parse_technique(m)), chosen.push_back(techniques.back().get());
   const std::vector<Config> all = configs(setup);
   const Scene city = make_city_scene(fixture, setup.size);  // its models read once
   bench.triangles = static_cast<int>(city.triangles().size() / 3);
@@ -143,10 +143,10 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
   // camera a step and a turn further each frame, so that every change is the cascades' own.
   TechniqueResources resources(context, tree);
   std::vector<std::unique_ptr<TechniqueConfig>> path_configs;
-  std::vector<std::unique_ptr<Technique>> path_methods;
-  for (const std::string& m : setup.path_methods) {
+  std::vector<std::unique_ptr<Technique>> path_techniques;
+  for (const std::string& m : setup.path_techniques) {
     path_configs.push_back(parse_technique(m));
-    path_methods.push_back(path_configs.back()->create(resources));
+    path_techniques.push_back(path_configs.back()->create(resources));
   }
   const CascadeBlendPass& blend = resources.shared<CascadeBlendPass>();
   const ShadowMapRenderer maps(context, tree);
@@ -161,15 +161,15 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
   for (bool stable : {true, false}) {
     progress.step(std::string(stable ? "stable" : "unstable") + " cascades along the camera path, " +
                   std::to_string(setup.path_frames) + " frames");
-    std::vector<CascadesPathRow> rows(path_methods.size());
+    std::vector<CascadesPathRow> rows(path_techniques.size());
     std::vector<Image> before(rows.size());
     for (int f = 0; f < setup.path_frames; ++f) {
       const SceneCamera fitted = city_camera(f);
       const auto frame = render_cascaded_frame(context, maps, gbuffer, scene,
                                                cascade_settings(setup.count, setup.size, 1.0, stable), n, &fitted);
       for (size_t m = 0; m < rows.size(); ++m) {
-        Image v = context.read_texture(*CascadedTechnique(*path_methods[m], blend, context).run(frame->inputs(scene.light), false).visibility, 0, 0);
-        rows[m].method = path_configs[m]->name();
+        Image v = context.read_texture(*CascadedTechnique(*path_techniques[m], blend, context).run(frame->inputs(scene.light), false).visibility, 0, 0);
+        rows[m].technique = path_configs[m]->name();
         rows[m].stable = stable;
         rows[m].mean_error += scorer.score(v).light_facing.mae / setup.path_frames;
         if (f > 0) rows[m].changes.push_back(mean_abs_change(v, before[m], truth.covered));
@@ -190,22 +190,22 @@ void print_cascades_bench(std::ostream& out, const CascadesBench& bench) {
   for (const char* sweep : {"count", "size", "k"}) {
     out << "by " << sweep << ":\n"
         << std::left << std::setw(8) << "count" << std::setw(7) << "size" << std::setw(5) << "k" << std::setw(18)
-        << "method" << std::right << std::setw(10) << "maps ms" << std::setw(11) << "method ms" << std::setw(10)
+        << "technique" << std::right << std::setw(10) << "maps ms" << std::setw(13) << "technique ms" << std::setw(10)
         << "frame ms" << std::setw(8) << "SSIM" << std::setw(9) << "MAE" << "\n";
     for (const CascadesBenchRow& r : bench.rows) {
       if (!belongs(bench, r, sweep)) continue;
       out << std::left << std::setw(8) << (r.count == 0 ? "1 map" : std::to_string(r.count)) << std::setw(7) << r.size
-          << std::setw(5) << format_number("%g", r.k) << std::setw(18) << r.method << std::right << std::fixed
-          << std::setprecision(2) << std::setw(10) << r.maps_ms << std::setw(11) << r.method_ms << std::setw(10)
+          << std::setw(5) << format_number("%g", r.k) << std::setw(18) << r.technique << std::right << std::fixed
+          << std::setprecision(2) << std::setw(10) << r.maps_ms << std::setw(13) << r.technique_ms << std::setw(10)
           << r.frame_ms << std::setprecision(4) << std::setw(8) << r.ssim << std::setw(9) << r.mae << "\n";
     }
   }
   out << "cascades fitted along the camera path, seen from its first frame: mean |change| between consecutive frames "
          "(covered pixels), mean MAE vs the truth\n"
-      << std::left << std::setw(22) << "method" << std::setw(10) << "cascades" << std::right << std::setw(12) << "|change|"
+      << std::left << std::setw(22) << "technique" << std::setw(10) << "cascades" << std::right << std::setw(12) << "|change|"
       << std::setw(10) << "MAE" << "\n";
   for (const CascadesPathRow& r : bench.path)
-    out << std::left << std::setw(22) << r.method << std::setw(10) << (r.stable ? "stable" : "unstable") << std::right
+    out << std::left << std::setw(22) << r.technique << std::setw(10) << (r.stable ? "stable" : "unstable") << std::right
         << std::fixed << std::setprecision(5) << std::setw(12) << r.mean_change << std::setw(10) << r.mean_error << "\n";
   out.unsetf(std::ios::floatfield);
 }
@@ -214,10 +214,10 @@ nlohmann::json cascades_bench_json(const CascadesBenchSetup& s, const CascadesBe
   nlohmann::json rows = nlohmann::json::array(), path = nlohmann::json::array();
   for (const CascadesBenchRow& r : bench.rows)
     rows.push_back({{"sweep", r.sweep}, {"count", r.count}, {"size", r.size}, {"k", r.k}, {"maps_ms", r.maps_ms},
-                    {"method", r.method}, {"method_ms", r.method_ms}, {"frame_ms", r.frame_ms}, {"ssim", r.ssim},
+                    {"technique", r.technique}, {"technique_ms", r.technique_ms}, {"frame_ms", r.frame_ms}, {"ssim", r.ssim},
                     {"mae", r.mae}});
   for (const CascadesPathRow& r : bench.path)
-    path.push_back({{"method", r.method}, {"stable", r.stable}, {"mean_change", r.mean_change},
+    path.push_back({{"technique", r.technique}, {"stable", r.stable}, {"mean_change", r.mean_change},
                     {"mean_error", r.mean_error}, {"changes", r.changes}});
   return {{"scene", bench.scene}, {"triangles", bench.triangles}, {"screen", s.screen}, {"repeats", s.repeats},
           {"truth_samples", s.truth_samples}, {"count", s.count}, {"size", s.size}, {"path_frames", s.path_frames},
@@ -226,15 +226,15 @@ nlohmann::json cascades_bench_json(const CascadesBenchSetup& s, const CascadesBe
 
 Canvas cascades_bench_chart(const CascadesBench& bench, const std::string& title) {
   static const Rgb colours[] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {148, 103, 189}, {255, 127, 14}, {23, 190, 207}};
-  std::vector<std::string> methods;
+  std::vector<std::string> techniques;
   for (const CascadesBenchRow& r : bench.rows)
-    if (std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
+    if (std::find(techniques.begin(), techniques.end(), r.technique) == techniques.end()) techniques.push_back(r.technique);
   ChartPanel by_count{"frame time against split count", "cascades (0: one map)", "GPU ms", {}};
   ChartPanel by_size{"frame time against map size", "map size N", "GPU ms", {}};
-  for (size_t m = 0; m < methods.size(); ++m) {
-    ChartSeries count_series{methods[m], colours[m % 6], false, {}}, size_series{methods[m], colours[m % 6], false, {}};
+  for (size_t m = 0; m < techniques.size(); ++m) {
+    ChartSeries count_series{techniques[m], colours[m % 6], false, {}}, size_series{techniques[m], colours[m % 6], false, {}};
     for (const CascadesBenchRow& r : bench.rows) {
-      if (r.method != methods[m]) continue;
+      if (r.technique != techniques[m]) continue;
       if (belongs(bench, r, "count")) count_series.points.push_back({static_cast<double>(r.count), r.frame_ms});
       if (belongs(bench, r, "size")) size_series.points.push_back({static_cast<double>(r.size), r.frame_ms});
     }
@@ -244,10 +244,10 @@ Canvas cascades_bench_chart(const CascadesBench& bench, const std::string& title
     by_size.series.push_back(size_series);
   }
   ChartPanel path{"change between frames along the path (dashed: unstable)", "frame", "mean |change|", {}};
-  for (const CascadesPathRow& r : bench.path) {  // each method in its colour of the other panels
-    if (std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
-    const size_t colour = static_cast<size_t>(std::find(methods.begin(), methods.end(), r.method) - methods.begin());
-    ChartSeries s{r.method + (r.stable ? ", stable" : ", unstable"), colours[colour % 6], !r.stable, {}};
+  for (const CascadesPathRow& r : bench.path) {  // each technique in its colour of the other panels
+    if (std::find(techniques.begin(), techniques.end(), r.technique) == techniques.end()) techniques.push_back(r.technique);
+    const size_t colour = static_cast<size_t>(std::find(techniques.begin(), techniques.end(), r.technique) - techniques.begin());
+    ChartSeries s{r.technique + (r.stable ? ", stable" : ", unstable"), colours[colour % 6], !r.stable, {}};
     for (size_t f = 0; f < r.changes.size(); ++f) s.points.push_back({static_cast<double>(f + 1), r.changes[f]});
     path.series.push_back(s);
   }

@@ -1,12 +1,12 @@
 // `penumbra bench cascades` (issue 14, seed 003's Tables 1, 2 and 4): the city
-// lit by the sun, every method on cascades through the technique seam
+// lit by the sun, every technique on cascades through the technique seam
 // (compare_techniques), for each split count (0: one map over the whole
 // scene), map size and first-split enlargement k: the cascades' map time,
-// each method's GPU time and frame time (maps + method), and its SSIM and
+// each technique's GPU time and frame time (maps + technique), and its SSIM and
 // MAE against the ray-traced truth on light-facing pixels. Then the
 // cascades fitted frame by frame along the city's camera path while the
 // view stays at its first frame (a static scene, a still picture): the mean
-// absolute change of each method's visibility between consecutive frames,
+// absolute change of each technique's visibility between consecutive frames,
 // with stable and with unstable cascades — every change is shimmer.
 #pragma once
 
@@ -27,15 +27,15 @@ struct CascadesBenchSetup {
   std::vector<int> sizes{256, 512, 1024, 2048};      // map sizes at `count`
   std::vector<double> ks{1.0, 2.0, 4.0};             // first-split enlargements at `count`, `size`
   int count = 3, size = 1024;                        // where the other sweeps hold still
-  std::vector<std::string> methods{"pcf", "vsm", "vsm:radius=0", "fast", "savsm"};
-  std::vector<std::string> path_methods{"pcf", "fast"};  // along the camera path
+  std::vector<std::string> techniques{"pcf", "vsm", "vsm:radius=0", "fast", "savsm"};
+  std::vector<std::string> path_techniques{"pcf", "fast"};  // along the camera path
   int path_frames = 12;
   int screen = 256;
   int repeats = 3;
   int truth_samples = 4;  // per side
 };
 
-// Throws Error naming the first bad setting (an unknown scene or method, a count outside 0..4, a
+// Throws Error naming the first bad setting (an unknown scene or technique, a count outside 0..4, a
 // size outside 16..4096, k < 1, path frames outside 2..200, screen, repeats, truth samples). No GL.
 void validate_cascades_bench_setup(const CascadesBenchSetup& setup);
 
@@ -44,14 +44,14 @@ struct CascadesBenchRow {
   int count = 0, size = 0;
   double k = 1.0;
   double maps_ms = 0.0;  // GPU time of the cascades' maps (or the one map)
-  std::string method;
-  double method_ms = 0.0;  // median GPU time of the method on every cascade, blend included
-  double frame_ms = 0.0;   // maps + method
+  std::string technique;
+  double technique_ms = 0.0;  // median GPU time of the technique on every cascade, blend included
+  double frame_ms = 0.0;   // maps + technique
   double ssim = 0.0, mae = 0.0;  // against the truth, light-facing pixels
 };
 
 struct CascadesPathRow {
-  std::string method;  // or "truth (ray traced)"
+  std::string technique;  // or "truth (ray traced)"
   bool stable = true;
   double mean_change = 0.0;     // mean over the frames of the mean |v_f - v_(f-1)| over covered pixels
   double mean_error = 0.0;      // mean over the frames of the MAE against the truth (light-facing)
@@ -69,7 +69,7 @@ struct CascadesBench {
 CascadesBench bench_cascades(const Context& context, const SourceTree& tree, const CascadesBenchSetup& setup);
 void print_cascades_bench(std::ostream& out, const CascadesBench& bench);
 nlohmann::json cascades_bench_json(const CascadesBenchSetup& setup, const CascadesBench& bench);
-// Frame time against split count and map size, a line per method; the change along the path.
+// Frame time against split count and map size, a line per technique; the change along the path.
 Canvas cascades_bench_chart(const CascadesBench& bench, const std::string& title);
 
 }  // namespace pn

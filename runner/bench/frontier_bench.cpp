@@ -25,7 +25,7 @@ namespace {
 
 constexpr const char* kFrontierModelScene = "spider";  // fixtures::kCityModels[0] on the ground
 
-std::string samples_spec(const char* family, int n) {
+std::string samples_technique(const char* family, int n) {
   return std::string(family) + ":blocker-samples=" + std::to_string(n) + ":filter-samples=" + std::to_string(n);
 }
 
@@ -45,8 +45,8 @@ Scene frontier_scene(const std::string& name, int size, double width) {
   return scene;
 }
 
-std::string family_of(const std::string& spec) {
-  const std::string name = spec.substr(0, spec.find(':'));
+std::string family_of(const std::string& technique) {
+  const std::string name = technique.substr(0, technique.find(':'));
   for (const char* family : {"poisson", "vogel", "fast", "hqepcss", "savsm", "exact", "pcf", "backprojection"})
     if (name.rfind(family, 0) == 0) return family;
   if (name == "vsm" || name.rfind("evsm", 0) == 0) return "vsm";
@@ -59,8 +59,8 @@ std::optional<double> stat(const NamedValues& stats, const char* name) {
   return std::nullopt;
 }
 
-bool scans_filter_region(const std::string& spec) {
-  const std::string family = family_of(spec);
+bool scans_filter_region(const std::string& technique) {
+  const std::string family = family_of(technique);
   return family == "exact" || family == "hqepcss";
 }
 
@@ -70,9 +70,9 @@ std::string width_text(double w) { return "x" + format_number("%g", w); }
 
 std::vector<std::string> frontier_techniques() {
   std::vector<std::string> out;
-  for (int n : {8, 16, 32, 64}) out.push_back(samples_spec("poisson", n));
+  for (int n : {8, 16, 32, 64}) out.push_back(samples_technique("poisson", n));
   out.push_back("poisson");  // the seeds' 36 / 64
-  for (int n : {8, 16, 32, 64, 128}) out.push_back(samples_spec("vogel", n));
+  for (int n : {8, 16, 32, 64, 128}) out.push_back(samples_technique("vogel", n));
   out.push_back("vogel");  // 16 / 32
   for (const char* s : {"fast", "fast:receiver-plane=1", "vogel:receiver-plane=1", "fast:grid=4", "fast:grid=2",
                         "fast:leaf=4", "fast:leaf=8", "fast:leaf=32", "fast:leaf-divisor=8",
@@ -92,7 +92,7 @@ FrontierBenchSetup quick_frontier_setup() {
   s.sizes = {128};
   s.repeats = 1;
   s.truth_samples = 4;
-  s.methods = {samples_spec("poisson", 16), "poisson", "vogel", samples_spec("vogel", 64), "fast", "fast:leaf=8",
+  s.techniques = {samples_technique("poisson", 16), "poisson", "vogel", samples_technique("vogel", 64), "fast", "fast:leaf=8",
                "hqepcss", "savsm", "vsm", "pcf", "exact", "backprojection:samples=64"};
   return s;
 }
@@ -104,7 +104,7 @@ void validate_frontier_setup(const FrontierBenchSetup& s) {
   validate_width_bench_settings(s.sizes, s.repeats, s.truth_samples, s.exact_up_to);
   for (const std::string& name : s.scenes)
     for (double w : s.widths) frontier_scene(name, 16, w);  // the scene (its models read), the factor, the light
-  for (const std::string& m : s.methods) parse_technique(m)->validate();
+  for (const std::string& m : s.techniques) parse_technique(m)->validate();
 }
 
 namespace {
@@ -121,7 +121,7 @@ void mark_by(FrontierPoint& point, Time time, bool FrontierRow::*flag, std::opti
   }
   beats.reset();
   const auto fast = std::find_if(point.rows.begin(), point.rows.end(),
-                                 [](const FrontierRow& r) { return r.method == kFrontierDefault; });
+                                 [](const FrontierRow& r) { return r.technique == kFrontierDefault; });
   if (fast == point.rows.end() || !time(*fast)) return;
   for (const FrontierRow& o : point.rows)
     if (o.family != fast->family && time(o) && o.mae <= fast->mae && *time(o) < *time(*fast) &&
@@ -142,7 +142,7 @@ void mark_frontier(FrontierPoint& point) {
 std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTree& tree, const FrontierBenchSetup& setup) {
   validate_frontier_setup(setup);
   std::vector<std::unique_ptr<TechniqueConfig>> configs;
-  for (const std::string& m : setup.methods.empty() ? frontier_techniques() : setup.methods)
+  for (const std::string& m : setup.techniques.empty() ? frontier_techniques() : setup.techniques)
     configs.push_back(parse_technique(m));
   std::vector<FrontierPoint> points;
   std::optional<GpuEstimator> estimator;
@@ -171,7 +171,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
         p.scene = name, p.size = n, p.width = w;
         for (const TechniqueResult& r : result.results) {
           FrontierRow row;
-          row.method = r.name, row.family = family_of(r.name);
+          row.technique = r.name, row.family = family_of(r.name);
           row.ms = r.measurement.total_ms;
           row.ssim = r.vs_truth.light_facing.ssim, row.mae = r.vs_truth.light_facing.mae;
           row.bias = r.vs_truth.bias;
@@ -190,18 +190,18 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
                           const std::optional<GpuEstimateSetup>& estimate) {
   for (const FrontierPoint& p : points) {
     std::vector<std::string> names;
-    for (const FrontierRow& r : p.rows) names.push_back(r.method);
+    for (const FrontierRow& r : p.rows) names.push_back(r.technique);
     const int w = name_column_width(names);
     out << "scene " << p.scene << ", " << p.size << "x" << p.size << ", light width " << width_text(p.width)
         << "; light-facing pixels vs the ray-traced truth, by time:\n"
-        << std::left << std::setw(w) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(8) << "SSIM"
+        << std::left << std::setw(w) << "technique" << std::right << std::setw(10) << "GPU ms" << std::setw(8) << "SSIM"
         << std::setw(9) << "MAE" << std::setw(8) << "acne" << std::setw(8) << "leak" << std::setw(10) << "fetch/px"
         << std::setw(10) << "tile max" << (estimate ? "    est. us" : "") << "  frontier\n";
     std::vector<const FrontierRow*> sorted;
     for (const FrontierRow& r : p.rows) sorted.push_back(&r);
     std::stable_sort(sorted.begin(), sorted.end(), [](const FrontierRow* a, const FrontierRow* b) { return a->ms < b->ms; });
     for (const FrontierRow* r : sorted) {
-      out << std::left << std::setw(w) << r->method << std::right << std::fixed << std::setprecision(2) << std::setw(10)
+      out << std::left << std::setw(w) << r->technique << std::right << std::fixed << std::setprecision(2) << std::setw(10)
           << r->ms << std::setprecision(4) << std::setw(8) << r->ssim << std::setw(9) << r->mae << std::setw(8)
           << r->bias.acne << std::setw(8) << r->bias.leak << std::setprecision(1);
       if (r->fetches) out << std::setw(10) << *r->fetches << std::setw(10) << *r->tile_max;
@@ -214,19 +214,19 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
     }
     out.unsetf(std::ios::floatfield);
     const auto fast = std::find_if(p.rows.begin(), p.rows.end(),
-                                   [](const FrontierRow& r) { return r.method == kFrontierDefault; });
+                                   [](const FrontierRow& r) { return r.technique == kFrontierDefault; });
     if (fast != p.rows.end()) {
       out << kFrontierDefault << " on the frontier: ";
       if (!p.beats_default) out << "yes (no other technique reaches its MAE in less time)\n";
       else
-        out << "no: " << p.beats_default->method << " reaches MAE " << format_number("%.4f", p.beats_default->mae)
+        out << "no: " << p.beats_default->technique << " reaches MAE " << format_number("%.4f", p.beats_default->mae)
             << " <= " << format_number("%.4f", fast->mae) << " in " << format_number("%.2f", p.beats_default->ms)
             << " ms, " << format_number("%.2f", fast->ms / p.beats_default->ms) << "x less time\n";
       if (estimate && fast->estimate_ms) {
         out << kFrontierDefault << " on the estimate's frontier (" << gpu_estimate_label(*estimate) << "): ";
         if (!p.beats_default_estimate) out << "yes\n";
         else
-          out << "no: " << p.beats_default_estimate->method << " reaches MAE "
+          out << "no: " << p.beats_default_estimate->technique << " reaches MAE "
               << format_number("%.4f", p.beats_default_estimate->mae) << " in an estimated "
               << format_number("%.1f", 1e3 * *p.beats_default_estimate->estimate_ms) << " us, "
               << format_number("%.2f", *fast->estimate_ms / *p.beats_default_estimate->estimate_ms) << "x less\n";
@@ -239,7 +239,7 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
 nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::vector<FrontierPoint>& points) {
   nlohmann::json list = nlohmann::json::array();
   const auto row_json = [](const FrontierRow& r) {
-    return nlohmann::json{{"method", r.method},
+    return nlohmann::json{{"technique", r.technique},
                           {"family", r.family},
                           {"ms", r.ms},
                           {"ssim", r.ssim},
@@ -306,7 +306,7 @@ Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std:
       chosen.lines = false;
       chosen.marker = 13;
       for (const FrontierRow& r : p.rows)
-        if (r.method == kFrontierDefault && time(r)) chosen.points.emplace_back(*time(r), r.mae);
+        if (r.technique == kFrontierDefault && time(r)) chosen.points.emplace_back(*time(r), r.mae);
       panel.series.push_back(chosen);
       panels.push_back(panel);
       columns = std::max(columns, static_cast<int>(std::count_if(points.begin(), points.end(), [&](const FrontierPoint& q) {

@@ -36,7 +36,7 @@ struct FrontierBenchSetup {
   // Exact PCSS and HQEPCSS (their PCF reads every texel of the filter region, which grows as the
   // width²: at 512² ×8 one HQEPCSS frame takes about a minute on llvmpipe) only at factors <= this.
   double exact_up_to = 2.0;
-  std::vector<std::string> methods;   // empty: frontier_techniques()
+  std::vector<std::string> techniques;   // empty: frontier_techniques()
   std::optional<GpuEstimateSetup> estimate = GpuEstimateSetup{};  // none: no GPU cost estimate
 };
 
@@ -50,11 +50,11 @@ std::vector<std::string> frontier_techniques();
 FrontierBenchSetup quick_frontier_setup();
 
 // Throws Error naming the first bad setting (unknown scene, bad width, size outside 16..4096,
-// repeats outside 1..100, truth samples outside 1..64, a bad method). No GL; reads the model.
+// repeats outside 1..100, truth samples outside 1..64, a bad technique). No GL; reads the model.
 void validate_frontier_setup(const FrontierBenchSetup& setup);
 
 struct FrontierRow {
-  std::string method, family;  // family: the registry name ("poisson", "vogel", "fast", ...)
+  std::string technique, family;  // family: the registry name ("poisson", "vogel", "fast", ...)
   double ms = 0.0;             // GPU time of the technique's frame (structures + call), median
   double ssim = 0.0, mae = 0.0;  // light-facing pixels vs the truth
   BiasErrors bias;               // acne and leak on them (metrics/scores.h)

@@ -224,8 +224,8 @@ nlohmann::json gpu_estimate_json(const GpuEstimate& e, const GpuEstimateSetup& s
 }
 
 const GpuEstimate* estimate_of(const Comparison& comparison, const std::vector<GpuEstimate>& estimates,
-                               const std::string& method) {
-  const TechniqueResult* r = comparison.find(method);
+                               const std::string& technique) {
+  const TechniqueResult* r = comparison.find(technique);
   const std::size_t k = r ? static_cast<std::size_t>(r - comparison.results.data()) : estimates.size();
   return k < estimates.size() && estimates[k].ok ? &estimates[k] : nullptr;
 }

@@ -92,9 +92,9 @@ void print_estimate_cells(std::ostream& out, const std::vector<GpuEstimate>& est
                           const std::vector<double>& ratios, std::size_t i);
 // The line under a table: what the estimate is for, and each estimate that failed, why.
 void print_estimate_note(std::ostream& out, const GpuEstimateSetup& setup, const std::vector<GpuEstimate>& estimates);
-// The estimate of `method`'s result in `comparison` (null when it did not run or has none).
+// The estimate of `technique`'s result in `comparison` (null when it did not run or has none).
 const GpuEstimate* estimate_of(const Comparison& comparison, const std::vector<GpuEstimate>& estimates,
-                               const std::string& method);
+                               const std::string& technique);
 // Estimated time of `base` over each result's (0 where either has none): as the bench's time ratios.
 std::vector<double> estimate_ratios(const Comparison& comparison, const std::vector<GpuEstimate>& estimates,
                                     const std::string& base);

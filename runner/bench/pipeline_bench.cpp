@@ -42,7 +42,7 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
   ComparisonSetup cs;
   cs.repeats = setup.repeats;
   cs.truth_samples = setup.truth_samples;
-  cs.techniques = chosen_or_default_techniques(setup.methods, bench_techniques(), own);
+  cs.techniques = chosen_or_default_techniques(setup.techniques, bench_techniques(), own);
   cs.census = setup.estimate.has_value();
   std::optional<GpuEstimator> estimator;
   if (setup.estimate) estimator.emplace(tree, *setup.estimate);
@@ -51,7 +51,7 @@ std::vector<PipelineBenchSize> bench_pipeline(const Context& context, const Sour
   Progress progress("bench pipeline", setup.sizes.size());
   for (int n : setup.sizes) {
     progress.step(scene_name(setup) + " " + std::to_string(n) + ": " + std::to_string(cs.techniques.size()) +
-                  " methods, the truth");
+                  " techniques, the truth");
     cs.screen_size = n;
     PipelineBenchSize s;
     s.size = n;
@@ -83,7 +83,7 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
     for (const TechniqueResult& r : s.comparison.results) names.push_back(r.name);
     const int name = name_column_width(names);
     const bool staged = s.comparison.find(kStagedPoissonTechnique) != nullptr;
-    out << std::left << std::setw(name) << "method" << std::right << std::setw(11) << "total ms" << std::setw(10)
+    out << std::left << std::setw(name) << "technique" << std::right << std::setw(11) << "total ms" << std::setw(10)
         << "x exact" << std::setw(10) << "x Poisson" << (staged ? "  x staged P." : "");
     if (estimate) out << std::setw(11) << "est. us" << std::setw(10) << "est. x P.";
     out << "   stages (ms)\n";
@@ -111,7 +111,7 @@ nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::v
     for (size_t i = 0; i < s.comparison.results.size(); ++i) {
       const TechniqueResult& r = s.comparison.results[i];
       list.push_back({{"size", s.size},
-                      {"method", r.name},
+                      {"technique", r.name},
                       {"total_ms", r.measurement.total_ms},
                       {"stage_ms", named_json(r.measurement.stage_ms)},
                       {"stats", named_json(r.measurement.frame.stats)},

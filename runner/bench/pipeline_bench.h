@@ -27,7 +27,7 @@ struct PipelineBenchSetup {
   std::vector<int> sizes{512, 1024};
   int repeats = 5;
   int truth_samples = 16;
-  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: bench_techniques()
+  std::vector<std::shared_ptr<const TechniqueConfig>> techniques;  // empty: bench_techniques()
   std::optional<GpuEstimateSetup> estimate = GpuEstimateSetup{};  // none: no GPU cost estimate
 };
 

@@ -13,7 +13,7 @@
 
 namespace pn {
 
-bool is_exact_spec(const std::string& name) { return name.substr(0, name.find(':')) == kExactTechnique; }
+bool is_exact_technique(const std::string& name) { return name.substr(0, name.find(':')) == kExactTechnique; }
 
 Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor) {
   Scene scene = make_scene(fixture, size);
@@ -40,7 +40,7 @@ void validate_sweep_setup(const SweepBenchSetup& s) {
     const auto& fixture = find_scene_fixture(name);
     for (double f : s.factors) sweep_scene(fixture, 16, f);  // the factor and the scaled light, without GL
   }
-  for (const auto& m : s.methods) m->validate();
+  for (const auto& m : s.techniques) m->validate();
 }
 
 std::optional<TimeGrowth> time_growth(const std::vector<std::pair<double, double>>& factor_ms) {
@@ -54,14 +54,14 @@ std::optional<TimeGrowth> time_growth(const std::vector<std::pair<double, double
 SweepBench bench_sweep(const Context& context, const SourceTree& tree, const SweepBenchSetup& setup) {
   validate_sweep_setup(setup);
   std::vector<std::unique_ptr<TechniqueConfig>> own;
-  const std::vector<const TechniqueConfig*> all = chosen_or_default_techniques(setup.methods, render_techniques(), own);
+  const std::vector<const TechniqueConfig*> all = chosen_or_default_techniques(setup.techniques, render_techniques(), own);
 
   SweepBench bench;
   bench.exact_up_to = setup.exact_up_to;
   bench.estimate = setup.estimate;
   std::optional<GpuEstimator> estimator;
   if (setup.estimate) estimator.emplace(tree, *setup.estimate);
-  for (const TechniqueConfig* c : all) bench.methods.push_back(c->name());
+  for (const TechniqueConfig* c : all) bench.techniques.push_back(c->name());
   Progress progress("bench sweep", setup.scenes.size() * setup.sizes.size() * setup.factors.size());
   for (const std::string& name : setup.scenes) {
     const auto& fixture = find_scene_fixture(name);
@@ -74,7 +74,7 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
         cs.truth_samples = setup.truth_samples;
         cs.census = estimator.has_value();
         for (const TechniqueConfig* c : all)
-          if (factor <= setup.exact_up_to || !is_exact_spec(c->name())) cs.techniques.push_back(c);
+          if (factor <= setup.exact_up_to || !is_exact_technique(c->name())) cs.techniques.push_back(c);
         if (cs.techniques.empty()) continue;  // only exact PCSS was asked for, and not at this factor
         SweepPoint p;
         p.scene = name;
@@ -115,28 +115,28 @@ std::string factor_text(double f) { return format_number("%g", f); }
 }  // namespace
 
 std::optional<TimeGrowth> sweep_time_growth(const SweepBench& bench, const std::string& scene, int size,
-                                            const std::string& method) {
+                                            const std::string& technique) {
   std::vector<std::pair<double, double>> factor_ms;
   for (const SweepPoint& p : bench.points)
     if (p.scene == scene && p.size == size)
-      if (const TechniqueResult* r = p.comparison.find(method)) factor_ms.emplace_back(p.factor, r->measurement.total_ms);
+      if (const TechniqueResult* r = p.comparison.find(technique)) factor_ms.emplace_back(p.factor, r->measurement.total_ms);
   return time_growth(factor_ms);
 }
 
 void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
-  const int kName = name_column_width(bench.methods);
+  const int kName = name_column_width(bench.techniques);
   for_each_group(bench, [&](const std::string& scene, int size, const std::vector<const SweepPoint*>& points) {
     out << "scene " << scene << ", " << size << "x" << size << " (shadow map = screen); light-facing pixels:\n"
         << std::right << std::setw(7) << "factor" << std::setw(8) << "width" << "  " << std::left << std::setw(kName)
-        << "method" << std::right << std::setw(11) << "GPU ms" << std::setw(11) << "SSIM truth" << std::setw(10)
+        << "technique" << std::right << std::setw(11) << "GPU ms" << std::setw(11) << "SSIM truth" << std::setw(10)
         << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10) << "MAE exact";
     if (bench.estimate) out << std::setw(11) << "est. us" << std::setw(10) << "est. x P.";
     out << "\n";
     for (const SweepPoint* p : points) {
-      for (const std::string& method : bench.methods) {
+      for (const std::string& technique : bench.techniques) {
         out << std::right << std::setw(7) << factor_text(p->factor) << std::fixed << std::setprecision(2)
-            << std::setw(8) << p->light_width << "  " << std::left << std::setw(kName) << method << std::right;
-        const TechniqueResult* r = p->comparison.find(method);
+            << std::setw(8) << p->light_width << "  " << std::left << std::setw(kName) << technique << std::right;
+        const TechniqueResult* r = p->comparison.find(technique);
         if (!r) {
           out << "    not run (above --exact-up-to " << factor_text(bench.exact_up_to) << ")\n";
           continue;
@@ -159,9 +159,9 @@ void print_sweep_bench(std::ostream& out, const SweepBench& bench) {
           << std::setprecision(0) << std::setw(11) << p->comparison.truth_ms << " CPU ms\n";
     }
     out << "time growth from the first to the last factor:";
-    for (const std::string& method : bench.methods) {
-      out << "  " << method << " ";
-      if (const auto g = sweep_time_growth(bench, scene, size, method))
+    for (const std::string& technique : bench.techniques) {
+      out << "  " << technique << " ";
+      if (const auto g = sweep_time_growth(bench, scene, size, technique))
         out << std::setprecision(2) << g->ratio << "x (x" << factor_text(g->from) << " -> x" << factor_text(g->to)
             << ")";
       else
@@ -186,10 +186,10 @@ nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::js
 nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& bench) {
   nlohmann::json rows = nlohmann::json::array(), truth = nlohmann::json::array(), growth = nlohmann::json::array();
   for (const SweepPoint& p : bench.points) {
-    for (const std::string& method : bench.methods) {
+    for (const std::string& technique : bench.techniques) {
       nlohmann::json row{{"scene", p.scene}, {"size", p.size}, {"factor", p.factor}, {"light_width", p.light_width},
-                         {"method", method}};
-      const TechniqueResult* r = p.comparison.find(method);
+                         {"technique", technique}};
+      const TechniqueResult* r = p.comparison.find(technique);
       row["ran"] = r != nullptr;
       if (r) {
         row["total_ms"] = r->measurement.total_ms;
@@ -215,15 +215,15 @@ nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& 
                                                               : nlohmann::json(nullptr)}});
   }
   for_each_group(bench, [&](const std::string& scene, int size, const std::vector<const SweepPoint*>&) {
-    for (const std::string& method : bench.methods)
-      if (const auto g = sweep_time_growth(bench, scene, size, method))
-        growth.push_back({{"scene", scene}, {"size", size}, {"method", method}, {"from", g->from}, {"to", g->to},
+    for (const std::string& technique : bench.techniques)
+      if (const auto g = sweep_time_growth(bench, scene, size, technique))
+        growth.push_back({{"scene", scene}, {"size", size}, {"technique", technique}, {"from", g->from}, {"to", g->to},
                           {"ratio", g->ratio}});
   });
   return {{"scenes", setup.scenes},     {"factors", setup.factors},
           {"sizes", setup.sizes},       {"repeats", setup.repeats},
           {"truth_samples", setup.truth_samples}, {"exact_up_to", finite_or_null(setup.exact_up_to)},
-          {"methods", bench.methods},   {"rows", rows},
+          {"techniques", bench.techniques},   {"rows", rows},
           {"truth", truth},             {"time_growth", growth}};
 }
 

@@ -34,7 +34,7 @@ struct SweepBenchSetup {
   // search square whose side grows with the width, and at 512² on llvmpipe (2 cores) one run
   // takes 4-8 s at x1 and 16-30 s at x2 on the tall blocker, so about a minute from x4 on.
   double exact_up_to = 2.0;
-  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: render_techniques()
+  std::vector<std::shared_ptr<const TechniqueConfig>> techniques;  // empty: render_techniques()
   std::optional<GpuEstimateSetup> estimate = GpuEstimateSetup{};  // none: no GPU cost estimate
 };
 
@@ -52,8 +52,8 @@ void validate_sweep_setup(const SweepBenchSetup& setup);
 // factor that is not finite and > 0, or a light that does not validate.
 Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor);
 
-// Whether a technique's spec names exact PCSS ("exact" or "exact:key=value…").
-bool is_exact_spec(const std::string& name);
+// Whether a technique names exact PCSS ("exact" or "exact:key=value…").
+bool is_exact_technique(const std::string& name);
 
 struct SweepPoint {
   std::string scene;
@@ -75,7 +75,7 @@ struct TimeGrowth {
 std::optional<TimeGrowth> time_growth(const std::vector<std::pair<double, double>>& factor_ms);
 
 struct SweepBench {
-  std::vector<std::string> methods;  // every technique's name, in table order
+  std::vector<std::string> techniques;  // every technique's name, in table order
   std::vector<SweepPoint> points;    // per scene, per size, per factor
   double exact_up_to = 2.0;
   std::optional<GpuEstimateSetup> estimate;
@@ -86,7 +86,7 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
 
 // A technique's growth on one scene and size (none when it ran at fewer than two factors).
 std::optional<TimeGrowth> sweep_time_growth(const SweepBench& bench, const std::string& scene, int size,
-                                            const std::string& method);
+                                            const std::string& technique);
 
 void print_sweep_bench(std::ostream& out, const SweepBench& bench);
 nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& bench);

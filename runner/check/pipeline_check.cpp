@@ -156,13 +156,13 @@ void technique_cases(const QueryDevice& context, TechniqueResources& resources, 
   // slope clamp, tangent 0.5, with a small bias (gbuffer_receiver_plane.glsl's plane is there for any
   // tangent > 0: the boxes' sloped receivers clamp to it, and without it their texels shadow them).
   struct PlaneCase {
-    const char* spec;
+    const char* technique;
     double bias, tangent;
     bool fragment;
   };
   for (const PlaneCase& c : {PlaneCase{"pcf:receiver-plane=on:bias=0.01", 0.01, kReceiverPlaneTan, true},
                              PlaneCase{"pcf:receiver-plane=0.5:bias=0.002", 0.002, 0.5, false}}) {
-    const std::unique_ptr<Technique> pcf = parse_technique(c.spec)->create(resources);
+    const std::unique_ptr<Technique> pcf = parse_technique(c.technique)->create(resources);
     const PcssReference reference = pcf_plane_reference(map, gbuffer, scene.light, c.bias, std::ldexp(1.0, -20), c.tangent);
     TechniqueInputs fragment_inputs = inputs;
     fragment_inputs.stage = ShadeStage::fragment;
@@ -171,7 +171,7 @@ void technique_cases(const QueryDevice& context, TechniqueResources& resources, 
     for (const TechniqueInputs* stage : stages) {
       Image observed = context.read_texture(*pcf->run(*stage, false).visibility, 0, 0);
       const int ambiguous = leave_out_ambiguous(reference, observed);
-      results.push_back({name + ": " + c.spec + ", " +
+      results.push_back({name + ": " + c.technique + ", " +
                              (stage->stage == ShadeStage::fragment ? "fragment shader" : "compute pass") +
                              ", vs 2x2 bilinear PCF with the G-buffer's planes on the CPU (" +
                              std::to_string(ambiguous) + " pixels within rounding of a decision left out)",

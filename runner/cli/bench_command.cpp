@@ -31,7 +31,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     CascadesBenchSetup cascades;
     FrontierBenchSetup frontier;
     bool quick = false;
-    std::vector<std::string> methods;
+    std::vector<std::string> techniques;
     int max_level = 31;
     std::string json;
     std::string plot;
@@ -54,7 +54,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* widths = applies_to(cmd->add_option("--widths", opt->sweep.factors, "sweep, frontier: light width factors (default 1,2,4,8)")->delimiter(','), {"sweep", "frontier"});
   auto* exact_up_to = applies_to(cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep, frontier: run exact PCSS (frontier: and HQEPCSS) only at light width factors up to this (default 2; inf: at every factor)"), {"sweep", "frontier"});
   applies_to(cmd->add_flag("--quick", opt->quick, "frontier: the short run for CI (boxes and tall_blocker at 128², widths 1 and 8, a configuration per technique, one round)"), {"frontier"});
-  applies_to(cmd->add_option("--methods", opt->methods, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(','), {"pipeline", "sweep", "frontier", "cascades"});
+  applies_to(cmd->add_option("--techniques", opt->techniques, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(','), {"pipeline", "sweep", "frontier", "cascades"});
   auto* truth_samples = applies_to(cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline, sweep: S for the ray-traced truth's S x S light samples (default 16)"), {"pipeline", "sweep", "frontier", "cascades"});
   applies_to(cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)"), {"pyramid"});
   applies_to(cmd->add_option("--map-size", opt->traversal.map_size, "traversal: shadow-map size (default 1024)"), {"traversal"});
@@ -71,7 +71,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   applies_to(cmd->add_option("--count", opt->cascades.count, "cascades: the split count of the size and k sweeps and the path (default 3)"), {"cascades"});
   applies_to(cmd->add_option("--size", opt->cascades.size, "cascades: the map size of the count and k sweeps and the path (default 1024)"), {"cascades"});
   applies_to(cmd->add_option("--path-frames", opt->cascades.path_frames, "cascades: frames along the camera path (default 12)"), {"cascades"});
-  applies_to(cmd->add_option("--path-methods", opt->cascades.path_methods, "cascades: techniques along the camera path (default pcf,fast)")->delimiter(','), {"cascades"});
+  applies_to(cmd->add_option("--path-techniques", opt->cascades.path_techniques, "cascades: techniques along the camera path (default pcf,fast)")->delimiter(','), {"cascades"});
   auto* estimate = applies_to(cmd->add_option("--estimate", opt->estimate, "pipeline, sweep, frontier: the GPU cost estimate beside each time for this RADV family, FAMILY/32 for wave32 (default navi21; off: none; docs/isa.md)"), {"pipeline", "sweep", "frontier"});
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   applies_to(cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG; cascades, frontier: theirs"), {"cache", "cascades", "frontier"});
@@ -87,10 +87,10 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       for (const std::string& w : whats) list += (list.empty() ? "bench " : ", bench ") + w;
       throw Error(option->get_name() + ": bench " + opt->what + " does not use it (it applies to " + list + ")");
     }
-    if (!opt->methods.empty()) require_list_length("methods", opt->methods.size());
-    for (const std::string& spec : opt->methods) opt->pipeline.methods.push_back(parse_technique(spec));
+    if (!opt->techniques.empty()) require_list_length("techniques", opt->techniques.size());
+    for (const std::string& technique : opt->techniques) opt->pipeline.techniques.push_back(parse_technique(technique));
     if (opt->what == "sweep") {  // bad input is reported before looking for a GL context
-      opt->sweep.methods = opt->pipeline.methods;
+      opt->sweep.techniques = opt->pipeline.techniques;
       if (estimate->count() > 0) opt->sweep.estimate = parse_gpu_estimate(opt->estimate);
       if (repeats->count() > 0) opt->sweep.repeats = opt->repeats;
       if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
@@ -105,13 +105,13 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (repeats->count() > 0) opt->frontier.repeats = opt->repeats;
       if (truth_samples->count() > 0) opt->frontier.truth_samples = opt->pipeline.truth_samples;
       if (exact_up_to->count() > 0) opt->frontier.exact_up_to = opt->sweep.exact_up_to;
-      if (!opt->methods.empty()) opt->frontier.methods = opt->methods;
+      if (!opt->techniques.empty()) opt->frontier.techniques = opt->techniques;
       validate_frontier_setup(opt->frontier);
     } else if (opt->what == "cascades") {
       if (sizes->count() > 0) opt->cascades.sizes = opt->sizes;
       if (repeats->count() > 0) opt->cascades.repeats = opt->repeats;
       if (truth_samples->count() > 0) opt->cascades.truth_samples = opt->pipeline.truth_samples;
-      if (!opt->methods.empty()) opt->cascades.methods = opt->methods;
+      if (!opt->techniques.empty()) opt->cascades.techniques = opt->techniques;
       if (screen->count() > 0) opt->cascades.screen = opt->cache.screen;
       validate_cascades_bench_setup(opt->cascades);
     } else if (opt->what == "cache") {

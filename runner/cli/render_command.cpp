@@ -13,14 +13,14 @@ namespace pn::cli {
 
 void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto setup = std::make_shared<RenderSetup>();
-  auto methods = std::make_shared<std::vector<std::string>>();
+  auto techniques = std::make_shared<std::vector<std::string>>();
   auto stages = std::make_shared<bool>(false);
   auto frames = std::make_shared<FramesSetup>();
   auto* cmd = app.add_subcommand("render", "Render a scene with every technique, scored against the ray-traced truth and exact PCSS: PNGs, a labelled sheet, tables");
   auto* scene = cmd->add_option("--scene", setup->scene, "boxes | fence | tall_blocker | city (default boxes); with --frames: moving | moving_city (default moving)");
   cmd->add_option("--model", setup->model, "A mesh file (any format Assimp reads: glTF, OBJ, ...) placed on the ground instead of --scene");
   auto* source = cmd->add_option("--source", setup->source, "Shadow-map source: full | two-map | dirty-rect (default full; with --frames dirty-rect)");
-  auto* frame_count = cmd->add_option("--frames", frames->frames, "Render this many frames of an animated scene with one technique (--methods, default fast): a lit image and a shadow map with the changed rectangles a frame, and the timing table");
+  auto* frame_count = cmd->add_option("--frames", frames->frames, "Render this many frames of an animated scene with one technique (--techniques, default fast): a lit image and a shadow map with the changed rectangles a frame, and the timing table");
   auto* k = cmd->add_option("--k", frames->k, "With --frames: share K of moving triangles, 0..1 (default 0.3)");
   auto* light_scale = cmd->add_option("--light-scale", setup->light_scale, "Multiply the scene's light width by this (default 1): wider penumbrae");
   cmd->add_option("--map-size", setup->map_size, "Shadow-map size N (default 512; on cascades, each cascade's)");
@@ -28,7 +28,7 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--screen", setup->screen_size, "Screen size (default 512)");
   auto* truth_samples = cmd->add_option("--truth-samples", setup->truth_samples, "Ray-traced truth: S for S x S light samples per pixel (default 16)");
   auto* repeats = cmd->add_option("--repeats", setup->repeats, "Timed runs per technique, median reported (default 3)");
-  cmd->add_option("--methods", *methods, "Techniques (default exact,poisson,hqepcss,fast; any registry entry, with :key=value overrides)")
+  cmd->add_option("--techniques", *techniques, "Techniques (default exact,poisson,hqepcss,fast; any registry entry, with :key=value overrides)")
       ->delimiter(',');
   auto* stages_flag = cmd->add_flag("--stages", *stages, "Also print each technique's per-stage GPU times");
   cmd->add_option("--out", setup->out, "Directory for the PNG files (default render)");
@@ -37,15 +37,15 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   add_api_option(*cmd, global);
   // Options of the plain render that --frames does not read (issue 26 B18), and --frames's own.
   const std::vector<CLI::Option*> not_with_frames{light_scale, cascades, truth_samples, repeats, stages_flag};
-  cmd->callback([setup, methods, stages, frames, scene, source, frame_count, k, cascades, not_with_frames, &global,
+  cmd->callback([setup, techniques, stages, frames, scene, source, frame_count, k, cascades, not_with_frames, &global,
                  &exit_code] {
     if (frame_count->count() > 0) {
       for (const CLI::Option* option : not_with_frames)
         if (option->count() > 0) throw Error(option->get_name() + ": render --frames does not use it");
       if (scene->count() > 0) frames->scene = setup->scene;
       if (source->count() > 0) frames->source = setup->source;
-      if (methods->size() > 1) throw Error("render --frames: expected one method, got " + std::to_string(methods->size()));
-      if (methods->size() == 1) frames->method = parse_technique(methods->front());
+      if (techniques->size() > 1) throw Error("render --frames: expected one technique, got " + std::to_string(techniques->size()));
+      if (techniques->size() == 1) frames->technique = parse_technique(techniques->front());
       frames->model = setup->model;
       frames->map_size = setup->map_size;
       frames->screen_size = setup->screen_size;
@@ -65,8 +65,8 @@ void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       return;
     }
     if (k->count() > 0) throw Error("--k: render uses it only with --frames (the animated scene's moving share)");
-    if (!methods->empty()) require_list_length("methods", methods->size());
-    for (const std::string& spec : *methods) setup->methods.push_back(parse_technique(spec));
+    if (!techniques->empty()) require_list_length("techniques", techniques->size());
+    for (const std::string& technique : *techniques) setup->techniques.push_back(parse_technique(technique));
     validate_render_setup(*setup);  // bad input is reported before looking for a GL context
     const Api api = chosen_api(global);  // an unknown API likewise
     const Scene scene = load_render_scene(*setup);  // and a bad model file before anything is written

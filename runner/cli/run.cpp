@@ -97,7 +97,7 @@ void read_numbers_as_decimal(CLI::App& app) {
 }
 
 // Issue 39 C16: a list option (or a flag) given twice is refused by name; CLI11 would merge
-// `--methods pcf --methods fast` into one list. (A repeated single-value option CLI11 refuses itself.)
+// `--techniques pcf --techniques fast` into one list. (A repeated single-value option CLI11 refuses itself.)
 void refuse_repeated_lists(CLI::App& app, int argc, char** argv) {
   if (argc < 2) return;
   CLI::App* command = nullptr;

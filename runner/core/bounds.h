@@ -8,7 +8,7 @@
 
 namespace pn {
 
-// The most entries a list option (sizes, leaf sizes, widths, scenes, methods) may hold:
+// The most entries a list option (sizes, leaf sizes, widths, scenes, techniques) may hold:
 // each entry is a whole measurement, so more is a typo, not a bench.
 inline constexpr size_t kMaxListEntries = 32;
 

@@ -27,7 +27,7 @@ const auto* find_named_or_null(const Range& entries, const std::string& name) {
 }
 
 // The entry called `name`; throws Error "<unknown>: expected one of <names>" when there is none
-// (`unknown` names the input, e.g. "unknown method 'slow'").
+// (`unknown` names the input, e.g. "unknown technique 'slow'").
 template <class Range>
 const auto& find_named(const Range& entries, const std::string& name, const std::string& unknown) {
   if (const auto* e = find_named_or_null(entries, name)) return *e;

@@ -197,7 +197,7 @@ void check_output_names(const fs::path& directory, const fs::path& existing, con
     const fs::path path = directory / name;
     if (static_cast<long>(name.size()) > most)
       throw Error("output '" + path.string() + "': its name has " + std::to_string(name.size()) +
-                  " bytes, expected at most " + std::to_string(most) + " (the file system's limit; use a shorter method name)");
+                  " bytes, expected at most " + std::to_string(most) + " (the file system's limit; use a shorter technique name)");
     if (fs::absolute(path).string().size() >= PATH_MAX)
       throw Error("output '" + path.string() + "': its path is longer than " + std::to_string(PATH_MAX - 1) + " bytes");
     std::error_code ec;

@@ -1,6 +1,6 @@
 // The layout the light-bleeding figures share (vsm_bleeding.png,
 // savsm_bleeding.png): the depth map and the exact PCF visibility, then each
-// method's visibility above its signed error against the exact PCF (red:
+// technique's visibility above its signed error against the exact PCF (red:
 // light that bleeds), an optional line under each, and the error's colour bar.
 #pragma once
 

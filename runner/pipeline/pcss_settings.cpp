@@ -11,7 +11,7 @@ namespace pn {
 
 void PcssSettings::validate() const {
   const auto bad = [&](const std::string& what, double v, const char* expected) {
-    return Error("method '" + name + "': " + what + " " + format_number("%g", v) + ": expected " + expected);
+    return Error("technique '" + name + "': " + what + " " + format_number("%g", v) + ": expected " + expected);
   };
   if (!std::isfinite(bias) || bias < 0) throw bad("bias", bias, "a finite number >= 0");
   if (!valid_filter_scale(filter_scale)) throw bad("filter scale", filter_scale, expected_filter_scale().c_str());
@@ -25,7 +25,7 @@ void PcssSettings::validate() const {
   const std::string grids = "0 (off) or 1.." + std::to_string(PN_GRID_MAX_CELLS);  // traversal.h's loop bound
   if (grid < 0 || grid > PN_GRID_MAX_CELLS) throw bad("grid", grid, grids.c_str());
   if (grid > 0 && structure != Structure::mip)
-    throw Error("method '" + name + "': grid: expected structure=mip (the grid reads the aligned min/max mip chain)");
+    throw Error("technique '" + name + "': grid: expected structure=mip (the grid reads the aligned min/max mip chain)");
   const std::string tiles = "0 (off) or 1.." + std::to_string(kReuseMaxTile);  // reuse.glsl
   if (search_tile < 0 || search_tile > kReuseMaxTile) throw bad("search reuse tile", search_tile, tiles.c_str());
   if (filter_tile < 0 || filter_tile > kReuseMaxTile) throw bad("filter reuse tile", filter_tile, tiles.c_str());
@@ -33,13 +33,13 @@ void PcssSettings::validate() const {
     if (!(s >= 0) || !std::isfinite(s)) throw bad("similarity bound", s, "a finite number >= 0");
   const bool vogel = blockers == Estimator::vogel || occlusion == Estimator::vogel;
   if (vogel && (blockers != occlusion || staged || one_call(*this) != OneCall::vogel))
-    throw Error("method '" + name + "': the Vogel disk runs only as its one call (pnVogelPcss): expected "
+    throw Error("technique '" + name + "': the Vogel disk runs only as its one call (pnVogelPcss): expected "
                 "blockers=vogel with occlusion=vogel, refine 0, no reuse, no blur, stages off");
   if (!std::isfinite(receiver_plane_tan) || receiver_plane_tan < 0)
     throw bad("receiver plane tangent", receiver_plane_tan, "0 (off) or a finite number > 0");
   const std::optional<OneCall> call = one_call(*this);
   if (receiver_plane_tan > 0 && (staged || !call))
-    throw Error("method '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
+    throw Error("technique '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
                 "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
@@ -50,7 +50,7 @@ void PcssSettings::validate() const {
   try {
     blur_params.validate();
   } catch (const Error& e) {
-    throw Error("method '" + name + "': " + e.what());
+    throw Error("technique '" + name + "': " + e.what());
   }
 }
 

@@ -21,7 +21,7 @@
 namespace pn {
 namespace {
 
-constexpr const char* kDefaultMethod = "fast";
+constexpr const char* kDefaultTechnique = "fast";
 // The map picture's grey scale: light depth 10 (black) to 21 (white, the ground at 20); +Inf white.
 constexpr float kDepthBlack = 10.0f, kDepthWhite = 21.0f;
 constexpr Rgb kChanged{220, 30, 30};
@@ -41,7 +41,7 @@ void validate_frames_setup(const FramesSetup& s) {
   find_shadow_map_source(s.source);
   if (s.map_size < 16 || s.map_size > 4096) throw Error("shadow-map size " + std::to_string(s.map_size) + ": expected 16..4096");
   if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
-  if (s.method) s.method->validate();
+  if (s.technique) s.technique->validate();
   validate_animated_scene_model(s.model);  // last: it reads the file
 }
 
@@ -64,7 +64,7 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
   const auto source = find_shadow_map_source(setup.source).make(context, tree, options);
   TechniqueResources resources(context, tree);
   const std::shared_ptr<const TechniqueConfig> config =
-      setup.method ? setup.method : std::shared_ptr<const TechniqueConfig>(parse_technique(kDefaultMethod));
+      setup.technique ? setup.technique : std::shared_ptr<const TechniqueConfig>(parse_technique(kDefaultTechnique));
   const std::unique_ptr<Technique> technique = config->create(resources);
   const GBufferRenderer gbuffers(context, tree);
   const SurfaceRenderer surfaces(context, tree);
@@ -72,7 +72,7 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
 
   create_output_directory(setup.out);
   FramesResult result;
-  result.method = config->name();
+  result.technique = config->name();
   std::ostringstream table;
   table << "frame\tmoving\tmap_ms\ttechnique_ms\tchanged\n";
   for (int f = 0; f < setup.frames; ++f) {
@@ -121,9 +121,9 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
 
 void print_frames_table(std::ostream& out, const FramesSetup& setup, const FramesResult& result) {
   out << "scene " << result.scene_name << ", K = " << format_number("%g", setup.k) << ", " << setup.frames
-      << " frames, source " << setup.source << ", shadow map " << setup.map_size << "², " << result.method << " at "
+      << " frames, source " << setup.source << ", shadow map " << setup.map_size << "², " << result.technique << " at "
       << setup.screen_size << "²; GPU ms\n";
-  out << "frame   moving    map ms   " << result.method << " ms   changed\n";
+  out << "frame   moving    map ms   " << result.technique << " ms   changed\n";
   for (const FrameRow& r : result.rows)
     out << format_number("%5.0f", r.frame) << format_number("%9.3f", r.moving_share) << format_number("%10.2f", r.map_ms)
         << format_number("%12.2f", r.technique_ms) << format_number("%9.1f", 100.0 * r.changed_share) << "%\n";

@@ -24,7 +24,7 @@ struct FramesSetup {
   double k = 0.3;                // the motion function's share of moving triangles
   int frames = 60;
   std::string source = "dirty-rect";
-  std::shared_ptr<const TechniqueConfig> method;  // null: Fast PCSS
+  std::shared_ptr<const TechniqueConfig> technique;  // null: Fast PCSS
   int map_size = 512;
   int screen_size = 512;
   std::filesystem::path out = "render";
@@ -38,12 +38,12 @@ struct FrameRow {
 };
 
 struct FramesResult {
-  std::string scene_name, method;
+  std::string scene_name, technique;
   std::vector<FrameRow> rows;
   std::vector<std::filesystem::path> written;
 };
 
-// Throws Error naming the first bad setting (scene, K, frames 1..1000, source, sizes 16..4096, method).
+// Throws Error naming the first bad setting (scene, K, frames 1..1000, source, sizes 16..4096, technique).
 void validate_frames_setup(const FramesSetup& setup);
 
 // The names run_frames writes into `setup.out` (each frame's picture and map, the table), for

@@ -71,7 +71,7 @@ Image difference(const Image& observed, const Image& reference) {
   return out;
 }
 
-// A method's name as a file name: overrides "fast:leaf=4" become "fast_leaf-4".
+// A technique's name as a file name: overrides "fast:leaf=4" become "fast_leaf-4".
 std::string file_stem(std::string name) {
   for (char& c : name)
     if (c == ':') c = '_';
@@ -86,7 +86,7 @@ std::string score_label(const char* what, const std::optional<Scores>& s) {
   return text;
 }
 
-// The sheet: a column per picture (the truth, then every method), rows lit
+// The sheet: a column per picture (the truth, then every technique), rows lit
 // image, soft-shadow map and signed error against the truth, each column
 // headed by its name and its light-facing SSIM / MAE against the truth and
 // exact PCSS.
@@ -150,7 +150,7 @@ void validate_render_setup(const RenderSetup& s) {
   if (s.screen_size < 16 || s.screen_size > 4096) throw Error("screen size " + std::to_string(s.screen_size) + ": expected 16..4096");
   if (s.truth_samples < 1 || s.truth_samples > 64) throw Error("truth samples " + std::to_string(s.truth_samples) + ": expected 1..64 per side");
   if (s.repeats < 1 || s.repeats > 100) throw Error("repeats " + std::to_string(s.repeats) + ": expected 1..100");
-  for (const auto& m : s.methods) m->validate();
+  for (const auto& m : s.techniques) m->validate();
 }
 
 Scene load_render_scene(const RenderSetup& s) {
@@ -181,7 +181,7 @@ std::vector<std::string> render_output_names(const RenderSetup& setup, const Sce
   std::vector<std::unique_ptr<TechniqueConfig>> own;
   std::vector<std::string> names{render_file_name(scene.name, "truth_shadow"), render_file_name(scene.name, "truth_lit")};
   const bool cascaded = scene.sun && setup.cascades > 0;
-  for (const TechniqueConfig* t : chosen_or_default_techniques(setup.methods, render_techniques(), own)) {
+  for (const TechniqueConfig* t : chosen_or_default_techniques(setup.techniques, render_techniques(), own)) {
     const std::string stem = file_stem(t->name());
     for (const char* kind : {"_shadow", "_lit", "_error"}) names.push_back(render_file_name(scene.name, stem + kind));
     if (cascaded) names.push_back(render_file_name(scene.name, stem + "_cascades"));
@@ -205,7 +205,7 @@ RenderResult run_render(const Context& context, const SourceTree& tree, const Re
     cascades.map_size = setup.map_size;
     cs.cascades = cascades;
   }
-  cs.techniques = chosen_or_default_techniques(setup.methods, render_techniques(), own);
+  cs.techniques = chosen_or_default_techniques(setup.techniques, render_techniques(), own);
   RenderResult result;
   result.scene_name = scene.name;
   result.comparison = compare_techniques(context, tree, scene, cs);

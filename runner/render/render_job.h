@@ -29,7 +29,7 @@ struct RenderSetup {
   int truth_samples = 16;  // per side of the truth's S×S light samples
   int repeats = 3;         // timed runs per technique (the median is reported)
   int cascades = 3;        // a scene lit by the sun: its cascades (1..4; 0: one map over the whole scene), each map_size²
-  std::vector<std::shared_ptr<const TechniqueConfig>> methods;  // empty: render_techniques()
+  std::vector<std::shared_ptr<const TechniqueConfig>> techniques;  // empty: render_techniques()
   std::filesystem::path out = "render";
 };
 
@@ -40,7 +40,7 @@ struct RenderResult {
 };
 
 // Throws Error naming the first setting out of range (scene, source, light scale, sizes, samples,
-// repeats, cascades, methods).
+// repeats, cascades, techniques).
 void validate_render_setup(const RenderSetup& setup);
 
 // Creates `out` (and its parents); throws Error naming it when it cannot.
@@ -61,7 +61,7 @@ std::vector<std::string> render_output_names(const RenderSetup& setup, const Sce
 // Throws Error for an invalid setup (before writing anything).
 RenderResult run_render(const Context& context, const SourceTree& tree, const RenderSetup& setup, const Scene& scene);
 
-// `stages`: also each method's per-stage GPU times.
+// `stages`: also each technique's per-stage GPU times.
 void print_render_table(std::ostream& out, const RenderSetup& setup, const RenderResult& result, bool stages);
 
 }  // namespace pn

@@ -33,7 +33,7 @@ struct BackprojectionSettings {
 
   int side() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(samples)))); }
   void validate() const {
-    const auto bad = [&](const std::string& what) { return Error("method '" + name + "': " + what); };
+    const auto bad = [&](const std::string& what) { return Error("technique '" + name + "': " + what); };
     if (!std::isfinite(bias) || bias < 0.0f) throw bad("bias " + format_number("%g", bias) + ": expected a finite number >= 0");
     if (samples != 16 && samples != 64 && samples != 256)
       throw bad("samples " + std::to_string(samples) + ": expected 16, 64 or 256");
@@ -64,7 +64,7 @@ class BackprojectionTechnique : public Technique {
 
   TechniqueFrame run(const TechniqueInputs& inputs, bool) const override {
     if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
-      throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
+      throw Error("technique '" + settings_.name + "': needs a shadow map and a G-buffer");
     const int n = inputs.light.map_size;
     const std::unique_ptr<StageTimes> clock = device_->stage_clock();
     clock->start();

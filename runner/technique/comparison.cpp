@@ -46,7 +46,7 @@ const TechniqueResult* Comparison::find(const std::string& name) const {
 
 Comparison compare_techniques(const Context& context, const SourceTree& tree, const Scene& scene,
                               const ComparisonSetup& setup) {
-  if (setup.techniques.empty()) throw Error("no methods to compare");
+  if (setup.techniques.empty()) throw Error("no techniques to compare");
   const int size = setup.screen_size;
   const bool cascaded = scene.sun && setup.cascades;
   if (cascaded && setup.source != "full")
@@ -152,7 +152,7 @@ void print_score_tables(std::ostream& out, const Comparison& c) {
   for (const TechniqueResult& r : c.results) names.push_back(r.name);
   const int kName = name_column_width(names);
   out << "light-facing pixels (N.L > 0):\n"
-      << std::left << std::setw(kName) << "method" << std::right << std::setw(10) << "GPU ms" << std::setw(11)
+      << std::left << std::setw(kName) << "technique" << std::right << std::setw(10) << "GPU ms" << std::setw(11)
       << "SSIM truth" << std::setw(10) << "MAE truth" << std::setw(11) << "SSIM exact" << std::setw(10)
       << "MAE exact" << "   stats\n";
   for (const TechniqueResult& r : c.results) {
@@ -171,7 +171,7 @@ void print_score_tables(std::ostream& out, const Comparison& c) {
   out << "   CPU " << std::setprecision(0) << c.truth_ms << " ms\n";
 
   out << "whole soft-shadow map | lit image:\n"
-      << std::left << std::setw(kName) << "method" << std::right;
+      << std::left << std::setw(kName) << "technique" << std::right;
   for (int i = 0; i < 2; ++i)
     out << std::setw(11) << "SSIM truth" << std::setw(10) << "MAE truth" << std::setw(11) << "SSIM exact"
         << std::setw(10) << "MAE exact";

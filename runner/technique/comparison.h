@@ -67,7 +67,7 @@ namespace pn {
 // against exact PCSS. "-" where exact PCSS did not run.
 void print_score_tables(std::ostream& out, const Comparison& comparison);
 
-// The width of a table's method column: the longest of `names` and the truth's row, and a gap.
+// The width of a table's technique column: the longest of `names` and the truth's row, and a gap.
 int name_column_width(const std::vector<std::string>& names);
 
 }  // namespace pn

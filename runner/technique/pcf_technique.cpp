@@ -20,7 +20,7 @@ struct PcfTechniqueSettings {
 
   void validate() const {
     if (!std::isfinite(bias) || bias < 0.0f)
-      throw Error("method '" + name + "': bias " + format_number("%g", bias) + ": expected a finite number >= 0");
+      throw Error("technique '" + name + "': bias " + format_number("%g", bias) + ": expected a finite number >= 0");
   }
 };
 
@@ -31,7 +31,7 @@ class PcfTechnique : public Technique {
 
   TechniqueFrame run(const TechniqueInputs& inputs, bool with_stats) const override {
     if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
-      throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
+      throw Error("technique '" + settings_.name + "': needs a shadow map and a G-buffer");
     const int size = inputs.screen_size;
     const std::unique_ptr<StageTimes> clock = device_->stage_clock();
     clock->start();

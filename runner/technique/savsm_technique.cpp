@@ -13,7 +13,7 @@ void SavsmTechniqueSettings::validate() const {
   try {
     savsm.validate();
   } catch (const Error& e) {
-    throw Error("method '" + name + "': " + e.what());
+    throw Error("technique '" + name + "': " + e.what());
   }
 }
 
@@ -58,7 +58,7 @@ SavsmPasses::SavsmPasses(const QueryDevice& device, const SourceTree& tree)
 
 TechniqueFrame SavsmTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
   if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
-    throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
+    throw Error("technique '" + settings_.name + "': needs a shadow map and a G-buffer");
   const int n = inputs.light.map_size;
   const std::unique_ptr<StageTimes> clock = device_->stage_clock();
   clock->start();

@@ -22,7 +22,7 @@ struct SavsmTechniqueSettings {
   SavsmSettings savsm;
   MomentsTableKind table = MomentsTableKind::fixed;
 
-  void validate() const;  // throws Error naming the method, the setting and its range
+  void validate() const;  // throws Error naming the technique, the setting and its range
 };
 
 // The override keys: bias, scale, min-variance, bleeding, blocker (table|min), bound (on|off),

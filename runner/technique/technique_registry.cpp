@@ -78,17 +78,17 @@ const std::vector<TechniqueEntry>& technique_registry() {
   return entries;
 }
 
-std::unique_ptr<TechniqueConfig> parse_technique(const std::string& spec) {
-  size_t colon = spec.find(':');
-  const std::string name = spec.substr(0, colon);
+std::unique_ptr<TechniqueConfig> parse_technique(const std::string& technique) {
+  size_t colon = technique.find(':');
+  const std::string name = technique.substr(0, colon);
   std::unique_ptr<TechniqueConfig> config =
-      find_named(technique_registry(), name, "unknown method '" + name + "'").make();
-  config->rename(spec);
+      find_named(technique_registry(), name, "unknown technique '" + name + "'").make();
+  config->rename(technique);
   while (colon != std::string::npos) {
-    const size_t next = spec.find(':', colon + 1);
-    const std::string item = spec.substr(colon + 1, next == std::string::npos ? std::string::npos : next - colon - 1);
+    const size_t next = technique.find(':', colon + 1);
+    const std::string item = technique.substr(colon + 1, next == std::string::npos ? std::string::npos : next - colon - 1);
     const size_t equals = item.find('=');
-    if (equals == std::string::npos) throw Error("method '" + spec + "': '" + item + "': expected key=value");
+    if (equals == std::string::npos) throw Error("technique '" + technique + "': '" + item + "': expected key=value");
     config->set(item.substr(0, equals), item.substr(equals + 1));
     colon = next;
   }
@@ -102,7 +102,7 @@ std::vector<const TechniqueConfig*> chosen_or_default_techniques(
   std::vector<const TechniqueConfig*> out;
   for (const auto& c : chosen) out.push_back(c.get());
   if (!out.empty()) return out;
-  for (const std::string& spec : defaults) parsed.push_back(parse_technique(spec));
+  for (const std::string& technique : defaults) parsed.push_back(parse_technique(technique));
   for (const auto& c : parsed) out.push_back(c.get());
   return out;
 }

@@ -21,10 +21,11 @@ struct TechniqueEntry {
 // In the order of every table.
 const std::vector<TechniqueEntry>& technique_registry();
 
-// "name" or "name:key=value:key=value" (keys: the entry's own). Validated.
-// Throws Error naming the spec: an unknown name (listing the known ones), a
+// A technique as the command line names it, "name" or "name:key=value:key=value" (keys: the
+// entry's own), parsed into its TechniqueConfig (whose name() it stays) and validated.
+// Throws Error naming the technique: an unknown name (listing the known ones), a
 // malformed item, an unknown key or a value out of range.
-std::unique_ptr<TechniqueConfig> parse_technique(const std::string& spec);
+std::unique_ptr<TechniqueConfig> parse_technique(const std::string& technique);
 
 // The techniques a command runs: `chosen` when the user gave any, else `defaults` parsed into
 // `parsed`, which owns them for as long as the returned pointers are used.

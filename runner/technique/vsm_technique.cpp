@@ -23,11 +23,11 @@ int bound_levels(int radius) {
 
 void VsmTechniqueSettings::validate() const {
   if (!std::isfinite(bias) || bias < 0.0f)
-    throw Error("method '" + name + "': bias " + format_number("%g", bias) + ": expected a finite number >= 0");
+    throw Error("technique '" + name + "': bias " + format_number("%g", bias) + ": expected a finite number >= 0");
   try {
     params.validate();
   } catch (const Error& e) {
-    throw Error("method '" + name + "': " + e.what());
+    throw Error("technique '" + name + "': " + e.what());
   }
 }
 
@@ -64,7 +64,7 @@ VsmPasses::VsmPasses(const QueryDevice& device, const SourceTree& tree)
 
 TechniqueFrame VsmTechnique::run(const TechniqueInputs& inputs, bool with_stats) const {
   if (inputs.shadow_map == nullptr || inputs.gbuffer == nullptr)
-    throw Error("method '" + settings_.name + "': needs a shadow map and a G-buffer");
+    throw Error("technique '" + settings_.name + "': needs a shadow map and a G-buffer");
   const int n = inputs.light.map_size;
   VsmParams params = settings_.params;
   params.near_depth = static_cast<float>(inputs.light.near_plane);

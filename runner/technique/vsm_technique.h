@@ -19,7 +19,7 @@ struct VsmTechniqueSettings {
   VsmParams params;   // kind, blur (radius, sigma), min variance, reduction, exponents; the range comes from the light
   float bias = 0.02f;  // world units of light depth, as the PCSS family's default
 
-  void validate() const;  // throws Error naming the method, the setting and its range
+  void validate() const;  // throws Error naming the technique, the setting and its range
 };
 
 // The override keys: radius, sigma, bias, min-variance, bleeding, exponent, negative-exponent.

@@ -19,7 +19,7 @@ assert len(points) == 4, f"expected 4 points, found {len(points)}"
 for p in points:
     where = f"{p['scene']} x{p['width']:g}"
     assert any(r["on_frontier"] for r in p["rows"]), f"{where}: no row on the frontier"
-    fast = [r for r in p["rows"] if r["method"] == "fast"]
+    fast = [r for r in p["rows"] if r["technique"] == "fast"]
     assert fast and fast[0]["fetches_per_pixel"] is not None, f"{where}: fast has no fetch count"
     assert fast[0]["fetch_tile_max"] >= fast[0]["fetches_per_pixel"], f"{where}: tile max below the mean"
     # The GPU cost estimate (docs/isa.md): every row has one, and the estimate's frontier is marked.

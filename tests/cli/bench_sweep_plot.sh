@@ -8,7 +8,7 @@ penumbra=$1 plot=$2 work=$3
 here=$(dirname "$0")
 rm -rf "$work" && mkdir -p "$work" || exit 1
 sh "$here/gl_or_skip.sh" "$penumbra" "time growth from the first to the last factor: +poisson [0-9.]+x \(x1 -> x2\) +fast " \
-  bench sweep --sizes 32 --widths 1,2 --scenes tall_blocker --methods poisson,fast --repeats 1 --truth-samples 2 \
+  bench sweep --sizes 32 --widths 1,2 --scenes tall_blocker --techniques poisson,fast --repeats 1 --truth-samples 2 \
   --json "$work/sweep.json"
 status=$?
 [ "$status" -eq 0 ] || exit "$status"

@@ -15,7 +15,7 @@ case $? in 0) ;; 3) echo "SKIPPED: no GL context"; exit 77 ;; *) fail "info fail
 rm -rf "$scratch" && mkdir -p "$scratch" || fail "cannot make $scratch"
 out=$scratch/out
 run() {
-  "$penumbra" render --map-size 128 --screen 128 --truth-samples 4 --repeats 1 --methods pcf,fast --out "$out" \
+  "$penumbra" render --map-size 128 --screen 128 --truth-samples 4 --repeats 1 --techniques pcf,fast --out "$out" \
     >"$scratch/log" 2>&1
 }
 # FNV-1a 64 of a file, 16 hex digits, as the manifest writes it.

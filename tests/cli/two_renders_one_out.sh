@@ -10,7 +10,7 @@ fail() { printf 'two_renders_one_out: %s\n' "$1"; exit 1; }
 "$penumbra" info >/dev/null 2>&1
 case $? in 0) ;; 3) echo "SKIPPED: no GL context"; exit 77 ;; *) fail "info failed" ;; esac
 rm -rf "$scratch" && mkdir -p "$scratch" || fail "cannot make $scratch"
-args="render --map-size 64 --screen 64 --methods pcf,poisson --out $scratch/out"
+args="render --map-size 64 --screen 64 --techniques pcf,poisson --out $scratch/out"
 # shellcheck disable=SC2086  # the words of the command
 "$penumbra" $args >"$scratch/a.log" 2>&1 &
 a=$!

@@ -1,10 +1,10 @@
-// Fuzz target: the technique settings parser behind `--methods` (render and
-// bench): the comma-separated list that CLI11 splits, each spec
+// Fuzz target: the technique parser behind `--techniques` (render and
+// bench): the comma-separated list that CLI11 splits, each technique
 // "name[:key=value]..." through parse_technique (technique/technique_registry)
 // and set_pcss_setting / PcssSettings::validate (pipeline/pcss_settings).
 //
 // Input: the option's value, e.g. "exact,fast:leaf=4:refine=3". A pn::Error
-// (exit 2, one line) is the expected answer to a bad spec.
+// (exit 2, one line) is the expected answer to a bad technique.
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -19,16 +19,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   while (begin <= value.size()) {
     size_t end = value.find(',', begin);
     if (end == std::string::npos) end = value.size();
-    const std::string spec = value.substr(begin, end - begin);
+    const std::string technique = value.substr(begin, end - begin);
     try {
-      const std::unique_ptr<pn::TechniqueConfig> config = pn::parse_technique(spec);
-      // What render and bench do with an accepted spec before any GL: its name, a copy, its keys.
-      if (config->name() != spec) std::abort();
+      const std::unique_ptr<pn::TechniqueConfig> config = pn::parse_technique(technique);
+      // What render and bench do with an accepted technique before any GL: its name, a copy, its keys.
+      if (config->name() != technique) std::abort();
       const std::unique_ptr<pn::TechniqueConfig> copy = config->clone();
       copy->validate();
       (void)copy->keys();
     } catch (const pn::Error& e) {
-      if (std::string(e.what()).empty()) std::abort();  // an error names the spec
+      if (std::string(e.what()).empty()) std::abort();  // an error names the technique
     }
     begin = end + 1;
   }
