@@ -45,14 +45,6 @@ Scene frontier_scene(const std::string& name, int size, double width) {
   return scene;
 }
 
-std::string family_of(const std::string& technique) {
-  const std::string name = technique.substr(0, technique.find(':'));
-  for (const char* family : {"poisson", "vogel", "fast", "hqepcss", "savsm", "exact", "pcf", "backprojection"})
-    if (name.rfind(family, 0) == 0) return family;
-  if (name == "vsm" || name.rfind("evsm", 0) == 0) return "vsm";
-  return name;
-}
-
 std::optional<double> stat(const NamedValues& stats, const char* name) {
   for (const auto& [key, value] : stats)
     if (key == name) return value;
@@ -60,30 +52,13 @@ std::optional<double> stat(const NamedValues& stats, const char* name) {
 }
 
 bool scans_filter_region(const std::string& technique) {
-  const std::string family = family_of(technique);
+  const std::string family = technique_family(technique);
   return family == "exact" || family == "hqepcss";
 }
 
 std::string width_text(double w) { return "x" + format_number("%g", w); }
 
 }  // namespace
-
-std::vector<std::string> frontier_techniques() {
-  std::vector<std::string> out;
-  for (int n : {8, 16, 32, 64}) out.push_back(samples_technique("poisson", n));
-  out.push_back("poisson");  // the seeds' 36 / 64
-  for (int n : {8, 16, 32, 64, 128}) out.push_back(samples_technique("vogel", n));
-  out.push_back("vogel");  // 16 / 32
-  for (const char* s : {"fast", "fast:receiver-plane=1", "vogel:receiver-plane=1", "fast:grid=4", "fast:grid=2",
-                        "fast:leaf=4", "fast:leaf=8", "fast:leaf=32", "fast:leaf-divisor=8",
-                        "fast:leaf-divisor=16", "hqepcss", "savsm", "vsm", "evsm", "pcf", "exact"})
-    out.push_back(s);
-  // Back-projection: its light samples and the depth range a node may stand for as one patch.
-  for (const char* s : {"backprojection:samples=16", "backprojection:samples=64", "backprojection",
-                        "backprojection:tolerance=0.2"})
-    out.push_back(s);
-  return out;
-}
 
 FrontierBenchSetup quick_frontier_setup() {
   FrontierBenchSetup s;
@@ -171,7 +146,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
         p.scene = name, p.size = n, p.width = w;
         for (const TechniqueResult& r : result.results) {
           FrontierRow row;
-          row.technique = r.name, row.family = family_of(r.name);
+          row.technique = r.name, row.family = technique_family(r.name);
           row.ms = r.measurement.total_ms;
           row.ssim = r.vs_truth.light_facing.ssim, row.mae = r.vs_truth.light_facing.mae;
           row.bias = r.vs_truth.bias;
@@ -277,6 +252,13 @@ Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std:
       {"poisson", {31, 119, 180}}, {"vogel", {23, 190, 207}}, {"fast", {214, 39, 40}},  {"hqepcss", {148, 103, 189}},
       {"savsm", {44, 160, 44}},    {"vsm", {188, 189, 34}},   {"pcf", {127, 127, 127}}, {"exact", {140, 86, 75}},
       {"backprojection", {255, 127, 14}}};
+  // A family without a colour of its own (a technique added since) still gets its series, after these.
+  std::vector<std::pair<std::string, Rgb>> series_families = families;
+  const Rgb spare[] = {{227, 119, 194}, {0, 0, 128}, {128, 128, 0}, {0, 128, 128}};
+  for (const FrontierPoint& p : points)
+    for (const FrontierRow& r : p.rows)
+      if (std::none_of(series_families.begin(), series_families.end(), [&](const auto& f) { return f.first == r.family; }))
+        series_families.emplace_back(r.family, spare[(series_families.size() - families.size()) % std::size(spare)]);
   std::vector<ChartPanel> panels;
   int columns = 1;
   // The panels by measured time, then (with an estimate) the same by the estimate.
@@ -295,7 +277,7 @@ Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std:
         if ((by_estimate ? r.on_estimate_frontier : r.on_frontier) && time(r)) frontier.points.emplace_back(*time(r), r.mae);
       std::sort(frontier.points.begin(), frontier.points.end());
       panel.series.push_back(frontier);
-      for (const auto& [family, colour] : families) {
+      for (const auto& [family, colour] : series_families) {
         ChartSeries s{family, colour, false, {}};
         s.lines = false;
         for (const FrontierRow& r : p.rows)

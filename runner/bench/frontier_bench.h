@@ -36,15 +36,13 @@ struct FrontierBenchSetup {
   // Exact PCSS and HQEPCSS (their PCF reads every texel of the filter region, which grows as the
   // width²: at 512² ×8 one HQEPCSS frame takes about a minute on llvmpipe) only at factors <= this.
   double exact_up_to = 2.0;
-  std::vector<std::string> techniques;   // empty: frontier_techniques()
+  std::vector<std::string> techniques;   // empty: frontier_techniques() (the registry)
   std::optional<GpuEstimateSetup> estimate = GpuEstimateSetup{};  // none: no GPU cost estimate
 };
 
 inline constexpr int kFrontierCascades = 3;
 inline constexpr const char* kFrontierDefault = "fast";  // the configuration the frontier is asked about
 
-// Every configuration of the full run.
-std::vector<std::string> frontier_techniques();
 // `--quick`: boxes and the tall blocker at 128², widths 1 and 8, one round, 4² truth samples, and
 // a configuration of each technique family (short enough for CI).
 FrontierBenchSetup quick_frontier_setup();

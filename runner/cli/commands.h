@@ -30,6 +30,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_figures_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_poisson_command(CLI::App& app, int& exit_code);
 void add_sample_table_command(CLI::App& app, int& exit_code);
+void add_techniques_command(CLI::App& app, int& exit_code);
 void add_render_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code);
 

@@ -184,6 +184,7 @@ int run(int argc, char** argv) {
   pn::cli::add_figures_command(app, global, exit_code);
   pn::cli::add_poisson_command(app, exit_code);
   pn::cli::add_sample_table_command(app, exit_code);
+  pn::cli::add_techniques_command(app, exit_code);
   pn::cli::add_isa_command(app, global, exit_code);
   try {
     refuse_closed_standard_output();

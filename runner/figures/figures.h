@@ -1,4 +1,4 @@
-// The pictures in docs/modules/, drawn from what the modules compute on the
+// The pictures in docs/modules/ (and docs/cli.md's techniques), drawn from what the modules compute on the
 // GPU (not from the references), by `penumbra figures`.
 #pragma once
 
@@ -14,7 +14,7 @@ namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
 // traversal_nodes.png, reuse_groups.png, pipeline_stages.png, vsm_bleeding.png, savsm_bleeding.png,
-// cascades_splits.png and backprojection.png into `out`
+// cascades_splits.png, backprojection.png and techniques.png into `out`
 // (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
@@ -35,6 +35,10 @@ Canvas cascades_splits_figure();
 // The colour of a receiver's work in the node-count pictures: black through red and yellow to
 // white, by the square root of its share of the most work (0..1).
 Rgb node_heat(float share);
+
+// Every technique render draws by default (the registry's `rendered` entries) and the truth, on
+// the boxes scene at 128² (techniques_figure.cpp).
+Canvas techniques_figure(const Context& context, const SourceTree& tree);
 
 // pnBackprojection over a boxes map under the sun: the map, the visibility, the nodes visited
 // (backprojection_figure.cpp).

@@ -185,7 +185,7 @@ void print_score_tables(std::ostream& out, const Comparison& c) {
     out << "\n";
   };
   for (const TechniqueResult& r : c.results) row(r.name, r.vs_truth, r.vs_exact);
-  const Scores self{{1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}};
+  const Scores self{{1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}, {}};
   row(kTruthRow, self, c.truth_vs_exact);
   out.unsetf(std::ios::floatfield);
 }

@@ -11,15 +11,25 @@
 
 namespace pn {
 
+// One entry a technique or ablation. Where it shows up by default is part of the entry, so a new
+// technique left at these defaults is in render's sheet, bench's lists, the frontier, the
+// techniques figure and `penumbra techniques` (docs/cli.md's table) with no other line to write.
 struct TechniqueEntry {
   const char* name;
   const char* summary;
   std::unique_ptr<TechniqueConfig> (*make)();  // the entry's settings, named `name`
-  bool benched = true;  // in bench's default list (false: a check's construct, e.g. equal to another by design)
+  const char* family = nullptr;  // the technique it varies (frontier's colour and grouping); null: itself
+  bool rendered = true;          // in render's and bench sweep's default sheet, and the techniques figure
+  bool benched = true;  // in bench pipeline's default list (false: a check's construct, equal to another by design)
+  // Its points on bench frontier's default list: "" the entry itself, ":key=value…" a variant; none: {}.
+  std::vector<const char*> frontier = {""};
 };
 
 // In the order of every table.
 const std::vector<TechniqueEntry>& technique_registry();
+
+// The entry's family: `family`, or its own name. Throws Error for a name no entry has.
+std::string technique_family(const std::string& technique);
 
 // A technique as the command line names it, "name" or "name:key=value:key=value" (keys: the
 // entry's own), parsed into its TechniqueConfig (whose name() it stays) and validated.
@@ -33,9 +43,11 @@ std::vector<const TechniqueConfig*> chosen_or_default_techniques(
     const std::vector<std::shared_ptr<const TechniqueConfig>>& chosen, const std::vector<std::string>& defaults,
     std::vector<std::unique_ptr<TechniqueConfig>>& parsed);
 
-// What render draws by default, and what bench times by default.
+// The default lists, from the entries (registry order): what render draws, what bench
+// pipeline times, and bench frontier's points.
 std::vector<std::string> render_techniques();
 std::vector<std::string> bench_techniques();
+std::vector<std::string> frontier_techniques();
 
 // The techniques scores and speed-ups are measured against (same run).
 inline constexpr const char* kExactTechnique = "exact";
