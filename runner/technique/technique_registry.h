@@ -1,6 +1,5 @@
-// Every technique and ablation, found by name: one entry each. A new
-// technique is one module, one pass, one entry here and one check
-// (docs/architecture.md, "Adding a technique").
+// Every technique and ablation, found by name: one entry each, which also says where it runs
+// by default. The files a new technique takes: docs/architecture.md, "Adding a technique".
 #pragma once
 
 #include <memory>
