@@ -1,5 +1,5 @@
 // fast_pcss.h — Fast PCSS's shipped defaults (fast_pcss.glsl's
-// pnFastPcssDefaults), shared with the runner (runner/modules/fast_pcss.h:
+// pnFastPcssDefaults), shared with the runner (runner/modules/fast_pcss_face.h:
 // the `fast` technique's settings are these). Valid as GLSL and as C++:
 // only comments and guarded #defines.
 

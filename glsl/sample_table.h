@@ -1,5 +1,5 @@
 // sample_table.h — the constants that glsl/sample_table.glsl and the C++
-// runner share: the table's layout (runner/sampling/sample_table.h
+// runner share: the table's layout (runner/sampling/sample_table_generator.h
 // SampleTable::kColumns, kSets), which the runner generates and uploads.
 // Valid as GLSL and as C++: only comments and guarded #defines.
 

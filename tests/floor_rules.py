@@ -14,7 +14,8 @@ in docs/architecture.md ("Floors"), the one place the rules are written.
 An include resolves as the compiler's quoted form does for the runner: a path that
 exists under runner/ is that folder's file; one under glsl/ or fixtures/ (the headers
 GLSL and C++ share, the fixtures' data) is allowed from every floor; anything else is
-a system or library header.
+a system or library header. Every header name under runner/, glsl/, fixtures/, examples/, tests/
+and fuzz/ is unique too (issue 41: an include path names one file), or the check fails naming them.
 """
 import os
 import re
@@ -108,6 +109,19 @@ def check_includes(root, rules):
     return breaks, files
 
 
+def repeated_header_names(root):
+    """Header names that more than one file under the source folders has: with every name unique,
+    an include path ("modules/blur_face.h", "passes/blur_bindings.h", "vsm.h") names one file."""
+    seen = {}
+    for top in ('runner', 'glsl', 'fixtures', 'examples', 'tests', 'fuzz'):
+        for dirpath, _, names in os.walk(os.path.join(root, top)):
+            for name in names:
+                if name.endswith('.h'):
+                    seen.setdefault(name, []).append(os.path.relpath(os.path.join(dirpath, name), root))
+    return [f'{name}: {len(paths)} headers share the name ({", ".join(sorted(paths))}): rename one'
+            for name, paths in sorted(seen.items()) if len(paths) > 1]
+
+
 def run(root):
     try:
         rules = read_rules(root)
@@ -119,6 +133,8 @@ def run(root):
         print('\n'.join(problems))
         return 2
     breaks, files = check_includes(root, rules)
+    if os.path.isdir(os.path.join(root, 'glsl')):  # the broken copy holds runner/ alone
+        breaks += repeated_header_names(root)
     if breaks:
         print('\n'.join(breaks))
         print(f'floor rules: {len(breaks)} include(s) break the rules in {files} files')

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <set>
 
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 
 namespace {
 

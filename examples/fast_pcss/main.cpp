@@ -38,7 +38,7 @@
 #include "gl_util.h"
 #include "headless_gl.h"
 #include "interface.h"
-#include "model.h"
+#include "mesh_model.h"
 #include "png_file.h"
 #include "scene_setup.h"
 

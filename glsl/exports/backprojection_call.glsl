@@ -1,7 +1,7 @@
 // exports/backprojection_call.glsl — the call exports/backprojection.comp and .frag make:
 // pnBackprojection once per receiver of a receiver image (bindings: exports.h, backprojection.h).
 
-#include "backprojection.h"
+#include "backprojection_export.h"
 #include "backprojection.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

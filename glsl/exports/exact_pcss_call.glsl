@@ -1,7 +1,7 @@
 // exports/exact_pcss_call.glsl — the call exports/exact_pcss.comp and .frag make: each overload
 // of pnExactPcss once per receiver of a receiver image (bindings: exports.h, exact_pcss.h).
 
-#include "exact_pcss.h"
+#include "exact_pcss_export.h"
 #include "exact_pcss.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

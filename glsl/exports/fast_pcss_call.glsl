@@ -1,7 +1,7 @@
 // exports/fast_pcss_call.glsl — the call exports/fast_pcss.comp and .frag make: each overload of
 // pnFastPcss once per receiver of a receiver image (bindings: exports.h, fast_pcss.h).
 
-#include "fast_pcss.h"
+#include "fast_pcss_export.h"
 
 #ifdef PN_EXPORT_SUM_TABLE  // the exact blocker sums (PN_DEPTH_SUMS_TABLE): the check's exact case
 layout(binding = PN_EXPORT_SUM_TABLE_BINDING) uniform highp usampler2D pnDepthSums;

@@ -1,7 +1,7 @@
 // exports/hqepcss_call.glsl — the call exports/hqepcss.comp and .frag make: each overload of
 // pnHqepcss once per receiver of a receiver image (bindings: exports.h, hqepcss.h).
 
-#include "hqepcss.h"
+#include "hqepcss_export.h"
 #include "hqepcss.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

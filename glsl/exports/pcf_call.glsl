@@ -1,7 +1,7 @@
 // exports/pcf_call.glsl — the call exports/pcf.comp and .frag make: each overload of pnPcf once
 // per receiver of a receiver image (bindings: exports.h, pcf.h).
 
-#include "pcf.h"
+#include "pcf_export.h"
 #include "pcf.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

@@ -2,7 +2,7 @@
 // overload of pnPoissonPcss once per receiver of a receiver image (bindings: exports.h,
 // poisson_pcss.h; the disks read in place from the block, as poisson_pcss.glsl asks its includer).
 
-#include "poisson_pcss.h"
+#include "poisson_pcss_export.h"
 
 #define PN_POISSON_BLOCKER_DISK pnExport.blockerPoints
 #define PN_POISSON_FILTER_DISK pnExport.filterPoints

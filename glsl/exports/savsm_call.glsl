@@ -1,7 +1,7 @@
 // exports/savsm_call.glsl — the call exports/savsm.comp and .frag make: pnSavsm once per
 // receiver of a receiver image (bindings: exports.h, savsm.h).
 
-#include "savsm.h"
+#include "savsm_export.h"
 #include "savsm.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

@@ -2,7 +2,7 @@
 // of pnVogelPcss once per receiver of a receiver image, the pixel the receiver's texel
 // (bindings: exports.h, vogel_pcss.h).
 
-#include "vogel_pcss.h"
+#include "vogel_pcss_export.h"
 #include "vogel_pcss.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

@@ -1,7 +1,7 @@
 // exports/vsm_call.glsl — the calls exports/vsm.comp and .frag make: pnVsm, pnEvsm2 or pnEvsm4
 // (the block's kind) once per receiver of a receiver image (bindings: exports.h, vsm.h).
 
-#include "vsm.h"
+#include "vsm_export.h"
 #include "vsm.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

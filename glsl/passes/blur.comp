@@ -18,7 +18,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#include "blur.h"
+#include "blur_bindings.h"
 
 layout(binding = PN_BLUR_SOURCE_BINDING) uniform sampler2D pnBlurSource;
 layout(binding = PN_BLUR_DEPTH_BINDING) uniform sampler2D pnBlurDepth;

@@ -10,7 +10,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#include "depth_pyramid.h"
+#include "depth_pyramid_bindings.h"
 
 layout(binding = PN_PYRAMID_BUILD_MAP_BINDING) uniform sampler2D pnShadowMap;
 layout(binding = PN_PYRAMID_BUILD_READ_BINDING) uniform sampler2DArray pnPyramidRead;

@@ -5,7 +5,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#include "depth_pyramid.h"
+#include "depth_pyramid_bindings.h"
 
 layout(binding = PN_PYRAMID_QUERY_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
 layout(binding = PN_PYRAMID_QUERY_QUERIES_BINDING) uniform sampler2D pnQueries;

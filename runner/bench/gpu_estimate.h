@@ -16,7 +16,7 @@
 #include <optional>
 #include <ostream>
 
-#include "device/loop_census.h"
+#include "device/loop_census_record.h"
 #include "shader/source_tree.h"
 #include "technique/comparison.h"
 

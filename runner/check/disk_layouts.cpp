@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "modules/vogel_pcss.h"
+#include "modules/vogel_pcss_face.h"
 #include "vogel_pcss.h"
 
 namespace pn {

@@ -7,7 +7,7 @@
 
 #include "reference/disk_pcss_reference.h"
 #include "reference/vogel_pcss_reference.h"
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 
 namespace pn {
 

@@ -37,7 +37,7 @@
 #include "fixture_images/texture_fixture.h"
 #include "gl/std140.h"
 #include "hqepcss.h"
-#include "modules/vogel_pcss.h"
+#include "modules/vogel_pcss_face.h"
 #include "pass_runners/depth_pyramid_pass.h"
 #include "pass_runners/export_pass.h"
 #include "pass_runners/minmax_mip_pass.h"
@@ -52,20 +52,20 @@
 #include "reference/vogel_pcss_reference.h"
 #include "reference/vsm_reference.h"
 #include "sampling/poisson_disk.h"
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 #include "scene/light_block.h"
 #include "scene/scene.h"
 #include "scenes.h"
 
 namespace pn::glsl {
-#include "exports/exact_pcss.h"
-#include "exports/fast_pcss.h"
-#include "exports/hqepcss.h"
-#include "exports/pcf.h"
-#include "exports/poisson_pcss.h"
-#include "exports/vogel_pcss.h"
-#include "exports/backprojection.h"
-#include "exports/vsm.h"
+#include "exports/exact_pcss_export.h"
+#include "exports/fast_pcss_export.h"
+#include "exports/hqepcss_export.h"
+#include "exports/pcf_export.h"
+#include "exports/poisson_pcss_export.h"
+#include "exports/vogel_pcss_export.h"
+#include "exports/backprojection_export.h"
+#include "exports/vsm_export.h"
 PN_STD140_OFFSET(PnPoissonPcssExport, rotationSin, 44);
 PN_STD140_OFFSET(PnPoissonPcssExport, rotationFromAngle, 52);
 PN_STD140_OFFSET(PnPoissonPcssExport, blockerPoints, 64);

@@ -9,7 +9,7 @@
 
 #include "check/compare.h"
 #include "device/query_device.h"
-#include "modules/blur.h"
+#include "modules/blur_face.h"
 #include "shader/source_tree.h"
 
 namespace pn {

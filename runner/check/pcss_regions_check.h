@@ -8,7 +8,7 @@
 #pragma once
 
 #include "check/module_check.h"
-#include "modules/pcss_regions.h"
+#include "modules/pcss_regions_face.h"
 
 namespace pn {
 

@@ -59,7 +59,7 @@
 #include "reference/savsm_reference.h"
 
 namespace pn::glsl {
-#include "exports/savsm.h"
+#include "exports/savsm_export.h"
 PN_STD140_OFFSET(PnSavsmExport, unitScale, 52);
 }  // namespace pn::glsl
 

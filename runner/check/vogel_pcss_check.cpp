@@ -34,7 +34,7 @@
 #include "core/seeded_random.h"
 #include "fixture_images/texture_fixture.h"
 #include "gl/texture.h"
-#include "modules/vogel_pcss.h"
+#include "modules/vogel_pcss_face.h"
 #include "pass_runners/vogel_pcss_pass.h"
 #include "reference/vogel_pcss_reference.h"
 

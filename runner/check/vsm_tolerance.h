@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/image.h"
-#include "modules/vsm.h"
+#include "modules/vsm_face.h"
 
 namespace pn::vsm_tolerance {
 

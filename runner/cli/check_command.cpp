@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "gl/context.h"
-#include "modules/blur.h"
+#include "modules/blur_face.h"
 #include "vk/hlsl_root.h"
 #include "vk/vulkan_device.h"
 

@@ -2,7 +2,7 @@
 
 #include "cli/commands.h"
 #include "core/write_file.h"
-#include "modules/poisson_pcss.h"
+#include "modules/poisson_pcss_face.h"
 #include "sampling/poisson_disk.h"
 
 namespace pn::cli {

@@ -2,7 +2,7 @@
 
 #include "cli/commands.h"
 #include "core/write_file.h"
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 
 namespace pn::cli {
 

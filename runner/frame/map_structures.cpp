@@ -1,7 +1,7 @@
 #include "frame/map_structures.h"
 
 #include "core/error.h"
-#include "modules/depth_pyramid.h"
+#include "modules/depth_pyramid_face.h"
 
 namespace pn {
 

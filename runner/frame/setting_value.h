@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "modules/receiver_plane.h"
+#include "modules/receiver_plane_face.h"
 
 namespace pn {
 

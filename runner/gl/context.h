@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "device/loop_census.h"
+#include "device/loop_census_record.h"
 #include "device/query_device.h"
 #include "shader/loop_guard.h"
 

@@ -3,7 +3,7 @@
 // runner side includes its shared header inside that namespace,
 //
 //   namespace pn::glsl {
-//   #include "passes/blur.h"
+//   #include "passes/blur_bindings.h"
 //   }
 //
 // and static_asserts the block's size and member offsets (PN_STD140_*).

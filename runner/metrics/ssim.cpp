@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "modules/blur.h"
+#include "modules/blur_face.h"
 
 namespace pn {
 namespace {

@@ -7,7 +7,7 @@
 #include "gl/std140.h"
 
 namespace pn::glsl {
-#include "passes/blur.h"
+#include "passes/blur_bindings.h"
 PN_STD140_SIZE(PnBlurPassParams, 32);
 PN_STD140_OFFSET(PnBlurPassParams, radius, 8);
 PN_STD140_OFFSET(PnBlurPassParams, depthTolerance, 20);

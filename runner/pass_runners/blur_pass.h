@@ -8,7 +8,7 @@
 
 #include "device/program_variants.h"
 #include "device/query_device.h"
-#include "modules/blur.h"
+#include "modules/blur_face.h"
 #include "shader/source_tree.h"
 
 namespace pn {

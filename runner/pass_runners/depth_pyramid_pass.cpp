@@ -5,10 +5,10 @@
 
 #include "core/error.h"
 #include "gl/std140.h"
-#include "modules/depth_pyramid.h"
+#include "modules/depth_pyramid_face.h"
 
 namespace pn::glsl {
-#include "passes/depth_pyramid.h"
+#include "passes/depth_pyramid_bindings.h"
 PN_STD140_SIZE(PnPyramidBuildParams, 16);
 PN_STD140_OFFSET(PnPyramidBuildParams, level, 0);
 PN_STD140_OFFSET(PnPyramidBuildParams, texelCount, 8);

@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 #include "gl/std140.h"
-#include "modules/depth_pyramid.h"
+#include "modules/depth_pyramid_face.h"
 
 namespace pn::glsl {
 #include "passes/minmax_mip_build.h"

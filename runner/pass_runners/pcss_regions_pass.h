@@ -8,7 +8,7 @@
 
 #include "pass_runners/depth_pyramid_pass.h"
 #include "pass_runners/minmax_mip_pass.h"
-#include "modules/pcss_regions.h"
+#include "modules/pcss_regions_face.h"
 #include "pass_runners/query_pass.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"

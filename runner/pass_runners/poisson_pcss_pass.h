@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pass_runners/query_pass.h"
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 #include "shader/source_tree.h"
 
 namespace pn {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "device/query_device.h"
-#include "modules/reuse.h"
+#include "modules/reuse_face.h"
 #include "shader/source_tree.h"
 
 namespace pn {

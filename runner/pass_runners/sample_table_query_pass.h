@@ -6,7 +6,7 @@
 
 #include "core/image.h"
 #include "pass_runners/query_pass.h"
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 
 namespace pn {
 

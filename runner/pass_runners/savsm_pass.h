@@ -10,7 +10,7 @@
 #include "pass_runners/query_pass.h"
 #include "pass_runners/summed_area_pass.h"
 #include "core/texel_rect.h"
-#include "modules/savsm.h"
+#include "modules/savsm_face.h"
 #include "scene/light_model.h"
 #include "pass_runners/shade_pass.h"
 #include "shader/source_tree.h"

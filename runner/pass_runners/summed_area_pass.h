@@ -9,7 +9,7 @@
 
 #include "core/texel_rect.h"
 #include "device/query_device.h"
-#include "modules/summed_area.h"
+#include "modules/summed_area_face.h"
 #include "pass_runners/query_pass.h"
 #include "shader/source_tree.h"
 

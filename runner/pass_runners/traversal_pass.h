@@ -9,8 +9,8 @@
 #include "pass_runners/query_pass.h"
 #include "pass_runners/summed_area_pass.h"
 #include "core/texel_rect.h"
-#include "modules/traversal.h"
-#include "sampling/sample_table.h"
+#include "modules/traversal_face.h"
+#include "sampling/sample_table_generator.h"
 #include "shader/source_tree.h"
 
 namespace pn {

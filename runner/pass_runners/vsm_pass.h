@@ -9,7 +9,7 @@
 #include "core/query_grid.h"
 #include "pass_runners/blur_pass.h"
 #include "pass_runners/depth_pyramid_pass.h"
-#include "modules/vsm.h"
+#include "modules/vsm_face.h"
 #include "pass_runners/query_pass.h"
 #include "pass_runners/shade_pass.h"
 #include "shader/source_tree.h"

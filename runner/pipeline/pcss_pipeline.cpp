@@ -5,10 +5,10 @@
 
 #include "gl/std140.h"
 #include "pass_runners/traversal_pass.h"
-#include "modules/depth_pyramid.h"
-#include "modules/fast_pcss.h"
+#include "modules/depth_pyramid_face.h"
+#include "modules/fast_pcss_face.h"
 #include "sampling/poisson_disk.h"
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 #include "scene/light_block.h"
 
 namespace pn::glsl {

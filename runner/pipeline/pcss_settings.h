@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "modules/blur.h"
-#include "modules/fast_pcss.h"
-#include "modules/pcss_regions.h"
-#include "modules/poisson_pcss.h"
-#include "modules/receiver_plane.h"
-#include "modules/reuse.h"
-#include "modules/traversal.h"
-#include "modules/vogel_pcss.h"
+#include "modules/blur_face.h"
+#include "modules/fast_pcss_face.h"
+#include "modules/pcss_regions_face.h"
+#include "modules/poisson_pcss_face.h"
+#include "modules/receiver_plane_face.h"
+#include "modules/reuse_face.h"
+#include "modules/traversal_face.h"
+#include "modules/vogel_pcss_face.h"
 
 namespace pn {
 

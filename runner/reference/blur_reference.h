@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "modules/blur.h"
+#include "modules/blur_face.h"
 
 namespace pn {
 

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "core/image.h"
-#include "modules/depth_pyramid.h"
+#include "modules/depth_pyramid_face.h"
 
 namespace pn {
 

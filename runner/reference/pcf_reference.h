@@ -7,7 +7,7 @@
 
 #include "core/image.h"
 #include "core/texel_rect.h"
-#include "modules/pcf.h"
+#include "modules/pcf_face.h"
 
 namespace pn {
 

@@ -26,8 +26,8 @@
 
 #include "core/image.h"
 #include "core/texel_rect.h"
-#include "modules/pcss_regions.h"
-#include "modules/traversal.h"
+#include "modules/pcss_regions_face.h"
+#include "modules/traversal_face.h"
 #include "scene/light_model.h"
 
 namespace pn {

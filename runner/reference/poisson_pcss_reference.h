@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 
 namespace pn {
 

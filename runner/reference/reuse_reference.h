@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "modules/reuse.h"
+#include "modules/reuse_face.h"
 
 namespace pn {
 

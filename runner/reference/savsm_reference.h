@@ -8,7 +8,7 @@
 
 #include "core/image.h"
 #include "core/texel_rect.h"
-#include "modules/savsm.h"
+#include "modules/savsm_face.h"
 #include "reference/vsm_reference.h"        // DepthRange, chebyshev, reduce_bleeding
 #include "scene/light_model.h"
 

@@ -11,7 +11,7 @@
 
 #include "core/image.h"
 #include "core/texel_rect.h"
-#include "modules/summed_area.h"
+#include "modules/summed_area_face.h"
 
 namespace pn {
 

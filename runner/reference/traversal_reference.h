@@ -11,8 +11,8 @@
 
 #include "core/image.h"
 #include "core/texel_rect.h"
-#include "sampling/sample_table.h"
-#include "modules/traversal.h"
+#include "sampling/sample_table_generator.h"
+#include "modules/traversal_face.h"
 
 namespace pn {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "modules/vogel_pcss.h"
+#include "modules/vogel_pcss_face.h"
 #include "reference/disk_pcss_reference.h"
 
 namespace pn {

@@ -9,7 +9,7 @@
 #include <array>
 
 #include "core/image.h"
-#include "modules/vsm.h"
+#include "modules/vsm_face.h"
 #include "reference/blur_reference.h"
 
 namespace pn {

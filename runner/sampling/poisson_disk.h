@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 
 namespace pn {
 

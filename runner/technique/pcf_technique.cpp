@@ -6,7 +6,7 @@
 #include "frame/fetch_proxy.h"
 #include "frame/settings_config.h"
 #include "frame/setting_value.h"
-#include "modules/pcf.h"
+#include "modules/pcf_face.h"
 #include "pass_runners/pcf_pass.h"
 
 namespace pn {

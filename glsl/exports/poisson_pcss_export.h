@@ -1,4 +1,4 @@
-// poisson_pcss.h — the block of exports/poisson_pcss.comp and .frag, shared with the exports check
+// poisson_pcss_export.h — the block of exports/poisson_pcss.comp and .frag, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_POISSON_PCSS_H

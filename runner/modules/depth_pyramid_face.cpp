@@ -1,4 +1,4 @@
-#include "modules/depth_pyramid.h"
+#include "modules/depth_pyramid_face.h"
 
 #include <algorithm>
 #include <string>

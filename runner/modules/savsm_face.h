@@ -5,7 +5,7 @@
 
 #include <savsm.h>  // glsl/savsm.h: PN_SAVSM_*, shared with the shader
 
-#include "modules/vsm.h"  // PN_VSM_* defaults and the bleeding bound
+#include "modules/vsm_face.h"  // PN_VSM_* defaults and the bleeding bound
 
 namespace pn {
 

@@ -5,7 +5,7 @@
 
 #include <vsm.h>  // glsl/vsm.h: PN_VSM_*, PN_EVSM_*, shared with the shader
 
-#include "modules/blur.h"
+#include "modules/blur_face.h"
 
 namespace pn {
 

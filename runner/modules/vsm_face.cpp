@@ -1,4 +1,4 @@
-#include "modules/vsm.h"
+#include "modules/vsm_face.h"
 
 #include <cmath>
 #include <string>

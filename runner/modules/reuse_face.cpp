@@ -1,4 +1,4 @@
-#include "modules/reuse.h"
+#include "modules/reuse_face.h"
 
 #include <cmath>
 #include <string>

@@ -1,4 +1,4 @@
-// vogel_pcss.h — the block of exports/vogel_pcss.comp and .frag, shared with the exports check
+// vogel_pcss_export.h — the block of exports/vogel_pcss.comp and .frag, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_VOGEL_PCSS_H

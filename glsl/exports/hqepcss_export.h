@@ -1,4 +1,4 @@
-// hqepcss.h — the block of exports/hqepcss.comp, shared with the exports check
+// hqepcss_export.h — the block of exports/hqepcss.comp, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_HQEPCSS_H

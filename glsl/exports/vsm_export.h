@@ -1,4 +1,4 @@
-// vsm.h — the block of exports/vsm.comp and .frag, shared with the exports check
+// vsm_export.h — the block of exports/vsm.comp and .frag, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_VSM_H

@@ -1,4 +1,4 @@
-// backprojection.h — the block of exports/backprojection.comp and .frag, shared with the exports check
+// backprojection_export.h — the block of exports/backprojection.comp and .frag, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_BACKPROJECTION_H

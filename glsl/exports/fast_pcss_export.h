@@ -1,4 +1,4 @@
-// fast_pcss.h — the block of exports/fast_pcss.comp, shared with the exports check
+// fast_pcss_export.h — the block of exports/fast_pcss.comp, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_FAST_PCSS_H

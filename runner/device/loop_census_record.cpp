@@ -1,4 +1,4 @@
-#include "device/loop_census.h"
+#include "device/loop_census_record.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "sampling/sample_table.h"
+#include "sampling/sample_table_generator.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "modules/savsm.h"
+#include "modules/savsm_face.h"
 
 #include <cmath>
 #include <string>
 
 #include "core/error.h"
 #include "core/format.h"
-#include "modules/pcss_regions.h"
+#include "modules/pcss_regions_face.h"
 
 namespace pn {
 

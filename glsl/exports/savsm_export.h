@@ -1,4 +1,4 @@
-// savsm.h — the block of exports/savsm.comp and .frag, shared with the exports check
+// savsm_export.h — the block of exports/savsm.comp and .frag, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_SAVSM_H

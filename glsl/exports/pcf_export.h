@@ -1,4 +1,4 @@
-// pcf.h — the block of exports/pcf.comp, shared with the exports check
+// pcf_export.h — the block of exports/pcf.comp, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_PCF_H

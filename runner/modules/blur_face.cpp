@@ -1,4 +1,4 @@
-#include "modules/blur.h"
+#include "modules/blur_face.h"
 
 #include <cmath>
 #include <string>

@@ -1,4 +1,4 @@
-// depth_pyramid.h — what passes/depth_pyramid_build.comp, depth_pyramid_query.comp
+// depth_pyramid_bindings.h — what passes/depth_pyramid_build.comp, depth_pyramid_query.comp
 // and their runner side (runner/pass_runners/depth_pyramid_pass.cpp) share. Valid as
 // GLSL and as C++ (uniform_block.h).
 

@@ -1,4 +1,4 @@
-// exact_pcss.h — the block of exports/exact_pcss.comp, shared with the exports check
+// exact_pcss_export.h — the block of exports/exact_pcss.comp, shared with the exports check
 // (runner/check/exports_check.cpp). Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_EXPORTS_EXACT_PCSS_H

@@ -1,4 +1,4 @@
-// blur.h — what passes/blur.comp and its runner side (runner/pass_runners/blur_pass.cpp)
+// blur_bindings.h — what passes/blur.comp and its runner side (runner/pass_runners/blur_pass.cpp)
 // share: binding points and the parameter block. Valid as GLSL and as C++.
 
 #ifndef PENUMBRA_PASSES_BLUR_H
