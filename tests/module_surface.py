@@ -36,24 +36,26 @@ def line_of(text, offset):
     return text.count('\n', 0, offset) + 1
 
 
-def parameters(s, name_end):
-    """The parameter declarations of the definition whose '(' is at s[name_end - 1]."""
-    close = mutate.matching(s, name_end - 1, '(', ')')
-    return [p.strip() for p in s[name_end:close].split(',') if p.strip()]
-
-
-def check_module(rel, text):
-    breaks = []
-    header = mutate.use_names(text)
-    if header is None:
-        return breaks
-    s = mutate.blank(text)
-    defined = {}
+def definitions(text, s):
+    """[(name, offset of the name, its parameter declarations)] of the file's function definitions."""
+    out = []
     for name, _, open_, _ in mutate.definitions(text, s):
         start = s.rfind(name, 0, open_)
-        defined.setdefault(name, []).append(start)
-    for name, starts in defined.items():
-        where = f'{rel}:{line_of(text, starts[0])}'
+        close = mutate.matching(s, start + len(name), '(', ')')
+        params = [p.strip() for p in s[start + len(name) + 1:close].split(',') if p.strip()]
+        out.append((name, start, params))
+    return out
+
+
+def check_module(rel, text, header):
+    breaks = []
+    s = mutate.blank(text)
+    defs = definitions(text, s)
+    first = {}
+    for name, start, _ in defs:
+        first.setdefault(name, start)
+    for name, start in first.items():
+        where = f'{rel}:{line_of(text, start)}'
         if INTERNAL.match(name):
             if name in header:
                 breaks.append(f'{where}: the header names {name}, an internal (pn_): a public call is pn<Name>')
@@ -66,11 +68,9 @@ def check_module(rel, text):
             breaks.append(f'{where}: {name} is neither pn<Name> (public) nor pn_<name> (internal): '
                           'a module\'s names must not collide with an engine\'s')
     # Settings: no bias beside a settings struct; a struct with a bias has its Defaults(bias).
-    for name, _, open_, _ in mutate.definitions(text, s):
+    for name, start, params in defs:
         if name not in header:
             continue
-        start = s.rfind(name, 0, open_)
-        params = parameters(s, start + len(name) + 1)
         settings = [p for p in params if re.match(r'^(in\s+)?Pn\w*Settings\b', p)]
         biases = [p for p in params if re.match(r'^(in\s+)?float\s+bias$', p)]
         if settings and biases:
@@ -80,9 +80,7 @@ def check_module(rel, text):
         if not re.search(r'\bfloat\s+bias\s*;', m.group(2)):
             continue
         ctor = f'pn{m.group(1)}Defaults'
-        ok = any(name == ctor and parameters(s, s.rfind(name, 0, open_) + len(name) + 1) == ['float bias']
-                 for name, _, open_, _ in mutate.definitions(text, s)) and ctor in header
-        if not ok:
+        if ctor not in header or not any(name == ctor and params == ['float bias'] for name, _, params in defs):
             breaks.append(f'{rel}:{line_of(text, m.start())}: Pn{m.group(1)}Settings has a bias field but the module '
                           f'has no public {ctor}(float bias)')
     return breaks
@@ -95,9 +93,10 @@ def run(root):
         rel = os.path.relpath(path, root).replace(os.sep, '/')
         with open(path, encoding='utf-8') as f:
             text = f.read()
-        if mutate.use_names(text) is not None:
+        header = mutate.use_names(text)
+        if header is not None:
             modules += 1
-        breaks += check_module(rel, text)
+            breaks += check_module(rel, text, header)
     if breaks:
         print('\n'.join(breaks))
         print(f'module surface: {len(breaks)} break(s) in {modules} modules')

@@ -297,32 +297,33 @@ void receiver_cases(const Image& map, MomentsCache& moments, const LightModel& l
 void export_cases(const ExportPass& exported, const MomentsTable& table, const DeviceTexture& mip,
                   const std::vector<SavsmReceiver>& rs, const LightModel& light, const SavsmSettings& s,
                   const std::vector<SavsmQueryResult>& got, Cases& c) {
-  glsl::PnSavsmExport block{};
-  set_light_fields(block, light);
-  block.bias = s.bias, block.filterScale = s.filter_scale, block.minVariance = s.min_variance;
-  block.bleedingReduction = s.bleeding_reduction, block.blockerMode = static_cast<int>(s.blocker);
-  block.bound = s.bound ? 1 : 0, block.unitNear = table.range.offset, block.unitScale = table.range.scale;
+  const auto block_of = [&](const SavsmSettings& settings) {
+    glsl::PnSavsmExport b{};
+    set_light_fields(b, light);
+    b.bias = settings.bias, b.filterScale = settings.filter_scale, b.minVariance = settings.min_variance;
+    b.bleedingReduction = settings.bleeding_reduction, b.blockerMode = static_cast<int>(settings.blocker);
+    b.bound = settings.bound ? 1 : 0, b.unitNear = table.range.offset, b.unitScale = table.range.scale;
+    return b;
+  };
+  const glsl::PnSavsmExport block = block_of(s);
   std::vector<ExportReceiver> receivers;
   for (const SavsmReceiver& r : rs) receivers.push_back({r.u, r.v, r.depth, false, 0.0f, 0.0f});
+  const std::vector<QueryTexture> textures{{PN_EXPORT_MOMENT_TABLE_BINDING, *table.texture}, {PN_EXPORT_MIP_BINDING, mip}};
   for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
-    const std::vector<float> v = exported.run(stage, {{PN_EXPORT_MOMENT_TABLE_BINDING, *table.texture},
-                                                      {PN_EXPORT_MIP_BINDING, mip}},
-                                              receivers, query_block(block));
+    const std::vector<float> v = exported.run(stage, textures, receivers, query_block(block));
     for (std::size_t k = 0; k < rs.size(); ++k)
       c.exported.add(got[k].visibility, v[k], 0.0, static_cast<int>(k) % kGridWidth, static_cast<int>(k) / kGridWidth,
                      stage == ShadeStage::fragment ? 1 : 0);
   }
-  // pnSavsmDefaults(bias) (a filter scale <= 0 asks the export for it) = the header's values written out
-  // (layer 2).
-  glsl::PnSavsmExport defaults = block, header = block;
+  // pnSavsmDefaults(bias) (a filter scale <= 0 asks the export for it) = savsm.h's and vsm.h's
+  // values, which SavsmSettings' defaults read (layer 2).
+  glsl::PnSavsmExport defaults = block;
   defaults.filterScale = 0.0f, defaults.minVariance = -1.0f, defaults.bleedingReduction = -1.0f;
   defaults.blockerMode = -1, defaults.bound = -1;
-  header.filterScale = static_cast<float>(PN_SAVSM_FILTER_SCALE), header.minVariance = static_cast<float>(PN_VSM_MIN_VARIANCE);
-  header.bleedingReduction = static_cast<float>(PN_VSM_BLEEDING_REDUCTION), header.blockerMode = PN_SAVSM_DEFAULT_BLOCKER;
-  header.bound = PN_SAVSM_DEFAULT_BOUND;
-  const std::vector<QueryTexture> textures{{PN_EXPORT_MOMENT_TABLE_BINDING, *table.texture}, {PN_EXPORT_MIP_BINDING, mip}};
+  SavsmSettings shipped;
+  shipped.bias = s.bias;
   const std::vector<float> from_defaults = exported.run(ShadeStage::compute, textures, receivers, query_block(defaults));
-  const std::vector<float> from_header = exported.run(ShadeStage::compute, textures, receivers, query_block(header));
+  const std::vector<float> from_header = exported.run(ShadeStage::compute, textures, receivers, query_block(block_of(shipped)));
   for (std::size_t k = 0; k < rs.size(); ++k)
     c.exported.add(from_header[k], from_defaults[k], 0.0, static_cast<int>(k) % kGridWidth,
                    static_cast<int>(k) / kGridWidth, 2);

@@ -35,7 +35,7 @@ std::string techniques_text(bool markdown) {
     const auto same = std::find_if(key_sets.begin(), key_sets.end(), [&](const auto& s) { return s.first == keys; });
     if (same != key_sets.end()) keys = "as `" + same->second + "`";  // one long list once, not 20 times
     else key_sets.emplace_back(keys, e.name);
-    const std::string family = technique_family(e.name);
+    const std::string family = e.family_name();
     if (markdown)
       out << "| `" << e.name << "` | " << family << " | " << defaults_of(e) << " | " << (keys.empty() ? "—" : keys)
           << " | " << e.summary << " |\n";

@@ -139,8 +139,7 @@ std::vector<const TechniqueConfig*> chosen_or_default_techniques(
 }
 
 std::string technique_family(const std::string& technique) {
-  const TechniqueEntry& e = entry_of(technique);
-  return e.family ? e.family : e.name;
+  return entry_of(technique).family_name();
 }
 
 std::vector<std::string> render_techniques() {

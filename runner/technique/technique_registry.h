@@ -22,12 +22,14 @@ struct TechniqueEntry {
   bool benched = true;  // in bench pipeline's default list (false: a check's construct, equal to another by design)
   // Its points on bench frontier's default list: "" the entry itself, ":key=value…" a variant; none: {}.
   std::vector<const char*> frontier = {""};
+
+  std::string family_name() const { return family ? family : name; }
 };
 
 // In the order of every table.
 const std::vector<TechniqueEntry>& technique_registry();
 
-// The entry's family: `family`, or its own name. Throws Error for a name no entry has.
+// The family of a technique's entry (TechniqueEntry::family_name). Throws Error for a name no entry has.
 std::string technique_family(const std::string& technique);
 
 // A technique as the command line names it, "name" or "name:key=value:key=value" (keys: the
