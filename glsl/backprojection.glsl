@@ -43,6 +43,15 @@
 //   With tolerance 0 and neither bound reached, the result is the fraction of
 //   the same samples whose ray to the receiver crosses the map's surface —
 //   exactly (runner/reference/backprojection_reference.cpp).
+//   A second layer (issue 42; Bavoil, Callahan & Silva 2008) says how thick
+//   each blocker is: `secondLayer`, N×N linear light depth of the nearest
+//   surface behind the first (depth peeling: passes/shadow_depth_peel.frag),
+//   makes texel (i, j) a slab, solid from d down to its second depth d2 — its
+//   patch at d and all four walls from d down to min(d2, dP - bias). The gap
+//   and thickness rules are then only the fallback of the calls without the
+//   layer (and of the nodes standing as one patch, which read the chain
+//   alone). With tolerance 0 the result is the fraction of the samples whose
+//   ray meets a slab — exactly (backprojection_slab_reference.cpp).
 //
 // use:
 //   PnBackprojectionSettings { float bias; int side; float tolerance; int budget; float gap; float thickness; }
@@ -55,6 +64,11 @@
 //   PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver,
 //         PnBackprojectionSettings s)   the same with its work: (visibility, blocked samples,
 //         nodes visited, patches that stood for nodes)
+//   float pnBackprojection(sampler2D mip, sampler2D secondLayer, PnLight light, vec3 receiver,
+//         PnBackprojectionSettings s)   the same over slabs: secondLayer, N×N (texelFetch, level 0),
+//         the linear light depth of the surface behind the map's (+Inf: solid down to the receiver)
+//   PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondLayer, PnLight light,
+//         vec3 receiver, PnBackprojectionSettings s)   its work
 //   vec2 pnBackprojectionSample(int k, int side)   light sample k, in [-1/2, 1/2]²
 //
 // cost: per node visited one fetch, per texel four more (its neighbours); per
@@ -300,7 +314,31 @@ ivec3 pn_backprojectionNext(ivec3 node, int top) {
                          : ivec3(up.x, up.y - 1, up.z + 1);  // (1, 0) -> (0, 1)
 }
 
-PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+// Texel q (depth d; lo, hi: its square relative to the receiver) as a slab, solid from d down to
+// its depth in the second layer: its patch at d and its four walls from d down to that depth,
+// clipped to what lies in front of the receiver (dP - bias). A ray that meets the slab leaves it
+// through its top or a wall (it rises toward the light), so these five faces decide it exactly. A
+// second depth that is not past d (NaN, or nearer) leaves the patch alone; +Inf (nothing behind
+// the first surface) makes the texel solid down to the receiver. Returns the loop iterations spent.
+int pn_backprojectSlab(sampler2D secondLayer, PnLight light, vec3 receiver, float bias, ivec2 q, float d, vec2 lo,
+                       vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  float window = pnLightBlockerWindowTexels(light, receiver.z, d);
+  pn_backprojectPatch(lo, hi, window, side, mask);
+  float back = texelFetch(secondLayer, q, 0).x;
+  float bottom = back > d ? min(back, receiver.z - bias) : d;
+  if (!(bottom > d)) return 0;
+  float near = pnLightBlockerWindowTexels(light, receiver.z, bottom);
+  int spent = pn_backprojectWall(0, hi.x, lo.y, hi.y, near, window, side, mask);
+  spent += pn_backprojectWall(0, lo.x, lo.y, hi.y, near, window, side, mask);
+  spent += pn_backprojectWall(1, hi.y, lo.x, hi.x, near, window, side, mask);
+  spent += pn_backprojectWall(1, lo.y, lo.x, hi.x, near, window, side, mask);
+  return spent;
+}
+
+// The walk of both calls: texels as the gap rule's surface (slabs false; secondLayer unread), or
+// as slabs down to secondLayer.
+PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondLayer, bool slabs, PnLight light, vec3 receiver,
+                                       PnBackprojectionSettings s) {
   float bias = s.bias;
   PnBackprojection result = PnBackprojection(1.0, 0.0, 0.0, 0.0);
   int side = clamp(s.side, PN_BACKPROJECTION_MIN_SIDE, PN_BACKPROJECTION_MAX_SIDE);
@@ -327,7 +365,9 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
       int size = 1 << node.x;
       vec2 lo = vec2(node.yz * size) - receiver.xy, hi = lo + float(size);
       bool within = !(any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach))));
-      if (within && node.x == 0) {
+      if (within && node.x == 0 && slabs) {
+        work += pn_backprojectSlab(secondLayer, light, receiver, bias, node.yz, range.x, lo, hi, side, mask);
+      } else if (within && node.x == 0) {
         work += pn_backprojectNode(mip, light, receiver, bias, s.gap, s.thickness, 0, node.yz, range.x, lo, hi, side, mask);
       } else if (within) {
         resolve = visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&
@@ -352,8 +392,21 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
   return result;
 }
 
+PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+  return pn_backprojectionWalk(mip, mip, false, light, receiver, s);
+}
+
+PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondLayer, PnLight light, vec3 receiver,
+                                      PnBackprojectionSettings s) {
+  return pn_backprojectionWalk(mip, secondLayer, true, light, receiver, s);
+}
+
 float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
   return pnBackprojectionWork(mip, light, receiver, s).visibility;
+}
+
+float pnBackprojection(sampler2D mip, sampler2D secondLayer, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+  return pnBackprojectionWork(mip, secondLayer, light, receiver, s).visibility;
 }
 
 #endif  // PENUMBRA_BACKPROJECTION_GLSL

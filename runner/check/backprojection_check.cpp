@@ -14,7 +14,12 @@
 // - the defaults (nodes of a tight depth range as one patch, the budget):
 //   within the stated bound of the exact visibility;
 // - a budget of 16 nodes: finite, in [0, 1], at most budget + stack nodes —
-//   the rest estimated, never dropped.
+//   the rest estimated, never dropped;
+// - two layers (issue 42, the overload with the second layer): every scene's
+//   map with its peeled layer, the scene's light and 4 times as wide, and the
+//   sun over the random height field with a random second layer (thick,
+//   +Inf, NaN, nearer than the first) — exactly the CPU's rays against the
+//   slabs.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,6 +33,7 @@
 #include "core/seeded_random.h"
 #include "pass_runners/backprojection_pass.h"
 #include "pass_runners/minmax_mip_pass.h"
+#include "pass_runners/shadow_map_pass.h"
 #include "reference/backprojection_reference.h"
 #include "scene/scene.h"
 #include "scenes.h"
@@ -36,6 +42,9 @@ namespace pn {
 namespace {
 
 constexpr int kMap = 64, kScreen = 32;  // the reference is brute force: N² texels × samples a receiver
+// The fence's rails and posts are 0.1 and 0.12 wide: a 64² map over its 20-unit ground (texels
+// 0.3 wide) sees neither, and every receiver would be lit. At 256² the map holds them.
+constexpr int kFenceMap = 256;
 constexpr float kBias = 0.02f;
 // The defaults' patches against the exact visibility: mean and largest difference allowed
 // (measured on these scenes: docs/modules/backprojection.md).
@@ -62,15 +71,18 @@ Receivers gbuffer_receivers(const Image& gbuffer, int side, float tolerance, int
   return r;
 }
 
-// The GPU's visibilities inside the reference's intervals (exact but for the ambiguous samples).
+// The GPU's visibilities inside the reference's intervals (exact but for the ambiguous samples):
+// the rays through the map's surface, or with `second` (the second layer), against its slabs.
 CaseResult exact_case(const std::string& name, const Image& map, const LightModel& light,
-                      const std::vector<BackprojectionQuery>& queries, const std::vector<BackprojectionResult>& got) {
+                      const std::vector<BackprojectionQuery>& queries, const std::vector<BackprojectionResult>& got,
+                      const Image* second = nullptr) {
   BoundedElements elements;
   int ambiguous = 0, umbra = 0, penumbra = 0;
   for (size_t k = 0; k < queries.size(); ++k) {
     const BackprojectionQuery& q = queries[k];
-    const BackprojectionBounds b = backprojection_reference(map, light, q.u, q.v, q.depth, q.bias, q.side, q.gap,
-                                                             q.thickness);
+    const BackprojectionBounds b =
+        second != nullptr ? backprojection_slab_reference(map, *second, light, q.u, q.v, q.depth, q.bias, q.side)
+                          : backprojection_reference(map, light, q.u, q.v, q.depth, q.bias, q.side, q.gap, q.thickness);
     ambiguous += b.ambiguous;
     umbra += b.visibility_hi == 0.0 ? 1 : 0;
     penumbra += b.visibility_hi > 0.0 && b.visibility_lo < 1.0 ? 1 : 0;
@@ -89,16 +101,18 @@ CaseResult exact_case(const std::string& name, const Image& map, const LightMode
 std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
   const BackprojectionQueryPass pass(env.device, env.tree);
   const MinMaxMipBuilder mips(env.device, env.tree);
+  const ShadowMapRenderer peel(env.device, env.tree, MapLayer::peeled);
   std::vector<CaseResult> results;
   const auto read = [&](const DeviceTexture& t) { return env.device.read_texture(t, 0, 0); };
 
   for (const auto& fixture : fixtures::kScenes) {
-    const Scene scene = make_scene(fixture, kMap);
-    const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
+    const int n = fixture.kind == fixtures::SceneKind::fence ? kFenceMap : kMap;
+    const Scene scene = make_scene(fixture, n);
+    const std::string name = std::string(fixture.name) + " " + std::to_string(n) + "² map, " +
                              std::to_string(kScreen) + "² screen";
     const DeviceSceneFrame frame = render_device_frame(env, scene, kScreen);
     const Image map = read(*frame.shadow_map), gbuffer = read(*frame.gbuffer);
-    const MinMaxMipChain mip = mips.build(*frame.shadow_map, kMap);
+    const MinMaxMipChain mip = mips.build(*frame.shadow_map, n);
     const bool first = &fixture == &fixtures::kScenes[0];
     // The scene's light, and 4 times as wide (penumbrae 4 times as wide: the G-buffer is the same).
     Scene wide = scene;
@@ -168,6 +182,18 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
                          Tolerance::exact(), compare(se, so, Tolerance::exact())});
     }
 
+    // Two layers (issue 42): the map's texels as slabs down to the peeled layer, the scene's light
+    // and 4 times as wide.
+    const std::unique_ptr<DeviceTexture> peeled = peel.render_texture(scene, scene.map_light(), frame.shadow_map.get());
+    const Image second = read(*peeled);
+    const Receivers slab_receivers = gbuffer_receivers(gbuffer, 8, 0.0f, PN_BACKPROJECTION_MAX_BUDGET);
+    for (const LightModel* light : std::initializer_list<const LightModel*>{&scene.light, &wide.light})
+      results.push_back(exact_case(name + (light == &wide.light ? ", the light 4x as wide" : "") +
+                                       ", 8x8 samples, the peeled second layer: every texel a slab, vs the rays "
+                                       "against the slabs on the CPU",
+                                   map, *light, slab_receivers.queries,
+                                   pass.run(mip, *light, slab_receivers.queries, peeled.get()), &second));
+
     // A point light: each receiver's own texel decides (a hard shadow).
     Scene point = scene;
     point.light.width = 0.0;
@@ -176,9 +202,9 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
     Image expected(static_cast<int>(got.size()), 1), observed(static_cast<int>(got.size()), 1);
     for (size_t k = 0; k < got.size(); ++k) {
       const BackprojectionQuery& q = hard.queries[k];
-      const int x = std::clamp(static_cast<int>(std::floor(q.u)), 0, kMap - 1);
-      const int y = std::clamp(static_cast<int>(std::floor(q.v)), 0, kMap - 1);
-      const bool inside = q.u >= 0 && q.u < kMap && q.v >= 0 && q.v < kMap;
+      const int x = std::clamp(static_cast<int>(std::floor(q.u)), 0, n - 1);
+      const int y = std::clamp(static_cast<int>(std::floor(q.v)), 0, n - 1);
+      const bool inside = q.u >= 0 && q.u < n && q.v >= 0 && q.v < n;
       expected.at(static_cast<int>(k), 0) = inside && map.at(x, y) + kBias < q.depth ? 0.0f : 1.0f;
       observed.at(static_cast<int>(k), 0) = got[k].visibility;
     }
@@ -239,6 +265,21 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
     results.push_back(exact_case("the sun over the random height field, 16x16 samples, thickness 0.5, every texel "
                                  "resolved, vs the rays on the CPU",
                                  map, sun, queries, pass.run(mip, sun, queries)));
+    // Its second layer: each box 0.2..6 deep; where nothing lies behind (+Inf) solid down to the
+    // receiver, where the layer says nothing (NaN, or a depth nearer than the first) flat.
+    Image second(kMap, kMap, 1, INFINITY);
+    for (int y = 0; y < kMap; ++y)
+      for (int x = 0; x < kMap; ++x) {
+        const float d = map.at(x, y), roll = random.uniform_float(0.0f, 1.0f);
+        if (!(d < 20.0f)) continue;  // the ground: nothing behind it
+        second.at(x, y) = roll < 0.05f ? NAN : roll < 0.1f ? d - 1.0f : roll < 0.15f ? INFINITY
+                                                                                    : d + random.uniform_float(0.2f, 6.0f);
+      }
+    const std::unique_ptr<DeviceTexture> layer = env.device.upload(second);
+    for (BackprojectionQuery& q : queries) q.side = 8;
+    results.push_back(exact_case("the sun over the random height field with a random second layer, 8x8 samples: every "
+                                 "texel a slab, vs the rays against the slabs on the CPU",
+                                 map, sun, queries, pass.run(mip, sun, queries, layer.get()), &second));
   }
   return results;
 }

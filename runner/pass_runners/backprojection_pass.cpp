@@ -20,7 +20,8 @@ BackprojectionQueryPass::BackprojectionQueryPass(const QueryDevice& device, cons
               {PN_BACKPROJECTION_QUERY_RESULT_IMAGE}}) {}
 
 std::vector<BackprojectionResult> BackprojectionQueryPass::run(const MinMaxMipChain& mip, const LightModel& light,
-                                                               const std::vector<BackprojectionQuery>& queries) const {
+                                                               const std::vector<BackprojectionQuery>& queries,
+                                                               const DeviceTexture* second_layer) const {
   if (queries.empty()) return {};
   if (mip.map_size != light.map_size)
     throw Error("backprojection query: light map size " + std::to_string(light.map_size) +
@@ -31,9 +32,16 @@ std::vector<BackprojectionResult> BackprojectionQueryPass::run(const MinMaxMipCh
   for (const BackprojectionQuery& q : queries) {
     a.push_back({q.u, q.v, q.depth, q.bias});
     b.push_back({static_cast<float>(q.side), q.tolerance, static_cast<float>(q.budget), q.gap});
-    c.push_back({q.thickness, 0.0f, 0.0f, 0.0f});
+    c.push_back({q.thickness, second_layer != nullptr ? 1.0f : 0.0f, 0.0f, 0.0f});
   }
-  const QueryResults r = query_.run({a, b, c}, {{PN_BACKPROJECTION_QUERY_MIP_BINDING, *mip.texture}}, query_block(block));
+  const DeviceTexture& layer = second_layer != nullptr ? *second_layer : *mip.texture;
+  if (second_layer != nullptr && second_layer->shape().width != light.map_size)
+    throw Error("backprojection query: second layer " + std::to_string(second_layer->shape().width) +
+                " texels wide: expected the light's map size " + std::to_string(light.map_size));
+  const QueryResults r = query_.run({a, b, c},
+                                    {{PN_BACKPROJECTION_QUERY_MIP_BINDING, *mip.texture},
+                                     {PN_BACKPROJECTION_QUERY_LAYER_BINDING, layer}},
+                                    query_block(block));
   std::vector<BackprojectionResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
     const Query q = r.at(0, k);

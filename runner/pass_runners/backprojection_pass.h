@@ -1,5 +1,6 @@
 // Runner side of glsl/passes/backprojection_query.comp: backprojection.glsl's
-// pnBackprojectionWork over a batch of receivers, on any executor.
+// pnBackprojectionWork (with or without a second layer) over a batch of
+// receivers, on any executor.
 #pragma once
 
 #include <vector>
@@ -29,9 +30,11 @@ struct BackprojectionResult {
 class BackprojectionQueryPass {
  public:
   BackprojectionQueryPass(const QueryDevice& device, const SourceTree& tree);
-  // Throws Error when the chain is not of the light's map size.
+  // Throws Error when the chain is not of the light's map size. With `second_layer` (N×N R32F), the
+  // call over slabs (pnBackprojectionWork's overload with the layer).
   std::vector<BackprojectionResult> run(const MinMaxMipChain& mip, const LightModel& light,
-                                        const std::vector<BackprojectionQuery>& queries) const;
+                                        const std::vector<BackprojectionQuery>& queries,
+                                        const DeviceTexture* second_layer = nullptr) const;
 
  private:
   QueryPass query_;

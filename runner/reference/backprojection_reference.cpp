@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <tuple>
 
 #include "backprojection.h"
 
@@ -46,7 +47,100 @@ struct RayAxis {
   }
 };
 
+// The rays of light sample l from the receiver at lateral (px, py), depth `depth`.
+struct SampleRays {
+  RayAxis x, y;
+};
+SampleRays sample_rays(const LightModel& light, double px, double py, double depth, BackprojectionSamplePoint l) {
+  // Area light: the light point at depth 0; the sun: the spread per unit depth.
+  const double scale = light.orthographic() ? light.spread : light.width, centre = 0.5 * light.map_size;
+  return {{&light, px, l.x * scale, depth, centre}, {&light, py, l.y * scale, depth, centre}};
+}
+
+// The texels [first, last] of one axis the ray can cross between the receiver (u0) and its point
+// at `floor_depth` (nothing lies nearer the light: only to skip the other texels).
+void texel_span(const RayAxis& ray, double u0, double floor_depth, double margin, int n, int& first, int& last) {
+  const double far = ray.texel_at(floor_depth);
+  first = std::max(0, static_cast<int>(std::floor(std::min(u0, far) - 2 * margin)) - 1);
+  last = std::min(n - 1, static_cast<int>(std::floor(std::max(u0, far) + 2 * margin)) + 1);
+}
+
+// The map's nearest finite depth (+Inf: none).
+double nearest_depth(const Image& map) {
+  double nearest = INFINITY;
+  for (const float d : map.texels)
+    if (std::isfinite(d)) nearest = std::min(nearest, static_cast<double>(d));
+  return nearest;
+}
+
+// Whether the ray lies inside texel (i, j)'s column, its square grown by m (shrunk for m < 0), at
+// some depth of [z0, z1]. Each axis's texel coordinate is monotone in depth (or constant: a ray
+// along the axis of projection), so the depths inside the square form an interval; if it meets
+// [z0, z1], the lowest common depth is z0 or a depth where the ray crosses one of the square's
+// four edges — the candidates tested.
+bool inside_column(const SampleRays& rays, int i, int j, double m, double z0, double z1) {
+  if (!(z0 <= z1)) return false;
+  const double lo_x = i - m, hi_x = i + 1 + m, lo_y = j - m, hi_y = j + 1 + m;
+  double candidates[6] = {z0, z1, z0, z0, z0, z0};
+  int count = 2;
+  for (const auto& [ray, lo, hi] : {std::tuple{&rays.x, lo_x, hi_x}, std::tuple{&rays.y, lo_y, hi_y}}) {
+    if (ray->target == 0.0) continue;  // its coordinate does not move along the ray
+    for (const double edge : {lo, hi}) {
+      const double z = ray->depth_at(edge);
+      if (z > z0 && z < z1) candidates[count++] = z;
+    }
+  }
+  for (int c = 0; c < count; ++c) {
+    const double x = rays.x.texel_at(candidates[c]), y = rays.y.texel_at(candidates[c]);
+    const double slack = 1e-9 * (1.0 + std::fabs(x) + std::fabs(y));  // a crossing solved at an edge
+    if (x >= lo_x - slack && x <= hi_x + slack && y >= lo_y - slack && y <= hi_y + slack) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+BackprojectionBounds backprojection_slab_reference(const Image& map, const Image& second, const LightModel& light,
+                                                   double u, double v, double depth, double bias, int side,
+                                                   double margin, double depth_margin) {
+  BackprojectionBounds out;
+  if (!(depth > 0.0) || !std::isfinite(depth)) return out;
+  side = std::clamp(side, PN_BACKPROJECTION_MIN_SIDE, PN_BACKPROJECTION_MAX_SIDE);
+  const int count = side * side, n = light.map_size;
+  const double texel = light.texel_world_at(depth);
+  const double px = (u - 0.5 * n) * texel, py = (v - 0.5 * n) * texel;
+  const double dz = depth_margin * depth;
+  const double nearest = nearest_depth(map);
+  if (!(nearest + bias - dz < depth)) return out;
+  const double floor_depth = std::max(nearest - dz, light.orthographic() ? -INFINITY : 1e-9 * depth);
+  int sure = 0, possible = 0;
+  for (int k = 0; k < count; ++k) {
+    const SampleRays rays = sample_rays(light, px, py, depth, backprojection_sample(k, side));
+    int i0, i1, j0, j1;
+    texel_span(rays.x, u, floor_depth, margin, n, i0, i1);
+    texel_span(rays.y, v, floor_depth, margin, n, j0, j1);
+    bool blocked_sure = false, blocked_possible = false;
+    for (int j = j0; j <= j1 && !blocked_sure; ++j)
+      for (int i = i0; i <= i1 && !blocked_sure; ++i) {
+        const double d = map.at(i, j);
+        if (!std::isfinite(d) || !(d + bias - dz < depth)) continue;
+        // The slab: from d down to the second layer's depth (+Inf: to the receiver; not past d: flat),
+        // only what lies in front of the receiver (depth - bias).
+        const double back = second.at(i, j);
+        const double bottom = back > d ? std::min(back, depth - bias) : d;
+        blocked_possible = blocked_possible || inside_column(rays, i, j, margin, d - dz, bottom + dz);
+        const bool thick = bottom - d > 2 * dz;
+        blocked_sure = blocked_sure || (d + bias + dz < depth &&
+                                        inside_column(rays, i, j, -margin, thick ? d + dz : d, thick ? bottom - dz : d));
+      }
+    sure += blocked_sure ? 1 : 0;
+    possible += (blocked_sure || blocked_possible) ? 1 : 0;
+  }
+  out.visibility_hi = 1.0 - static_cast<double>(sure) / count;
+  out.visibility_lo = 1.0 - static_cast<double>(possible) / count;
+  out.ambiguous = possible - sure;
+  return out;
+}
 
 BackprojectionBounds backprojection_reference(const Image& map, const LightModel& light, double u, double v,
                                               double depth, double bias, int side, double gap, double thickness,
@@ -62,18 +156,13 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
   const double dz = depth_margin * depth;
   // Nothing lies nearer the light than the map's nearest texel: the texels a ray can cross lie
   // between the receiver and the ray's point at that depth (only to skip the others).
-  double nearest = INFINITY;
-  for (const float d : map.texels)
-    if (std::isfinite(d)) nearest = std::min(nearest, static_cast<double>(d));
+  const double nearest = nearest_depth(map);
   if (!(nearest + bias - dz < depth)) return out;
   const double floor_depth = std::max(nearest - dz, light.orthographic() ? -INFINITY : 1e-9 * depth);
   int sure = 0, possible = 0;
   for (int k = 0; k < count; ++k) {
-    const BackprojectionSamplePoint l = backprojection_sample(k, side);
-    // Area light: the light point at depth 0; the sun: the spread per unit depth.
-    const double tx = light.orthographic() ? l.x * light.spread : l.x * light.width;
-    const double ty = light.orthographic() ? l.y * light.spread : l.y * light.width;
-    const RayAxis rx{&light, px, tx, depth, centre}, ry{&light, py, ty, depth, centre};
+    const SampleRays rays = sample_rays(light, px, py, depth, backprojection_sample(k, side));
+    const RayAxis &rx = rays.x, &ry = rays.y;
     bool blocked_sure = false, blocked_possible = false;
     // Every texel's patch (its square at its depth) and its walls to the deeper neighbours of the
     // same surface: grown by the margins (possible) and shrunk by them (sure).
@@ -85,14 +174,9 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
       blocked_possible = blocked_possible || possible_hit;
       blocked_sure = blocked_sure || sure_hit;
     };
-    const auto span = [&](const RayAxis& ray, double u0, int& first, int& last) {
-      const double far = ray.texel_at(floor_depth);
-      first = std::max(0, static_cast<int>(std::floor(std::min(u0, far) - 2 * margin)) - 1);
-      last = std::min(n - 1, static_cast<int>(std::floor(std::max(u0, far) + 2 * margin)) + 1);
-    };
     int i0, i1, j0, j1;
-    span(rx, u, i0, i1);
-    span(ry, v, j0, j1);
+    texel_span(rx, u, floor_depth, margin, n, i0, i1);
+    texel_span(ry, v, floor_depth, margin, n, j0, j1);
     for (int j = j0; j <= j1 && !blocked_sure; ++j)
       for (int i = i0; i <= i1 && !blocked_sure; ++i) {
         const double d = depth_of(i, j);

@@ -42,4 +42,14 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
                                               double depth, double bias, int side, double gap, double thickness,
                                               double margin = 1e-3, double depth_margin = 1e-5);
 
+// The same samples against slabs (issue 42): texel (i, j) of `map` at depth d is solid from d down
+// to `second`'s depth there (+Inf: down to the receiver; NaN or not past d: a flat square at d),
+// the column of its square in the light's frame; a sample is blocked when its ray is inside some
+// texel's column at a depth between d and min(its second depth, depth - bias) — each ray solved
+// against each column (where it crosses the square's edges), not through patches and walls.
+// The margins as above.
+BackprojectionBounds backprojection_slab_reference(const Image& map, const Image& second, const LightModel& light,
+                                                   double u, double v, double depth, double bias, int side,
+                                                   double margin = 1e-3, double depth_margin = 1e-5);
+
 }  // namespace pn
