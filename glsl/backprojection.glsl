@@ -44,14 +44,17 @@
 //   the same samples whose ray to the receiver crosses the map's surface —
 //   exactly (runner/reference/backprojection_reference.cpp).
 //   A second layer (issue 42; Bavoil, Callahan & Silva 2008) says how thick
-//   each blocker is: `secondLayer`, N×N linear light depth of the nearest
-//   surface behind the first (depth peeling: passes/shadow_depth_peel.frag),
-//   makes texel (i, j) a slab, solid from d down to its second depth d2 — its
-//   patch at d and all four walls from d down to min(d2, dP - bias). The gap
-//   and thickness rules are then only the fallback of the calls without the
-//   layer (and of the nodes standing as one patch, which read the chain
-//   alone). With tolerance 0 the result is the fraction of the samples whose
-//   ray meets a slab — exactly (backprojection_slab_reference.cpp).
+//   each blocker is: the linear light depth d2 of the nearest surface behind
+//   the map's (depth peeling: passes/shadow_depth_peel.frag), given as its
+//   own min/max chain `secondMip` (minmax_mip.glsl; non-finite: +Inf).
+//   Texel (i, j) is then a slab, solid from d down to d2 — its patch at d
+//   and all four walls from d down to min(d2, dP - bias); +Inf: solid down
+//   to the receiver; d2 <= d: the patch alone. A node stands as one patch
+//   only when both layers' ranges are within the tolerance, and then as a
+//   slab from the middle of its first range to the middle of its second.
+//   The gap and thickness rules serve only the call without the layer. With
+//   tolerance 0 the result is the fraction of the samples whose ray meets a
+//   slab — exactly (backprojection_slab_reference).
 //
 // use:
 //   PnBackprojectionSettings { float bias; int side; float tolerance; int budget; float gap; float thickness; }
@@ -64,10 +67,10 @@
 //   PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver,
 //         PnBackprojectionSettings s)   the same with its work: (visibility, blocked samples,
 //         nodes visited, patches that stood for nodes)
-//   float pnBackprojection(sampler2D mip, sampler2D secondLayer, PnLight light, vec3 receiver,
-//         PnBackprojectionSettings s)   the same over slabs: secondLayer, N×N (texelFetch, level 0),
-//         the linear light depth of the surface behind the map's (+Inf: solid down to the receiver)
-//   PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondLayer, PnLight light,
+//   float pnBackprojection(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver,
+//         PnBackprojectionSettings s)   the same over slabs: secondMip, the min/max chain
+//         (minmax_mip.glsl) of the map's second layer, the surface behind the map's
+//   PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondMip, PnLight light,
 //         vec3 receiver, PnBackprojectionSettings s)   its work
 //   vec2 pnBackprojectionSample(int k, int side)   light sample k, in [-1/2, 1/2]²
 //
@@ -314,30 +317,65 @@ ivec3 pn_backprojectionNext(ivec3 node, int top) {
                          : ivec3(up.x, up.y - 1, up.z + 1);  // (1, 0) -> (0, 1)
 }
 
-// Texel q (depth d; lo, hi: its square relative to the receiver) as a slab, solid from d down to
-// its depth in the second layer: its patch at d and its four walls from d down to that depth,
-// clipped to what lies in front of the receiver (dP - bias). A ray that meets the slab leaves it
-// through its top or a wall (it rises toward the light), so these five faces decide it exactly. A
-// second depth that is not past d (NaN, or nearer) leaves the patch alone; +Inf (nothing behind
-// the first surface) makes the texel solid down to the receiver. Returns the loop iterations spent.
-int pn_backprojectSlab(sampler2D secondLayer, PnLight light, vec3 receiver, float bias, ivec2 q, float d, vec2 lo,
-                       vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  float window = pnLightBlockerWindowTexels(light, receiver.z, d);
-  pn_backprojectPatch(lo, hi, window, side, mask);
-  float back = texelFetch(secondLayer, q, 0).x;
-  float bottom = back > d ? min(back, receiver.z - bias) : d;
-  if (!(bottom > d)) return 0;
-  float near = pnLightBlockerWindowTexels(light, receiver.z, bottom);
-  int spent = pn_backprojectWall(0, hi.x, lo.y, hi.y, near, window, side, mask);
-  spent += pn_backprojectWall(0, lo.x, lo.y, hi.y, near, window, side, mask);
-  spent += pn_backprojectWall(1, hi.y, lo.x, hi.x, near, window, side, mask);
-  spent += pn_backprojectWall(1, lo.y, lo.x, hi.x, near, window, side, mask);
+// The slab a node stands for, clipped to what lies in front of the receiver (dP - bias):
+// (top, bottom), from the (min, max) of its first layer (`range`) and of its second (`back`) — the
+// middle of each (a texel: its depths); a second depth not past the top leaves it flat (bottom =
+// top), +Inf makes it solid down to the receiver. (+Inf, +Inf) when none of it lies in front.
+vec2 pn_backprojectionSlab(vec2 range, vec2 back, float dP, float bias) {
+  if (!(range.x + bias < dP)) return vec2(pn_mipFar());
+  float top = 0.5 * (range.x + min(range.y, dP - bias));
+  float b = 0.5 * (back.x + back.y);
+  return vec2(top, b > top ? min(b, dP - bias) : top);
+}
+
+// The wall of `slab` (top, bottom) of node q of `level` (lo, hi: its square relative to the
+// receiver) on its edge toward the neighbour node in direction `dir`: only the depths the
+// neighbour's slab does not cover — above the neighbour's top, below its bottom — since a ray
+// that meets the union of the slabs leaves it through a face no other slab covers. Returns the
+// loop iterations spent.
+int pn_backprojectSlabWall(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver, float bias, int level,
+                           ivec2 q, ivec2 dir, vec2 slab, float window, vec2 lo, vec2 hi, int side,
+                           inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  vec2 neighbour = pn_backprojectionSlab(pnMipFetch(mip, level, q + dir), pnMipFetch(secondMip, level, q + dir),
+                                         receiver.z, bias);
+  int a = dir.x != 0 ? 0 : 1, spent = 0;
+  float edge = dir[a] > 0 ? hi[a] : lo[a];
+  float upper = min(neighbour.x, slab.y);  // exposed from the top down to here
+  if (upper > slab.x)
+    spent += pn_backprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, receiver.z, upper),
+                                window, side, mask);
+  float lower = max(neighbour.y, slab.x);  // and from here down to the bottom
+  if (slab.y > lower)
+    spent += pn_backprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, receiver.z, slab.y),
+                                pnLightBlockerWindowTexels(light, receiver.z, lower), side, mask);
   return spent;
 }
 
-// The walk of both calls: texels as the gap rule's surface (slabs false; secondLayer unread), or
-// as slabs down to secondLayer.
-PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondLayer, bool slabs, PnLight light, vec3 receiver,
+// Node q of `level` as a slab (pn_backprojectionSlab of its ranges): its patch at the top and the
+// exposed parts of its four walls (written out, not a loop: llvmpipe's limit, backprojection.h).
+// Exact for a texel (level 0); for a larger node, the estimate of what it holds. Returns the
+// loop iterations spent.
+int pn_backprojectSlabNode(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver, float bias, int level,
+                           ivec2 q, vec2 range, vec2 back, vec2 lo, vec2 hi, int side,
+                           inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
+  vec2 slab = pn_backprojectionSlab(range, back, receiver.z, bias);
+  float window = pnLightBlockerWindowTexels(light, receiver.z, slab.x);
+  pn_backprojectPatch(lo, hi, window, side, mask);
+  if (!(slab.y > slab.x)) return 0;
+  int spent = pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(1, 0), slab, window, lo, hi,
+                                     side, mask);
+  spent += pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(-1, 0), slab, window, lo, hi,
+                                  side, mask);
+  spent += pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(0, 1), slab, window, lo, hi,
+                                  side, mask);
+  spent += pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(0, -1), slab, window, lo, hi,
+                                  side, mask);
+  return spent;
+}
+
+// The walk of both calls: texels as the gap rule's surface (slabs false; secondMip unread), or as
+// slabs down to the second layer, whose min/max chain secondMip is.
+PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
                                        PnBackprojectionSettings s) {
   float bias = s.bias;
   PnBackprojection result = PnBackprojection(1.0, 0.0, 0.0, 0.0);
@@ -365,20 +403,26 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondLayer, boo
       int size = 1 << node.x;
       vec2 lo = vec2(node.yz * size) - receiver.xy, hi = lo + float(size);
       bool within = !(any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach))));
-      if (within && node.x == 0 && slabs) {
-        work += pn_backprojectSlab(secondLayer, light, receiver, bias, node.yz, range.x, lo, hi, side, mask);
-      } else if (within && node.x == 0) {
-        work += pn_backprojectNode(mip, light, receiver, bias, s.gap, s.thickness, 0, node.yz, range.x, lo, hi, side, mask);
-      } else if (within) {
-        resolve = visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&
-                  range.y - range.x >= s.tolerance * (dP - range.x);
+      if (within) {
+        // The second layer's (min, max) over the node (slabs); a uniform one (+Inf alike) spreads 0.
+        vec2 back = slabs ? pnMipFetch(secondMip, node.x, node.yz) : vec2(0.0);
+        float spread = max(range.y - range.x, back.y == back.x ? 0.0 : back.y - back.x);
+        // A node is resolved unless both layers' ranges are tight (a NaN spread resolves); a texel
+        // is back-projected exactly.
+        resolve = node.x > 0 && visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&
+                  !(spread < s.tolerance * (dP - range.x));
         if (!resolve) {
-          // A node standing as one patch at the middle of its range (in front of the receiver), with walls
-          // toward the neighbour nodes deeper than it, by the texels' rule applied to the nodes' mins.
-          result.patches += 1.0;
+          // A texel, or a node standing as one patch at the middle of its range (in front of the receiver):
+          // over slabs, a slab down to the middle of its second layer's range; else with walls toward the
+          // neighbour nodes deeper than it, by the texels' rule applied to the nodes' mins.
+          result.patches += node.x > 0 ? 1.0 : 0.0;
           float depth = 0.5 * (range.x + min(range.y, dP - bias));
-          work += pn_backprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi, side,
-                                     mask);
+          if (slabs)
+            work += pn_backprojectSlabNode(mip, secondMip, light, receiver, bias, node.x, node.yz, range, back, lo, hi,
+                                           side, mask);
+          else
+            work += pn_backprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi,
+                                       side, mask);
         }
       }
     }
@@ -396,17 +440,17 @@ PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receive
   return pn_backprojectionWalk(mip, mip, false, light, receiver, s);
 }
 
-PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondLayer, PnLight light, vec3 receiver,
+PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver,
                                       PnBackprojectionSettings s) {
-  return pn_backprojectionWalk(mip, secondLayer, true, light, receiver, s);
+  return pn_backprojectionWalk(mip, secondMip, true, light, receiver, s);
 }
 
 float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
   return pnBackprojectionWork(mip, light, receiver, s).visibility;
 }
 
-float pnBackprojection(sampler2D mip, sampler2D secondLayer, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
-  return pnBackprojectionWork(mip, secondLayer, light, receiver, s).visibility;
+float pnBackprojection(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+  return pnBackprojectionWork(mip, secondMip, light, receiver, s).visibility;
 }
 
 #endif  // PENUMBRA_BACKPROJECTION_GLSL

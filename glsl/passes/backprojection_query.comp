@@ -13,7 +13,7 @@ layout(binding = PN_BACKPROJECTION_QUERY_MIP_BINDING) uniform sampler2D pnMip;
 layout(binding = PN_BACKPROJECTION_QUERY_A_BINDING) uniform sampler2D pnQueryA;
 layout(binding = PN_BACKPROJECTION_QUERY_B_BINDING) uniform sampler2D pnQueryB;
 layout(binding = PN_BACKPROJECTION_QUERY_C_BINDING) uniform sampler2D pnQueryC;
-layout(binding = PN_BACKPROJECTION_QUERY_LAYER_BINDING) uniform sampler2D pnSecondLayer;
+layout(binding = PN_BACKPROJECTION_QUERY_LAYER_BINDING) uniform sampler2D pnSecondMip;
 layout(rgba32f, binding = PN_BACKPROJECTION_QUERY_RESULT_IMAGE) writeonly uniform image2D pnResult;
 
 void main() {
@@ -23,7 +23,7 @@ void main() {
   vec4 b = texelFetch(pnQueryB, p, 0);
   vec4 c = texelFetch(pnQueryC, p, 0);
   PnBackprojectionSettings s = PnBackprojectionSettings(a.w, int(b.x), b.y, int(b.z), b.w, c.x);
-  PnBackprojection r = c.y != 0.0 ? pnBackprojectionWork(pnMip, pnSecondLayer, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s)
+  PnBackprojection r = c.y != 0.0 ? pnBackprojectionWork(pnMip, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s)
                                   : pnBackprojectionWork(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s);
   imageStore(pnResult, p, vec4(r.visibility, r.blocked, r.nodes, r.patches));
 }

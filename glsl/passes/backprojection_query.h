@@ -13,7 +13,7 @@
 #define PN_BACKPROJECTION_QUERY_B_BINDING 3     // sampler2D, RGBA32F: (side, tolerance, budget, gap)
 #define PN_BACKPROJECTION_QUERY_PARAMS_BINDING 4
 #define PN_BACKPROJECTION_QUERY_C_BINDING 5     // sampler2D, RGBA32F: (thickness, slabs (1: the second layer's call), -, -)
-#define PN_BACKPROJECTION_QUERY_LAYER_BINDING 6  // sampler2D: the second layer (any texture when no query reads it)
+#define PN_BACKPROJECTION_QUERY_LAYER_BINDING 6  // sampler2D: the second layer's min/max chain (any texture when no query reads it)
 
 PN_UNIFORM_BLOCK(PnBackprojectionQueryParams, PN_BACKPROJECTION_QUERY_PARAMS_BINDING)
   PN_LIGHT_FIELDS  // PnLight (light_model.glsl)

@@ -4,7 +4,8 @@
 // lit. Bindings and the block: backprojection_shade.h.
 //
 // The body of the compute pass and the fragment shader (shade_pass.h):
-// pnShade(p), the visibility of screen pixel p.
+// pnShade(p), the visibility of screen pixel p. Defined PN_BACKPROJECTION_SHADE_SLABS:
+// the call with the map's second layer (issue 42), every texel a slab.
 
 #ifndef PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL
 #define PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL
@@ -13,6 +14,9 @@
 
 layout(binding = PN_BACKPROJECTION_SHADE_MIP_BINDING) uniform sampler2D pnMip;
 layout(binding = PN_BACKPROJECTION_SHADE_GBUFFER_BINDING) uniform sampler2D pnGBuffer;
+#ifdef PN_BACKPROJECTION_SHADE_SLABS
+layout(binding = PN_BACKPROJECTION_SHADE_LAYER_BINDING) uniform sampler2D pnSecondMip;
+#endif
 
 #include "backprojection.glsl"
 
@@ -21,7 +25,11 @@ float pnShade(ivec2 p) {
   if (receiver.w == 0.0) return 1.0;
   PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.bias, pnParams.side, pnParams.tolerance,
                                                         pnParams.budget, pnParams.gap, pnParams.thickness);
+#ifdef PN_BACKPROJECTION_SHADE_SLABS
+  return pnBackprojection(pnMip, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
+#else
   return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
+#endif
 }
 
 #endif  // PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL

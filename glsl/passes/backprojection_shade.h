@@ -13,6 +13,7 @@
 #define PN_BACKPROJECTION_SHADE_GBUFFER_BINDING 1    // sampler2D, RGBA32F: (u, v, light depth, surface)
 #define PN_BACKPROJECTION_SHADE_VISIBILITY_IMAGE 2   // image2D, r32f
 #define PN_BACKPROJECTION_SHADE_PARAMS_BINDING 3
+#define PN_BACKPROJECTION_SHADE_LAYER_BINDING 4      // sampler2D: the second layer's min/max chain (PN_BACKPROJECTION_SHADE_SLABS)
 
 PN_UNIFORM_BLOCK(PnBackprojectionShadeParams, PN_BACKPROJECTION_SHADE_PARAMS_BINDING)
   PN_LIGHT_FIELDS   // PnLight (light_model.glsl)

@@ -78,7 +78,9 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
                           const std::optional<GpuEstimateSetup>& estimate) {
   for (const PipelineBenchSize& s : sizes) {
     out << "size " << s.size << " (shadow map = screen), shadow map " << std::fixed << std::setprecision(2)
-        << s.comparison.shadow_map_ms << " ms:\n";
+        << s.comparison.shadow_map_ms << " ms";
+    if (s.comparison.second_layer_ms > 0.0) out << ", second layers " << s.comparison.second_layer_ms << " ms";
+    out << ":\n";
     std::vector<std::string> names;
     for (const TechniqueResult& r : s.comparison.results) names.push_back(r.name);
     const int name = name_column_width(names);

@@ -211,6 +211,7 @@ nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& 
                      {"light_width", p.light_width},
                      {"cpu_ms", p.comparison.truth_ms},
                      {"shadow_map_ms", p.comparison.shadow_map_ms},
+                     {"second_layer_ms", p.comparison.second_layer_ms},
                      {"vs_exact", p.comparison.truth_vs_exact ? scores_json(*p.comparison.truth_vs_exact)
                                                               : nlohmann::json(nullptr)}});
   }

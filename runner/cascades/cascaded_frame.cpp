@@ -43,7 +43,8 @@ MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_
 std::unique_ptr<CascadedFrame> render_cascaded_frame(const QueryDevice& device, const ShadowMapRenderer& maps,
                                                      const GBufferRenderer& gbuffer, const Scene& scene,
                                                      const CascadeSettings& settings, int screen_size,
-                                                     const SceneCamera* fit_camera) {
+                                                     const SceneCamera* fit_camera,
+                                                     const SecondLayerRenderers* second_layers) {
   if (!scene.sun) throw Error("scene '" + scene.name + "': cascades need a scene lit by the sun");
   if (screen_size < 1 || screen_size > 8192)
     throw Error("screen size " + std::to_string(screen_size) + ": expected 1..8192");
@@ -59,7 +60,14 @@ std::unique_ptr<CascadedFrame> render_cascaded_frame(const QueryDevice& device, 
     frame->maps.push_back(maps.render_texture(scene, frame->lights.back()));
   }
   clock->stage("cascade maps");
-  frame->shadow_map_ms = clock->read().front().second;
+  if (second_layers != nullptr && !second_layers->empty()) {
+    for (size_t i = 0; i < frame->cascades.size(); ++i)
+      frame->second_layers.push_back(second_layers->render(scene, frame->lights[i], *frame->maps[i]));
+    clock->stage("second layers");
+  }
+  const auto times = clock->read();
+  frame->shadow_map_ms = times.front().second;
+  if (times.size() > 1) frame->second_layer_ms = times[1].second;
   for (size_t i = 0; i < frame->cascades.size(); ++i)
     frame->gbuffers.push_back(gbuffer.render_texture(scene, screen_size, fixtures::kNormalOffsetTexels,
                                                      frame->lights[i], frame->cascades[i].fit_near,
@@ -73,6 +81,7 @@ std::unique_ptr<CascadedFrame> render_cascaded_frame(const QueryDevice& device, 
     layer.screen_size = screen_size;
     layer.shadow_map = frame->maps[i].get();
     layer.gbuffer = frame->gbuffers[i].get();
+    if (i < frame->second_layers.size()) layer.second_layers = frame->second_layers[i].view();
     layers.layers.push_back(layer);
     layers.split_far[i] = frame->cascades[i].split_far;
   }

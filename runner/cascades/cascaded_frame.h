@@ -10,6 +10,7 @@
 
 #include "cascades/cascade_fit.h"
 #include "pass_runners/gbuffer_pass.h"
+#include "pass_runners/second_layer_pass.h"
 #include "pass_runners/shadow_map_pass.h"
 #include "scene/scene.h"
 #include "frame/technique.h"
@@ -21,9 +22,11 @@ struct CascadedFrame {
   std::vector<MapLight> lights;     // each cascade's view, projection and light model
   std::vector<std::unique_ptr<DeviceTexture>> maps;      // N×N R32F linear light depth
   std::vector<std::unique_ptr<DeviceTexture>> gbuffers;  // screen² RGBA32F
+  std::vector<SecondLayerTextures> second_layers;        // each cascade's, those asked for
   std::unique_ptr<DeviceTexture> view_depth;             // screen² RGBA32F: the camera's own G-buffer (z: view depth)
   CascadeInputs layers;             // points into the above: the frame is not copied or moved
   double shadow_map_ms = 0.0;       // every cascade's map, GPU time
+  double second_layer_ms = 0.0;     // every cascade's second layers, GPU time (0: none drawn)
   int screen_size = 0;
 
   CascadedFrame() = default;
@@ -44,9 +47,11 @@ MapLight cascade_map_light(const Cascade& cascade, const SunLight& sun, int map_
 // Throws Error for a scene without a sun, bad settings or a screen size outside 1..8192.
 // `fit_camera`: the camera the cascades are fitted to, when it is not the scene's (which the
 // G-buffers still see through): how bench cascades watches cascades move under a still view.
+// `second_layers`: the second layers drawn beside each cascade's map.
 std::unique_ptr<CascadedFrame> render_cascaded_frame(const QueryDevice& device, const ShadowMapRenderer& maps,
                                                      const GBufferRenderer& gbuffer, const Scene& scene,
                                                      const CascadeSettings& settings, int screen_size,
-                                                     const SceneCamera* fit_camera = nullptr);
+                                                     const SceneCamera* fit_camera = nullptr,
+                                                     const SecondLayerRenderers* second_layers = nullptr);
 
 }  // namespace pn

@@ -19,7 +19,7 @@
 //   map with its peeled layer, the scene's light and 4 times as wide, and the
 //   sun over the random height field with a random second layer (thick,
 //   +Inf, NaN, nearer than the first) — exactly the CPU's rays against the
-//   slabs.
+//   slabs; the defaults over the peeled layer within the stated bound.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -96,6 +96,34 @@ CaseResult exact_case(const std::string& name, const Image& map, const LightMode
           tolerance, c};
 }
 
+// The defaults (tight nodes as one patch, the budget) against every texel resolved, on the same
+// receivers: within the stated mean and largest difference.
+CaseResult defaults_case(const std::string& what, const std::vector<BackprojectionResult>& got,
+                         const std::vector<BackprojectionResult>& approximate) {
+  double sum = 0.0, worst = 0.0, nodes_exact = 0.0, nodes_patched = 0.0;
+  for (size_t k = 0; k < got.size(); ++k) {
+    const double e = std::fabs(static_cast<double>(approximate[k].visibility) - got[k].visibility);
+    sum += e, worst = std::max(worst, e);
+    nodes_exact += got[k].nodes, nodes_patched += approximate[k].nodes;
+  }
+  const double receivers = static_cast<double>(std::max<size_t>(1, got.size()));
+  const double mean = sum / receivers;
+  const std::string measured = "mean " + format_number("%.4f", mean) + ", largest " + format_number("%.4f", worst) +
+                               "; nodes a receiver " + format_number("%.1f", nodes_patched / receivers) + " vs " +
+                               format_number("%.1f", nodes_exact / receivers) + " resolved";
+  Image e(2, 1), o(2, 1);
+  o.at(0, 0) = static_cast<float>(mean), o.at(1, 0) = static_cast<float>(worst);
+  e.at(0, 0) = static_cast<float>(std::min(mean, kPatchMeanBound));
+  e.at(1, 0) = static_cast<float>(std::min(worst, kPatchMaxBound));
+  CaseResult bound{what + ": the defaults (tolerance " + format_number("%g", PN_BACKPROJECTION_DEFAULT_TOLERANCE) +
+                       ", budget " + std::to_string(PN_BACKPROJECTION_DEFAULT_BUDGET) +
+                       ") vs every texel resolved: [0] mean difference <= " + format_number("%g", kPatchMeanBound) +
+                       ", [1] largest <= " + format_number("%g", kPatchMaxBound) + " (" + measured + ")",
+                   Tolerance::exact(), compare(e, o, Tolerance::exact())};
+  bound.headline = true;
+  return bound;
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
@@ -144,29 +172,10 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
       }
 
       // The defaults: tight nodes as one patch, the budget.
-      const float tolerance = PN_BACKPROJECTION_DEFAULT_TOLERANCE;
-      Receivers patched = gbuffer_receivers(gbuffer, side, tolerance, PN_BACKPROJECTION_DEFAULT_BUDGET);
+      Receivers patched = gbuffer_receivers(gbuffer, side, PN_BACKPROJECTION_DEFAULT_TOLERANCE,
+                                            PN_BACKPROJECTION_DEFAULT_BUDGET);
       const std::vector<BackprojectionResult> approximate = pass.run(mip, light, patched.queries);
-      double sum = 0.0, worst = 0.0, nodes_exact = 0.0, nodes_patched = 0.0;
-      for (size_t k = 0; k < got.size(); ++k) {
-        const double e = std::fabs(static_cast<double>(approximate[k].visibility) - got[k].visibility);
-        sum += e, worst = std::max(worst, e);
-        nodes_exact += got[k].nodes, nodes_patched += approximate[k].nodes;
-      }
-      const double mean = got.empty() ? 0.0 : sum / static_cast<double>(got.size());
-      const std::string measured = "mean " + format_number("%.4f", mean) + ", largest " + format_number("%.4f", worst) +
-                                   "; nodes a receiver " + format_number("%.1f", nodes_patched / std::max<size_t>(1, got.size())) +
-                                   " vs " + format_number("%.1f", nodes_exact / std::max<size_t>(1, got.size())) + " resolved";
-      Image e(2, 1), o(2, 1);
-      o.at(0, 0) = static_cast<float>(mean), o.at(1, 0) = static_cast<float>(worst);
-      e.at(0, 0) = static_cast<float>(std::min(mean, kPatchMeanBound)), e.at(1, 0) = static_cast<float>(std::min(worst, kPatchMaxBound));
-      CaseResult bound{what + ": the defaults (tolerance " + format_number("%g", tolerance) + ", budget " +
-                           std::to_string(PN_BACKPROJECTION_DEFAULT_BUDGET) + ") vs every texel resolved: [0] mean difference <= " +
-                           format_number("%g", kPatchMeanBound) + ", [1] largest <= " + format_number("%g", kPatchMaxBound) +
-                           " (" + measured + ")",
-                       Tolerance::exact(), compare(e, o, Tolerance::exact())};
-      bound.headline = true;
-      results.push_back(bound);
+      results.push_back(defaults_case(what, got, approximate));
 
       // A budget of 16 nodes: the rest stand as patches; never out of [0, 1], never past budget + stack.
       Receivers starved = gbuffer_receivers(gbuffer, side, 0.0f, 16);
@@ -186,13 +195,19 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
     // and 4 times as wide.
     const std::unique_ptr<DeviceTexture> peeled = peel.render_texture(scene, scene.map_light(), frame.shadow_map.get());
     const Image second = read(*peeled);
+    const MinMaxMipChain second_mip = mips.build(*peeled, n);
     const Receivers slab_receivers = gbuffer_receivers(gbuffer, 8, 0.0f, PN_BACKPROJECTION_MAX_BUDGET);
-    for (const LightModel* light : std::initializer_list<const LightModel*>{&scene.light, &wide.light})
-      results.push_back(exact_case(name + (light == &wide.light ? ", the light 4x as wide" : "") +
-                                       ", 8x8 samples, the peeled second layer: every texel a slab, vs the rays "
-                                       "against the slabs on the CPU",
-                                   map, *light, slab_receivers.queries,
-                                   pass.run(mip, *light, slab_receivers.queries, peeled.get()), &second));
+    for (const LightModel* light : std::initializer_list<const LightModel*>{&scene.light, &wide.light}) {
+      const std::string what = name + (light == &wide.light ? ", the light 4x as wide" : "") +
+                               ", 8x8 samples, the peeled second layer";
+      const std::vector<BackprojectionResult> got = pass.run(mip, *light, slab_receivers.queries, &second_mip);
+      results.push_back(exact_case(what + ": every texel a slab, vs the rays against the slabs on the CPU", map, *light,
+                                   slab_receivers.queries, got, &second));
+      if (light != &wide.light) continue;
+      const Receivers patched = gbuffer_receivers(gbuffer, 8, PN_BACKPROJECTION_DEFAULT_TOLERANCE,
+                                                  PN_BACKPROJECTION_DEFAULT_BUDGET);
+      results.push_back(defaults_case(what, got, pass.run(mip, *light, patched.queries, &second_mip)));
+    }
 
     // A point light: each receiver's own texel decides (a hard shadow).
     Scene point = scene;
@@ -265,8 +280,8 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
     results.push_back(exact_case("the sun over the random height field, 16x16 samples, thickness 0.5, every texel "
                                  "resolved, vs the rays on the CPU",
                                  map, sun, queries, pass.run(mip, sun, queries)));
-    // Its second layer: each box 0.2..6 deep; where nothing lies behind (+Inf) solid down to the
-    // receiver, where the layer says nothing (NaN, or a depth nearer than the first) flat.
+    // Its second layer: each box 0.2..6 deep; where nothing lies behind (+Inf, or NaN: the chain
+    // reads a non-finite depth as +Inf) solid down to the receiver; a depth nearer than the first: flat.
     Image second(kMap, kMap, 1, INFINITY);
     for (int y = 0; y < kMap; ++y)
       for (int x = 0; x < kMap; ++x) {
@@ -276,10 +291,11 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
                                                                                     : d + random.uniform_float(0.2f, 6.0f);
       }
     const std::unique_ptr<DeviceTexture> layer = env.device.upload(second);
+    const MinMaxMipChain second_mip = mips.build(*layer, kMap);
     for (BackprojectionQuery& q : queries) q.side = 8;
     results.push_back(exact_case("the sun over the random height field with a random second layer, 8x8 samples: every "
                                  "texel a slab, vs the rays against the slabs on the CPU",
-                                 map, sun, queries, pass.run(mip, sun, queries, layer.get()), &second));
+                                 map, sun, queries, pass.run(mip, sun, queries, &second_mip), &second));
   }
   return results;
 }

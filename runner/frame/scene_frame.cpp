@@ -9,7 +9,7 @@
 namespace pn {
 
 SceneFrame render_scene_frame(const QueryDevice& device, ShadowMapSource& source, const GBufferRenderer& gbuffer,
-                              const Scene& scene, int screen_size) {
+                              const Scene& scene, int screen_size, const SecondLayerRenderers* layers) {
   if (screen_size < 1 || screen_size > 8192)
     throw Error("screen size " + std::to_string(screen_size) + ": expected 1..8192");
   SceneFrame frame;
@@ -22,7 +22,13 @@ SceneFrame render_scene_frame(const QueryDevice& device, ShadowMapSource& source
   frame.shadow_map = sourced.map;
   frame.mip = sourced.mip;
   frame.pyramid = sourced.pyramid;
-  frame.shadow_map_ms = clock->read().front().second;
+  if (layers != nullptr && !layers->empty()) {
+    frame.second_layers = layers->render(scene, scene.map_light(), *sourced.map);
+    clock->stage("second layers");
+  }
+  const NamedValues times = clock->read();
+  frame.shadow_map_ms = times.front().second;
+  if (times.size() > 1) frame.second_layer_ms = times[1].second;
   frame.gbuffer = gbuffer.render_texture(scene, screen_size, fixtures::kNormalOffsetTexels, scene.map_light());
   return frame;
 }

@@ -19,15 +19,22 @@ struct SceneFrame {
   const MinMaxMipChain* mip = nullptr;    // when the source keeps them (SourceOptions)
   const DepthPyramid* pyramid = nullptr;
   std::unique_ptr<DeviceTexture> gbuffer;
+  SecondLayerTextures second_layers;  // those asked for (render_scene_frame's `layers`)
   double shadow_map_ms = 0.0;  // the source's GPU time for this frame (not part of a technique's total)
+  double second_layer_ms = 0.0;  // the second layers' GPU time (0: none drawn)
 
-  TechniqueInputs inputs() const { return {light, screen_size, shadow_map, gbuffer.get(), mip, pyramid}; }
+  TechniqueInputs inputs() const {
+    TechniqueInputs in{light, screen_size, shadow_map, gbuffer.get(), mip, pyramid};
+    in.second_layers = second_layers.view();
+    return in;
+  }
 };
 
 // Throws Error for a screen size outside 1..8192. The G-buffer's receivers
-// are moved fixtures::kNormalOffsetTexels off their faces (gbuffer.frag).
+// are moved fixtures::kNormalOffsetTexels off their faces (gbuffer.frag). `layers`: the second
+// layers drawn beside the source's map (whole, through the scene's light, whatever the source).
 SceneFrame render_scene_frame(const QueryDevice& device, ShadowMapSource& source, const GBufferRenderer& gbuffer,
-                              const Scene& scene, int screen_size);
+                              const Scene& scene, int screen_size, const SecondLayerRenderers* layers = nullptr);
 
 // Repeated runs of one technique: the last frame (with stats), medians of the GPU times.
 struct TechniqueMeasurement {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,8 @@ struct SettingsHooks {
   // Throws Error naming the technique (settings.name), the key and what it expects.
   void (*set)(Settings& settings, const std::string& key, const std::string& value);
   std::unique_ptr<Technique> (*create)(TechniqueResources& resources, const Settings& settings);
+  // The second layer the settings read (TechniqueConfig::second_layer); null: none.
+  std::optional<MapLayer> (*second_layer)(const Settings& settings) = nullptr;
 };
 
 template <class Settings>
@@ -35,6 +38,9 @@ class SettingsConfig final : public TechniqueConfig {
     return hooks_.create(resources, settings_);
   }
   std::unique_ptr<TechniqueConfig> clone() const override { return std::make_unique<SettingsConfig>(*this); }
+  std::optional<MapLayer> second_layer() const override {
+    return hooks_.second_layer != nullptr ? hooks_.second_layer(settings_) : std::nullopt;
+  }
 
  private:
   Settings settings_;

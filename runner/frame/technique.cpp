@@ -8,4 +8,15 @@ double TechniqueFrame::total_ms() const {
   return sum;
 }
 
+std::vector<MapLayer> second_layers_of(const std::vector<const TechniqueConfig*>& configs) {
+  std::vector<MapLayer> out;
+  for (const MapLayer layer : {MapLayer::peeled, MapLayer::back_faces})
+    for (const TechniqueConfig* config : configs)
+      if (config->second_layer() == layer) {
+        out.push_back(layer);
+        break;
+      }
+  return out;
+}
+
 }  // namespace pn

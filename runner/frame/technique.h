@@ -8,6 +8,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <typeindex>
 #include <utility>
@@ -15,6 +16,7 @@
 
 #include "device/query_device.h"
 #include "pass_runners/cascade_blend_pass.h"
+#include "pass_runners/second_layer_pass.h"
 #include "pass_runners/shade_pass.h"
 #include "scene/light_model.h"
 #include "shader/source_tree.h"
@@ -41,6 +43,9 @@ struct TechniqueInputs {
   // The stage the technique's one call runs in: a compute pass, or a fragment shader as a deferred
   // lighting pass runs it (the fragment-stage check; only for a technique with one, has_one_call()).
   ShadeStage stage = ShadeStage::compute;
+  // The map's second layers that the frame drew (those its techniques ask for:
+  // TechniqueConfig::second_layer).
+  SecondLayers second_layers = {};
 };
 
 // A cascaded frame's layers: each cascade's map, G-buffer and light as one TechniqueInputs, and
@@ -106,6 +111,11 @@ class TechniqueConfig {
   virtual void validate() const = 0;  // throws Error naming the setting and its range
   virtual std::unique_ptr<Technique> create(TechniqueResources& resources) const = 0;
   virtual std::unique_ptr<TechniqueConfig> clone() const = 0;
+  // The second layer of the map it reads (issue 42), which the frame then draws; none for most.
+  virtual std::optional<MapLayer> second_layer() const { return std::nullopt; }
 };
+
+// The second layers `configs` ask for, each once, in MapLayer order.
+std::vector<MapLayer> second_layers_of(const std::vector<const TechniqueConfig*>& configs);
 
 }  // namespace pn

@@ -21,23 +21,21 @@ BackprojectionQueryPass::BackprojectionQueryPass(const QueryDevice& device, cons
 
 std::vector<BackprojectionResult> BackprojectionQueryPass::run(const MinMaxMipChain& mip, const LightModel& light,
                                                                const std::vector<BackprojectionQuery>& queries,
-                                                               const DeviceTexture* second_layer) const {
+                                                               const MinMaxMipChain* second_mip) const {
   if (queries.empty()) return {};
-  if (mip.map_size != light.map_size)
-    throw Error("backprojection query: light map size " + std::to_string(light.map_size) +
-                ": expected the mip chain's " + std::to_string(mip.map_size));
+  for (const MinMaxMipChain* chain : {&mip, second_mip})
+    if (chain != nullptr && chain->map_size != light.map_size)
+      throw Error("backprojection query: light map size " + std::to_string(light.map_size) +
+                  ": expected the mip chain's " + std::to_string(chain->map_size));
   glsl::PnBackprojectionQueryParams block{};
   set_light_fields(block, light);
   std::vector<Query> a, b, c;
   for (const BackprojectionQuery& q : queries) {
     a.push_back({q.u, q.v, q.depth, q.bias});
     b.push_back({static_cast<float>(q.side), q.tolerance, static_cast<float>(q.budget), q.gap});
-    c.push_back({q.thickness, second_layer != nullptr ? 1.0f : 0.0f, 0.0f, 0.0f});
+    c.push_back({q.thickness, second_mip != nullptr ? 1.0f : 0.0f, 0.0f, 0.0f});
   }
-  const DeviceTexture& layer = second_layer != nullptr ? *second_layer : *mip.texture;
-  if (second_layer != nullptr && second_layer->shape().width != light.map_size)
-    throw Error("backprojection query: second layer " + std::to_string(second_layer->shape().width) +
-                " texels wide: expected the light's map size " + std::to_string(light.map_size));
+  const DeviceTexture& layer = second_mip != nullptr ? *second_mip->texture : *mip.texture;
   const QueryResults r = query_.run({a, b, c},
                                     {{PN_BACKPROJECTION_QUERY_MIP_BINDING, *mip.texture},
                                      {PN_BACKPROJECTION_QUERY_LAYER_BINDING, layer}},

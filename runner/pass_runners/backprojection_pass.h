@@ -30,11 +30,11 @@ struct BackprojectionResult {
 class BackprojectionQueryPass {
  public:
   BackprojectionQueryPass(const QueryDevice& device, const SourceTree& tree);
-  // Throws Error when the chain is not of the light's map size. With `second_layer` (N×N R32F), the
-  // call over slabs (pnBackprojectionWork's overload with the layer).
+  // Throws Error when a chain is not of the light's map size. With `second_mip` (the min/max chain
+  // of the map's second layer), the call over slabs (pnBackprojectionWork's overload with it).
   std::vector<BackprojectionResult> run(const MinMaxMipChain& mip, const LightModel& light,
                                         const std::vector<BackprojectionQuery>& queries,
-                                        const DeviceTexture* second_layer = nullptr) const;
+                                        const MinMaxMipChain* second_mip = nullptr) const;
 
  private:
   QueryPass query_;

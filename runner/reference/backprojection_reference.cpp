@@ -126,7 +126,7 @@ BackprojectionBounds backprojection_slab_reference(const Image& map, const Image
         if (!std::isfinite(d) || !(d + bias - dz < depth)) continue;
         // The slab: from d down to the second layer's depth (+Inf: to the receiver; not past d: flat),
         // only what lies in front of the receiver (depth - bias).
-        const double back = second.at(i, j);
+        const double back = std::isfinite(second.at(i, j)) ? second.at(i, j) : INFINITY;
         const double bottom = back > d ? std::min(back, depth - bias) : d;
         blocked_possible = blocked_possible || inside_column(rays, i, j, margin, d - dz, bottom + dz);
         const bool thick = bottom - d > 2 * dz;

@@ -43,7 +43,7 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
                                               double margin = 1e-3, double depth_margin = 1e-5);
 
 // The same samples against slabs (issue 42): texel (i, j) of `map` at depth d is solid from d down
-// to `second`'s depth there (+Inf: down to the receiver; NaN or not past d: a flat square at d),
+// to `second`'s depth there (non-finite: down to the receiver; not past d: a flat square at d),
 // the column of its square in the light's frame; a sample is blocked when its ray is inside some
 // texel's column at a depth between d and min(its second depth, depth - bias) — each ray solved
 // against each column (where it crosses the square's edges), not through patches and walls.

@@ -257,8 +257,11 @@ void print_render_table(std::ostream& out, const RenderSetup& setup, const Rende
   if (setup.light_scale != 1.0) out << ", light width x" << format_number("%g", setup.light_scale);
   const size_t cascades = result.comparison.cascades.size();
   out << ", " << (cascades > 0 ? std::to_string(cascades) + " cascades of " : "shadow map ") << setup.map_size << "x"
-      << setup.map_size << " (source " << setup.source << ", " << format_ms(result.comparison.shadow_map_ms)
-      << " ms), screen " << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats
+      << setup.map_size << " (source " << setup.source << ", " << format_ms(result.comparison.shadow_map_ms) << " ms"
+      << (result.comparison.second_layer_ms > 0.0
+              ? ", second layers " + format_ms(result.comparison.second_layer_ms) + " ms"
+              : std::string())
+      << "), screen " << setup.screen_size << "x" << setup.screen_size << ", median of " << setup.repeats
       << " runs, truth " << setup.truth_samples << "x" << setup.truth_samples << " light samples\n";
   out.unsetf(std::ios::floatfield);
   print_score_tables(out, result.comparison);

@@ -30,6 +30,7 @@ struct BackprojectionSettings {
   int budget = PN_BACKPROJECTION_DEFAULT_BUDGET;
   float gap = static_cast<float>(PN_BACKPROJECTION_DEFAULT_GAP);
   float thickness = static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS);
+  MapLayer layer = MapLayer::first;  // the second layer its slabs reach down to (first: none)
 
   int side() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(samples)))); }
   void validate() const {
@@ -47,7 +48,17 @@ struct BackprojectionSettings {
   }
 };
 
-std::vector<std::string> backprojection_keys() { return {"bias", "samples", "tolerance", "budget", "gap", "thickness"}; }
+std::vector<std::string> backprojection_keys() {
+  return {"bias", "samples", "tolerance", "budget", "gap", "thickness", "layer"};
+}
+
+// "none", "peeled" or "back-faces" (map_layer_name's names, "none" for the first).
+MapLayer parse_layer(const std::string& technique, const std::string& value) {
+  if (value == "none") return MapLayer::first;
+  for (const MapLayer layer : {MapLayer::peeled, MapLayer::back_faces})
+    if (value == map_layer_name(layer)) return layer;
+  throw Error("technique '" + technique + "': layer '" + value + "': expected none, peeled or back-faces");
+}
 
 // The passes the backprojection techniques of one device share (TechniqueResources::shared).
 struct BackprojectionPasses {
@@ -87,8 +98,20 @@ class BackprojectionTechnique : public Technique {
     resources.block = query_block(block);
     resources.add_textures({{PN_BACKPROJECTION_SHADE_MIP_BINDING, *mip->texture},
                             {PN_BACKPROJECTION_SHADE_GBUFFER_BINDING, *inputs.gbuffer}});
+    std::vector<Define> defines;
+    MinMaxMipChain second_mip;
+    if (settings_.layer != MapLayer::first) {
+      const DeviceTexture* layer = inputs.second_layers.at(settings_.layer);
+      if (layer == nullptr)
+        throw Error("technique '" + settings_.name + "': needs the map's " + map_layer_name(settings_.layer) +
+                    " layer, which the frame did not draw");
+      second_mip = passes_->mip.build(*layer, n);
+      clock->stage("second layer's chain");
+      resources.add_textures({{PN_BACKPROJECTION_SHADE_LAYER_BINDING, *second_mip.texture}});
+      defines.push_back({"PN_BACKPROJECTION_SHADE_SLABS", "1"});
+    }
     TechniqueFrame out;
-    out.visibility = passes_->shade.run(inputs.stage, {}, inputs.screen_size, resources);
+    out.visibility = passes_->shade.run(inputs.stage, defines, inputs.screen_size, resources);
     clock->stage("shade");
     out.stages = clock->read();
     return out;
@@ -114,11 +137,16 @@ std::unique_ptr<TechniqueConfig> backprojection_config(const char* name) {
             else if (key == "budget") settings.budget = setting_integer(settings.name, key, value);
             else if (key == "gap") settings.gap = setting_real(settings.name, key, value);
             else if (key == "thickness") settings.thickness = setting_real(settings.name, key, value);
+            else if (key == "layer") settings.layer = parse_layer(settings.name, value);
             else throw unknown_setting(settings.name, key, backprojection_keys());
           },
           [](TechniqueResources& resources, const BackprojectionSettings& settings) -> std::unique_ptr<Technique> {
             return std::make_unique<BackprojectionTechnique>(resources.device(),
                                                              resources.shared<BackprojectionPasses>(), settings);
+          },
+          [](const BackprojectionSettings& settings) -> std::optional<MapLayer> {
+            if (settings.layer == MapLayer::first) return std::nullopt;
+            return settings.layer;
           }});
 }
 

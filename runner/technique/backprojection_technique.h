@@ -17,7 +17,9 @@ namespace pn {
 // budget (nodes a pixel, 1..60000; default 4096), gap (texel widths: the depth step neighbours of
 // one surface may take, joined by a wall; finite >= 0; default 3), thickness (a silhouette's wall
 // reaches this share of the way from the occluder to the receiver, [0, 1]; default
-// PN_BACKPROJECTION_DEFAULT_THICKNESS).
+// PN_BACKPROJECTION_DEFAULT_THICKNESS), layer (none, peeled or back-faces: the map's second layer,
+// every texel a slab down to it — the frame draws it; gap and thickness then only serve the nodes
+// that stand as one patch; default none).
 std::unique_ptr<TechniqueConfig> backprojection_config(const char* name);
 
 }  // namespace pn

@@ -53,18 +53,21 @@ Comparison compare_techniques(const Context& context, const SourceTree& tree, co
     throw Error("shadow-map source '" + setup.source + "' on cascades: expected full (each cascade's map is drawn whole)");
   const auto source = find_shadow_map_source(setup.source).make(context, tree, {});
   const GBufferRenderer gbuffer(context, tree);
+  const SecondLayerRenderers layers(context, tree, second_layers_of(setup.techniques));
   // The frame the techniques read: one map and G-buffer, or the cascades' (each technique then
   // runs once a cascade through CascadedTechnique, and the visibilities are blended).
   SceneFrame frame;
   std::unique_ptr<CascadedFrame> cascades;
   if (cascaded)
-    cascades = render_cascaded_frame(context, ShadowMapRenderer(context, tree), gbuffer, scene, *setup.cascades, size);
+    cascades = render_cascaded_frame(context, ShadowMapRenderer(context, tree), gbuffer, scene, *setup.cascades, size,
+                                     nullptr, &layers);
   else
-    frame = render_scene_frame(context, *source, gbuffer, scene, size);
+    frame = render_scene_frame(context, *source, gbuffer, scene, size, &layers);
   const TechniqueInputs inputs = cascaded ? cascades->inputs(scene.light) : frame.inputs();
 
   Comparison c;
   c.shadow_map_ms = cascaded ? cascades->shadow_map_ms : frame.shadow_map_ms;
+  c.second_layer_ms = cascaded ? cascades->second_layer_ms : frame.second_layer_ms;
   if (cascaded) {
     c.cascades = cascades->cascades;
     c.cascade_index = cascade_index_image(context.read_texture(*cascades->view_depth, 0, 0), *cascades);

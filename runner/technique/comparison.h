@@ -46,6 +46,7 @@ struct Comparison {
   double truth_ms = 0.0;   // CPU wall time of the ray tracing
   Image surface;           // SurfaceRenderer's image: albedo, N·L
   double shadow_map_ms = 0.0;
+  double second_layer_ms = 0.0;  // the second layers its techniques asked for (0: none), GPU time
   std::vector<TechniqueResult> results;  // in the order of setup.techniques
   std::optional<Scores> truth_vs_exact;
   std::optional<Image> cascade_index;  // on cascades: each pixel's cascade (cascades.glsl's selection), -1 where none
