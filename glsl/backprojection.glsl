@@ -49,8 +49,10 @@
 //   own min/max chain `secondMip` (minmax_mip.glsl; non-finite: +Inf).
 //   Texel (i, j) is then a slab, solid from d down to d2 — its patch at d
 //   and all four walls from d down to min(d2, dP - bias); +Inf: solid down
-//   to the receiver; d2 <= d: the patch alone. A node stands as one patch
-//   only when both layers' ranges are within the tolerance, and then as a
+//   to the receiver; d2 <= d: the patch alone — and only the parts of its
+//   walls that the neighbour's slab does not cover. A node stands as one
+//   patch only when its first range is within the tolerance and its second
+//   within PN_BACKPROJECTION_SECOND_LAYER_TOLERANCE times it, and then as a
 //   slab from the middle of its first range to the middle of its second.
 //   The gap and thickness rules serve only the call without the layer. With
 //   tolerance 0 the result is the fraction of the samples whose ray meets a
@@ -76,13 +78,15 @@
 //
 // cost: per node visited one fetch, per texel four more (its neighbours); per
 //   patch side² / 32 mask words and four samples tested one by one; per wall
-//   the samples not yet set in its box on the light, one by one. Bounded by
-//   `budget` nodes and PN_BACKPROJECTION_MAX_WORK loop iterations (the walk
-//   is stackless: no local array); what bounds it in practice is the number of occluding texels whose
-//   segments reach: the penumbra's area in texels.
+//   the samples not yet set in its box on the light, one by one. Over slabs,
+//   per node two fetches, per texel or standing node eight more (both layers
+//   of its neighbours), and up to two walls an edge. Bounded by `budget`
+//   nodes and PN_BACKPROJECTION_MAX_WORK loop iterations (the walk is
+//   stackless: no local array); what bounds it in practice is the number of
+//   occluding texels whose segments reach: the penumbra's area in texels.
 //
-// isa budget: vgprs 56, instructions 5600, code 30720, scratch 0
-//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
+// isa budget: vgprs 64, instructions 4800, code 25600, scratch 0
+//   (`penumbra isa --budgets`: both calls as an engine compiles them, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL
 #define PENUMBRA_BACKPROJECTION_GLSL
@@ -406,7 +410,8 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
       if (within) {
         // The second layer's (min, max) over the node (slabs); a uniform one (+Inf alike) spreads 0.
         vec2 back = slabs ? pnMipFetch(secondMip, node.x, node.yz) : vec2(0.0);
-        float spread = max(range.y - range.x, back.y == back.x ? 0.0 : back.y - back.x);
+        float spread = max(range.y - range.x,
+                           back.y == back.x ? 0.0 : (back.y - back.x) / PN_BACKPROJECTION_SECOND_LAYER_TOLERANCE);
         // A node is resolved unless both layers' ranges are tight (a NaN spread resolves); a texel
         // is back-projected exactly.
         resolve = node.x > 0 && visited < budget && work < PN_BACKPROJECTION_MAX_WORK &&

@@ -32,6 +32,13 @@
 // stands as one patch: the default.
 #define PN_BACKPROJECTION_DEFAULT_TOLERANCE 0.05
 
+// Over slabs (the call with a second layer), a node stands as one slab when its first layer's range
+// is within the tolerance and its second layer's within this many times it: the bottoms' depths
+// decide only the rays that pass under a blocker's top, and resolving every texel of a blocker whose
+// back varies (a tall box's sides, seen from the light) costs 3x the time for no measured gain
+// (docs/modules/backprojection.md).
+#define PN_BACKPROJECTION_SECOND_LAYER_TOLERANCE 4.0
+
 // Neighbouring texels whose depths differ by at most this many texel widths (at the nearer one's
 // depth) are one surface, joined by a wall; a larger step is a silhouette, left open.
 #define PN_BACKPROJECTION_DEFAULT_GAP 3.0

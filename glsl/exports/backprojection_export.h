@@ -8,6 +8,11 @@
 #include "../passes/uniform_block.h"
 #include "exports.h"
 
+#define PN_EXPORT_SECOND_LAYER_BINDING 5  // sampler2D: the second layer's min/max chain (the slabs' overload)
+
+// PN_EXPORT_BACKPROJECTION_LAYERS (with PN_EXPORT_ENGINE, `penumbra isa`): 2 compiles the call over
+// slabs alone, else the call without the layer.
+
 PN_UNIFORM_BLOCK(PnBackprojectionExport, PN_EXPORT_PARAMS_BINDING)
   PN_LIGHT_FIELDS
   float bias;
@@ -16,6 +21,7 @@ PN_UNIFORM_BLOCK(PnBackprojectionExport, PN_EXPORT_PARAMS_BINDING)
   int budget;
   float gap;
   float thickness;
+  int slabs;  // 1: the overload with the second layer's chain (PN_EXPORT_SECOND_LAYER_BINDING)
 PN_END_UNIFORM_BLOCK(pnExport)
 
 #endif  // PENUMBRA_EXPORTS_BACKPROJECTION_H

@@ -16,7 +16,8 @@
 //   the visibility an interval; a receiver whose blocker search float could decide otherwise is
 //   left out and counted);
 // - pnBackprojection, every texel resolved, against the rays through the map's surface
-//   (backprojection_reference: an interval);
+//   (backprojection_reference: an interval), and its overload with a second layer against the
+//   rays through the slabs (backprojection_slab_reference);
 // each through both overloads where it has two (half the receivers through the receiverPlane one:
 // with a zero plane for the square-region calls — their planes are the fast_pcss check's — and a
 // small plane of its own for the disks), the pixels within rounding of a decision left out and
@@ -71,6 +72,7 @@ PN_STD140_OFFSET(PnPoissonPcssExport, rotationFromAngle, 52);
 PN_STD140_OFFSET(PnPoissonPcssExport, blockerPoints, 64);
 PN_STD140_OFFSET(PnVogelPcssExport, filterSamples, 36);
 PN_STD140_OFFSET(PnBackprojectionExport, thickness, 44);
+PN_STD140_OFFSET(PnBackprojectionExport, slabs, 48);
 PN_STD140_OFFSET(PnVsmExport, kind, 36);
 PN_STD140_SIZE(PnExactPcssExport, 32);
 PN_STD140_OFFSET(PnExactPcssExport, bias, 24);
@@ -353,10 +355,16 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                               vogel_layout(vogel_blockers, px, py), vogel_layout(vogel_filter, px, py)));
       }
     }
-    // Back-projection, every texel resolved, on every third receiver (the reference is brute force).
+    // Back-projection, every texel resolved, on every third receiver (the reference is brute force);
+    // and over slabs down to a second layer 0..2 deeper than the map (a hash of the texel).
     std::vector<ExportReceiver> bp_receivers;
-    std::vector<DiskPcssResult> bp_expected;
+    std::vector<DiskPcssResult> bp_expected, bp_slab_expected;
     constexpr int kBackprojectionSide = 4;
+    Image second = s.map;
+    for (int i = 0; i < kMap * kMap; ++i)
+      second.texels[i] += 2.0f * static_cast<float>((static_cast<unsigned>(i) * 2654435761u) >> 24) / 255.0f;
+    const std::unique_ptr<DeviceTexture> second_texture = env.device.upload(second);
+    const MinMaxMipChain second_mip = mips.build(*second_texture, kMap);
     for (std::size_t k = 0; k < s.receivers.size(); k += 3) {
       const ExportReceiver& r = s.receivers[k];
       bp_receivers.push_back(r);
@@ -364,7 +372,14 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
           backprojection_reference(s.map, scene.light, r.u, r.v, r.depth, bias, kBackprojectionSide,
                                    PN_BACKPROJECTION_DEFAULT_GAP, PN_BACKPROJECTION_DEFAULT_THICKNESS);
       bp_expected.push_back({false, b.visibility_lo, b.visibility_hi});
+      const BackprojectionBounds slab =
+          backprojection_slab_reference(s.map, second, scene.light, r.u, r.v, r.depth, bias, kBackprojectionSide);
+      bp_slab_expected.push_back({false, slab.visibility_lo, slab.visibility_hi});
     }
+    const std::vector<QueryTexture> bp_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+                                                {PN_EXPORT_SECOND_LAYER_BINDING, *mip.texture}};
+    const std::vector<QueryTexture> bp_slab_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+                                                     {PN_EXPORT_SECOND_LAYER_BINDING, *second_mip.texture}};
 
     for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
       const std::string where = name + stage_name(stage) + " ";
@@ -438,9 +453,13 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       bb.thickness = static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS);
       results.push_back(interval_case(where + "exports/backprojection (pnBackprojection, 4 x 4 samples, every texel "
                                               "resolved) vs rays through the map's surface on the CPU",
-                                      bp_expected,
-                                      backprojection.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture}},
-                                                         bp_receivers, query_block(bb))));
+                                      bp_expected, backprojection.run(stage, bp_textures, bp_receivers, query_block(bb))));
+      glsl::PnBackprojectionExport slabs = bb;
+      slabs.slabs = 1;
+      results.push_back(interval_case(where + "exports/backprojection (pnBackprojection with a second layer 0..2 deeper, "
+                                              "4 x 4 samples, every texel resolved) vs rays against the slabs on the CPU",
+                                      bp_slab_expected,
+                                      backprojection.run(stage, bp_slab_textures, bp_receivers, query_block(slabs))));
 
       // The shipped defaults of the calls whose defaults are not exact (sampled leaves, patches).
       glsl::PnFastPcssExport fast_defaults = exact_fast_block(scene.light, bias, 1.0f), fast_header = fast_defaults;
@@ -468,7 +487,6 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       bp_header.side = PN_BACKPROJECTION_DEFAULT_SIDE;
       bp_header.tolerance = static_cast<float>(PN_BACKPROJECTION_DEFAULT_TOLERANCE);
       bp_header.budget = PN_BACKPROJECTION_DEFAULT_BUDGET;
-      const std::vector<QueryTexture> bp_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture}};
       results.push_back(defaults_case(
           where + "exports/backprojection: pnBackprojectionDefaults(bias) = backprojection.h's defaults",
           backprojection.run(stage, bp_textures, bp_receivers, query_block(bp_defaults)),

@@ -52,7 +52,7 @@ std::string vertex_of(const SourceTree& tree, const std::string& frag) {
 }
 
 // An export that makes one of several calls by a block field: each call an engine compiles alone
-// (vsm_call.glsl's pnVsm, pnEvsm2 and pnEvsm4).
+// (vsm_call.glsl's pnVsm, pnEvsm2 and pnEvsm4; backprojection_call.glsl's two overloads).
 struct EngineVariant {
   const char* exported;
   const char* name;
@@ -62,6 +62,8 @@ const EngineVariant kEngineVariants[] = {
     {"vsm", "vsm", {"PN_EXPORT_VSM_KIND", "PN_EXPORT_VSM"}},
     {"vsm", "evsm2", {"PN_EXPORT_VSM_KIND", "PN_EXPORT_EVSM2"}},
     {"vsm", "evsm4", {"PN_EXPORT_VSM_KIND", "PN_EXPORT_EVSM4"}},
+    {"backprojection", "backprojection", {"PN_EXPORT_BACKPROJECTION_LAYERS", "1"}},
+    {"backprojection", "backprojection-slabs", {"PN_EXPORT_BACKPROJECTION_LAYERS", "2"}},
 };
 
 // The technique passes the runner's registry runs, by technique.
