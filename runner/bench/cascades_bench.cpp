@@ -158,6 +158,9 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
   const int n = setup.screen;
   const Truth truth = trace_truth(scene, n, truth_settings);
   const VisibilityScorer scorer(truth.visibility, read_float_texture(context, SurfaceRenderer(context, tree).render(scene, n)));
+  std::vector<const TechniqueConfig*> path_list;
+  for (const auto& c : path_configs) path_list.push_back(c.get());
+  const SecondLayerRenderers layers(context, tree, second_layers_of(path_list));
   for (bool stable : {true, false}) {
     progress.step(std::string(stable ? "stable" : "unstable") + " cascades along the camera path, " +
                   std::to_string(setup.path_frames) + " frames");
@@ -166,7 +169,8 @@ CascadesBench bench_cascades(const Context& context, const SourceTree& tree, con
     for (int f = 0; f < setup.path_frames; ++f) {
       const SceneCamera fitted = city_camera(f);
       const auto frame = render_cascaded_frame(context, maps, gbuffer, scene,
-                                               cascade_settings(setup.count, setup.size, 1.0, stable), n, &fitted);
+                                               cascade_settings(setup.count, setup.size, 1.0, stable), n, &fitted,
+                                               &layers);
       for (size_t m = 0; m < rows.size(); ++m) {
         Image v = context.read_texture(*CascadedTechnique(*path_techniques[m], blend, context).run(frame->inputs(scene.light), false).visibility, 0, 0);
         rows[m].technique = path_configs[m]->name();

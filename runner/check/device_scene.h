@@ -14,9 +14,12 @@ namespace pn {
 struct DeviceSceneFrame {
   std::unique_ptr<DeviceTexture> shadow_map;  // N×N R32F
   std::unique_ptr<DeviceTexture> gbuffer;     // screen² RGBA32F
-  TechniqueInputs inputs;                          // the two, the scene's light, the screen size
+  SecondLayerTextures second_layers;          // those asked for
+  TechniqueInputs inputs;                     // all of them, the scene's light, the screen size
 };
 
-DeviceSceneFrame render_device_frame(const CheckEnvironment& env, const Scene& scene, int screen_size);
+// `layers`: the map's second layers to draw beside it (the ones techniques ask for).
+DeviceSceneFrame render_device_frame(const CheckEnvironment& env, const Scene& scene, int screen_size,
+                                     const std::vector<MapLayer>& layers = {});
 
 }  // namespace pn

@@ -188,11 +188,16 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const PcssPipeline pipeline(context, env.tree);
   TechniqueResources resources(context, env.tree);
   std::vector<CaseResult> results;
+  // The second layers the registry's entries ask for (back-projection's peeled layer).
+  std::vector<std::unique_ptr<TechniqueConfig>> entries;
+  std::vector<const TechniqueConfig*> configs;
+  for (const TechniqueEntry& entry : technique_registry()) configs.push_back(entries.emplace_back(entry.make()).get());
+  const std::vector<MapLayer> layers = second_layers_of(configs);
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";
-    const DeviceSceneFrame frame = render_device_frame(env, scene, kScreen);
+    const DeviceSceneFrame frame = render_device_frame(env, scene, kScreen, layers);
     const TechniqueInputs& inputs = frame.inputs;
     const Image map = read(context, *frame.shadow_map), gbuffer = read(context, *frame.gbuffer);
 

@@ -66,6 +66,7 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
   const std::shared_ptr<const TechniqueConfig> config =
       setup.technique ? setup.technique : std::shared_ptr<const TechniqueConfig>(parse_technique(kDefaultTechnique));
   const std::unique_ptr<Technique> technique = config->create(resources);
+  const SecondLayerRenderers layers(context, tree, second_layers_of({config.get()}));
   const GBufferRenderer gbuffers(context, tree);
   const SurfaceRenderer surfaces(context, tree);
   const int n = setup.map_size, size = setup.screen_size;
@@ -89,7 +90,9 @@ FramesResult run_frames(const Context& context, const SourceTree& tree, const Fr
     row.changed_share = map_share(sourced.changed, n);
     const std::unique_ptr<DeviceTexture> gbuffer =
         gbuffers.render_texture(scene, size, fixtures::kNormalOffsetTexels, scene.map_light());
-    const TechniqueInputs inputs{scene.light, size, sourced.map, gbuffer.get(), sourced.mip, sourced.pyramid};
+    TechniqueInputs inputs{scene.light, size, sourced.map, gbuffer.get(), sourced.mip, sourced.pyramid};
+    const SecondLayerTextures second_layers = layers.render(scene, scene.map_light(), *sourced.map);
+    inputs.second_layers = second_layers.view();
     const TechniqueFrame frame = technique->run(inputs, false);
     row.technique_ms = frame.total_ms();
     result.rows.push_back(row);

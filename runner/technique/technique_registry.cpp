@@ -82,11 +82,11 @@ const std::vector<TechniqueEntry>& technique_registry() {
       {.name = "savsm-raw", .summary = "savsm without light-bleeding reduction (bleeding=0)",
        .make = []() -> Made { return savsm_config("savsm-raw", {{"bleeding", "0"}}); },
        .family = "savsm", .rendered = false, .frontier = {}},
-      {.name = "backprojection", .summary = "back-projection over the min/max mip chain (issue 28): the fraction of 64 light samples "
-                         "the map's surface leaves visible (patches, walls within 3 texel widths), a bitmask "
-                         "(backprojection.glsl)",
+      {.name = "backprojection", .summary = "back-projection over the min/max mip chain (issues 28, 42): the fraction of 256 light "
+                         "samples that the map's texels, slabs down to its peeled second layer, leave visible, a "
+                         "bitmask (backprojection.glsl; layer=none: the map's surface alone)",
        .make = []() -> Made { return backprojection_config("backprojection"); },
-       .frontier = {":samples=16", ":samples=64", "", ":tolerance=0.2"}},
+       .frontier = {":samples=64", "", ":tolerance=0.2", ":layer=none"}},
       {.name = kStagedPoissonTechnique, .summary = "Poisson PCSS through the staged passes (a map copy, a pass a step): the same output, "
                                 "the bench's baseline before issue 24",
        .make = []() -> Made {
