@@ -236,6 +236,7 @@ const std::vector<std::pair<const char*, Draw>>& figure_table() {
       {"savsm_bleeding", &savsm_bleeding_figure},
       {"cascades_splits", [](const Context&, const SourceTree&) { return cascades_splits_figure(); }},
       {"backprojection", &backprojection_figure},
+      {"backprojection_layers", &backprojection_layers_figure},
       {"techniques", &techniques_figure},
   };
   return figures;

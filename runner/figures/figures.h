@@ -14,7 +14,7 @@ namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
 // traversal_nodes.png, reuse_groups.png, pipeline_stages.png, vsm_bleeding.png, savsm_bleeding.png,
-// cascades_splits.png, backprojection.png and techniques.png into `out`
+// cascades_splits.png, backprojection.png, backprojection_layers.png and techniques.png into `out`
 // (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
@@ -43,5 +43,9 @@ Canvas techniques_figure(const Context& context, const SourceTree& tree);
 // pnBackprojection over a boxes map under the sun: the map, the visibility, the nodes visited
 // (backprojection_figure.cpp).
 Canvas backprojection_figure(const Context& context, const SourceTree& tree);
+
+// The tall blocker under a light 4x as wide: the map, its peeled layer, the truth, and
+// back-projection's error without the layer and over slabs (backprojection_layers_figure.cpp).
+Canvas backprojection_layers_figure(const Context& context, const SourceTree& tree);
 
 }  // namespace pn
