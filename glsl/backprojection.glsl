@@ -44,9 +44,11 @@
 //   the same samples whose ray to the receiver crosses the map's surface —
 //   exactly (runner/reference/backprojection_reference.cpp).
 //   A second layer (issue 42; Bavoil, Callahan & Silva 2008) says how thick
-//   each blocker is: the linear light depth d2 of the nearest surface behind
-//   the map's (depth peeling: passes/shadow_depth_peel.frag), given as its
-//   own min/max chain `secondMip` (minmax_mip.glsl; non-finite: +Inf).
+//   each blocker is: the linear light depth d2 of the surface behind the
+//   map's — the nearest back face (passes/shadow_depth_back.frag: for closed,
+//   consistently wound meshes the far side of the first solid) or, by depth
+//   peeling, the nearest surface behind (shadow_depth_peel.frag) — given as
+//   its own min/max chain `secondMip` (minmax_mip.glsl; non-finite: +Inf).
 //   Texel (i, j) is then a slab, solid from d down to d2 — its patch at d
 //   and all four walls from d down to min(d2, dP - bias); +Inf: solid down
 //   to the receiver; d2 <= d: the patch alone — and only the parts of its
@@ -71,7 +73,7 @@
 //         nodes visited, patches that stood for nodes)
 //   float pnBackprojection(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver,
 //         PnBackprojectionSettings s)   the same over slabs: secondMip, the min/max chain
-//         (minmax_mip.glsl) of the map's second layer, the surface behind the map's
+//         (minmax_mip.glsl) of the map's second layer (its back faces), the surface behind the map's
 //   PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondMip, PnLight light,
 //         vec3 receiver, PnBackprojectionSettings s)   its work
 //   vec2 pnBackprojectionSample(int k, int side)   light sample k, in [-1/2, 1/2]²

@@ -16,10 +16,10 @@
 // - a budget of 16 nodes: finite, in [0, 1], at most budget + stack nodes —
 //   the rest estimated, never dropped;
 // - two layers (issue 42, the overload with the second layer): every scene's
-//   map with its peeled layer, the scene's light and 4 times as wide, and the
+//   map with its back-face layer, the scene's light and 4 times as wide, and the
 //   sun over the random height field with a random second layer (thick,
 //   +Inf, NaN, nearer than the first) — exactly the CPU's rays against the
-//   slabs; the defaults over the peeled layer within the stated bound.
+//   slabs; the defaults over the back-face layer within the stated bound.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -129,7 +129,7 @@ CaseResult defaults_case(const std::string& what, const std::vector<Backprojecti
 std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
   const BackprojectionQueryPass pass(env.device, env.tree);
   const MinMaxMipBuilder mips(env.device, env.tree);
-  const ShadowMapRenderer peel(env.device, env.tree, MapLayer::peeled);
+  const ShadowMapRenderer back_faces(env.device, env.tree, MapLayer::back_faces);
   std::vector<CaseResult> results;
   const auto read = [&](const DeviceTexture& t) { return env.device.read_texture(t, 0, 0); };
 
@@ -191,15 +191,15 @@ std::vector<CaseResult> run_backprojection_check(const CheckEnvironment& env) {
                          Tolerance::exact(), compare(se, so, Tolerance::exact())});
     }
 
-    // Two layers (issue 42): the map's texels as slabs down to the peeled layer, the scene's light
-    // and 4 times as wide.
-    const std::unique_ptr<DeviceTexture> peeled = peel.render_texture(scene, scene.map_light(), frame.shadow_map.get());
-    const Image second = read(*peeled);
-    const MinMaxMipChain second_mip = mips.build(*peeled, n);
+    // Two layers (issue 42): the map's texels as slabs down to its back-face layer (the technique's
+    // default), the scene's light and 4 times as wide.
+    const std::unique_ptr<DeviceTexture> layer = back_faces.render_texture(scene, scene.map_light());
+    const Image second = read(*layer);
+    const MinMaxMipChain second_mip = mips.build(*layer, n);
     const Receivers slab_receivers = gbuffer_receivers(gbuffer, 8, 0.0f, PN_BACKPROJECTION_MAX_BUDGET);
     for (const LightModel* light : std::initializer_list<const LightModel*>{&scene.light, &wide.light}) {
       const std::string what = name + (light == &wide.light ? ", the light 4x as wide" : "") +
-                               ", 8x8 samples, the peeled second layer";
+                               ", 8x8 samples, the back-face layer";
       const std::vector<BackprojectionResult> got = pass.run(mip, *light, slab_receivers.queries, &second_mip);
       results.push_back(exact_case(what + ": every texel a slab, vs the rays against the slabs on the CPU", map, *light,
                                    slab_receivers.queries, got, &second));

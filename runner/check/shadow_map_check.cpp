@@ -2,7 +2,8 @@
 // rasterised shadow map of linear light depth against a CPU ray cast through
 // every texel centre, and its G-buffer (shadow-map u, v, light depth, valid)
 // against a ray cast from the camera through every pixel centre, both with
-// the silhouette rule of check/raster_compare.h.
+// the silhouette rule of check/raster_compare.h; and the map's two second layers
+// (depth peeling, back faces) against the rays' next surfaces.
 #include <string>
 
 #include "check/module_check.h"
@@ -23,6 +24,8 @@ constexpr double kSurface = 1e-3;   // world units: a float G-buffer value back-
 
 std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env) {
   const ShadowMapRenderer shadow_map(env.device, env.tree);
+  const ShadowMapRenderer peeled(env.device, env.tree, MapLayer::peeled);
+  const ShadowMapRenderer back_faces(env.device, env.tree, MapLayer::back_faces);
   const GBufferRenderer gbuffer(env.device, env.tree);
   std::vector<CaseResult> results;
   for (const auto& fixture : fixtures::kScenes) {
@@ -32,11 +35,31 @@ std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env) {
       Image expected(n, n);
       for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) expected.at(x, y) = ray_cast_light_depth(scene, x, y);
-      const Image observed = env.device.read_texture(*shadow_map.render_texture(scene, scene.map_light()));
+      const std::unique_ptr<DeviceTexture> map = shadow_map.render_texture(scene, scene.map_light());
+      const Image observed = env.device.read_texture(*map);
       for (CaseResult& c : compare_raster(name + " shadow map: light depth vs ray cast", expected, observed, kRelative,
                                           within_neighbour_range(expected, observed, kSliver),
                                           "lies within its 3x3 rays' depths"))
         results.push_back(std::move(c));
+      // Its second layers (issue 42): the nearest surface behind it, the nearest back face.
+      for (const ShadowMapRenderer* layer : {&peeled, &back_faces}) {
+        const bool back = layer == &back_faces;
+        Image second(n, n);
+        for (int y = 0; y < n; ++y)
+          for (int x = 0; x < n; ++x)
+            second.at(x, y) = ray_cast_second_layer(scene, x, y, back, ShadowMapRenderer::peel_margin());
+        const Image drawn = env.device.read_texture(*layer->render_texture(scene, scene.map_light(), map.get()));
+        // On a silhouette the texel may hold a face the ray through its centre misses: a wall seen
+        // edge-on spans from the first layer's depths to the second's.
+        const SilhouetteRule of_second = within_neighbour_range(second, drawn, kSliver);
+        const SilhouetteRule of_first = within_neighbour_range(expected, drawn, kSliver);
+        for (CaseResult& c : compare_raster(name + " " + map_layer_name(layer->layer()) + " second layer: light depth vs "
+                                                "ray cast",
+                                            second, drawn, kRelative,
+                                            [&](int x, int y) { return of_second(x, y) || of_first(x, y); },
+                                            "lies within its 3x3 rays' depths of either layer"))
+          results.push_back(std::move(c));
+      }
 
       const int screen = n;  // screen as large as the map
       Image receivers(screen, screen, 4);

@@ -1,6 +1,6 @@
 // docs/modules/backprojection.md's second picture (issue 42): what the second
 // layer adds — the tall blocker under its light 4 times as wide, the map and
-// its peeled layer seen from the light, and back-projection's error against
+// its back-face layer seen from the light, and back-projection's error against
 // the ray-traced truth without the layer and over slabs.
 #include <memory>
 #include <string>
@@ -23,7 +23,7 @@ Canvas backprojection_layers_figure(const Context& context, const SourceTree& tr
   const ShadowMapRenderer maps(context, tree);
   const std::unique_ptr<DeviceTexture> map = maps.render_texture(scene, scene.map_light());
   const SecondLayerTextures layers =
-      SecondLayerRenderers(context, tree, {MapLayer::peeled}).render(scene, scene.map_light(), *map);
+      SecondLayerRenderers(context, tree, {MapLayer::back_faces}).render(scene, scene.map_light(), *map);
   const std::unique_ptr<TechniqueConfig> none = parse_technique("backprojection:layer=none");
   const std::unique_ptr<TechniqueConfig> slabs = parse_technique("backprojection");
   ComparisonSetup setup;
@@ -38,8 +38,8 @@ Canvas backprojection_layers_figure(const Context& context, const SourceTree& tr
   const float near = static_cast<float>(fixtures::kLightNear), far = static_cast<float>(fixtures::kLightHeight + 1.0f);
   canvas.text(font, at(0), gap, "the map (light depth)", 13, ink);
   canvas.grey(flip_rows(context.read_texture(*map, 0, 0)), 0, at(0), gap + label, scale, near, far, empty);
-  canvas.text(font, at(1), gap, "its peeled second layer", 13, ink);
-  canvas.grey(flip_rows(context.read_texture(*layers.peeled, 0, 0)), 0, at(1), gap + label, scale, near, far, empty);
+  canvas.text(font, at(1), gap, "its back-face layer", 13, ink);
+  canvas.grey(flip_rows(context.read_texture(*layers.back_faces, 0, 0)), 0, at(1), gap + label, scale, near, far, empty);
   canvas.text(font, at(2), gap, "truth (ray traced)", 13, ink);
   canvas.rgb(flip_rows(compose_lit_image(c.surface, c.truth)), at(2), gap + label, scale);
   for (int k = 0; k < 2; ++k) {

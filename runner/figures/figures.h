@@ -44,7 +44,7 @@ Canvas techniques_figure(const Context& context, const SourceTree& tree);
 // (backprojection_figure.cpp).
 Canvas backprojection_figure(const Context& context, const SourceTree& tree);
 
-// The tall blocker under a light 4x as wide: the map, its peeled layer, the truth, and
+// The tall blocker under a light 4x as wide: the map, its back-face layer, the truth, and
 // back-projection's error without the layer and over slabs (backprojection_layers_figure.cpp).
 Canvas backprojection_layers_figure(const Context& context, const SourceTree& tree);
 

@@ -44,6 +44,8 @@ ShadowMapRenderer::ShadowMapRenderer(const QueryDevice& device, const SourceTree
       layer_(layer),
       program_(device.compile_raster(tree, "passes/shadow_depth.vert", fragment_pass(layer), TexelFormat::r32f)) {}
 
+double ShadowMapRenderer::peel_margin() { return PN_SHADOW_DEPTH_PEEL_MARGIN; }
+
 PassResources ShadowMapRenderer::resources(const QueryBlock& block, const DeviceTexture* first) const {
   PassResources out{{}, {}, {}, block};
   if (layer_ != MapLayer::peeled) return out;

@@ -44,6 +44,8 @@ class ShadowMapRenderer {
             const DeviceTexture* first = nullptr) const;
   // The map's clear value: +Inf, "no occluder".
   static const float* far_clear();
+  // Depth peeling's margin, a share of the first layer's depth (PN_SHADOW_DEPTH_PEEL_MARGIN).
+  static double peel_margin();
 
  private:
   PassResources resources(const QueryBlock& block, const DeviceTexture* first) const;

@@ -195,13 +195,47 @@ glm::dvec3 through_pixel(const glm::mat4& view_projection, int x, int y, int siz
 
 }  // namespace
 
-float ray_cast_light_depth(const Scene& scene, int x, int y) {
+namespace {
+// The ray from the light through texel (x, y)'s centre, of unit length along the light's axis
+// (−y): its parameter is the linear depth.
+std::pair<glm::dvec3, glm::dvec3> light_ray(const Scene& scene, int x, int y) {
   const glm::dvec3 origin(scene.light_position);
   const glm::dvec3 on_near = through_pixel(scene.light_projection() * scene.light_view(), x, y, scene.light.map_size);
-  // Unit length along the light's axis (−y): the ray parameter is the linear depth.
   glm::dvec3 direction = on_near - origin;
   direction /= -direction.y;
+  return {origin, direction};
+}
+}  // namespace
+
+float ray_cast_light_depth(const Scene& scene, int x, int y) {
+  const auto [origin, direction] = light_ray(scene, x, y);
   return static_cast<float>(nearest_hit(scene, origin, direction, scene.light.near_plane, scene.light.far_plane));
+}
+
+float ray_cast_second_layer(const Scene& scene, int x, int y, bool back_faces, double margin) {
+  const auto [origin, direction] = light_ray(scene, x, y);
+  const double first = nearest_hit(scene, origin, direction, scene.light.near_plane, scene.light.far_plane);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Box& b : scene.boxes) {
+    // The ray's span in the box (the slab method on its own: entry t0, exit t1).
+    double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3 && t0 <= t1; ++a) {
+      if (std::fabs(direction[a]) < 1e-300) {
+        if (origin[a] < b.lo[a] || origin[a] > b.hi[a]) t0 = 1.0, t1 = 0.0;
+        continue;
+      }
+      double ta = (b.lo[a] - origin[a]) / direction[a], tb = (b.hi[a] - origin[a]) / direction[a];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+    }
+    if (t0 > t1) continue;
+    // Its faces the ray crosses inside the light's depth range: the exit faces away from the light.
+    for (const double t : {t0, t1}) {
+      if (t < scene.light.near_plane || t > scene.light.far_plane) continue;
+      if (back_faces ? t == t1 : t > first + margin * std::fabs(first)) nearest = std::min(nearest, t);
+    }
+  }
+  return static_cast<float>(nearest);
 }
 
 CameraRay camera_ray(const glm::dmat4& inverse_view_projection, int x, int y, int size) {

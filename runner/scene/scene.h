@@ -170,5 +170,10 @@ bool receiver_on_surface_near_pixel(const Scene& scene, double u, double v, doub
 // surface through the centre of shadow-map texel (x, y) — x, y counted from
 // the framebuffer's lower left, as glReadPixels returns them — or +Inf.
 float ray_cast_light_depth(const Scene& scene, int x, int y);
+// The map's second layer through texel (x, y)'s centre, by ray casting (issue 42): with
+// `back_faces` the nearest box exit (the nearest surface facing away from the light), else the
+// nearest surface whose depth passes the first's by more than `margin` of it (depth peeling);
+// +Inf when none.
+float ray_cast_second_layer(const Scene& scene, int x, int y, bool back_faces, double margin);
 
 }  // namespace pn

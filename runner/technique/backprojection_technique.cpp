@@ -30,7 +30,7 @@ struct BackprojectionSettings {
   int budget = PN_BACKPROJECTION_DEFAULT_BUDGET;
   float gap = static_cast<float>(PN_BACKPROJECTION_DEFAULT_GAP);
   float thickness = static_cast<float>(PN_BACKPROJECTION_DEFAULT_THICKNESS);
-  MapLayer layer = MapLayer::peeled;  // the second layer its slabs reach down to (first: none)
+  MapLayer layer = MapLayer::back_faces;  // the second layer its slabs reach down to (first: none)
 
   int side() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(samples)))); }
   void validate() const {

@@ -2,7 +2,7 @@
 // `backprojection`, issues 28 and 42): backprojection.glsl's pnBackprojection
 // per screen pixel (passes/backprojection_shade.comp / .frag) over the map's
 // aligned min/max mip chain — the source's when it keeps one, else built —
-// and, by default, over slabs down to the map's peeled second layer (which the
+// and, by default, over slabs down to the map's back-face layer (which the
 // frame draws when the technique asks: TechniqueConfig::second_layer).
 // Stages: mip chain (when built), the second layer's chain, shade. No stats.
 #pragma once
@@ -21,7 +21,7 @@ namespace pn {
 // reaches this share of the way from the occluder to the receiver, [0, 1]; default
 // PN_BACKPROJECTION_DEFAULT_THICKNESS), layer (none, peeled or back-faces: the map's second layer,
 // every texel a slab down to it — the frame draws it; gap and thickness serve only layer=none;
-// default peeled).
+// default back-faces).
 std::unique_ptr<TechniqueConfig> backprojection_config(const char* name);
 
 }  // namespace pn

@@ -83,7 +83,7 @@ const std::vector<TechniqueEntry>& technique_registry() {
        .make = []() -> Made { return savsm_config("savsm-raw", {{"bleeding", "0"}}); },
        .family = "savsm", .rendered = false, .frontier = {}},
       {.name = "backprojection", .summary = "back-projection over the min/max mip chain (issues 28, 42): the fraction of 256 light "
-                         "samples that the map's texels, slabs down to its peeled second layer, leave visible, a "
+                         "samples that the map's texels, slabs down to its back-face layer, leave visible, a "
                          "bitmask (backprojection.glsl; layer=none: the map's surface alone)",
        .make = []() -> Made { return backprojection_config("backprojection"); },
        .frontier = {":samples=64", "", ":tolerance=0.2", ":layer=none"}},

@@ -48,7 +48,11 @@ VulkanRasterProgram::VulkanRasterProgram(const VulkanDevice::State& s, std::stri
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.cullMode = VK_CULL_MODE_NONE;
-  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  // GL's front faces (counter-clockwise in window coordinates, y up): the targets keep GL's rows
+  // (NDC y = -1 at row 0, a positive viewport), and Vulkan's facing formula negates the signed
+  // area for its y-down framebuffer, so GL's counter-clockwise is Vulkan's clockwise here
+  // (gl_FrontFacing in shadow_depth_back.frag; found by the shadow_map check's back-face layer).
+  raster.frontFace = VK_FRONT_FACE_CLOCKWISE;
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
