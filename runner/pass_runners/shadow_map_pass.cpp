@@ -20,29 +20,29 @@ glsl::PnShadowDepthParams light_block(const MapLight& light) {
   return {glsl::std140_mat4(light.view), glsl::std140_mat4(light.projection)};
 }
 
-const char* fragment_pass(MapLayer layer) {
-  switch (layer) {
-    case MapLayer::peeled: return "passes/shadow_depth_peel.frag";
-    case MapLayer::back_faces: return "passes/shadow_depth_back.frag";
-    case MapLayer::first: break;
-  }
-  return "passes/shadow_depth.frag";
+// Each layer's name (the options') and fragment stage.
+struct LayerPass {
+  MapLayer layer;
+  const char* name;
+  const char* fragment;
+};
+constexpr LayerPass kLayerPasses[] = {{MapLayer::first, "first", "passes/shadow_depth.frag"},
+                                      {MapLayer::peeled, "peeled", "passes/shadow_depth_peel.frag"},
+                                      {MapLayer::back_faces, "back-faces", "passes/shadow_depth_back.frag"}};
+
+const LayerPass& layer_pass(MapLayer layer) {
+  for (const LayerPass& p : kLayerPasses)
+    if (p.layer == layer) return p;
+  return kLayerPasses[0];
 }
 }  // namespace
 
-const char* map_layer_name(MapLayer layer) {
-  switch (layer) {
-    case MapLayer::peeled: return "peeled";
-    case MapLayer::back_faces: return "back-faces";
-    case MapLayer::first: break;
-  }
-  return "first";
-}
+const char* map_layer_name(MapLayer layer) { return layer_pass(layer).name; }
 
 ShadowMapRenderer::ShadowMapRenderer(const QueryDevice& device, const SourceTree& tree, MapLayer layer)
     : device_(&device),
       layer_(layer),
-      program_(device.compile_raster(tree, "passes/shadow_depth.vert", fragment_pass(layer), TexelFormat::r32f)) {}
+      program_(device.compile_raster(tree, "passes/shadow_depth.vert", layer_pass(layer).fragment, TexelFormat::r32f)) {}
 
 double ShadowMapRenderer::peel_margin() { return PN_SHADOW_DEPTH_PEEL_MARGIN; }
 

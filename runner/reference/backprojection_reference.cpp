@@ -98,18 +98,23 @@ bool inside_column(const SampleRays& rays, int i, int j, double m, double z0, do
   return false;
 }
 
-}  // namespace
-
-BackprojectionBounds backprojection_slab_reference(const Image& map, const Image& second, const LightModel& light,
-                                                   double u, double v, double depth, double bias, int side,
-                                                   double margin, double depth_margin) {
+// What both references share: every light sample's ray from the receiver, the texels it can
+// cross, and the verdicts of `texel_verdict(rays, i, j, dz)` — (blocked for sure, blocked
+// possibly) for texel (i, j) — counted into the interval.
+template <class TexelVerdict>
+BackprojectionBounds sample_verdicts(const Image& map, const LightModel& light, double u, double v, double depth,
+                                     double bias, int side, double margin, double depth_margin,
+                                     TexelVerdict texel_verdict) {
   BackprojectionBounds out;
   if (!(depth > 0.0) || !std::isfinite(depth)) return out;
   side = std::clamp(side, PN_BACKPROJECTION_MIN_SIDE, PN_BACKPROJECTION_MAX_SIDE);
   const int count = side * side, n = light.map_size;
+  // The receiver's lateral position in the light's frame.
   const double texel = light.texel_world_at(depth);
   const double px = (u - 0.5 * n) * texel, py = (v - 0.5 * n) * texel;
   const double dz = depth_margin * depth;
+  // Nothing lies nearer the light than the map's nearest texel: the texels a ray can cross lie
+  // between the receiver and the ray's point at that depth (only to skip the others).
   const double nearest = nearest_depth(map);
   if (!(nearest + bias - dz < depth)) return out;
   const double floor_depth = std::max(nearest - dz, light.orthographic() ? -INFINITY : 1e-9 * depth);
@@ -122,16 +127,9 @@ BackprojectionBounds backprojection_slab_reference(const Image& map, const Image
     bool blocked_sure = false, blocked_possible = false;
     for (int j = j0; j <= j1 && !blocked_sure; ++j)
       for (int i = i0; i <= i1 && !blocked_sure; ++i) {
-        const double d = map.at(i, j);
-        if (!std::isfinite(d) || !(d + bias - dz < depth)) continue;
-        // The slab: from d down to the second layer's depth (+Inf: to the receiver; not past d: flat),
-        // only what lies in front of the receiver (depth - bias).
-        const double back = std::isfinite(second.at(i, j)) ? second.at(i, j) : INFINITY;
-        const double bottom = back > d ? std::min(back, depth - bias) : d;
-        blocked_possible = blocked_possible || inside_column(rays, i, j, margin, d - dz, bottom + dz);
-        const bool thick = bottom - d > 2 * dz;
-        blocked_sure = blocked_sure || (d + bias + dz < depth &&
-                                        inside_column(rays, i, j, -margin, thick ? d + dz : d, thick ? bottom - dz : d));
+        const auto [sure_hit, possible_hit] = texel_verdict(rays, i, j, dz);
+        blocked_sure = blocked_sure || sure_hit;
+        blocked_possible = blocked_possible || possible_hit;
       }
     sure += blocked_sure ? 1 : 0;
     possible += (blocked_sure || blocked_possible) ? 1 : 0;
@@ -142,46 +140,47 @@ BackprojectionBounds backprojection_slab_reference(const Image& map, const Image
   return out;
 }
 
+}  // namespace
+
+BackprojectionBounds backprojection_slab_reference(const Image& map, const Image& second, const LightModel& light,
+                                                   double u, double v, double depth, double bias, int side,
+                                                   double margin, double depth_margin) {
+  return sample_verdicts(map, light, u, v, depth, bias, side, margin, depth_margin,
+                         [&](const SampleRays& rays, int i, int j, double dz) -> std::pair<bool, bool> {
+                           const double d = map.at(i, j);
+                           if (!std::isfinite(d) || !(d + bias - dz < depth)) return {false, false};
+                           // The slab: from d down to the second layer's depth (non-finite: to the
+                           // receiver; not past d: flat), only what lies in front of the receiver.
+                           const double back = std::isfinite(second.at(i, j)) ? second.at(i, j) : INFINITY;
+                           const double bottom = back > d ? std::min(back, depth - bias) : d;
+                           const bool thick = bottom - d > 2 * dz;
+                           return {d + bias + dz < depth && inside_column(rays, i, j, -margin, thick ? d + dz : d,
+                                                                          thick ? bottom - dz : d),
+                                   inside_column(rays, i, j, margin, d - dz, bottom + dz)};
+                         });
+}
+
 BackprojectionBounds backprojection_reference(const Image& map, const LightModel& light, double u, double v,
                                               double depth, double bias, int side, double gap, double thickness,
                                               double margin, double depth_margin) {
-  BackprojectionBounds out;
-  if (!(depth > 0.0) || !std::isfinite(depth)) return out;
-  side = std::clamp(side, PN_BACKPROJECTION_MIN_SIDE, PN_BACKPROJECTION_MAX_SIDE);
-  const int count = side * side, n = light.map_size;
-  const double centre = 0.5 * n;
-  // The receiver's lateral position in the light's frame.
-  const double texel = light.texel_world_at(depth);
-  const double px = (u - centre) * texel, py = (v - centre) * texel;
-  const double dz = depth_margin * depth;
-  // Nothing lies nearer the light than the map's nearest texel: the texels a ray can cross lie
-  // between the receiver and the ray's point at that depth (only to skip the others).
-  const double nearest = nearest_depth(map);
-  if (!(nearest + bias - dz < depth)) return out;
-  const double floor_depth = std::max(nearest - dz, light.orthographic() ? -INFINITY : 1e-9 * depth);
-  int sure = 0, possible = 0;
-  for (int k = 0; k < count; ++k) {
-    const SampleRays rays = sample_rays(light, px, py, depth, backprojection_sample(k, side));
-    const RayAxis &rx = rays.x, &ry = rays.y;
-    bool blocked_sure = false, blocked_possible = false;
-    // Every texel's patch (its square at its depth) and its walls to the deeper neighbours of the
-    // same surface: grown by the margins (possible) and shrunk by them (sure).
-    const auto depth_of = [&](int i, int j) {
-      return i >= 0 && j >= 0 && i < n && j < n && std::isfinite(map.at(i, j)) ? static_cast<double>(map.at(i, j))
-                                                                                : INFINITY;
-    };
-    const auto decide = [&](bool possible_hit, bool sure_hit) {
-      blocked_possible = blocked_possible || possible_hit;
-      blocked_sure = blocked_sure || sure_hit;
-    };
-    int i0, i1, j0, j1;
-    texel_span(rx, u, floor_depth, margin, n, i0, i1);
-    texel_span(ry, v, floor_depth, margin, n, j0, j1);
-    for (int j = j0; j <= j1 && !blocked_sure; ++j)
-      for (int i = i0; i <= i1 && !blocked_sure; ++i) {
+  const int n = light.map_size;
+  const auto depth_of = [&](int i, int j) {
+    return i >= 0 && j >= 0 && i < n && j < n && std::isfinite(map.at(i, j)) ? static_cast<double>(map.at(i, j))
+                                                                              : INFINITY;
+  };
+  return sample_verdicts(
+      map, light, u, v, depth, bias, side, margin, depth_margin,
+      [&](const SampleRays& rays, int i, int j, double dz) -> std::pair<bool, bool> {
+        const RayAxis &rx = rays.x, &ry = rays.y;
+        bool sure = false, possible = false;
+        const auto decide = [&](bool possible_hit, bool sure_hit) {
+          possible = possible || possible_hit;
+          sure = sure || sure_hit;
+        };
         const double d = depth_of(i, j);
-        if (!(d + bias - dz < depth)) continue;
-        // The patch: where the ray is at depth d.
+        if (!(d + bias - dz < depth)) return {false, false};
+        // The patch: where the ray is at depth d; grown by the margins (possible) and shrunk by
+        // them (sure).
         const double x = rx.texel_at(d), y = ry.texel_at(d);
         const auto patch = [&](double m, double t) {
           return d + bias + t < depth && x >= i - m && x <= i + 1 + m && y >= j - m && y <= j + 1 + m;
@@ -212,14 +211,8 @@ BackprojectionBounds backprojection_reference(const Image& map, const LightModel
           };
           decide(wall(margin, dz), wall(-margin, -dz));
         }
-      }
-    sure += blocked_sure ? 1 : 0;
-    possible += (blocked_sure || blocked_possible) ? 1 : 0;
-  }
-  out.visibility_hi = 1.0 - static_cast<double>(sure) / count;
-  out.visibility_lo = 1.0 - static_cast<double>(possible) / count;
-  out.ambiguous = possible - sure;
-  return out;
+        return {sure, possible};
+      });
 }
 
 }  // namespace pn
