@@ -2,8 +2,8 @@
 """mutate_test.py GLSL_ROOT: mutate.py's sites and edits, without a GL context (CTest mutation_sites).
 
 - on the library: every technique's one-call is a site with each overload (pnPoissonPcss,
-  pnVogelPcss, pnFastPcss, pnPcf, pnExactPcss, pnHqepcss: two definitions each; pnSavsm, pnVsm,
-  pnEvsm2, pnEvsm4, pnBackprojection), struct lines are not, and every return-constant mutant
+  pnVogelPcss, pnFastPcss, pnPcf, pnExactPcss, pnHqepcss, pnBackprojection: two definitions each;
+  pnSavsm, pnVsm, pnEvsm2, pnEvsm4), struct lines are not, and every return-constant mutant
   is inserted after its body's `{` on the same line (diagnostics keep their line numbers);
 - on a made-up module: a function added to the use: header is a site without a change to the
   tool; the comparison flip skips comments, preprocessor lines and shifts; the constant change
@@ -73,7 +73,7 @@ def main():
     for call, overloads in [('poisson_pcss:pnPoissonPcss', 2), ('vogel_pcss:pnVogelPcss', 2), ('fast_pcss:pnFastPcss', 2),
                             ('pcf:pnPcf', 2), ('exact_pcss:pnExactPcss', 2), ('hqepcss:pnHqepcss', 2),
                             ('savsm:pnSavsm', 1), ('vsm:pnVsm', 1), ('vsm:pnEvsm2', 1), ('vsm:pnEvsm4', 1),
-                            ('backprojection:pnBackprojection', 1)]:
+                            ('backprojection:pnBackprojection', 2)]:
         for k in range(overloads):
             for kind in ('ret0', 'ret1'):
                 expect(f'{call}:{k}:{kind}' in ids, f'no mutant {call}:{k}:{kind}')
