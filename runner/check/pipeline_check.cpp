@@ -188,7 +188,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   const PcssPipeline pipeline(context, env.tree);
   TechniqueResources resources(context, env.tree);
   std::vector<CaseResult> results;
-  // The second layers the registry's entries ask for (back-projection's peeled layer).
+  // The second layers the registry's entries ask for (back-projection's back-face layer).
   std::vector<std::unique_ptr<TechniqueConfig>> entries;
   std::vector<const TechniqueConfig*> configs;
   for (const TechniqueEntry& entry : technique_registry()) configs.push_back(entries.emplace_back(entry.make()).get());

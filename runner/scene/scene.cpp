@@ -159,8 +159,9 @@ Scene make_scene(const fixtures::SceneFixture& fixture, int shadow_map_size) {
   return scene;
 }
 
-std::optional<double> box_entry(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction, double t_max) {
-  double t0 = 0.0, t1 = t_max;
+std::optional<std::pair<double, double>> box_span(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction,
+                                                  double t_min, double t_max) {
+  double t0 = t_min, t1 = t_max;
   for (int a = 0; a < 3; ++a) {  // slab method
     const double lo = b.lo[a], hi = b.hi[a];
     if (std::fabs(direction[a]) < 1e-300) {
@@ -172,7 +173,13 @@ std::optional<double> box_entry(const Box& b, const glm::dvec3& origin, const gl
     t0 = std::max(t0, ta), t1 = std::min(t1, tb);
     if (t0 > t1) return std::nullopt;
   }
-  return t0;
+  return std::pair{t0, t1};
+}
+
+std::optional<double> box_entry(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction, double t_max) {
+  const auto span = box_span(b, origin, direction, 0.0, t_max);
+  if (!span) return std::nullopt;
+  return span->first;
 }
 
 namespace {
@@ -217,18 +224,11 @@ float ray_cast_second_layer(const Scene& scene, int x, int y, bool back_faces, d
   const double first = nearest_hit(scene, origin, direction, scene.light.near_plane, scene.light.far_plane);
   double nearest = std::numeric_limits<double>::infinity();
   for (const Box& b : scene.boxes) {
-    // The ray's span in the box (the slab method on its own: entry t0, exit t1).
-    double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 3 && t0 <= t1; ++a) {
-      if (std::fabs(direction[a]) < 1e-300) {
-        if (origin[a] < b.lo[a] || origin[a] > b.hi[a]) t0 = 1.0, t1 = 0.0;
-        continue;
-      }
-      double ta = (b.lo[a] - origin[a]) / direction[a], tb = (b.hi[a] - origin[a]) / direction[a];
-      if (ta > tb) std::swap(ta, tb);
-      t0 = std::max(t0, ta), t1 = std::min(t1, tb);
-    }
-    if (t0 > t1) continue;
+    // The ray's whole line through the box: entry t0, exit t1.
+    const auto span = box_span(b, origin, direction, -std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity());
+    if (!span) continue;
+    const auto [t0, t1] = *span;
     // Its faces the ray crosses inside the light's depth range: the exit faces away from the light.
     for (const double t : {t0, t1}) {
       if (t < scene.light.near_plane || t > scene.light.far_plane) continue;

@@ -132,6 +132,10 @@ struct Receiver {
 
 // Where origin + t·direction, t in [0, t_max], enters box b (slab method); none if it misses.
 std::optional<double> box_entry(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction, double t_max);
+// The part [t0, t1] of origin + t·direction with t in [t_min, t_max] inside the box (the slab
+// method: t0 the entry, t1 the exit), or none. box_entry is its t0 from t_min = 0.
+std::optional<std::pair<double, double>> box_span(const Box& b, const glm::dvec3& origin, const glm::dvec3& direction,
+                                                  double t_min, double t_max);
 
 struct SurfacePoint {
   glm::dvec3 position;
