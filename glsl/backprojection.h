@@ -35,8 +35,8 @@
 // Over slabs (the call with a second layer), a node stands as one slab when its first layer's range
 // is within the tolerance and its second layer's within this many times it: the bottoms' depths
 // decide only the rays that pass under a blocker's top, and resolving every texel of a blocker whose
-// back varies (a tall box's sides, seen from the light) costs 3x the time for no measured gain
-// (docs/modules/backprojection.md).
+// back varies (a tall box's sides, seen from the light) visits every texel of its top for no
+// measured gain in quality (docs/modules/backprojection.md).
 #define PN_BACKPROJECTION_SECOND_LAYER_TOLERANCE 4.0
 
 // Neighbouring texels whose depths differ by at most this many texel widths (at the nearer one's
