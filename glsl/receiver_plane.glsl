@@ -15,13 +15,20 @@
 //   camera, a zero step), or the result is not finite, g = 0. |g| is then clamped to maxSlope (light depth per
 //   texel): a receiver steeper than that is not trusted to be a plane.
 //   A texel q (covering [q, q + 1)) occludes the receiver when its depth is
-//   below the plane at its centre minus the constant bias:
-//     d(q) < z(q + 1/2) - bias
-//   so a sloped receiver needs no bias for its slope (no acne), and the
-//   constant bias covers only the map's rounding (less peter-panning).
+//   below the plane at its centre, never behind the receiver, minus the
+//   constant bias:
+//     d(q) < min(d, z(q + 1/2)) - bias
+//   so a sloped receiver needs no bias for its slope (no acne: its texels up
+//   the slope stand nearer the light), and what lies down the slope is
+//   judged as without a plane: a blocker is nearer the light than the
+//   receiver it shadows, and the plane extrapolated far down a slope (or
+//   steep near a silhouette) would call the ground beyond it a blocker
+//   (measured: boxes ×1 at 256², MAE 0.0092 with the two-sided plane,
+//   0.0081 with this one and without a plane).
 //   Over a rectangle of texels [o, o + s) the plane's extremes at the texel
 //   centres are z(o + s/2) ± (|g.x| (s.x - 1) + |g.y| (s.y - 1)) / 2
-//   (pnReceiverPlaneRange): what a node of a hierarchy is decided against.
+//   (pnReceiverPlaneRange): what a node of a hierarchy is decided against
+//   (its thresholds' range: both extremes minus the bias, capped at d - bias).
 //   First order: in a perspective map a world plane's 1/d, not d, is affine
 //   in q, so far from the receiver z(q) bends away from the surface; the
 //   constant bias covers what that leaves within the filter region.
@@ -36,11 +43,13 @@
 //   vec2  pnReceiverPlaneRange(vec3 receiver, vec2 gradient, ivec2 origin, ivec2 size)   (min, max)
 //         of z over the centres of the texels [origin, origin + size)
 //   float pnReceiverPlaneThreshold(float threshold, vec2 gradient, vec2 centre, ivec2 q)
-//         the shadow test's threshold at texel q: threshold + g · (q + 1/2 - centre), threshold = the
-//         receiver's depth minus the bias, centre = its (u, v); g = 0 returns `threshold` itself
+//         the shadow test's threshold at texel q: min(threshold, threshold + g · (q + 1/2 - centre)),
+//         threshold = the receiver's depth minus the bias, centre = its (u, v); g = 0 returns
+//         `threshold` itself
 //   vec2  pnReceiverPlaneThresholdRange(float threshold, vec2 gradient, vec2 centre, ivec2 lo, ivec2 hi)
-//         its (min, max) over the texels [lo, hi), widened by the float rounding of both (g = 0:
-//         (threshold, threshold)): a node decided against the range agrees with each of its texels' own thresholds
+//         its (min, max) over the texels [lo, hi), widened by the float rounding of both, capped at
+//         `threshold` (g = 0: (threshold, threshold)): a node decided against the range agrees with
+//         each of its texels' own thresholds
 //
 // options:
 //   PN_RECEIVER_PLANE_MIN_SINE   the parallel steps' bound (0.01; receiver_plane.h)
@@ -90,9 +99,10 @@ vec2 pnReceiverPlaneRange(vec3 receiver, vec2 gradient, ivec2 origin, ivec2 size
   return vec2(mid - extent, mid + extent);
 }
 
-// No plane (gradient 0) returns the threshold itself, whatever the centre (a NaN one too).
+// No plane (gradient 0) returns the threshold itself, whatever the centre (a NaN one too). The
+// plane only lowers it: down the slope the receiver's own depth decides (a blocker is nearer).
 float pnReceiverPlaneThreshold(float threshold, vec2 gradient, vec2 centre, ivec2 q) {
-  return all(equal(gradient, vec2(0.0))) ? threshold : threshold + dot(gradient, vec2(q) + 0.5 - centre);
+  return all(equal(gradient, vec2(0.0))) ? threshold : min(threshold, threshold + dot(gradient, vec2(q) + 0.5 - centre));
 }
 
 vec2 pnReceiverPlaneThresholdRange(float threshold, vec2 gradient, vec2 centre, ivec2 lo, ivec2 hi) {
@@ -103,7 +113,7 @@ vec2 pnReceiverPlaneThresholdRange(float threshold, vec2 gradient, vec2 centre, 
   vec2 magnitude = abs(vec2(lo)) + abs(vec2(hi)) + 2.0 * abs(centre);
   float mid = 0.5 * (range.x + range.y);
   float slack = exp2(-18.0) * (abs(threshold) + abs(mid) + dot(abs(gradient), magnitude));
-  return range + vec2(-slack, slack);
+  return min(range + vec2(-slack, slack), vec2(threshold));
 }
 
 #endif  // PENUMBRA_RECEIVER_PLANE_GLSL

@@ -72,6 +72,12 @@ TEST_CASE("receiver plane: on, off or a tangent for every one call; refused for 
   CHECK_THROWS_WITH(with(with(pn::fast_pcss(), "stages", "on"), "receiver-plane", "on").validate(),
                     Catch::Contains(refused));
   CHECK_THROWS_WITH(with(pn::fast_paper_pcss(), "receiver-plane", "on").validate(), Catch::Contains(refused));
+  // `fast` carries the plane (tan 1); its staged passes need it off, and say so.
+  CHECK(pn::shipped_fast_pcss().receiver_plane_tan == 1.0f);
+  pn::shipped_fast_pcss().validate();
+  CHECK_THROWS_WITH(with(pn::shipped_fast_pcss(), "stages", "on").validate(),
+                    Catch::Contains("the staged passes take no plane (receiver-plane=off)"));
+  with(with(pn::shipped_fast_pcss(), "stages", "on"), "receiver-plane", "off").validate();
 }
 
 TEST_CASE("grid: 0 (off) or 1..PN_GRID_MAX_CELLS over the mip chain; refused elsewhere") {

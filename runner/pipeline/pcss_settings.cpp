@@ -40,7 +40,8 @@ void PcssSettings::validate() const {
   const std::optional<OneCall> call = one_call(*this);
   if (receiver_plane_tan > 0 && (staged || !call))
     throw Error("technique '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
-                "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off");
+                "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off; the staged passes "
+                "take no plane (receiver-plane=off)");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);
@@ -130,6 +131,12 @@ PcssSettings fast_pcss() {
   s.search_tile = s.filter_tile = 0;
   s.blur = false;
   s.blur_params.adaptive = true;  // when switched on (fast-blur): the radius follows the filter size
+  return s;
+}
+
+PcssSettings shipped_fast_pcss() {
+  PcssSettings s = fast_pcss();
+  s.receiver_plane_tan = kShippedReceiverPlaneTan;
   return s;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference/receiver_plane_reference.h"
+
 namespace pn {
 
 DiskBounds disk_bounds(const Image& depth, const std::vector<DiskSamplePosition>& samples, double threshold,
@@ -24,7 +26,7 @@ DiskBounds disk_bounds(const Image& depth, const std::vector<DiskSamplePosition>
         for (long x = first(p.x); x <= last(p.x, depth.width); ++x) {
           const double d = depth.at(static_cast<int>(x), static_cast<int>(y));
           const double along_x = gradient_x * (x + 0.5 - centre_x), along_y = gradient_y * (y + 0.5 - centre_y);
-          const double at = t + along_x + along_y;
+          const double at = receiver_plane_threshold(t, along_x + along_y);
           const double band = tie > 0.0 && std::isfinite(t) ? tie * (std::fabs(t) + std::fabs(along_x) + std::fabs(along_y)) : 0.0;
           const bool finite = std::isfinite(d);
           if (finite && d < at + band) can_occlude = true, least = std::min(least, d), most = std::max(most, d);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference/receiver_plane_reference.h"
+
 namespace pn {
 
 PcfCover pcf_cover(const Rect& window, int map_width, int map_height, int max_side) {
@@ -66,7 +68,7 @@ BilinearPlane pcf_bilinear_reference_plane(const Image& depth, double x, double 
   BilinearPlane r;
   const double t0 = receiver_depth - bias;
   r.visibility = bilinear(depth, x, y, [&](double d, double tx, double ty) {
-    const double t = t0 + gradient_u * (tx + 0.5 - x) + gradient_v * (ty + 0.5 - y);
+    const double t = receiver_plane_threshold(t0, gradient_u * (tx + 0.5 - x) + gradient_v * (ty + 0.5 - y));
     const double width = band * (std::fabs(t0) + std::fabs(gradient_u) * (std::fabs(tx) + std::fabs(x) + 1.0) +
                                  std::fabs(gradient_v) * (std::fabs(ty) + std::fabs(y) + 1.0));
     if (std::fabs(d - t) <= width) r.open = true;

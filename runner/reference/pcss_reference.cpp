@@ -78,7 +78,7 @@ PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer
         for (int y = r.y; y < r.y + r.height; ++y)
           for (int x = r.x; x < r.x + r.width; ++x) {
             const double z = sanitize_depth(shadow_map.at(x, y));
-            const double t = t0 + g[0] * (x + 0.5 - u) + g[1] * (y + 0.5 - v);
+            const double t = receiver_plane_threshold(t0, g[0] * (x + 0.5 - u) + g[1] * (y + 0.5 - v));
             if (z < t) occluders += 1.0, sum += z;
             if (std::isfinite(z)) depth_margin = std::min(depth_margin, std::fabs(z - t) / d);
           }

@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "reference/receiver_plane_reference.h"
+
 namespace pn {
 
 TraversalResult brute_force_occluders(const Image& depth, const Rect& region, float receiver_depth, float bias) {
@@ -28,7 +30,7 @@ PlaneOccluders brute_force_occluders_plane(const Image& depth, const Rect& regio
   for (int y = region.y; y < region.y + region.height; ++y)
     for (int x = region.x; x < region.x + region.width; ++x) {
       const double d = depth.at(x, y);
-      const double t = t0 + gradient_u * (x + 0.5 - u) + gradient_v * (y + 0.5 - v);
+      const double t = receiver_plane_threshold(t0, gradient_u * (x + 0.5 - u) + gradient_v * (y + 0.5 - v));
       const double width = band * (std::fabs(t0) + std::fabs(gradient_u) * (std::abs(x) + std::fabs(u) + 1.0) +
                                    std::fabs(gradient_v) * (std::abs(y) + std::fabs(v) + 1.0));
       if (std::fabs(d - t) <= width) {

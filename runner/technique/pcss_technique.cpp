@@ -32,7 +32,9 @@ std::unique_ptr<TechniqueConfig> pcss_config(PcssSettings settings) {
 }
 
 std::unique_ptr<TechniqueConfig> pcss_ablation(const char* name, const char* key, const char* value) {
-  PcssSettings s = fast_pcss();  // one switch away from the shipped defaults
+  // One switch away from fast_pcss(), `fast:receiver-plane=off`: several ablations run the staged
+  // passes, which take no plane (pcss_settings.h, shipped_fast_pcss).
+  PcssSettings s = fast_pcss();
   s.name = name;
   set_pcss_setting(s, key, value);
   return pcss_config(s);

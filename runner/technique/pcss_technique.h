@@ -28,7 +28,7 @@ class PcssTechnique : public Technique {
 // A registry entry's settings: `settings` with the PCSS override keys (pcss_setting_keys()).
 std::unique_ptr<TechniqueConfig> pcss_config(PcssSettings settings);
 
-// Fast PCSS with one setting changed, named `name`: an ablation switches one thing.
+// fast_pcss() (`fast:receiver-plane=off`) with one setting changed, named `name`: an ablation switches one thing.
 std::unique_ptr<TechniqueConfig> pcss_ablation(const char* name, const char* key, const char* value);
 
 }  // namespace pn

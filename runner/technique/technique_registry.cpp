@@ -23,9 +23,10 @@ const std::vector<TechniqueEntry>& technique_registry() {
        .make = []() -> Made { return pcss_config(hqepcss()); }},
       {.name = "fast-paper", .summary = "Fast PCSS (seed 000) with the paper's settings: decreased pyramid, power-of-two windows, leaf 8, reuse, blur",
        .make = []() -> Made { return pcss_config(fast_paper_pcss()); }, .family = "fast", .frontier = {}},
-      {.name = "fast", .summary = "Fast PCSS as shipped, one pass (pnFastPcss): exact regions over the aligned mip chain, refined search, leaf 16",
-       .make = []() -> Made { return pcss_config(fast_pcss()); },
-       .frontier = {"", ":receiver-plane=1", ":grid=4", ":grid=2", ":leaf=4", ":leaf=8", ":leaf=32",
+      {.name = "fast", .summary = "Fast PCSS as shipped, one pass (pnFastPcss): exact regions over the aligned mip chain, refined search, "
+                "leaf 16, the receiver-plane depth bias (slopes to tan 1; the staged passes need receiver-plane=off)",
+       .make = []() -> Made { return pcss_config(shipped_fast_pcss()); },
+       .frontier = {"", ":receiver-plane=off", ":grid=4", ":grid=2", ":leaf=4", ":leaf=8", ":leaf=32",
                      ":leaf-divisor=8", ":leaf-divisor=16"}},
       {.name = "fast-no-refine", .summary = "Fast PCSS without Step 3's refinement", .make = []() -> Made { return pcss_ablation("fast-no-refine", "refine", "0"); },
        .family = "fast", .rendered = false, .frontier = {}},
