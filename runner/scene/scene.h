@@ -4,7 +4,8 @@
 // map's definition — the linear light depth of the nearest surface through each
 // texel centre — independently of rasterisation. The analytic casters below
 // see the boxes only, never the mesh: they are the box scenes' independent
-// check; a model scene needs a triangle ray tracer over triangles().
+// check; a model scene's is the brute-force triangle caster over triangles()
+// (scene/triangle_visibility_reference.h).
 #pragma once
 
 #include <glm/glm.hpp>
