@@ -14,9 +14,9 @@
 //   1: the height field), or to the deeper neighbour if nearer — the map
 //   cannot tell a box's edge over the ground from a thick occluder's side.
 //   The light is side × side multi-jittered samples l in [-1/2, 1/2]² of its
-//   square (backprojection.h: sample k in fine column k and fine row
-//   transpose(k), so a box's samples are a few word operations; a square of
-//   width w_L at the map's viewpoint, or the sun's square of spread S). The
+//   square, a bitmask (backprojection_mask.glsl: a patch's or a wall's
+//   samples; a square of width w_L at the map's viewpoint, or the sun's
+//   square of spread S). The
 //   ray from the receiver (u, v, dP) to sample l crosses depth z at texel
 //       (u, v) + l · W(z),   W(z) = pnLightBlockerWindowTexels(light, dP, z)
 //   (light_model.glsl: W(dP) = 0, growing toward the light). It is blocked
@@ -76,7 +76,7 @@
 //         (minmax_mip.glsl) of the map's second layer (its back faces), the surface behind the map's
 //   PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondMip, PnLight light,
 //         vec3 receiver, PnBackprojectionSettings s)   its work
-//   vec2 pnBackprojectionSample(int k, int side)   light sample k, in [-1/2, 1/2]²
+//   (and backprojection_mask.glsl's pnBackprojectionSample(k, side): light sample k, in [-1/2, 1/2]²)
 //
 // cost: per node visited one fetch, per texel four more (its neighbours); per
 //   patch side² / 32 mask words and four samples tested one by one; per wall
@@ -94,6 +94,7 @@
 #define PENUMBRA_BACKPROJECTION_GLSL
 
 #include "backprojection.h"
+#include "backprojection_mask.glsl"  // the light samples' bitmask, patches and walls
 #include "light_model.glsl"
 #include "minmax_mip.glsl"
 
@@ -120,155 +121,6 @@ PnBackprojectionSettings pnBackprojectionDefaults(float bias) {
   return PnBackprojectionSettings(bias, PN_BACKPROJECTION_DEFAULT_SIDE, PN_BACKPROJECTION_DEFAULT_TOLERANCE,
                                   PN_BACKPROJECTION_DEFAULT_BUDGET, PN_BACKPROJECTION_DEFAULT_GAP,
                                   PN_BACKPROJECTION_DEFAULT_THICKNESS);
-}
-
-// (i · side + j) -> (j · side + i): sample k's fine row, or the sample of fine row k.
-int pn_backprojectionTranspose(int k, int side) {
-  int shift = findMSB(side);  // side is a power of two
-  return ((k & (side - 1)) << shift) + (k >> shift);
-}
-
-vec2 pnBackprojectionSample(int k, int side) {
-  uint h = PN_BACKPROJECTION_HASH(uint(k));
-  int bits = PN_BACKPROJECTION_JITTER_BITS;
-  float unit = 1.0 / float(1 << bits);
-  vec2 jitter = vec2(float(h >> uint(32 - bits)), float(h & ((1u << uint(bits)) - 1u))) * unit;
-  vec2 fine = vec2(float(k), float(pn_backprojectionTranspose(k, side)));  // its fine column and row
-  return (fine + jitter) * (1.0 / float(side * side)) - 0.5;
-}
-
-// Bits lo..hi of a word (0 <= lo <= hi <= 31).
-uint pn_backprojectionBits(int lo, int hi) {
-  uint upper = hi >= 31 ? 0xffffffffu : (1u << uint(hi + 1)) - 1u;
-  return upper & ~((1u << uint(lo)) - 1u);
-}
-
-// Word w of the mask of the samples whose fine column lies in [first, last] (sample k: column k).
-uint pn_backprojectionColumns(int w, int first, int last, int side) {
-  int lo = max(first - 32 * w, 0), hi = min(min(last, side * side - 1) - 32 * w, 31);
-  return lo > hi ? 0u : pn_backprojectionBits(lo, hi);
-}
-
-// Word w of the mask of the samples whose fine row lies in [first, last]: fine row g holds sample
-// (g % side) · side + g / side, so the rows' samples are the transpose of a range — whole strata
-// rows (bit j of every side-bit group) between two partial ones.
-uint pn_backprojectionRows(int w, int first, int last, int side) {
-  first = max(first, 0);
-  last = min(last, side * side - 1);
-  if (first > last) return 0u;
-  int shift = findMSB(side), low = side - 1;  // side is a power of two
-  int row0 = first >> shift, column0 = first & low, row1 = last >> shift, column1 = last & low;
-  int base = w * (32 >> shift);  // the first stratum column in word w
-  uint repeat = side == 4 ? 0x11111111u : side == 8 ? 0x01010101u : 0x00010001u;  // bit 0 of each group
-  int from = clamp((column0 - base) << shift, 0, 32), to = clamp((column1 + 1 - base) << shift, 0, 32);
-  uint fromMask = from >= 32 ? 0u : 0xffffffffu << uint(from);
-  uint toMask = to >= 32 ? 0xffffffffu : (1u << uint(to)) - 1u;
-  uint rows;
-  if (row0 == row1) {
-    rows = (repeat << uint(row0)) & fromMask & toMask;
-  } else {
-    rows = ((repeat << uint(row0)) & fromMask) | ((repeat << uint(row1)) & toMask);
-    if (row1 - row0 >= 2) rows |= pn_backprojectionBits(row0 + 1, row1 - 1) * repeat;
-  }
-  return side * side < 32 ? rows & ((1u << uint(side * side)) - 1u) : rows;
-}
-
-// The fine cells (columns x, rows y) that [lo, hi] of the light's square [-1/2, 1/2]² touches,
-// clamped to [-1, side²].
-ivec4 pn_backprojectionCells(vec2 lo, vec2 hi, int side) {
-  float n = float(side * side);
-  vec2 a = floor(clamp((lo + 0.5) * n, -1.0, n)), b = floor(clamp((hi + 0.5) * n, -1.0, n));
-  return ivec4(a, b);
-}
-
-// Sets the bit of sample k (if it is one) when l_k · window lies in [lo, hi].
-void pn_backprojectSample(int k, vec2 lo, vec2 hi, float window, int side,
-                          inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  if (k < 0 || k >= side * side) return;
-  vec2 p = pnBackprojectionSample(k, side) * window;
-  if (all(greaterThanEqual(p, lo)) && all(lessThanEqual(p, hi))) mask[k >> 5] |= 1u << uint(k & 31);
-}
-
-// Word w of the samples whose fine cells lie inside `cells` (first column, first row, last column,
-// last row; inclusive), if the mask has that word.
-uint pn_backprojectionBox(int w, ivec4 cells, int side) {
-  if (32 * w >= side * side) return 0u;
-  return pn_backprojectionColumns(w, cells.x, cells.z, side) & pn_backprojectionRows(w, cells.y, cells.w, side);
-}
-
-// Sets the bit of every sample whose ray crosses the patch [lo, hi] (texels, relative to the
-// receiver) at the depth whose window is `window`: the point l · window inside the box (closed).
-// The samples of the fine cells strictly inside the box in both axes are set by words (each word
-// written out, not a loop: llvmpipe's limit, backprojection.h); the four on its edges (one a fine
-// column or row) are tested one by one. No loop: it adds nothing to the traversal's work count.
-void pn_backprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  int count = side * side;
-  ivec4 inside;
-  if (!(window > 0.0)) {  // every ray stays on the receiver's point: every sample or none
-    if (!(all(lessThanEqual(lo, vec2(0.0))) && all(greaterThanEqual(hi, vec2(0.0))))) return;
-    inside = ivec4(0, 0, count - 1, count - 1);
-  } else {
-    ivec4 cells = pn_backprojectionCells(lo / window, hi / window, side);
-    if (cells.z < 0 || cells.w < 0 || cells.x >= count || cells.y >= count) return;
-    inside = cells + ivec4(1, 1, -1, -1);
-    pn_backprojectSample(cells.x, lo, hi, window, side, mask);
-    pn_backprojectSample(cells.z, lo, hi, window, side, mask);
-    if (cells.y >= 0 && cells.y < count)
-      pn_backprojectSample(pn_backprojectionTranspose(cells.y, side), lo, hi, window, side, mask);
-    if (cells.w >= 0 && cells.w < count)
-      pn_backprojectSample(pn_backprojectionTranspose(cells.w, side), lo, hi, window, side, mask);
-  }
-  mask[0] |= pn_backprojectionBox(0, inside, side);
-  mask[1] |= pn_backprojectionBox(1, inside, side);
-  mask[2] |= pn_backprojectionBox(2, inside, side);
-  mask[3] |= pn_backprojectionBox(3, inside, side);
-  mask[4] |= pn_backprojectionBox(4, inside, side);
-  mask[5] |= pn_backprojectionBox(5, inside, side);
-  mask[6] |= pn_backprojectionBox(6, inside, side);
-  mask[7] |= pn_backprojectionBox(7, inside, side);
-}
-
-// The wall's test (pn_backprojectWall) for the candidate samples of word w: each one by one.
-// Returns the samples tested.
-int pn_backprojectWallWord(int w, uint candidates, int a, float edge, float from, float to, float near, float far,
-                           int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  int b = 1 - a, tested = 0;
-  for (int t = 0; t < 32 && candidates != 0u; ++t) {
-    int k = 32 * w + findLSB(candidates);
-    candidates &= candidates - 1u;
-    ++tested;
-    vec2 l = pnBackprojectionSample(k, side);
-    if (l[a] == 0.0) continue;  // parallel to the wall
-    float window = edge / l[a];
-    float across = l[b] * window;
-    if (window >= near && window <= far && across >= from && across <= to) mask[w] |= 1u << uint(k & 31);
-  }
-  return tested;
-}
-
-// Sets the bit of every sample whose ray crosses the wall on the line where axis `a` equals `edge`,
-// between `from` and `to` on the other axis, at windows in [near, far] (the wall's depths). Only
-// the samples not yet set inside the wall's bounding box on the light are tested, one by one:
-// l[a] between edge / far and edge / near, l[b] = across / window between the extremes of
-// from and to over those windows. Returns the loop iterations spent (the samples tested).
-int pn_backprojectWall(int a, float edge, float from, float to, float near, float far, int side,
-                       inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  if (edge == 0.0 || !(far > 0.0)) return 0;
-  // |l| <= 1/2 for every sample: a bound past 1 (a window near 0) is the whole light.
-  float la0 = edge / far, la1 = near > abs(edge) ? edge / near : sign(edge);
-  vec2 lb = vec2(-1.0, 1.0);
-  if (near > 0.0) {
-    vec4 ends = vec4(from / near, from / far, to / near, to / far);
-    lb = clamp(vec2(min(min(ends.x, ends.y), min(ends.z, ends.w)), max(max(ends.x, ends.y), max(ends.z, ends.w))),
-               -1.0, 1.0);
-  }
-  vec2 lo = a == 0 ? vec2(min(la0, la1), lb.x) : vec2(lb.x, min(la0, la1));
-  vec2 hi = a == 0 ? vec2(max(la0, la1), lb.y) : vec2(lb.y, max(la0, la1));
-  ivec4 cells = pn_backprojectionCells(lo, hi, side);
-  int tested = 0;
-  for (int w = 0; w < (side * side + 31) / 32; ++w)
-    tested += pn_backprojectWallWord(w, pn_backprojectionBox(w, cells, side) & ~mask[w], a, edge, from, to, near, far, side, mask);
-  return tested;
 }
 
 // The wall of node `q` of `level` (a texel at level 0; depth d, window W(d); lo, hi: its square

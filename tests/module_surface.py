@@ -109,7 +109,7 @@ def run(root):
 def broken_copy(root):
     """Each break in its own copy of glsl/: the check must fail on it, and only on it."""
     cases = [
-        ('glsl/backprojection.glsl', 'pn_backprojectionBits', 'pnBackprojectionBits', 'pnBackprojectionBits has a public name'),
+        ('glsl/backprojection_mask.glsl', 'pn_backprojectionBits', 'pnBackprojectionBits', 'pnBackprojectionBits has a public name'),
         ('glsl/poisson_pcss.glsl', 'PnLight light, vec3 receiver, PnPoissonPcssSettings settings,',
          'PnLight light, vec3 receiver, float bias, PnPoissonPcssSettings settings,', 'takes a bias beside its settings'),
     ]
