@@ -24,6 +24,7 @@
 //      (pass within half the shadow offset of its boundary or plane), and at
 //      most kMaxTiedModelPixels pixels may differ at all.
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "check/module_check.h"
@@ -101,6 +102,23 @@ std::string screen_name(const Scene& scene, int size, int samples_per_side) {
          std::to_string(samples_per_side * samples_per_side) + " light samples";
 }
 
+// Whether pixel (x, y)'s truth surface `s` agrees with `expected`, the other caster's point (none:
+// no surface): the same coverage, and within kSurfaceAgreement. A disagreement is a tie when the
+// camera ray grazes (`grazes()`: counted in `grazing`), else its distance (+Inf: coverage) is the
+// pixel's error.
+template <class Grazes>
+bool surfaces_agree(const TruthSurface& s, const std::optional<glm::dvec3>& expected, int x, int y,
+                    const Grazes& grazes, Image& error, int& grazing) {
+  const bool same_coverage = s.covered == expected.has_value();
+  const double distance = same_coverage && s.covered ? glm::length(s.position - *expected) : 0.0;
+  if (same_coverage && distance <= kSurfaceAgreement) return true;
+  if (grazes())
+    ++grazing;  // a tie: the two casters may meet different surfaces here
+  else
+    error.at(x, y) = same_coverage ? static_cast<float>(distance) : INFINITY;
+  return false;
+}
+
 void slab_test_cases(const Scene& scene, std::vector<CaseResult>& out) {
   const TruthTracer tracer(scene, kScreen, check_settings(kSamplesPerSide));
   const int n = kScreen;
@@ -111,17 +129,14 @@ void slab_test_cases(const Scene& scene, std::vector<CaseResult>& out) {
     for (int x = 0; x < n; ++x) {
       const TruthSurface s = tracer.surface(x, y);
       const auto expected = ray_cast_surface_point(scene, x, y, n);
-      const bool same_coverage = s.covered == expected.has_value();
-      const double distance = same_coverage && s.covered ? glm::length(s.position - expected->position) : 0.0;
-      if (!same_coverage || distance > kSurfaceAgreement) {
+      const auto camera_ray_grazes = [&] {
         const TruthTracer::Ray ray = tracer.camera_ray(x, y);
-        if (grazes(scene, ray.origin, ray.origin + ray.direction, kGraze))
-          ++grazing_camera_rays;  // a tie: the two casters may see different boxes here
-        else
-          surface_error.at(x, y) = same_coverage ? static_cast<float>(distance) : INFINITY;
+        return grazes(scene, ray.origin, ray.origin + ray.direction, kGraze);
+      };
+      if (!surfaces_agree(s, expected ? std::optional(expected->position) : std::nullopt, x, y, camera_ray_grazes,
+                          surface_error, grazing_camera_rays) ||
+          !s.covered)
         continue;
-      }
-      if (!s.covered) continue;
       const glm::dvec3 to_light = glm::dvec3(scene.light_position) - expected->position;
       faces_expected.at(x, y) = glm::dot(face_normal(scene.boxes[expected->box], expected->position), to_light) > 0;
       faces_observed.at(x, y) = s.faces_light;
@@ -166,17 +181,13 @@ void triangle_cases(const Scene& scene, int n, int samples_per_side, std::vector
       const TruthSurface s = tracer.surface(x, y);
       const TruthTracer::Ray ray = tracer.camera_ray(x, y);
       const auto hit = nearest_triangle(triangles, ray.origin, ray.direction, 1.0);
-      const bool same_coverage = s.covered == hit.has_value();
-      const double distance =
-          same_coverage && s.covered ? glm::length(s.position - (ray.origin + hit->t * ray.direction)) : 0.0;
-      if (!same_coverage || distance > kSurfaceAgreement) {
-        if (segment_grazes_triangles(triangles, ray.origin, ray.origin + ray.direction, band))
-          ++grazing_camera_rays;  // a tie: the two casters may meet different triangles here
-        else
-          surface_error.at(x, y) = same_coverage ? static_cast<float>(distance) : INFINITY;
+      const auto camera_ray_grazes = [&] {
+        return segment_grazes_triangles(triangles, ray.origin, ray.origin + ray.direction, band);
+      };
+      if (!surfaces_agree(s, hit ? std::optional(ray.origin + hit->t * ray.direction) : std::nullopt, x, y,
+                          camera_ray_grazes, surface_error, grazing_camera_rays) ||
+          !s.covered)
         continue;
-      }
-      if (!s.covered) continue;
       const glm::dvec3 origin = tracer.shadow_origin(s);
       int seen_truth = 0, seen_brute = 0, tied = 0;
       const std::vector<glm::dvec3> points = tracer.light_samples(x, y, s);
