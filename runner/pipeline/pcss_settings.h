@@ -108,7 +108,7 @@ PcssSettings fast_pcss();        // Fast PCSS's defaults, chosen with the bench 
 // What the `fast` technique runs: fast_pcss() with the receiver-plane depth bias from the
 // G-buffer's neighbours, slopes clamped at tan 1 (docs/modules/receiver_plane.md, "Measured, the
 // one-sided plane": the city's acne under a wide sun gone, issue 42 §5; equal or better than no
-// plane at 16 of the 20 frontier points at 256²). fast_pcss() keeps none: the staged passes take
+// plane in MAE at 17 of the 20 frontier points at 256²). fast_pcss() keeps none: the staged passes take
 // no plane, and the ablations are one switch from it.
 PcssSettings shipped_fast_pcss();
 inline constexpr float kShippedReceiverPlaneTan = 1.0f;
