@@ -1,4 +1,4 @@
-// backprojection.h — what backprojection.glsl and the runner share: the light
+// backprojection.h — what backprojection.glsl, backprojection_mask.glsl and the runner share: the light
 // samples' layout and the option ranges. Valid as GLSL and as C++ (only
 // guarded #defines), so the CPU reference places the same samples
 // (runner/reference/backprojection_reference.cpp).

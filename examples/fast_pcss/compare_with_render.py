@@ -48,7 +48,7 @@ import zlib
 TOLERANCE = {"mean": 0.0005, "share_over_0.1": 0.0002}
 SIZE = 512  # shadow map and screen, render's defaults
 TECHNIQUE = "fast:receiver-plane=off"  # the call the example makes
-TECHNIQUE_FILE = "fast_receiver-plane-off"  # render's file stem for it (':' and '=' become '_' and '-')
+TECHNIQUE_FILE = TECHNIQUE.replace(":", "_").replace("=", "-")  # render's file stem for it
 SKIP = 77
 
 

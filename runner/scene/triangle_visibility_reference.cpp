@@ -117,21 +117,18 @@ bool segment_grazes_triangles(const std::vector<glm::vec3>& triangles, const glm
     if (!(area > 0.0)) continue;  // degenerate: never met
     const glm::dvec3 n = normal / area;
     const double df = glm::dot(n, from - t.a), dt = glm::dot(n, to - t.a);
+    const bool crosses = df * dt < 0.0;
+    const glm::dvec3 x = crosses ? from + (to - from) * (df / (df - dt)) : from;  // where it crosses the plane
     // A clear crossing: both ends more than `band` off the plane on either side, through a point
     // more than `band` inside every edge: any caster meets it.
-    if (df * dt < 0.0 && std::fabs(df) > band && std::fabs(dt) > band &&
-        depth_inside(from + (to - from) * (df / (df - dt)), t, n) > band)
-      continue;
+    if (crosses && std::fabs(df) > band && std::fabs(dt) > band && depth_inside(x, t, n) > band) continue;
     // Otherwise: a graze when the segment passes within `band` of the triangle (its ends, its edges,
     // or where it crosses the plane).
     double distance = std::min(glm::length(from - nearest_on_triangle(from, t)),
                                glm::length(to - nearest_on_triangle(to, t)));
     distance = std::min({distance, segment_distance(from, to, t.a, t.b), segment_distance(from, to, t.b, t.c),
                          segment_distance(from, to, t.c, t.a)});
-    if (df * dt < 0.0) {  // crosses the plane within band of it at an end: the crossing point's distance
-      const glm::dvec3 x = from + (to - from) * (df / (df - dt));
-      distance = std::min(distance, glm::length(x - nearest_on_triangle(x, t)));
-    }
+    if (crosses) distance = std::min(distance, glm::length(x - nearest_on_triangle(x, t)));
     if (distance <= band) return true;
   }
   return false;
