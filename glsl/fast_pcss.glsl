@@ -25,8 +25,13 @@
 //   aligned nodes (traversal.glsl, pnGridRegionMip), ambiguous ones sampled,
 //   never descended — the cost no longer grows with the penumbra.
 //   Exactness: leafSide 1 with the table's depth sums (PN_TRAVERSAL_SUM_TABLE,
-//   PN_DEPTH_SUMS_TABLE) and refineIterations 0 is exact PCSS (brute force
-//   over the same regions) up to the rounding of the blocker mean's sums.
+//   PN_DEPTH_SUMS_TABLE, PN_FAST_PCSS_ABLATIONS) and refineIterations 0 is exact
+//   PCSS (brute force over the same regions) up to the rounding of the blocker
+//   mean's sums.
+//   The shipped settings (pnFastPcssDefaults: exact regions, sampled leaves of
+//   side 16, no budget, the chain's midpoint sums) run a walk of their own,
+//   written for the GPU (docs/isa.md): the same nodes in the same order, the
+//   same sums, so the same result bit for bit as traversal_mip.glsl's.
 //
 // use:
 //   float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
@@ -45,9 +50,15 @@
 //        (`penumbra sample-table` prints it), both read with texelFetch only.
 //
 // options:
+//   PN_FAST_PCSS_ABLATIONS   defined before the include: the settings' ablation fields (regionMode,
+//                            leafDivisor, leafMode, blockerLeafMode, nodeBudget, depthSums, grid) and
+//                            leafSide 1 take effect (traversal_mip.glsl's walk, compiled in beside the
+//                            shipped one). Undefined (an engine's shader): only the shipped walk is in
+//                            the program; it honours bias, filterScale, refineIterations and leafSide
+//                            and reads none of the ablation fields (docs/modules/fast_pcss.md)
 //   PN_TRAVERSAL_SUM_TABLE   a usampler2D (summed_area.glsl's table of the map) declared before the
 //                            include: settings.depthSums = PN_DEPTH_SUMS_TABLE then gives exact
-//                            blocker sums (traversal.glsl)
+//                            blocker sums (traversal.glsl; with PN_FAST_PCSS_ABLATIONS)
 //   PN_TRAVERSAL_MAX_LEVEL, PN_REFINE_MAX_ITERATIONS   loop bounds (traversal.h, pcss_regions.h)
 //
 // cost: Step 3 <= 9 fetches a refinement; each traversal one fetch a node
@@ -62,13 +73,19 @@
 
 #include "fast_pcss.h"
 #include "light_model.glsl"
+#include "minmax_mip.glsl"
 #include "pcss_regions_mip.glsl"  // and pcss_regions.glsl
-#include "traversal_mip.glsl"  // and traversal.glsl
+#include "sample_table.glsl"
+#include "traversal.glsl"
+#ifdef PN_FAST_PCSS_ABLATIONS  // the ablations' walks (grid, budget, leaf modes, windows, table sums)
+#include "traversal_mip.glsl"
+#endif
 
 struct PnFastPcssSettings {
   float bias;            // light-depth units: a texel occludes when its depth < d - bias
   float filterScale;     // c: filter side = c · penumbra
   int refineIterations;  // Step 3's refinements, 0..PN_REFINE_MAX_ITERATIONS
+  // The ablations: read only with PN_FAST_PCSS_ABLATIONS (above); the shipped values otherwise.
   int regionMode;        // PN_REGION_EXACT, _WINDOW or _CENTRED (pcss_regions.h)
   int leafSide;          // >= 1
   int leafDivisor;       // 0: off
@@ -95,21 +112,16 @@ PnFastPcssSettings pnFastPcssDefaults(float bias) {
                             PN_DEPTH_SUMS_MIDPOINT, PN_FAST_PCSS_GRID);
 }
 
-// The bounded-work ablation's count of an entry's region (settings.grid > 0): pnGridRegionMip's
-// grid (Step 4 with depth sums, Step 5 without).
-PnTraversal pn_fastPcssGrid(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
-                            PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
-  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
-  return pnGridRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
-                         s.grid, s.leafSide, leafMode, depthSums, pixel);
-}
-
-// The walk of an entry's region over the chain, one node a step; its leaf side in `leafSide`.
-PnTraversalWalk pn_fastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTraversalTest test, PnFastPcssSettings s,
-                                out int leafSide) {
-  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
-  leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size);
-  return pn_traversalWalkBegin(shape, mapSize, region.origin, region.size, test, pn_traversalBudget(s.nodeBudget));
+// Step 3 (pcss_regions_mip.glsl): the search entry, and its fetches at their bound (9 a refinement).
+PnFastPcssResult pn_fastPcssSearch(sampler2D mip, PnLight light, vec3 receiver, vec2 receiverPlane,
+                                   PnFastPcssSettings s) {
+  PnFastPcssResult r = PnFastPcssResult(1.0, vec4(0.0), vec4(0.0), 0.0, 0, 0, 0);
+  int refinements;
+  r.searchEntry = pnSearchEntryMipPlane(mip, int(light.mapSize), light, vec4(receiver, 1.0), receiverPlane, s.bias,
+                                        s.refineIterations, refinements);
+  r.fetches = 9 * refinements;
+  r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
+  return r;
 }
 
 // Step 4's count done: the blocker mean and the filter entry (lit: no blocker mean).
@@ -128,15 +140,144 @@ void pn_fastPcssOcclusionDone(inout PnFastPcssResult r, PnTraversal occlusion) {
   r.visibility = 1.0 - pnTraversalOccludedFraction(occlusion);
 }
 
-PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
-                                    vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
+// Any settings (PN_FAST_PCSS_ABLATIONS): traversal_mip.glsl's walk, with its budget, leaf modes,
+// windows and table sums, or the grid.
+// Whether the settings are the shipped call's (pnFastPcssDefaults, whatever the bias, filter scale,
+// refinements and leaf side >= 2): exact regions, sampled leaves of a fixed side, no budget, the
+// chain's midpoint sums, no grid — the walk below computes them.
+bool pn_fastPcssShipped(PnFastPcssSettings s) {
+  return s.regionMode == PN_REGION_EXACT && s.leafSide >= 2 && s.leafDivisor == 0 && s.leafMode == PN_LEAF_SAMPLED &&
+         (s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE || s.blockerLeafMode == PN_LEAF_SAMPLED) &&
+         s.nodeBudget >= PN_TRAVERSAL_NO_BUDGET && s.depthSums == PN_DEPTH_SUMS_MIDPOINT && s.grid == 0;
+}
+
+// A sampled leaf's part [lo, lo + size) (traversal.glsl's PN_LEAF_SAMPLED): m samples from the
+// table's column `first` of the pixel's set, each against its own texel's threshold.
+// Four samples a run of the loop (llvmpipe counts every loop run of an invocation against one
+// limit of 65,535: a run a sample would reach it on wide penumbrae); samples past m (m = 1: a leaf
+// of side 2) are read — inside the table and the leaf — and not counted.
+void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleTable, int first, int m, ivec2 lo,
+                           ivec2 size, PnTraversalTest test, int set) {
+  float occluding = 0.0, depthSum = 0.0;
+  for (int g = 0; g < m; g += 4) {
+    for (int j = 0; j < 4; ++j) {  // constant trip count: unrolled
+      ivec2 p = pnSampleTexel(texelFetch(sampleTable, ivec2(first + g + j, set), 0).rg, lo, size);
+      float d = pn_mipNodeInside(mip, 0, p).x;
+      if (g + j < m && d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
+        occluding += 1.0;
+        depthSum += d;
+      }
+    }
+  }
+  t.fetches += m;
+  pn_traversalAddSampled(t, size, occluding, depthSum, m);
+}
+
+// The shipped settings' Steps 3 to 5 (pn_fastPcssShipped): traversal_mip.glsl's walk in the same
+// order with the same sums — so the same result, bit for bit — written for the wave (docs/isa.md):
+// one walk body for both regions, inside a two-run loop over them (Step 4's blockers, then Step 5's
+// occlusion: the switch between them outside the walk); a cursor of the node relative to the root,
+// (x, y) at `level`, whose next node in Z order comes from the trailing ones of x & y (the levels
+// to climb), not from a Morton code decoded each step; one chain fetch a node, without bounds
+// logic (a node touching the region clipped to the map lies in the chain); leaves of side <=
+// leafSide sampled, nodes above it descended (no budget, no texel visits: the leaf side is >= 2).
+// Step 4's midpoint sums are kept in Step 5 too, where nothing reads them.
+PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+                                            vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
+  PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
+  // Lit after Step 3: no region. The count is data, not a constant, so no compiler unrolls the
+  // loop below into two copies of the walk (an early return would make it a constant 2 after it).
+  int regions = pnEntryLit(r.searchEntry) ? 0 : 2;
   int n = int(light.mapSize);
-  PnFastPcssResult r = PnFastPcssResult(1.0, vec4(0.0), vec4(0.0), 0.0, 0, 0, 0);
-  int refinements;
-  r.searchEntry = pnSearchEntryMipPlane(mip, n, light, vec4(receiver, 1.0), receiverPlane, s.bias, s.refineIterations,
-                                        refinements);
-  r.fetches = 9 * refinements;
-  r.filterEntry = vec4(r.searchEntry.xyz, PN_REGION_LIT);
+  PnMipShape shape = pn_mipShape(mip);
+  int leafSide = max(s.leafSide, 1);
+  int set = pnSampleSet(pixel);
+  PnTraversalTest test = PnTraversalTest(r.searchEntry.x - s.bias, receiverPlane, r.searchEntry.yz);
+  vec4 entry = r.searchEntry;
+  for (int region = 0; region < regions; ++region) {  // Step 4, then Step 5
+    PnRect square = pnEntryRect(entry, n);
+    ivec2 start, end;
+    PnTraversal t = pn_traversalBegin(square.origin, square.size, clamp(n, 0, shape.rows), start, end);
+    // The 2×2 aligned nodes of level `top` at the region's aligned corner cover it; they are the
+    // children of a virtual root at rootLevel, never read.
+    ivec2 size = end - start;
+    int top = min(findMSB(max(size.x, size.y) - 1) + 1, shape.top);
+    int rootLevel = top + 1;
+    ivec2 rootOrigin = (start >> top) << top;
+    int level = top;
+    ivec2 node = ivec2(0);
+    // Nodes of side > leafSide descend, so every leaf of the region is of one level: its sample
+    // group is the region's (sample_table.glsl), not a leaf's.
+    int k = pnSampleGroupLog4(1 << min(top, findMSB(leafSide)));
+    int m = pnSampleCount(k), first = pnSampleFirstColumn(k);
+    bool empty = isnan(test.threshold) || t.texels == 0.0;
+    int iterations = empty ? 0 : PN_TRAVERSAL_NO_BUDGET + 3 * rootLevel + 4;
+    for (int it = 0; it < iterations; ++it) {
+      ivec2 origin = rootOrigin + (node << level);
+      ivec2 lo = max(origin, start), hi = min(origin + (1 << level), end);
+      t.nodes += 1;
+      bool descend = false;
+      if (all(lessThan(lo, hi))) {
+        vec2 depths = pn_mipNodeInside(mip, level, origin >> level);
+        t.fetches += 1;
+        vec2 threshold = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, lo, hi);
+        ivec2 part = hi - lo;
+        if (depths.y < threshold.x) {  // every texel occludes: its midpoint sum (exact when flat)
+          float texels = float(part.x) * float(part.y);  // the product of two ints < 2^24, rounded once as theirs
+          t.occluders += texels;
+          t.depthSum += (depths.x == depths.y ? depths.x : 0.5 * (depths.x + depths.y)) * texels;
+        } else if (depths.x < threshold.y) {  // ambiguous
+          descend = (1 << level) > leafSide;
+          if (!descend) pn_fastPcssSampleLeaf(t, mip, sampleTable, first, m, lo, part, test, set);
+        }
+      }
+      if (descend) {
+        level -= 1;
+        node *= 2;
+        continue;
+      }
+      // The next sibling, climbing over every level whose last child (x and y odd) this was; the
+      // virtual root's last child done: the walk is over.
+      int climb = findLSB(~(node.x & node.y));
+      level += climb;
+      if (level >= rootLevel) break;
+      node >>= climb;
+      node.y += node.x & 1;
+      node.x ^= 1;
+    }
+    if (region == 1) {
+      pn_fastPcssOcclusionDone(r, t);
+      break;
+    }
+    pn_fastPcssBlockersDone(r, t, light, s);
+    if (pnEntryLit(r.filterEntry)) break;
+    entry = r.filterEntry;
+  }
+  return r;
+}
+
+#ifdef PN_FAST_PCSS_ABLATIONS
+// The bounded-work ablation's count of an entry's region (settings.grid > 0): pnGridRegionMip's
+// grid (Step 4 with depth sums, Step 5 without).
+PnTraversal pn_fastPcssGrid(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
+                            PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
+  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
+  return pnGridRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
+                         s.grid, s.leafSide, leafMode, depthSums, pixel);
+}
+
+// The walk of an entry's region over the chain, one node a step; its leaf side in `leafSide`.
+PnTraversalWalk pn_fastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTraversalTest test, PnFastPcssSettings s,
+                                out int leafSide) {
+  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
+  leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size);
+  return pn_traversalWalkBegin(shape, mapSize, region.origin, region.size, test, pn_traversalBudget(s.nodeBudget));
+}
+
+PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+                                              vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
+  int n = int(light.mapSize);
+  PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
   if (pnEntryLit(r.searchEntry)) return r;
 
   int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
@@ -176,6 +317,16 @@ PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLigh
     limit = it + 1 + max(w.iterations, 1);
   }
   return r;
+}
+
+#endif  // PN_FAST_PCSS_ABLATIONS
+
+PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+                                    vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
+#ifdef PN_FAST_PCSS_ABLATIONS
+  if (!pn_fastPcssShipped(s)) return pn_fastPcssAblationsEstimate(mip, sampleTable, light, receiver, receiverPlane, pixel, s);
+#endif
+  return pn_fastPcssShippedEstimate(mip, sampleTable, light, receiver, receiverPlane, pixel, s);
 }
 
 PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,

@@ -117,6 +117,16 @@ vec4 pn_mipTexel(sampler2D mip, int level, ivec2 texel) {
   return pn_mipTexelOf(mip, pn_mipShape(mip), level, texel);
 }
 
+// Node `node` of `level`, known to lie in the chain (0 <= node < P / 2^level on each axis, level
+// <= log2 P): one fetch, no bounds logic — for a walk whose nodes are inside by construction (Fast
+// PCSS's shipped call: nodes touching a region clipped to the map). Level 0 node p is texel p's
+// depth in .x (and .y).
+vec2 pn_mipNodeInside(sampler2D mip, int level, ivec2 node) {
+  PN_ON_TEXEL_FETCH();
+  vec4 t = texelFetch(mip, ivec2(node.x >> 1, node.y), level);
+  return (node.x & 1) != 0 ? t.zw : t.xy;
+}
+
 // Node `node` of `level` when `wanted`, else (and outside the level) the empty pair.
 vec2 pn_mipFetchIf(sampler2D mip, PnMipShape shape, int level, ivec2 node, bool wanted) {
   int nodes = max(shape.rows >> clamp(level, 0, shape.top), 1);
@@ -165,35 +175,35 @@ vec2 pn_mipUnion(vec2 a, vec2 b) {
   return vec2(min(a.x, b.x), max(a.y, b.y));
 }
 
-// Node first + offset of a square's cover, or the empty pair beyond `last`.
-vec2 pn_mipSquareNode(sampler2D mip, PnMipShape shape, int level, ivec2 first, ivec2 last, ivec2 offset) {
-  ivec2 node = first + offset;
-  return pn_mipFetchIf(mip, shape, level, node, !any(greaterThan(node, last)));
+// Node first + offset of a square's cover, clamped to its last node: a node past `last` is read
+// again as `last`, which the union holds already — nine fetches inside the chain, no bounds logic.
+vec2 pn_mipSquareNode(sampler2D mip, int level, ivec2 first, ivec2 last, ivec2 offset) {
+  return pn_mipNodeInside(mip, level, min(first + offset, last));
 }
 
 vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
-  int n = max(mapSize, 1);
+  PnMipShape shape = pn_mipShape(mip);
+  // The map clipped to the chain too (P >= N for the chain of an N×N map), so every node read is in it.
+  int n = max(min(mapSize, shape.rows), 1);
   ivec2 lo = clamp(origin, ivec2(0), ivec2(n));
   ivec2 hi = clamp(origin + max(side, 0), lo, ivec2(n));
   if (any(greaterThanEqual(lo, hi))) return pn_mipEmpty();
   int s = max(hi.x - lo.x, hi.y - lo.y);
   // Nodes of side 2^level >= s / 2: at most 3 touch the square on each axis.
-  PnMipShape shape = pn_mipShape(mip);
   int level = min(max(findMSB(s - 1), 0), shape.top);
   ivec2 first = lo >> level;
   ivec2 last = (hi - ivec2(1)) >> level;
-  // The 3×3 nodes from `first`, those beyond `last` left out: written out, not
-  // looped (llvmpipe runs a loop's control per invocation group; the fetches
-  // themselves are cheap).
-  vec2 result = pn_mipSquareNode(mip, shape, level, first, last, ivec2(0, 0));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(1, 0)));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(2, 0)));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(0, 1)));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(1, 1)));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(2, 1)));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(0, 2)));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(1, 2)));
-  result = pn_mipUnion(result, pn_mipSquareNode(mip, shape, level, first, last, ivec2(2, 2)));
+  // The 3×3 nodes from `first`, written out, not looped (llvmpipe runs a loop's control per
+  // invocation group; the fetches themselves are cheap).
+  vec2 result = pn_mipSquareNode(mip, level, first, last, ivec2(0, 0));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(1, 0)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(2, 0)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(0, 1)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(1, 1)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(2, 1)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(0, 2)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(1, 2)));
+  result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(2, 2)));
   return result;
 }
 

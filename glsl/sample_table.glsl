@@ -36,8 +36,9 @@
 #endif
 
 int pnSampleGroupLog4(int regionSide) {
-  // s / 2 clamped to 1…4 and floor(lb): integer halving gives the same floor for every s >= 1.
-  return findMSB(clamp(regionSide / 2, 1, 4));
+  // s / 2 clamped to 1…4 and floor(lb): integer halving gives the same floor for every s >= 1
+  // (a shift: the same value as s / 2 once clamped, negative sides included, without the sign fix-up).
+  return findMSB(clamp(regionSide >> 1, 1, 4));
 }
 
 int pnSampleCount(int k) {
@@ -45,7 +46,8 @@ int pnSampleCount(int k) {
 }
 
 int pnSampleFirstColumn(int k) {
-  return (pnSampleCount(k) - 1) / 3;
+  // (4^k - 1) / 3 = 0b0101…01 (k ones): the even bits of 4^k - 1, without an integer division.
+  return (pnSampleCount(k) - 1) & 0x55555555;
 }
 
 int pnSampleLastColumn(int k) {

@@ -74,3 +74,32 @@ TEST_CASE("a loop the compiler unrolled twice inside its ISA loop costs half tha
   CHECK(m.in_loop == std::vector<bool>{true});
   CHECK(m.loop_bodies[0].cycles == 1.5);  // (two v_mul + the branch) / 2
 }
+
+TEST_CASE("isa_loops costs each loop's own body in program order, an inner loop apart from its outer one") {
+  const std::string isa =
+      "BB0:\n"
+      "\ts_mov_b32 s0, 0                                   ; be800380\n"
+      "BB1:\n"                                                                   // outer loop
+      "\tv_mul_f32_e32 v1, v1, v1                          ; 10020301\n"
+      "BB2:\n"                                                                   // inner loop
+      "\timage_load v7, v[2:3], s[8:15] dmask:0x1 dim:SQ_RSRC_IMG_2D unorm ; f0001108\n"
+      "\tv_rcp_f32_e32 v1, v7                              ; 7e025507\n"
+      "\ts_cbranch_scc1 BB2                                ; bf85fffd\n"
+      "\ts_add_u32 s0, s0, 1                               ; 80008100\n"
+      "\ts_cbranch_scc0 BB1                                ; bf84fffa\n"
+      "BB3:\n"
+      "\tv_add_f32_e32 v1, v1, v1                          ; 06020301\n"
+      "\ts_endpgm                                          ; bf810000\n";
+  const std::vector<pn::IsaLoop> loops = pn::isa_loops(isa, pn::issue_model("navi21", 64, 32));
+  REQUIRE(loops.size() == 2);
+  // The outer body: v_mul 2 + s_add 1 + s_cbranch 1; the inner: image_load 2 + v_rcp 8 + s_cbranch 1.
+  CHECK(loops[0].depth == 0);
+  CHECK(loops[0].instructions == 3.0);
+  CHECK(loops[0].cycles == 4.0);
+  CHECK(loops[0].loads == 0.0);
+  CHECK(loops[1].depth == 1);
+  CHECK(loops[1].instructions == 3.0);
+  CHECK(loops[1].cycles == 11.0);
+  CHECK(loops[1].loads == 1.0);
+  CHECK(pn::isa_loops("\tv_add_f32_e32 v1, v1, v1 ; 06020301\n", pn::issue_model("navi21", 64, 32)).empty());
+}

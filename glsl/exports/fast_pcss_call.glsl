@@ -7,6 +7,9 @@
 layout(binding = PN_EXPORT_SUM_TABLE_BINDING) uniform highp usampler2D pnDepthSums;
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums
 #endif
+#ifndef PN_EXPORT_ENGINE  // the block's settings, every ablation among them
+#define PN_FAST_PCSS_ABLATIONS
+#endif
 #include "fast_pcss.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

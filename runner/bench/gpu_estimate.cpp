@@ -123,7 +123,7 @@ std::vector<GpuEstimate> GpuEstimator::estimate(const std::vector<const LoopCens
         if (!shader.error.empty() || !exe) {
           own->error = programs[p].entry.file + ": " + (shader.error.empty() ? "no compute shader reported" : shader.error);
         } else {
-          own->figures = isa_figures(*exe, setup_.wave, results.front().min_wave);
+          own->figures = isa_figures(*exe, setup_.family, setup_.wave, results.front().min_wave);
           own->cost = isa_cost_model(exe->isa, own->loops,
                                      issue_model(setup_.family, setup_.wave, results.front().min_wave));
         }

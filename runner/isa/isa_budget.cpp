@@ -15,6 +15,8 @@ double figure(const IsaFigures& f, const std::string& key) {
   if (key == "vgprs") return f.vgprs;
   if (key == "instructions") return f.instructions;
   if (key == "code") return f.code;
+  if (key == "loop") return f.loop_cycles_max;
+  if (key == "loops") return f.loop_cycles_sum;
   return f.scratch;  // "scratch"
 }
 
@@ -42,10 +44,12 @@ std::optional<IsaBudget> read_budget(const SourceTree& tree, const std::string& 
       kv >> key >> value >> rest;
       char* end = nullptr;
       const double v = std::strtod(value.c_str(), &end);
-      if ((key != "vgprs" && key != "instructions" && key != "code" && key != "scratch") || value.empty() || *end != '\0' ||
-          !rest.empty())
+      if ((key != "vgprs" && key != "instructions" && key != "code" && key != "scratch" && key != "loop" &&
+           key != "loops") ||
+          value.empty() || *end != '\0' || !rest.empty())
         throw Error(file + ":" + std::to_string(number) + ": isa budget item '" + item +
-                    "': expected 'vgprs N', 'instructions N', 'code BYTES' or 'scratch BYTES'");
+                    "': expected 'vgprs N', 'instructions N', 'code BYTES', 'scratch BYTES', 'loop CYCLES' or "
+                    "'loops CYCLES'");
       b.limits.emplace_back(key, v);
     }
     return b;
@@ -72,7 +76,7 @@ std::vector<std::string> budget_breaches(const IsaBudgets& budgets, const std::v
     }
     const ShaderExecutable* own = shader.own(entry.stage);
     if (!own) continue;
-    const IsaFigures f = isa_figures(*own, result.target.wave, result.min_wave);
+    const IsaFigures f = isa_figures(*own, result.target.family, result.target.wave, result.min_wave);
     const auto found = budgets.find(entry.module);
     const std::optional<IsaBudget> budget = found == budgets.end() ? std::nullopt : found->second;
     bool scratch_budgeted = false;

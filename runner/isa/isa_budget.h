@@ -1,5 +1,6 @@
 // A technique's GPU budget, written in its module's header comment beside its call:
-//   // isa budget: vgprs 32, instructions 1500, code 8192, scratch 0
+//   // isa budget: vgprs 32, instructions 1500, code 8192, scratch 0, loop 350, loops 900
+// (loop: the costliest loop body's issue cycles a run; loops: every loop body's together: isa_cost.h)
 // read for the one call as an engine compiles it, on RDNA 2 (navi21) in wave64, in both stages
 // (docs/isa.md). `penumbra isa --budgets` fails on a call over its budget, and on scratch in
 // any entry it compiled.
@@ -22,7 +23,7 @@ struct IsaBudget {
   std::string module;  // "fast_pcss"
   std::string file;    // "fast_pcss.glsl"
   int line = 0;
-  std::vector<std::pair<std::string, double>> limits;  // "vgprs", "instructions", "code", "scratch"
+  std::vector<std::pair<std::string, double>> limits;  // "vgprs", "instructions", "code", "scratch", "loop", "loops"
 };
 
 // The module's budget line, or nothing when it has none. Throws Error naming file:line for a

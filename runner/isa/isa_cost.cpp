@@ -68,8 +68,31 @@ bool vector_memory_load(const std::string& m) {
          starts(m, "scratch_load");
 }
 
-IsaCostModel isa_cost_model(const std::string& isa, std::size_t census_loops, const IssueModel& model) {
+namespace {
+
+// The ISA's instructions (labels taken out) and its loops: [target, branch] for each branch back to
+// a label at or before it; back edges to one label (a `continue`, the loop's end) are one loop.
+struct ParsedIsa {
+  struct Region {
+    std::size_t first, last;
+  };
   std::vector<Line> lines;
+  std::vector<Region> regions;
+
+  // The innermost loop (the smallest region) holding instruction i, or -1.
+  int innermost(std::size_t i) const {
+    int best = -1;
+    for (std::size_t r = 0; r < regions.size(); ++r)
+      if (regions[r].first <= i && i <= regions[r].last &&
+          (best < 0 || regions[r].last - regions[r].first <
+                           regions[static_cast<std::size_t>(best)].last - regions[static_cast<std::size_t>(best)].first))
+        best = static_cast<int>(r);
+    return best;
+  }
+};
+
+ParsedIsa parse_isa(const std::string& isa) {
+  ParsedIsa p;
   std::map<std::string, std::size_t> labels;  // label -> index of the next instruction
   std::istringstream in(isa);
   for (std::string raw; std::getline(in, raw);) {
@@ -79,37 +102,51 @@ IsaCostModel isa_cost_model(const std::string& isa, std::size_t census_loops, co
     while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.pop_back();
     if (text.empty()) continue;
     if (text.back() == ':' && text.find(' ') == std::string::npos) {
-      labels[text.substr(0, text.size() - 1)] = lines.size();
+      labels[text.substr(0, text.size() - 1)] = p.lines.size();
       continue;
     }
-    lines.push_back({text.substr(0, text.find_first_of(" \t")), text});
+    p.lines.push_back({text.substr(0, text.find_first_of(" \t")), text});
   }
-  // Loops: [target, branch] for each branch to a label at or before it.
-  struct Region {
-    std::size_t first, last;
-  };
-  std::vector<Region> regions;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const Line& l = lines[i];
+  for (std::size_t i = 0; i < p.lines.size(); ++i) {
+    const Line& l = p.lines[i];
     if (l.mnemonic != "s_branch" && !starts(l.mnemonic, "s_cbranch")) continue;
     const std::size_t space = l.text.find_last_of(" \t");
     const auto target = labels.find(l.text.substr(space + 1));
     if (target == labels.end() || target->second > i) continue;
-    // Back edges to one label (a `continue`, the loop's end) are one loop.
-    const auto same = std::find_if(regions.begin(), regions.end(), [&](const Region& r) { return r.first == target->second; });
-    if (same != regions.end()) same->last = std::max(same->last, i);
-    else regions.push_back({target->second, i});
+    const auto same = std::find_if(p.regions.begin(), p.regions.end(),
+                                   [&](const ParsedIsa::Region& r) { return r.first == target->second; });
+    if (same != p.regions.end()) same->last = std::max(same->last, i);
+    else p.regions.push_back({target->second, i});
   }
-  // Each instruction's innermost loop (the smallest region holding it), or none.
-  const auto innermost = [&](std::size_t i) {
-    int best = -1;
-    for (std::size_t r = 0; r < regions.size(); ++r)
-      if (regions[r].first <= i && i <= regions[r].last &&
-          (best < 0 || regions[r].last - regions[r].first <
-                           regions[static_cast<std::size_t>(best)].last - regions[static_cast<std::size_t>(best)].first))
-        best = static_cast<int>(r);
-    return best;
-  };
+  std::sort(p.regions.begin(), p.regions.end(),
+            [](const ParsedIsa::Region& a, const ParsedIsa::Region& b) { return a.first < b.first; });
+  return p;
+}
+
+}  // namespace
+
+std::vector<IsaLoop> isa_loops(const std::string& isa, const IssueModel& model) {
+  const ParsedIsa p = parse_isa(isa);
+  std::vector<IsaLoop> out(p.regions.size());
+  for (std::size_t r = 0; r < p.regions.size(); ++r)
+    for (std::size_t q = 0; q < p.regions.size(); ++q)
+      if (q != r && p.regions[q].first <= p.regions[r].first && p.regions[r].last <= p.regions[q].last) ++out[r].depth;
+  for (std::size_t i = 0; i < p.lines.size(); ++i) {
+    const int r = p.innermost(i);
+    if (r < 0) continue;
+    IsaLoop& l = out[static_cast<std::size_t>(r)];
+    l.instructions += 1.0;
+    l.cycles += issue_cycles(p.lines[i].mnemonic, model);
+    l.loads += vector_memory_load(p.lines[i].mnemonic) ? 1.0 : 0.0;
+  }
+  return out;
+}
+
+IsaCostModel isa_cost_model(const std::string& isa, std::size_t census_loops, const IssueModel& model) {
+  const ParsedIsa parsed = parse_isa(isa);
+  const std::vector<Line>& lines = parsed.lines;
+  const auto& regions = parsed.regions;
+  const auto innermost = [&](std::size_t i) { return parsed.innermost(i); };
   // The markers: a buffer store at offset:4(j+1) after a load of the same address, descriptor and offset.
   std::vector<bool> marker(lines.size(), false);
   std::vector<std::vector<int>> marked(census_loops);  // census loop -> the regions (or -1) of its markers

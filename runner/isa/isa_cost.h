@@ -37,6 +37,18 @@ struct IsaCostModel {
   int unmarked_loops = 0;             // ISA loops holding no census count (run once in the estimate)
 };
 
+// One loop of an ISA (a branch back to an earlier label), its own body: the instructions whose
+// innermost loop it is (its inner loops apart), their issue cycles and vector memory loads — what
+// a wave pays each time it goes round. `depth`: how many loops hold it.
+struct IsaLoop {
+  std::size_t depth = 0;
+  double instructions = 0.0;
+  double cycles = 0.0;
+  double loads = 0.0;
+};
+// The loops of `isa` in program order (by their first instruction).
+std::vector<IsaLoop> isa_loops(const std::string& isa, const IssueModel& model);
+
 // Reads `isa` (RADV's disassembly: `BBn:` labels, one instruction a line) of a program instrumented
 // with `census_loops` loops. A loop's markers (its count's load, store and the add between) are
 // not counted in its cost.

@@ -149,7 +149,7 @@ const ShaderExecutable* IsaShader::own(Stage stage) const {
   return nullptr;
 }
 
-IsaFigures isa_figures(const ShaderExecutable& e, int wave, int min_wave) {
+IsaFigures isa_figures(const ShaderExecutable& e, const std::string& family, int wave, int min_wave) {
   IsaFigures f;
   const auto stat = [&](const char* name) { return std::max(0.0, e.statistic(name)); };
   f.vgprs = stat("VGPRs");
@@ -168,6 +168,11 @@ IsaFigures isa_figures(const ShaderExecutable& e, int wave, int min_wave) {
   for (std::string line; std::getline(isa, line);) {
     const size_t start = line.find_first_not_of(" \t");
     if (start != std::string::npos && line.compare(start, 6, "image_") == 0) ++f.image;
+  }
+  f.loops = isa_loops(e.isa, issue_model(family, wave, min_wave));
+  for (const IsaLoop& l : f.loops) {
+    f.loop_cycles_max = std::max(f.loop_cycles_max, l.cycles);
+    f.loop_cycles_sum += l.cycles;
   }
   return f;
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "isa/isa_cost.h"
 #include "isa/isa_entries.h"
 #include "isa/radv_null.h"
 #include "shader/glslang_compiler.h"
@@ -29,11 +30,13 @@ std::vector<IsaProgram> compile_isa_programs(const GlslangProcess& glslang, cons
 struct IsaFigures {
   double vgprs = 0, sgprs = 0, spilled_vgprs = 0, spilled_sgprs = 0, scratch = 0, code = 0, instructions = 0,
          branches = 0, image = 0, latency = 0, throughput = 0, waves = 0;
+  std::vector<IsaLoop> loops;  // each loop's own body, in program order (isa_cost.h)
+  double loop_cycles_max = 0, loop_cycles_sum = 0;  // the costliest loop body, and every body together
 };
-// `e`'s figures: the driver's statistics, image instructions counted in its ISA, and waves per
-// SIMD in waves of `wave` lanes (RADV counts subgroups in wave32 units on a device with wave32,
-// `min_wave` 32: gfx10 and later).
-IsaFigures isa_figures(const ShaderExecutable& e, int wave, int min_wave);
+// `e`'s figures: the driver's statistics, image instructions counted in its ISA, its loops costed
+// for `family` (isa_cost.h), and waves per SIMD in waves of `wave` lanes (RADV counts subgroups in
+// wave32 units on a device with wave32, `min_wave` 32: gfx10 and later).
+IsaFigures isa_figures(const ShaderExecutable& e, const std::string& family, int wave, int min_wave);
 
 struct IsaShader {
   std::string error;                        // the pipeline did not compile ("" when it did)
