@@ -87,7 +87,7 @@
 //   stackless: no local array); what bounds it in practice is the number of
 //   occluding texels whose segments reach: the penumbra's area in texels.
 //
-// isa budget: vgprs 64, instructions 4800, code 25600, scratch 0
+// isa budget: vgprs 64, instructions 4800, code 25600, scratch 0, loop 4600, loops 7400
 //   (`penumbra isa --budgets`: both calls as an engine compiles them, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL

@@ -65,7 +65,7 @@
 //   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
 //   receiver stops after Step 3.
 //
-// isa budget: vgprs 48, instructions 1600, code 8192, scratch 0
+// isa budget: vgprs 40, instructions 650, code 4096, scratch 0, loop 350, loops 920
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_FAST_PCSS_GLSL
@@ -159,14 +159,14 @@ bool pn_fastPcssShipped(PnFastPcssSettings s) {
 void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleTable, int first, int m, ivec2 lo,
                            ivec2 size, PnTraversalTest test, int set) {
   float occluding = 0.0, depthSum = 0.0;
-  for (int g = 0; g < m; g += 4) {
-    for (int j = 0; j < 4; ++j) {  // constant trip count: unrolled
-      ivec2 p = pnSampleTexel(texelFetch(sampleTable, ivec2(first + g + j, set), 0).rg, lo, size);
-      float d = pn_mipNodeInside(mip, 0, p).x;
-      if (g + j < m && d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
-        occluding += 1.0;
-        depthSum += d;
-      }
+  vec2 scale = vec2(size);  // size >= 1: a leaf's part is never empty
+  ivec2 last = size - ivec2(1);
+  for (int i = 0; i < m; ++i) {
+    ivec2 p = pn_sampleTexelIn(texelFetch(sampleTable, ivec2(first + i, set), 0).rg, lo, scale, last);
+    float d = pn_mipNodeInside(mip, 0, p).x;
+    if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
+      occluding += 1.0;
+      depthSum += d;
     }
   }
   t.fetches += m;
@@ -190,17 +190,21 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
   int regions = pnEntryLit(r.searchEntry) ? 0 : 2;
   int n = int(light.mapSize);
   PnMipShape shape = pn_mipShape(mip);
+  int chain = clamp(n, 0, shape.rows);  // the map's side inside the chain
   int leafSide = max(s.leafSide, 1);
   int set = pnSampleSet(pixel);
   PnTraversalTest test = PnTraversalTest(r.searchEntry.x - s.bias, receiverPlane, r.searchEntry.yz);
   vec4 entry = r.searchEntry;
   for (int region = 0; region < regions; ++region) {  // Step 4, then Step 5
-    PnRect square = pnEntryRect(entry, n);
-    ivec2 start, end;
-    PnTraversal t = pn_traversalBegin(square.origin, square.size, clamp(n, 0, shape.rows), start, end);
+    // The region inside the map and the chain (pn_traversalBegin's clip: the square is inside
+    // [0, chain) already, but for the largest root's side), and its texels.
+    PnRect square = pnEntryRect(entry, max(chain, 1));
+    ivec2 start = square.origin;
+    ivec2 size = chain > 0 ? min(square.size, ivec2(1 << PN_TRAVERSAL_MAX_LEVEL)) : ivec2(0);
+    ivec2 end = start + size;
+    PnTraversal t = PnTraversal(0.0, 0.0, float(size.x) * float(size.y), 0, 0);
     // The 2×2 aligned nodes of level `top` at the region's aligned corner cover it; they are the
     // children of a virtual root at rootLevel, never read.
-    ivec2 size = end - start;
     int top = min(findMSB(max(size.x, size.y) - 1) + 1, shape.top);
     int rootLevel = top + 1;
     ivec2 rootOrigin = (start >> top) << top;
@@ -210,9 +214,11 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
     // group is the region's (sample_table.glsl), not a leaf's.
     int k = pnSampleGroupLog4(1 << min(top, findMSB(leafSide)));
     int m = pnSampleCount(k), first = pnSampleFirstColumn(k);
+    // traversal_mip.glsl's bound for the largest root: the same for every invocation, so the loop's
+    // count is a scalar (a region's own bound, budget + 3 rootLevel + 4, is never reached without a
+    // budget: the walk ends at its last node first).
     bool empty = isnan(test.threshold) || t.texels == 0.0;
-    int iterations = empty ? 0 : PN_TRAVERSAL_NO_BUDGET + 3 * rootLevel + 4;
-    for (int it = 0; it < iterations; ++it) {
+    for (int it = 0; it < (PN_TRAVERSAL_NO_BUDGET + 3 * (PN_TRAVERSAL_MAX_LEVEL + 1) + 4) && !empty; ++it) {
       ivec2 origin = rootOrigin + (node << level);
       ivec2 lo = max(origin, start), hi = min(origin + (1 << level), end);
       t.nodes += 1;

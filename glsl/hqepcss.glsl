@@ -30,7 +30,7 @@
 // cost: Step 3 4 fetches a refinement; the blocker traversal one fetch a node;
 //   the PCF one fetch per texel of the filter square (O(s²)).
 //
-// isa budget: vgprs 40, instructions 1800, code 9216, scratch 0
+// isa budget: vgprs 40, instructions 1800, code 9216, scratch 0, loop 1450, loops 2200
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_HQEPCSS_GLSL

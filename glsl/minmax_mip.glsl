@@ -121,10 +121,14 @@ vec4 pn_mipTexel(sampler2D mip, int level, ivec2 texel) {
 // <= log2 P): one fetch, no bounds logic — for a walk whose nodes are inside by construction (Fast
 // PCSS's shipped call: nodes touching a region clipped to the map). Level 0 node p is texel p's
 // depth in .x (and .y).
-vec2 pn_mipNodeInside(sampler2D mip, int level, ivec2 node) {
-  PN_ON_TEXEL_FETCH();
+vec2 pn_mipNodeRead(sampler2D mip, int level, ivec2 node) {
   vec4 t = texelFetch(mip, ivec2(node.x >> 1, node.y), level);
   return (node.x & 1) != 0 ? t.zw : t.xy;
+}
+
+vec2 pn_mipNodeInside(sampler2D mip, int level, ivec2 node) {
+  PN_ON_TEXEL_FETCH();
+  return pn_mipNodeRead(mip, level, node);
 }
 
 // Node `node` of `level` when `wanted`, else (and outside the level) the empty pair.
@@ -176,18 +180,17 @@ vec2 pn_mipUnion(vec2 a, vec2 b) {
 }
 
 // Node first + offset of a square's cover, clamped to its last node: a node past `last` is read
-// again as `last`, which the union holds already — nine fetches inside the chain, no bounds logic.
+// again as `last`, which the union holds already — nine fetches inside the chain, no bounds logic
+// (PN_ON_TEXEL_FETCH counts the cover's nodes, not the repeats).
 vec2 pn_mipSquareNode(sampler2D mip, int level, ivec2 first, ivec2 last, ivec2 offset) {
-  return pn_mipNodeInside(mip, level, min(first + offset, last));
+  ivec2 node = first + offset;
+  if (all(lessThanEqual(node, last))) PN_ON_TEXEL_FETCH();
+  return pn_mipNodeRead(mip, level, min(node, last));
 }
 
-vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
-  PnMipShape shape = pn_mipShape(mip);
-  // The map clipped to the chain too (P >= N for the chain of an N×N map), so every node read is in it.
-  int n = max(min(mapSize, shape.rows), 1);
-  ivec2 lo = clamp(origin, ivec2(0), ivec2(n));
-  ivec2 hi = clamp(origin + max(side, 0), lo, ivec2(n));
-  if (any(greaterThanEqual(lo, hi))) return pn_mipEmpty();
+// (min, max) over the aligned nodes that touch [lo, hi), a non-empty rectangle inside the map
+// and the chain (lo < hi <= min(N, P)): pnMipSquareMinMax's cover, for a caller that clipped it.
+vec2 pn_mipRectMinMax(sampler2D mip, PnMipShape shape, ivec2 lo, ivec2 hi) {
   int s = max(hi.x - lo.x, hi.y - lo.y);
   // Nodes of side 2^level >= s / 2: at most 3 touch the square on each axis.
   int level = min(max(findMSB(s - 1), 0), shape.top);
@@ -205,6 +208,16 @@ vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
   result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(1, 2)));
   result = pn_mipUnion(result, pn_mipSquareNode(mip, level, first, last, ivec2(2, 2)));
   return result;
+}
+
+vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side) {
+  PnMipShape shape = pn_mipShape(mip);
+  // The map clipped to the chain too (P >= N for the chain of an N×N map), so every node read is in it.
+  int n = max(min(mapSize, shape.rows), 1);
+  ivec2 lo = clamp(origin, ivec2(0), ivec2(n));
+  ivec2 hi = clamp(origin + max(side, 0), lo, ivec2(n));
+  if (any(greaterThanEqual(lo, hi))) return pn_mipEmpty();
+  return pn_mipRectMinMax(mip, shape, lo, hi);
 }
 
 #endif  // PENUMBRA_MINMAX_MIP_GLSL

@@ -33,21 +33,26 @@
 // The same from the aligned mip chain: the min over the aligned nodes that
 // touch that square (<= 9 fetches) — never above the square's min, so the lit
 // decision stays conservative and refinement lossless.
-float pn_searchRegionMinMip(sampler2D mip, int mapSize, vec4 entry) {
-  PnRect r = pnEntryRect(entry, mapSize);
+// The entry's rectangle lies in the map, clipped to the chain too (n <= P), so the square of side
+// max(w, h) at its origin needs clipping on the far side only, and every node read is in the
+// chain (pnMipSquareMinMax's cover of that square); the chain's shape is read once, by the caller.
+float pn_searchRegionMinMip(sampler2D mip, PnMipShape shape, int mapSize, vec4 entry) {
+  int n = max(min(mapSize, shape.rows), 1);
+  PnRect r = pnEntryRect(entry, n);
   if (r.size.x == 0 || r.size.y == 0) return pn_mipFar();
-  return pnMipSquareMinMax(mip, mapSize, r.origin, max(r.size.x, r.size.y)).x;
+  return pn_mipRectMinMax(mip, shape, r.origin, min(r.origin + max(r.size.x, r.size.y), ivec2(n))).x;
 }
 
 vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 receiver, vec2 gradient, float bias,
                            int iterations, out int refinements) {
   vec4 entry = pn_searchStart(light, receiver);
   refinements = 0;
+  PnMipShape shape = pn_mipShape(mip);
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
     refinements += 1;
-    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, mapSize, entry), receiver.xy,
+    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, shape, mapSize, entry), receiver.xy,
                                  gradient, bias, done);
     if (done) break;
   }

@@ -70,7 +70,7 @@
 // cost: per sample one texelFetch, ~8 ALU operations; `count` samples per call,
 //   independent of the disk's size.
 //
-// isa budget: vgprs 16, instructions 400, code 2048, scratch 0
+// isa budget: vgprs 16, instructions 400, code 2048, scratch 0, loop 80, loops 160
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_POISSON_PCSS_GLSL

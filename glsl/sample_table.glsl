@@ -63,9 +63,15 @@ vec2 pnSample(sampler2D table, int column, int set) {
   return texelFetch(table, p, 0).rg;
 }
 
+// pnSampleTexel with its rectangle's size as a float `scale` and its last offset `last` (size - 1),
+// read once by a caller that places many samples in one rectangle.
+ivec2 pn_sampleTexelIn(vec2 position, ivec2 origin, vec2 scale, ivec2 last) {
+  return origin + clamp(ivec2(floor(position * scale)), ivec2(0), last);
+}
+
 ivec2 pnSampleTexel(vec2 position, ivec2 origin, ivec2 size) {
   ivec2 s = max(size, ivec2(1));
-  return origin + clamp(ivec2(floor(position * vec2(s))), ivec2(0), s - ivec2(1));
+  return pn_sampleTexelIn(position, origin, vec2(s), s - ivec2(1));
 }
 
 #endif  // PENUMBRA_SAMPLE_TABLE_GLSL

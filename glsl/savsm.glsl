@@ -74,7 +74,7 @@
 //   measure; a few dozen ALU operations and three divisions. The table's
 //   build is summed_area.glsl's (two passes over the map).
 //
-// isa budget: vgprs 40, instructions 1000, code 6144, scratch 0
+// isa budget: vgprs 40, instructions 700, code 4096, scratch 0
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_SAVSM_GLSL

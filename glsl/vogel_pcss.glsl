@@ -62,7 +62,7 @@
 //   operations; blockerSamples + filterSamples fetches per shadowed receiver,
 //   blockerSamples per lit one, whatever the penumbra's width.
 //
-// isa budget: vgprs 16, instructions 900, code 5120, scratch 0
+// isa budget: vgprs 16, instructions 900, code 5120, scratch 0, loop 90, loops 90
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_VOGEL_PCSS_GLSL

@@ -71,7 +71,7 @@
 //   blur (2·(2r+1) fetches per texel); a receiver: 1 moments fetch, 4 pyramid
 //   fetches, a division (two for EVSM-4) — independent of the filter size.
 //
-// isa budget: vgprs 16, instructions 320, code 2048, scratch 0
+// isa budget: vgprs 16, instructions 320, code 2048, scratch 0, loop 40, loops 45
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_VSM_GLSL

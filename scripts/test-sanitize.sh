@@ -32,7 +32,7 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitize/lsan.supp:print_suppressi
 # the library (cli_check_all_gl on GL, check_vulkan.py on vulkan and hlsl: over 8 minutes): the
 # broken copies run the same checks on every executor. PENUMBRA_SANITIZE_ALL=1 runs them too. Every other CLI
 # test runs, GL or not.
-slow='^cli_check_(depth_pyramid|traversal|pcss_regions)_|^cli_check_es310$|^cli_check_all_gl$|^cli_check_vulkan_hlsl_vs_gl$'
+slow='^cli_check_(depth_pyramid|traversal|pcss_regions)_|^cli_check_es310$|^cli_check_all_gl$|^cli_check_(vulkan|hlsl)_vs_gl$'
 [ "${PENUMBRA_SANITIZE_ALL:-0}" = 1 ] && slow='^$'  # no test has an empty name
 cd "$build"
 status=0

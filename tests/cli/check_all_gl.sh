@@ -1,7 +1,7 @@
 #!/bin/sh
 # check_all_gl.sh PENUMBRA OUT
 # Every registered check on the library's modules, every case listed (`check -v`), on GL 4.5 (EGL
-# surfaceless): must pass. Its output goes to OUT for cli_check_vulkan_hlsl_vs_gl (a ctest
+# surfaceless): must pass. Its output goes to OUT for cli_check_{vulkan,hlsl}_vs_gl (a ctest
 # fixture), which compares the Vulkan and HLSL runs' case names and verdicts with it — so the
 # library's GL run is made once, not once a module (check_gl.sh runs the broken copies only).
 # Exit 77 (skipped) when there is no GL context.

@@ -21,7 +21,7 @@ case $? in
   3) echo "SKIPPED: $(cat "$scratch.err")"; exit 77 ;;
   *) cat "$scratch.err"; exit 1 ;;
 esac
-# On the library's modules (but where cli_check_all_gl and cli_check_vulkan_hlsl_vs_gl run them).
+# On the library's modules (but where cli_check_all_gl and cli_check_{vulkan,hlsl}_vs_gl run them).
 # shellcheck disable=SC2086
 case $backend in
   vulkan|hlsl|egl-surfaceless) ;;

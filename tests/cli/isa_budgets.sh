@@ -2,9 +2,10 @@
 # isa_budgets.sh PENUMBRA GLSL_DIR SCRATCH
 # `penumbra isa --budgets` on RDNA 2 wave64 (Mesa's RADV on its null device: no GPU): every
 # technique's call as an engine compiles it within the budget its module's header writes, and no
-# entry (engine calls, the runner's technique passes, every pass) uses scratch. Then three copies
+# entry (engine calls, the runner's technique passes, every pass) uses scratch. Then four copies
 # of GLSL_DIR that must fail: Fast PCSS's call keeping a local array (scratch), its budget line
-# lowered below what it takes, and a budget line that does not parse.
+# lowered below what it takes (instructions, and a loop body's cycles), and a budget line that
+# does not parse.
 set -u
 penumbra=$1 glsl=$2 scratch=$3
 rm -rf "$scratch" && mkdir -p "$scratch" || exit 1
@@ -52,6 +53,11 @@ printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine compute: [0-9]* sc
 on_copy 's/^(\/\/ isa budget: vgprs \d+, instructions )\d+/${1}100/m' 'instructions 100,' 1 "the budget at 100 instructions"
 printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine fragment: [0-9]* instructions > 100" ||
   { echo "no line naming the instructions over budget"; exit 1; }
+
+# The loop budget lowered below the costliest loop body's cycles (Step 3's refinement, ~340).
+on_copy 's/^(\/\/ isa budget: .*?, loop )\d+/${1}100/m' 'loop 100,' 1 "the loop budget at 100 cycles"
+printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine compute: [0-9]* loop > 100" ||
+  { echo "no line naming the loop body over budget"; exit 1; }
 
 # A budget line that does not parse: a bad-input error naming the line.
 on_copy 's/^\/\/ isa budget: vgprs \d+/\/\/ isa budget: vgprs lots/m' 'vgprs lots' 2 "an unreadable budget line"
