@@ -1,7 +1,9 @@
 // pcss_one_call.glsl — a PCSS technique as an engine runs it: per pixel, the
 // G-buffer's receiver handed to the technique's one call (pnFastPcss,
 // pnPoissonPcss, pnVogelPcss, pnExactPcss or pnHqepcss: PN_PCSS_ONE_CALL), its settings
-// from the pipeline's block.
+// from the pipeline's block — or, with PN_PCSS_ENGINE_FORM defined (the runner's rows of a
+// technique's shipped settings), as an engine compiles the call: pnXDefaults(bias), every other
+// setting a constant, only the bias and the light (and the receiver plane's tangent) from the block.
 // The compute pass (pcss_one_call.comp) and the fragment pass
 // (pcss_one_call.frag, a full-screen triangle) both return pnOneCallShade.
 // Result per pixel: (visibility, Step 4's work, Step 5's work, flags):
@@ -58,14 +60,22 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
                 receiver.z > 0.0 ? 4.0 : 0.0);
   }
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_HQEPCSS) {
+#ifdef PN_PCSS_ENGINE_FORM
+    PnHqepcssSettings s = pnHqepcssDefaults(pnPcss.bias);
+#else
     PnHqepcssSettings s = PnHqepcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.refineIterations,
                                             pnPcss.regionMode, pnPcss.leafSide, pnPcss.leafDivisor,
                                             pnPcss.nodeBudget);
+#endif
     return vec4(pnHqepcss(pnPyramid, pnDepthMap, light, receiver.xyz, plane, s), 0.0, 0.0, receiver.z > 0.0 ? 4.0 : 0.0);
   }
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_POISSON) {
+#ifdef PN_PCSS_ENGINE_FORM
+    PnPoissonPcssSettings s = pnPoissonPcssDefaults(pnPcss.bias);
+#else
     PnPoissonPcssSettings s = PnPoissonPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                     pnPcss.filterSamples);
+#endif
     PnPoissonPcssResult r = pnPoissonPcssEstimate(pnDepthMap, light, receiver.xyz, plane, s, vec2(1.0, 0.0));
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
@@ -73,18 +83,26 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
     return vec4(r.visibility, searched, filtered, pnOneCallFlags(r.searchEntry, r.filterEntry));
   }
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_VOGEL) {
+#ifdef PN_PCSS_ENGINE_FORM
+    PnVogelPcssSettings s = pnVogelPcssDefaults(pnPcss.bias);
+#else
     PnVogelPcssSettings s = PnVogelPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.blockerSamples,
                                                 pnPcss.filterSamples);
+#endif
     PnVogelPcssResult r = pnVogelPcssEstimate(pnDepthMap, light, receiver.xyz, plane, p, s);
     float searched = pnEntryLit(r.searchEntry) ? 0.0 : float(s.blockerSamples);
     float filtered = pnEntryLit(r.filterEntry) ? 0.0 : float(s.filterSamples);
     fetches = searched + filtered;
     return vec4(r.visibility, searched, filtered, pnOneCallFlags(r.searchEntry, r.filterEntry));
   }
+#ifdef PN_PCSS_ENGINE_FORM
+  PnFastPcssSettings s = pnFastPcssDefaults(pnPcss.bias);
+#else
   PnFastPcssSettings s = PnFastPcssSettings(pnPcss.bias, pnPcss.filterScale, pnPcss.refineIterations,
                                             pnPcss.regionMode, pnPcss.leafSide, pnPcss.leafDivisor,
                                             pnPcss.leafMode, pnPcss.blockerLeafMode, pnPcss.nodeBudget,
                                             pnPcss.depthSums, pnPcss.grid);
+#endif
   PnFastPcssResult r = pnFastPcssEstimate(pnMip, pnSampleTable, light, receiver.xyz, plane, p, s);
   fetches = float(r.fetches);
   return vec4(r.visibility, float(r.blockerNodes), float(r.occlusionNodes),

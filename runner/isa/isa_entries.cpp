@@ -66,7 +66,9 @@ const EngineVariant kEngineVariants[] = {
     {"backprojection", "backprojection-slabs", {"PN_EXPORT_BACKPROJECTION_LAYERS", "2"}},
 };
 
-// The technique passes the runner's registry runs, by technique.
+// The technique passes the runner's registry runs, by technique: the PCSS calls of a technique's
+// shipped settings as the runner compiles them (PN_PCSS_ENGINE_FORM: the module's defaults as
+// constants; exact PCSS's call has plain parameters).
 struct RunnerCall {
   const char* name;
   const char* pass;  // without extension: .comp and .frag
@@ -74,7 +76,9 @@ struct RunnerCall {
 };
 std::vector<RunnerCall> runner_calls() {
   const auto one_call = [](int call) {
-    return std::vector<Define>{{"PN_PCSS_ONE_CALL", std::to_string(call)}, {"PN_PCSS_WRITE_WORK", "false"}};
+    std::vector<Define> d{{"PN_PCSS_ONE_CALL", std::to_string(call)}, {"PN_PCSS_WRITE_WORK", "false"}};
+    if (call != PN_ONE_CALL_EXACT) d.push_back({"PN_PCSS_ENGINE_FORM", "1"});
+    return d;
   };
   return {{"fast", "passes/pcss_one_call", one_call(PN_ONE_CALL_FAST)},
           {"poisson", "passes/pcss_one_call", one_call(PN_ONE_CALL_POISSON)},

@@ -318,9 +318,13 @@ static_assert(static_cast<int>(OneCall::fast) == PN_ONE_CALL_FAST && static_cast
                   static_cast<int>(OneCall::vogel) == PN_ONE_CALL_VOGEL,
               "OneCall is pcss_params.h's PN_ONE_CALL_*");
 
-static std::vector<Define> one_call_defines(OneCall call, bool record_work) {
-  return {{"PN_PCSS_ONE_CALL", std::to_string(static_cast<int>(call))},
-          {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
+// The call, whether it records its work, and — for a technique's shipped settings — the engine's
+// form: its pnXDefaults as constants (docs/benchmarks.md: which form each row is).
+static std::vector<Define> one_call_defines(OneCall call, bool record_work, const PcssSettings& settings) {
+  std::vector<Define> out{{"PN_PCSS_ONE_CALL", std::to_string(static_cast<int>(call))},
+                          {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
+  if (shipped_call_settings(settings)) out.push_back({"PN_PCSS_ENGINE_FORM", "1"});
+  return out;
 }
 
 PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inputs, bool record_work) const {
@@ -338,7 +342,7 @@ PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inp
   frame.work = record_work ? float_texture(size, 4) : cleared_texture(1, 4);
   frame.fetches = record_work ? float_texture(size, 1) : cleared_texture(1, 1);
   resources.add_images({{PN_PCSS_WORK_IMAGE, *frame.work}, {PN_PCSS_FETCH_IMAGE, *frame.fetches}});
-  frame.visibility = one_call_.run(ShadeStage::compute, one_call_defines(call, record_work), size, resources);
+  frame.visibility = one_call_.run(ShadeStage::compute, one_call_defines(call, record_work, frame.settings), size, resources);
   clock->stage("one call");
   frame.stages = clock->read();
   return frame;
@@ -354,7 +358,7 @@ std::unique_ptr<DeviceTexture> PcssPipeline::run_fragment(const TechniqueInputs&
   PcssBlock block{};
   PassResources resources;
   prepare_one_call(frame, *call, inputs, block, resources);
-  return one_call_.run(ShadeStage::fragment, one_call_defines(*call, true), frame.size, resources, channels);
+  return one_call_.run(ShadeStage::fragment, one_call_defines(*call, true, frame.settings), frame.size, resources, channels);
 }
 
 PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& settings, bool record_work) const {

@@ -72,6 +72,21 @@ std::optional<OneCall> one_call(const PcssSettings& s) {
   return std::nullopt;
 }
 
+bool shipped_call_settings(const PcssSettings& s) {
+  const std::optional<OneCall> call = one_call(s);
+  if (!call || *call == OneCall::exact) return false;
+  const PcssSettings d = *call == OneCall::fast      ? fast_pcss()
+                         : *call == OneCall::poisson ? poisson_pcss()
+                         : *call == OneCall::vogel   ? vogel_pcss()
+                                                     : hqepcss();
+  const auto blocker_leaves = [](const PcssSettings& x) { return x.blocker_leaf_mode.value_or(x.leaf_mode); };
+  return s.filter_scale == d.filter_scale && s.refine_iterations == d.refine_iterations && s.region == d.region &&
+         s.structure == d.structure && s.depth_sums == d.depth_sums && s.leaf_side == d.leaf_side &&
+         s.leaf_divisor == d.leaf_divisor && s.grid == d.grid && s.leaf_mode == d.leaf_mode &&
+         blocker_leaves(s) == blocker_leaves(d) && s.node_budget == d.node_budget &&
+         s.blocker_samples == d.blocker_samples && s.filter_samples == d.filter_samples;
+}
+
 PcssSettings exact_pcss() {
   PcssSettings s;
   s.name = "exact";

@@ -97,6 +97,12 @@ enum class OneCall {
   vogel,    // pnVogelPcss (vogel_pcss.glsl)
 };
 std::optional<OneCall> one_call(const PcssSettings& s);
+// Whether `s` is its one call's shipped settings — everything the call reads but the bias and the
+// receiver plane equal to its technique's (fast_pcss(), poisson_pcss(), vogel_pcss(), hqepcss():
+// the module's pnXDefaults) — so that the runner's pass compiles the call as an engine does, the
+// defaults as constants (PN_PCSS_ENGINE_FORM, pcss_one_call.glsl). Exact PCSS's call has plain
+// parameters, no defaults: never.
+bool shipped_call_settings(const PcssSettings& s);
 
 PcssSettings exact_pcss();    // brute force over the whole search and filter regions
 PcssSettings poisson_pcss();  // 36 blocker / 64 PCF Poisson-disk samples
