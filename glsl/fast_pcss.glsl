@@ -140,8 +140,6 @@ void pn_fastPcssOcclusionDone(inout PnFastPcssResult r, PnTraversal occlusion) {
   r.visibility = 1.0 - pnTraversalOccludedFraction(occlusion);
 }
 
-// Any settings (PN_FAST_PCSS_ABLATIONS): traversal_mip.glsl's walk, with its budget, leaf modes,
-// windows and table sums, or the grid.
 // Whether the settings are the shipped call's (pnFastPcssDefaults, whatever the bias, filter scale,
 // refinements and leaf side >= 2): exact regions, sampled leaves of a fixed side, no budget, the
 // chain's midpoint sums, no grid — the walk below computes them.
@@ -152,10 +150,11 @@ bool pn_fastPcssShipped(PnFastPcssSettings s) {
 }
 
 // A sampled leaf's part [lo, lo + size) (traversal.glsl's PN_LEAF_SAMPLED): m samples from the
-// table's column `first` of the pixel's set, each against its own texel's threshold.
-// Four samples a run of the loop (llvmpipe counts every loop run of an invocation against one
-// limit of 65,535: a run a sample would reach it on wide penumbrae); samples past m (m = 1: a leaf
-// of side 2) are read — inside the table and the leaf — and not counted.
+// table's column `first` of the pixel's set, each against its own texel's threshold, in order (the
+// general walk's sums). One sample a run of a short loop: 57 issue cycles a sample where four
+// unrolled ones cost the walk's every step. (llvmpipe counts every loop run of an invocation
+// against one limit of 65,535: a 16-sample leaf is 17 runs here, 4 in the general walk — far
+// below it at the sizes rendered and checked, 2048² maps at ×8 included.)
 void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleTable, int first, int m, ivec2 lo,
                            ivec2 size, PnTraversalTest test, int set) {
   float occluding = 0.0, depthSum = 0.0;
@@ -180,7 +179,8 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleT
 // (x, y) at `level`, whose next node in Z order comes from the trailing ones of x & y (the levels
 // to climb), not from a Morton code decoded each step; one chain fetch a node, without bounds
 // logic (a node touching the region clipped to the map lies in the chain); leaves of side <=
-// leafSide sampled, nodes above it descended (no budget, no texel visits: the leaf side is >= 2).
+// leafSide sampled, nodes above it descended (no budget; leaf side 1 descends to the texels, one a
+// step, where the general walk visits a level-1 node's four at once).
 // Step 4's midpoint sums are kept in Step 5 too, where nothing reads them.
 PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                             vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
@@ -229,7 +229,9 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
         vec2 threshold = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, lo, hi);
         ivec2 part = hi - lo;
         if (depths.y < threshold.x) {  // every texel occludes: its midpoint sum (exact when flat)
-          float texels = float(part.x) * float(part.y);  // the product of two ints < 2^24, rounded once as theirs
+          // The texels as float(x · y) rounds them (x, y < 2^24: the product of two exact floats,
+          // rounded once), without a quarter-rate integer multiply.
+          float texels = float(part.x) * float(part.y);
           t.occluders += texels;
           t.depthSum += (depths.x == depths.y ? depths.x : 0.5 * (depths.x + depths.y)) * texels;
         } else if (depths.x < threshold.y) {  // ambiguous
@@ -280,6 +282,8 @@ PnTraversalWalk pn_fastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTra
   return pn_traversalWalkBegin(shape, mapSize, region.origin, region.size, test, pn_traversalBudget(s.nodeBudget));
 }
 
+// Any settings (PN_FAST_PCSS_ABLATIONS): traversal_mip.glsl's walk, with its budget, leaf modes,
+// windows and table sums, or the grid.
 PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                               vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   int n = int(light.mapSize);
