@@ -7,7 +7,9 @@
 layout(binding = PN_EXPORT_SUM_TABLE_BINDING) uniform highp usampler2D pnDepthSums;
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums
 #endif
-#ifndef PN_EXPORT_ENGINE  // the block's settings, every ablation among them
+// The block's settings, every ablation among them — but in the engine's build, and with
+// PN_EXPORT_NO_ABLATIONS (the exports check: the shipped walk alone, as an engine's shader holds it).
+#if !defined(PN_EXPORT_ENGINE) && !defined(PN_EXPORT_NO_ABLATIONS)
 #define PN_FAST_PCSS_ABLATIONS
 #endif
 #include "fast_pcss.glsl"

@@ -10,7 +10,11 @@
 // - pnFastPcss with its exact settings (no refinement, exact regions, leaf 1) against exact PCSS
 //   brute force, over the min/max mip chain built on the same executor: with the summed-area
 //   table's blocker sums (exports/fast_pcss with PN_EXPORT_SUM_TABLE) and, as an engine includes
-//   it (no define), with the chain's midpoint sums on a map whose occluding nodes are flat;
+//   it (no define), with the chain's midpoint sums on a map whose occluding nodes are flat — and
+//   so again without PN_FAST_PCSS_ABLATIONS (PN_EXPORT_NO_ABLATIONS: the shipped walk alone, leaf 1
+//   descending to the texels); with its shipped settings, the shipped walk of that build equal,
+//   bit for bit, to traversal_mip.glsl's general walk (the same settings but a node budget of
+//   2^26 - 1, never reached: not the shipped ones, so the ablations' build walks them);
 // - pnPoissonPcss and pnVogelPcss, with their defaults (pnXDefaults) and with other counts and
 //   scale, rotated, against the disks' PCSS on the CPU (disk_pcss_reference: open samples make
 //   the visibility an interval; a receiver whose blocker search float could decide otherwise is
@@ -283,6 +287,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass pcf(env.device, env.tree, "pcf");
   const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
   const ExportPass fast(env.device, env.tree, "fast_pcss");
+  const ExportPass fast_shipped(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}});
   const ExportPass hqepcss(env.device, env.tree, "hqepcss");
   const ExportPass poisson(env.device, env.tree, "poisson_pcss");
   const ExportPass vogel(env.device, env.tree, "vogel_pcss");
@@ -305,14 +310,18 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
     const MinMaxMipChain mip = mips.build(*map, kMap);
     const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, light, bias, 1.0, kPcssDecisionMargin);
     const glsl::PnFastPcssExport block = exact_fast_block(light, bias, 1.0f, PN_DEPTH_SUMS_MIDPOINT);
-    for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment})
+    const std::vector<QueryTexture> textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+                                             {PN_EXPORT_SAMPLE_TABLE_BINDING, *table}};
+    for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
       results.push_back(against(std::string("blockers of one depth, 64² map: ") + stage_name(stage) +
                                     " exports/fast_pcss as an engine includes it (pnFastPcss: refine 0, exact regions, "
                                     "leaf 1, the chain's midpoint sums) vs exact PCSS brute force on the CPU",
-                                s, reference,
-                                fast.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
-                                                 {PN_EXPORT_SAMPLE_TABLE_BINDING, *table}},
-                                         s.receivers, query_block(block))));
+                                s, reference, fast.run(stage, textures, s.receivers, query_block(block))));
+      results.push_back(against(std::string("blockers of one depth, 64² map: ") + stage_name(stage) +
+                                    " exports/fast_pcss without PN_FAST_PCSS_ABLATIONS (the shipped walk, leaf 1 "
+                                    "descending to the texels) vs exact PCSS brute force on the CPU",
+                                s, reference, fast_shipped.run(stage, textures, s.receivers, query_block(block))));
+    }
   }
   for (const auto& fixture : fixtures::kScenes) {
     const Scene scene = make_scene(fixture, kMap);
@@ -473,6 +482,18 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       results.push_back(defaults_case(where + "exports/fast_pcss: pnFastPcssDefaults(bias) = fast_pcss.h's defaults",
                                       fast.run(stage, fast_textures, s.receivers, query_block(fast_defaults)),
                                       fast.run(stage, fast_textures, s.receivers, query_block(fast_header))));
+      // Under a light 8x as wide: regions of many leaves, so the walks descend and sample.
+      LightModel wide = scene.light;
+      wide.width *= 8.0;
+      glsl::PnFastPcssExport shipped_wide = exact_fast_block(wide, bias, 1.0f), general_walk = fast_header;
+      shipped_wide.filterScale = 0.0f;
+      set_light_fields(general_walk, wide);
+      general_walk.nodeBudget = PN_FAST_PCSS_NODE_BUDGET - 1;
+      results.push_back(defaults_case(where + "exports/fast_pcss, the light 8x as wide: the shipped walk without "
+                                              "PN_FAST_PCSS_ABLATIONS = traversal_mip.glsl's walk (a node budget of "
+                                              "2^26 - 1, never reached)",
+                                      fast_shipped.run(stage, fast_textures, s.receivers, query_block(shipped_wide)),
+                                      fast.run(stage, fast_textures, s.receivers, query_block(general_walk))));
       glsl::PnHqepcssExport hq_defaults = hqepcss_block, hq_header = hqepcss_block;
       hq_defaults.filterScale = 0.0f;
       hq_header.refineIterations = PN_HQEPCSS_REFINE_ITERATIONS, hq_header.regionMode = PN_REGION_WINDOW;
