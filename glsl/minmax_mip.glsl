@@ -131,15 +131,11 @@ vec2 pn_mipNodeInside(sampler2D mip, int level, ivec2 node) {
   return pn_mipNodeRead(mip, level, node);
 }
 
-// Node `node` of `level` when `wanted`, else (and outside the level) the empty pair.
-vec2 pn_mipFetchIf(sampler2D mip, PnMipShape shape, int level, ivec2 node, bool wanted) {
-  int nodes = max(shape.rows >> clamp(level, 0, shape.top), 1);
-  vec4 t = pn_mipTexelIf(mip, shape, level, ivec2(node.x >> 1, node.y), wanted && node.x < nodes);
-  return (node.x & 1) != 0 ? t.zw : t.xy;
-}
-
+// Node `node` of `level`; the empty pair outside the level.
 vec2 pn_mipFetchOf(sampler2D mip, PnMipShape shape, int level, ivec2 node) {
-  return pn_mipFetchIf(mip, shape, level, node, true);
+  int nodes = max(shape.rows >> clamp(level, 0, shape.top), 1);
+  vec4 t = pn_mipTexelIf(mip, shape, level, ivec2(node.x >> 1, node.y), node.x < nodes);
+  return (node.x & 1) != 0 ? t.zw : t.xy;
 }
 
 vec2 pnMipFetch(sampler2D mip, int level, ivec2 node) {
