@@ -65,7 +65,7 @@
 //   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
 //   receiver stops after Step 3.
 //
-// isa budget: vgprs 40, instructions 650, code 4096, scratch 0, loop 350, loops 920
+// isa budget: vgprs 40, instructions 650, code 4096, scratch 0, loop 330, loops 880
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_FAST_PCSS_GLSL
@@ -195,10 +195,11 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
   int set = pnSampleSet(pixel);
   PnTraversalTest test = PnTraversalTest(r.searchEntry.x - s.bias, receiverPlane, r.searchEntry.yz);
   vec4 entry = r.searchEntry;
+  vec2 centre = pn_regionSquareCentre(entry.yz, max(chain, 1));  // both regions' (u, v)
   for (int region = 0; region < regions; ++region) {  // Step 4, then Step 5
     // The region inside the map and the chain (pn_traversalBegin's clip: the square is inside
     // [0, chain) already, but for the largest root's side), and its texels.
-    PnRect square = pnEntryRect(entry, max(chain, 1));
+    PnRect square = pn_regionSquareAbout(centre, entry.w, max(chain, 1));  // pnEntryRect
     ivec2 start = square.origin;
     ivec2 size = chain > 0 ? min(square.size, ivec2(1 << PN_TRAVERSAL_MAX_LEVEL)) : ivec2(0);
     ivec2 end = start + size;

@@ -36,9 +36,8 @@
 // The entry's rectangle lies in the map, clipped to the chain too (n <= P), so the square of side
 // max(w, h) at its origin needs clipping on the far side only, and every node read is in the
 // chain (pnMipSquareMinMax's cover of that square); the chain's shape is read once, by the caller.
-float pn_searchRegionMinMip(sampler2D mip, PnMipShape shape, int mapSize, vec4 entry) {
-  int n = max(min(mapSize, shape.rows), 1);
-  PnRect r = pnEntryRect(entry, n);
+float pn_searchRegionMinMip(sampler2D mip, PnMipShape shape, int n, vec2 centre, float side) {
+  PnRect r = pn_regionSquareAbout(centre, side, n);  // pnEntryRect, its centre made once by the caller
   if (r.size.x == 0 || r.size.y == 0) return pn_mipFar();
   return pn_mipRectMinMax(mip, shape, r.origin, min(r.origin + max(r.size.x, r.size.y), ivec2(n))).x;
 }
@@ -48,11 +47,13 @@ vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 recei
   vec4 entry = pn_searchStart(light, receiver);
   refinements = 0;
   PnMipShape shape = pn_mipShape(mip);
+  int n = max(min(mapSize, shape.rows), 1);
+  vec2 centre = pn_regionSquareCentre(receiver.xy, n);  // every refinement's (the entry's u, v)
   for (int i = 0; i < PN_REFINE_MAX_ITERATIONS; ++i) {
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
     refinements += 1;
-    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, shape, mapSize, entry), receiver.xy,
+    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, shape, n, centre, entry.w), receiver.xy,
                                  gradient, bias, done);
     if (done) break;
   }

@@ -105,15 +105,26 @@ PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize) {
   return PnWindow(ivec2(origin), sp, findMSB(sp));
 }
 
-PnRect pnRegionSquare(vec2 centre, float side, int mapSize) {
+// The centre pnRegionSquare reads: NaN as 0, clamped while float to [-4, 5] map sides.
+vec2 pn_regionSquareCentre(vec2 centre, int mapSize) {
+  float e = float(max(mapSize, 1));
+  return clamp(vec2(pn_regionFiniteOrZero(centre.x), pn_regionFiniteOrZero(centre.y)), vec2(-4.0 * e), vec2(5.0 * e));
+}
+
+// pnRegionSquare about a centre pn_regionSquareCentre made for the same map: a caller whose
+// squares share one centre (Fast PCSS's refinements and regions) reads it once.
+PnRect pn_regionSquareAbout(vec2 c, float side, int mapSize) {
   float e = float(max(mapSize, 1));
   // Clamped while float: an infinite side covers the map, never overflows an int.
   float n = clamp(round(max(pn_regionFiniteOrZero(side), 0.0)), 1.0, 4.0 * e);
-  vec2 c = clamp(vec2(pn_regionFiniteOrZero(centre.x), pn_regionFiniteOrZero(centre.y)), vec2(-4.0 * e), vec2(5.0 * e));
   vec2 lo = floor(c - 0.5 * n + 0.5);
   vec2 start = clamp(lo, vec2(0.0), vec2(e));
   vec2 end = clamp(lo + n, start, vec2(e));
   return PnRect(ivec2(start), ivec2(end - start));
+}
+
+PnRect pnRegionSquare(vec2 centre, float side, int mapSize) {
+  return pn_regionSquareAbout(pn_regionSquareCentre(centre, mapSize), side, mapSize);
 }
 
 #endif  // PENUMBRA_REGION_GLSL
