@@ -84,16 +84,21 @@ vec4 pn_searchStart(PnLight light, vec4 receiver) {
 // One refinement step from the region's min depth zmin: lit when no depth is
 // below the receiver plane's highest threshold over the entry's region (the
 // receiver's depth minus the bias when gradient is 0), else shrunk, or `done`.
-vec4 pn_searchRefinePlane(PnLight light, int mapSize, vec4 entry, float zmin, vec2 centre, vec2 gradient, float bias,
-                          out bool done) {
+// `r`: the entry's rectangle (pnEntryRect), which a caller that has it hands on.
+vec4 pn_searchRefineRect(PnLight light, vec4 entry, PnRect r, float zmin, vec2 centre, vec2 gradient, float bias,
+                         out bool done) {
   done = true;
-  PnRect r = pnEntryRect(entry, mapSize);
   float highestThreshold = pnReceiverPlaneThresholdRange(entry.x - bias, gradient, centre, r.origin, r.origin + r.size).y;
   if (!(zmin < highestThreshold)) return vec4(entry.xyz, PN_REGION_LIT);
   float side = pnLightBlockerWindowTexels(light, entry.x, zmin);
   if (!(side < entry.w)) return entry;
   done = false;
   return vec4(entry.xyz, side);
+}
+
+vec4 pn_searchRefinePlane(PnLight light, int mapSize, vec4 entry, float zmin, vec2 centre, vec2 gradient, float bias,
+                          out bool done) {
+  return pn_searchRefineRect(light, entry, pnEntryRect(entry, mapSize), zmin, centre, gradient, bias, done);
 }
 
 PnRect pnEntryRegion(vec4 entry, int mapSize, int regionMode) {

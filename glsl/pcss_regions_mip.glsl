@@ -33,11 +33,10 @@
 // The same from the aligned mip chain: the min over the aligned nodes that
 // touch that square (<= 9 fetches) — never above the square's min, so the lit
 // decision stays conservative and refinement lossless.
-// The entry's rectangle lies in the map, clipped to the chain too (n <= P), so the square of side
-// max(w, h) at its origin needs clipping on the far side only, and every node read is in the
+// The entry's rectangle `r` lies in the map, clipped to the chain too (n <= P), so the square of
+// side max(w, h) at its origin needs clipping on the far side only, and every node read is in the
 // chain (pnMipSquareMinMax's cover of that square); the chain's shape is read once, by the caller.
-float pn_searchRegionMinMip(sampler2D mip, PnMipShape shape, int n, vec2 centre, float side) {
-  PnRect r = pn_regionSquareAbout(centre, side, n);  // pnEntryRect, its centre made once by the caller
+float pn_searchRegionMinMip(sampler2D mip, PnMipShape shape, int n, PnRect r) {
   if (r.size.x == 0 || r.size.y == 0) return pn_mipFar();
   return pn_mipRectMinMax(mip, shape, r.origin, min(r.origin + max(r.size.x, r.size.y), ivec2(n))).x;
 }
@@ -53,8 +52,10 @@ vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 recei
     if (i >= iterations || pnEntryLit(entry)) break;
     bool done;
     refinements += 1;
-    entry = pn_searchRefinePlane(light, mapSize, entry, pn_searchRegionMinMip(mip, shape, n, centre, entry.w), receiver.xy,
-                                 gradient, bias, done);
+    // The entry's rectangle (pnEntryRect, its centre made once above), for the min and the plane's range.
+    PnRect r = pn_regionSquareAbout(centre, entry.w, n);
+    entry = pn_searchRefineRect(light, entry, r, pn_searchRegionMinMip(mip, shape, n, r), receiver.xy, gradient, bias,
+                                done);
     if (done) break;
   }
   return entry;
