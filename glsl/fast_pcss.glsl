@@ -65,7 +65,7 @@
 //   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
 //   receiver stops after Step 3.
 //
-// isa budget: vgprs 40, instructions 650, code 4096, scratch 0, loop 330, loops 880
+// isa budget: vgprs 32, instructions 650, code 4096, scratch 0, loop 330, loops 870
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_FAST_PCSS_GLSL
@@ -159,9 +159,8 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleT
                            ivec2 size, PnTraversalTest test, int set) {
   float occluding = 0.0, depthSum = 0.0;
   vec2 scale = vec2(size);  // size >= 1: a leaf's part is never empty
-  ivec2 last = size - ivec2(1);
   for (int i = 0; i < m; ++i) {
-    ivec2 p = pn_sampleTexelIn(texelFetch(sampleTable, ivec2(first + i, set), 0).rg, lo, scale, last);
+    ivec2 p = pn_sampleTexelIn(texelFetch(sampleTable, ivec2(first + i, set), 0).rg, lo, scale);
     float d = pn_mipNodeInside(mip, 0, p).x;
     if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
       occluding += 1.0;
@@ -169,7 +168,7 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleT
     }
   }
   t.fetches += m;
-  pn_traversalAddSampled(t, size, occluding, depthSum, m);
+  pn_traversalAddSampled(t, scale, occluding, depthSum, m);
 }
 
 // The shipped settings' Steps 3 to 5 (pn_fastPcssShipped): traversal_mip.glsl's walk in the same
@@ -187,7 +186,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
   PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
   // Lit after Step 3: no region. The count is data, not a constant, so no compiler unrolls the
   // loop below into two copies of the walk (an early return would make it a constant 2 after it).
-  int regions = pnEntryLit(r.searchEntry) ? 0 : 2;
+  bool lit = pnEntryLit(r.searchEntry);
   int n = int(light.mapSize);
   PnMipShape shape = pn_mipShape(mip);
   int chain = clamp(n, 0, shape.rows);  // the map's side inside the chain
@@ -196,7 +195,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
   PnTraversalTest test = PnTraversalTest(r.searchEntry.x - s.bias, receiverPlane, r.searchEntry.yz);
   vec4 entry = r.searchEntry;
   vec2 centre = pn_regionSquareCentre(entry.yz, max(chain, 1));  // both regions' (u, v)
-  for (int region = 0; region < regions; ++region) {  // Step 4, then Step 5
+  for (int region = 0; region < 2 && !lit; ++region) {  // Step 4, then Step 5
     // The region inside the map and the chain (pn_traversalBegin's clip: the square is inside
     // [0, chain) already, but for the largest root's side), and its texels.
     PnRect square = pn_regionSquareAbout(centre, entry.w, max(chain, 1));  // pnEntryRect
@@ -205,9 +204,8 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
     ivec2 end = start + size;
     PnTraversal t = PnTraversal(0.0, 0.0, float(size.x) * float(size.y), 0, 0);
     // The 2×2 aligned nodes of level `top` at the region's aligned corner cover it; they are the
-    // children of a virtual root at rootLevel, never read.
+    // children of a virtual root at level top + 1, never read.
     int top = min(findMSB(max(size.x, size.y) - 1) + 1, shape.top);
-    int rootLevel = top + 1;
     ivec2 rootOrigin = (start >> top) << top;
     int level = top;
     ivec2 node = ivec2(0);
@@ -249,7 +247,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
       // virtual root's last child done: the walk is over.
       int climb = findLSB(~(node.x & node.y));
       level += climb;
-      if (level >= rootLevel) break;
+      if (level > top) break;
       node >>= climb;
       node.y += node.x & 1;
       node.x ^= 1;

@@ -107,20 +107,23 @@ PnWindow pnRegionApproximateCentred(vec2 centre, float side, int mapSize) {
 
 // The centre pnRegionSquare reads: NaN as 0, clamped while float to [-4, 5] map sides.
 vec2 pn_regionSquareCentre(vec2 centre, int mapSize) {
-  float e = float(max(mapSize, 1));
-  return clamp(vec2(pn_regionFiniteOrZero(centre.x), pn_regionFiniteOrZero(centre.y)), vec2(-4.0 * e), vec2(5.0 * e));
+  int e = max(mapSize, 1);
+  return clamp(vec2(pn_regionFiniteOrZero(centre.x), pn_regionFiniteOrZero(centre.y)), vec2(float(-4 * e)),
+               vec2(float(5 * e)));
 }
 
 // pnRegionSquare about a centre pn_regionSquareCentre made for the same map: a caller whose
-// squares share one centre (Fast PCSS's refinements and regions) reads it once.
+// squares share one centre (Fast PCSS's refinements and regions) reads it once. The corners are
+// clamped as integers (the values clamping them as floats gives: whole numbers far below 2^24),
+// so a caller's loop holds the map's side as the integer it has, not as a float too.
 PnRect pn_regionSquareAbout(vec2 c, float side, int mapSize) {
-  float e = float(max(mapSize, 1));
+  int e = max(mapSize, 1);
   // Clamped while float: an infinite side covers the map, never overflows an int.
-  float n = clamp(round(max(pn_regionFiniteOrZero(side), 0.0)), 1.0, 4.0 * e);
-  vec2 lo = floor(c - 0.5 * n + 0.5);
-  vec2 start = clamp(lo, vec2(0.0), vec2(e));
-  vec2 end = clamp(lo + n, start, vec2(e));
-  return PnRect(ivec2(start), ivec2(end - start));
+  float n = clamp(round(max(pn_regionFiniteOrZero(side), 0.0)), 1.0, float(4 * e));
+  ivec2 lo = ivec2(floor(c - 0.5 * n + 0.5));
+  ivec2 start = clamp(lo, ivec2(0), ivec2(e));
+  ivec2 end = clamp(lo + int(n), start, ivec2(e));
+  return PnRect(start, end - start);
 }
 
 PnRect pnRegionSquare(vec2 centre, float side, int mapSize) {

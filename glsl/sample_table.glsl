@@ -63,15 +63,19 @@ vec2 pnSample(sampler2D table, int column, int set) {
   return texelFetch(table, p, 0).rg;
 }
 
-// pnSampleTexel with its rectangle's size as a float `scale` and its last offset `last` (size - 1),
-// read once by a caller that places many samples in one rectangle.
-ivec2 pn_sampleTexelIn(vec2 position, ivec2 origin, vec2 scale, ivec2 last) {
-  return origin + clamp(ivec2(floor(position * scale)), ivec2(0), last);
+// pnSampleTexel with its rectangle's size as a float `scale`, read once by a caller that places many
+// samples in one rectangle. The position is clamped to [0, the largest float below 1], not the
+// texel to the rectangle: for any side s < 2^24, floor(p · s) <= s - 1 (the product rounds below
+// s), so a table position in [0, 1) lands where it always did and any other value (NaN, ±Inf, a bad
+// upload) still inside — two float clamps with constants, no register for the last texel.
+ivec2 pn_sampleTexelIn(vec2 position, ivec2 origin, vec2 scale) {
+  // min(bound, x) first: NaN becomes the bound under either reading of min with a NaN.
+  vec2 p = max(vec2(0.0), min(vec2(uintBitsToFloat(0x3f7fffffu)), position));
+  return origin + ivec2(floor(p * scale));
 }
 
 ivec2 pnSampleTexel(vec2 position, ivec2 origin, ivec2 size) {
-  ivec2 s = max(size, ivec2(1));
-  return pn_sampleTexelIn(position, origin, vec2(s), s - ivec2(1));
+  return pn_sampleTexelIn(position, origin, vec2(max(size, ivec2(1))));
 }
 
 #endif  // PENUMBRA_SAMPLE_TABLE_GLSL

@@ -141,9 +141,10 @@ void pn_traversalCountSample(inout float occluding, inout float depthSum, inout 
 }
 
 // Eq. 5 / 6: `occluding` of m samples, with their depth sum, scaled to the
-// leaf's texels.
-void pn_traversalAddSampled(inout PnTraversal r, ivec2 size, float occluding, float depthSum, int m) {
-  float texels = float(size.x * size.y);
+// leaf's texels (its size as floats, which a sampling loop holds already: the
+// product rounds once, as float(x * y) would).
+void pn_traversalAddSampled(inout PnTraversal r, vec2 size, float occluding, float depthSum, int m) {
+  float texels = size.x * size.y;
   r.occluders += texels * occluding / float(m);
   r.depthSum += texels * depthSum / float(m);
 }

@@ -109,7 +109,7 @@ void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape sh
     pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 2, m, lo, size, test);
     pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 3, m, lo, size, test);
   }
-  pn_traversalAddSampled(r, size, occluding, depthSum, m);
+  pn_traversalAddSampled(r, vec2(size), occluding, depthSum, m);
 }
 
 
@@ -330,7 +330,7 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
             if (i < m) pn_traversalSampleAt(occluding, depthSum, r, mip, shape, positions[i], lo, hi - lo, test);
           }
         }
-        pn_traversalAddSampled(r, hi - lo, occluding, depthSum, m);
+        pn_traversalAddSampled(r, vec2(hi - lo), occluding, depthSum, m);
       }
     }
   }

@@ -35,7 +35,11 @@ void set_radv_environment(const RadvTarget& target, const std::string& manifest,
     setenv("RADV_PERFTEST", "cswave32,pswave32", 1);
   else
     unsetenv("RADV_PERFTEST");
-  setenv("RADV_DEBUG", "nocache", 1);  // every compile is ACO's, not a cached binary
+  // Every compile is ACO's, not a cached binary. PN_ISA_RADV_DEBUG adds RADV's own flags for a
+  // reader of the compiler (docs/isa.md: "shaders" with ACO_DEBUG=liveinfo prints register demand).
+  std::string debug = "nocache";
+  if (const char* extra = std::getenv("PN_ISA_RADV_DEBUG"); extra && *extra) debug += std::string(",") + extra;
+  setenv("RADV_DEBUG", debug.c_str(), 1);
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   setenv("XDG_RUNTIME_DIR", runtime_dir.c_str(), 1);
 }
