@@ -7,9 +7,10 @@
 //     search  = the search region refined `refineIterations` times from the
 //               pyramid's exact square min (pcss_regions.glsl: pnSearchEntry); lit -> 1
 //     blockers = traversal of the search region (regionMode: the paper's window,
-//               or the exact square) over the pyramid (traversal.glsl,
-//               pnTraverseRegion) whose ambiguous leaves count every texel as
-//               a blocker at the leaf's min (PN_LEAF_MIN): mean = sum / count
+//               or the exact square) over the pyramid (traversal_pyramid.glsl's
+//               pnTraverseRegion, walked lean: pn_hqepcssBlockers) whose ambiguous
+//               leaves count every texel as a blocker at the leaf's min
+//               (PN_LEAF_MIN): mean = sum / count
 //     filter  = pnFilterEntry: side filterScale · penumbra; no blocker -> 1
 //     visibility = 1 - exact PCF over the filter square (pcf.glsl)
 //   The staged passes compute the same numbers: equal bit for bit.
@@ -27,10 +28,16 @@
 //         receiver = (u, v, d) as pnLightProject gives; pyramid: depth_pyramid.glsl's decreased
 //         pyramid of the map; depthMap: the map (linear light depth), for the PCF
 //
+// options:
+//   PN_HQEPCSS_ABLATIONS   defined before the include: settings.nodeBudget below
+//                          PN_TRAVERSAL_NO_BUDGET runs traversal_pyramid.glsl's general walk with its
+//                          budget. Without it the budget is not read (the call's walk has none:
+//                          pn_hqepcssBlockers) and an engine's program holds one walk, not two.
+//
 // cost: Step 3 4 fetches a refinement; the blocker traversal one fetch a node;
 //   the PCF one fetch per texel of the filter square (O(s²)).
 //
-// isa budget: vgprs 40, instructions 1800, code 9216, scratch 0, loop 1450, loops 2200
+// isa budget: vgprs 32, instructions 1000, code 5120, scratch 0, loop 350, loops 900
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_HQEPCSS_GLSL
@@ -41,7 +48,10 @@
 #include "light_model.glsl"
 #include "pcf.glsl"
 #include "pcss_regions_pyramid.glsl"
-#include "traversal_pyramid.glsl"
+#include "traversal.glsl"
+#ifdef PN_HQEPCSS_ABLATIONS
+#include "traversal_pyramid.glsl"  // the general walk, for a budget
+#endif
 
 struct PnHqepcssSettings {
   float bias;            // light-depth units: a texel occludes when its depth < d - bias
@@ -58,17 +68,84 @@ PnHqepcssSettings pnHqepcssDefaults(float bias) {
                            PN_TRAVERSAL_NO_BUDGET);
 }
 
+// The blocker traversal without a node budget (every setting but nodeBudget): traversal_pyramid.glsl's
+// walk in the same Z order with the same sums — so the same result, bit for bit — written for the
+// wave as Fast PCSS's shipped walk is (docs/isa.md, "The lean call"): a cursor of the node relative to
+// the root, (x, y) at `level`, whose next node climbs the trailing ones of x & y; one pyramid fetch a
+// node; leaves (side <= leafSide) estimated at their min in the step that reads them, one node a step
+// (the general walk reads a node's four leaves in its step). Nodes straddling the region (only a
+// window or a rectangle the pyramid's map clips: a light.mapSize that is not the pyramid's) or above
+// the pyramid's last level descend unread, as there.
+PnTraversal pn_hqepcssBlockers(sampler2DArray pyramid, PnRect region, vec3 receiver, vec2 gradient, float bias,
+                               int leafSide) {
+  ivec2 start, end;
+  PnTraversal r = pn_traversalBegin(region.origin, region.size, pnPyramidMapSize(pyramid), start, end);
+  PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
+  ivec2 size = end - start;
+  int top = findMSB(max(size.x, size.y) - 1) + 1;  // the root: the least power of two over the region
+  int maxLevel = pnPyramidMaxLevel(pyramid);
+  int level = top;
+  ivec2 node = ivec2(0);
+  bool empty = isnan(test.threshold) || r.texels == 0.0;
+  // traversal_pyramid.glsl's bound without a budget: one scalar for the wave, never reached (the walk
+  // ends at its last node first).
+  for (int it = 0; it < (PN_TRAVERSAL_NO_BUDGET + 3 * (PN_TRAVERSAL_MAX_LEVEL + 1) + 4) && !empty; ++it) {
+    int side = 1 << level;
+    ivec2 origin = start + (node << level);
+    ivec2 lo = max(origin, start), hi = min(origin + side, end);
+    bool descend = false;
+    if (all(lessThan(lo, hi))) {
+      if (all(equal(lo, origin)) && all(equal(hi, origin + side)) && level <= maxLevel) {
+        vec4 v = texelFetch(pyramid, ivec3(origin, level), 0);
+        vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, origin, origin + side);
+        float texels = float(side * side);
+        if (v.y < t.x) {  // every texel occludes: its mean times its texels
+          r.occluders += texels;
+          r.depthSum += v.z * texels;
+        } else if (v.x < t.y) {  // ambiguous: a leaf at its min (PN_LEAF_MIN), or its children
+          descend = side > leafSide;
+          if (!descend) {
+            r.occluders += texels;
+            r.depthSum += v.x * texels;
+          }
+        }
+      } else {
+        descend = true;
+      }
+    }
+    if (descend) {
+      level -= 1;
+      node *= 2;
+      continue;
+    }
+    // The next sibling, climbing over every level whose last child this was; the root (or its last
+    // child) done: the walk is over.
+    int climb = findLSB(~(node.x & node.y));
+    level += climb;
+    if (level >= top) break;
+    node >>= climb;
+    node.y += node.x & 1;
+    node.x ^= 1;
+  }
+  return r;
+}
+
 float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane,
                 PnHqepcssSettings s) {
   int n = int(light.mapSize);
   vec4 search = pnSearchEntryPlane(pyramid, light, vec4(receiver, 1.0), receiverPlane, s.bias, s.refineIterations);
   if (pnEntryLit(search)) return 1.0;
   PnRect region = pnEntryRegion(search, n, s.regionMode);
-  // Min leaves take no samples: the sample table is never read (the map stands in for it).
-  PnTraversal blockers = pn_traverseRegionPlane(pyramid, depthMap, region.origin, region.size, receiver,
-                                                receiverPlane, s.bias,
-                                                pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size),
-                                                PN_LEAF_MIN, s.nodeBudget, ivec2(0));
+  int leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size);
+  PnTraversal blockers;
+#ifdef PN_HQEPCSS_ABLATIONS
+  if (s.nodeBudget < PN_TRAVERSAL_NO_BUDGET)  // the budget's ablation: the general walk
+    // Min leaves take no samples: the sample table is never read (the map stands in for it).
+    blockers = pn_traverseRegionPlane(pyramid, depthMap, region.origin, region.size, receiver, receiverPlane,
+                                      s.bias, leafSide, PN_LEAF_MIN, s.nodeBudget, ivec2(0));
+  else
+#endif
+    blockers = pn_hqepcssBlockers(pyramid, region, receiver, receiverPlane, s.bias, leafSide);
   bool hasBlocker = blockers.occluders > 0.0;
   vec4 filterEntry = pnFilterEntry(light, search, pnTraversalBlockerMean(blockers),
                                    hasBlocker, s.filterScale);

@@ -2,6 +2,10 @@
 // pnHqepcss once per receiver of a receiver image (bindings: exports.h, hqepcss.h).
 
 #include "hqepcss_export.h"
+// The block's node budget — but not in the engine's build (the shipped walk alone).
+#ifndef PN_EXPORT_ENGINE
+#define PN_HQEPCSS_ABLATIONS
+#endif
 #include "hqepcss.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

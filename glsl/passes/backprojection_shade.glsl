@@ -6,6 +6,9 @@
 // The body of the compute pass and the fragment shader (shade_pass.h):
 // pnShade(p), the visibility of screen pixel p. Defined PN_BACKPROJECTION_SHADE_SLABS:
 // the call with the map's second layer (issue 42), every texel a slab.
+// Defined PN_BACKPROJECTION_ENGINE_FORM (the runner's rows whose settings are the defaults but
+// the bias): pnBackprojectionDefaults, the settings as compile-time constants — the program an
+// engine's shader makes, which bench times (docs/benchmarks.md).
 
 #ifndef PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL
 #define PENUMBRA_PASSES_BACKPROJECTION_SHADE_GLSL
@@ -23,8 +26,12 @@ layout(binding = PN_BACKPROJECTION_SHADE_LAYER_BINDING) uniform sampler2D pnSeco
 float pnShade(ivec2 p) {
   vec4 receiver = texelFetch(pnGBuffer, p, 0);
   if (receiver.w == 0.0) return 1.0;
+#ifdef PN_BACKPROJECTION_ENGINE_FORM  // the row's settings are the defaults: constants, as an engine compiles them
+  PnBackprojectionSettings s = pnBackprojectionDefaults(pnParams.bias);
+#else
   PnBackprojectionSettings s = PnBackprojectionSettings(pnParams.bias, pnParams.side, pnParams.tolerance,
                                                         pnParams.budget, pnParams.gap, pnParams.thickness);
+#endif
 #ifdef PN_BACKPROJECTION_SHADE_SLABS
   return pnBackprojection(pnMip, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
 #else

@@ -30,6 +30,7 @@ layout(binding = PN_PCSS_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums     // fast-table-sums
 #define PN_FAST_PCSS_ABLATIONS                 // every switch of the block (fast_pcss.glsl)
+#define PN_HQEPCSS_ABLATIONS                   // the node budget too (hqepcss.glsl)
 #define PN_POISSON_BLOCKER_DISK pnDisk.points  // read in place
 #define PN_POISSON_FILTER_DISK pnFilterDisk.points
 #include "pcss_params.glsl"

@@ -7,6 +7,8 @@
 // options:
 //   PN_SAVSM_TABLE   PN_SAVSM_TABLE_FIXED (default) or _FLOAT: the table's
 //   kind and sampler type; the runner compiles one program per kind.
+//   PN_SAVSM_ENGINE_FORM   defined for the runner's rows whose settings are the defaults but the
+//   bias: pnSavsmDefaults, compile-time constants — the program an engine's shader makes.
 //
 // The body of the compute pass and the fragment shader (shade_pass.h):
 // pnShade(p), the visibility of screen pixel p.
@@ -27,7 +29,12 @@ float pnShade(ivec2 p) {
   vec4 g = texelFetch(pnGBuffer, p, 0);
   float v = 1.0;
   if (g.w != 0.0) {
-    v = pnSavsm(pnTable, pnMip, pnSavsmParamsLight(), g.xyz, pnParams.unitRange, pnSavsmParamsSettings());
+#ifdef PN_SAVSM_ENGINE_FORM  // the row's settings are the defaults: constants, as an engine compiles them
+    PnSavsmSettings s = pnSavsmDefaults(pnParams.bias);
+#else
+    PnSavsmSettings s = pnSavsmParamsSettings();
+#endif
+    v = pnSavsm(pnTable, pnMip, pnSavsmParamsLight(), g.xyz, pnParams.unitRange, s);
   }
   return v;
 }

@@ -66,9 +66,10 @@ const EngineVariant kEngineVariants[] = {
     {"backprojection", "backprojection-slabs", {"PN_EXPORT_BACKPROJECTION_LAYERS", "2"}},
 };
 
-// The technique passes the runner's registry runs, by technique: the PCSS calls of a technique's
-// shipped settings as the runner compiles them (PN_PCSS_ENGINE_FORM: the module's defaults as
-// constants; exact PCSS's call has plain parameters).
+// The technique passes the runner's registry runs, by technique, for its default row as the runner
+// compiles it: the module's defaults as constants (PN_PCSS_ENGINE_FORM, PN_SAVSM_ENGINE_FORM,
+// PN_BACKPROJECTION_ENGINE_FORM with the second layer's slabs; exact PCSS's, PCF's and VSM's calls
+// have plain parameters).
 struct RunnerCall {
   const char* name;
   const char* pass;  // without extension: .comp and .frag
@@ -87,8 +88,9 @@ std::vector<RunnerCall> runner_calls() {
           {"hqepcss", "passes/pcss_one_call", one_call(PN_ONE_CALL_HQEPCSS)},
           {"pcf", "passes/pcf_shade", {}},
           {"vsm", "passes/vsm_shade", {}},
-          {"savsm", "passes/savsm_shade", {}},
-          {"backprojection", "passes/backprojection_shade", {}}};
+          {"savsm", "passes/savsm_shade", {{"PN_SAVSM_ENGINE_FORM", "1"}}},
+          {"backprojection", "passes/backprojection_shade",
+           {{"PN_BACKPROJECTION_SHADE_SLABS", "1"}, {"PN_BACKPROJECTION_ENGINE_FORM", "1"}}}};
 }
 
 }  // namespace

@@ -54,6 +54,14 @@ void check_sizes(const MomentsTable& table, const LightModel& light) {
                 " map for a light of map size " + std::to_string(light.map_size) + ": expected the light's N×N map");
 }
 
+// Whether the settings are the module's defaults but the bias (pnSavsmDefaults): the shade pass then
+// compiles them as constants, the program an engine's shader makes (docs/benchmarks.md).
+bool engine_form(const SavsmSettings& s) {
+  const SavsmSettings d;
+  return s.filter_scale == d.filter_scale && s.min_variance == d.min_variance &&
+         s.bleeding_reduction == d.bleeding_reduction && s.blocker == d.blocker && s.bound == d.bound;
+}
+
 Rect rect_of(const Query& q) {
   return {static_cast<int>(q[0]), static_cast<int>(q[1]), static_cast<int>(q[2]), static_cast<int>(q[3])};
 }
@@ -78,7 +86,9 @@ std::unique_ptr<DeviceTexture> SavsmPass::shade(const MomentsTable& table, const
   resources.block = query_block(block);
   resources.add_textures(
       {{PN_SAVSM_TABLE_BINDING, *table.texture}, {PN_SAVSM_MIP_BINDING, mip}, {PN_SAVSM_INPUT_BINDING, gbuffer}});
-  return shade_.run(stage, table_define(table), screen_size, resources);
+  std::vector<Define> defines = table_define(table);
+  if (engine_form(settings)) defines.push_back({"PN_SAVSM_ENGINE_FORM", "1"});
+  return shade_.run(stage, defines, screen_size, resources);
 }
 
 std::vector<SavsmQueryResult> SavsmQueryPass::query(const MomentsTable& table, const DeviceTexture& mip,

@@ -33,6 +33,13 @@ struct BackprojectionSettings {
   MapLayer layer = MapLayer::back_faces;  // the second layer its slabs reach down to (first: none)
 
   int side() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(samples)))); }
+  // The module's defaults but the bias (pnBackprojectionDefaults): the shade pass then compiles them as
+  // constants, the program an engine's shader makes (docs/benchmarks.md).
+  bool engine_form() const {
+    const BackprojectionSettings d;
+    return samples == d.samples && tolerance == d.tolerance && budget == d.budget && gap == d.gap &&
+           thickness == d.thickness;
+  }
   void validate() const {
     const auto bad = [&](const std::string& what) { return Error("technique '" + name + "': " + what); };
     if (!std::isfinite(bias) || bias < 0.0f) throw bad("bias " + format_number("%g", bias) + ": expected a finite number >= 0");
@@ -99,6 +106,7 @@ class BackprojectionTechnique : public Technique {
     resources.add_textures({{PN_BACKPROJECTION_SHADE_MIP_BINDING, *mip->texture},
                             {PN_BACKPROJECTION_SHADE_GBUFFER_BINDING, *inputs.gbuffer}});
     std::vector<Define> defines;
+    if (settings_.engine_form()) defines.push_back({"PN_BACKPROJECTION_ENGINE_FORM", "1"});
     MinMaxMipChain second_mip;
     if (settings_.layer != MapLayer::first) {
       const DeviceTexture* layer = inputs.second_layers.at(settings_.layer);
