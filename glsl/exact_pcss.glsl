@@ -27,7 +27,7 @@
 //   iterations per invocation — llvmpipe: 65535 — cuts a region wider than
 //   about 1000 texels short: the runner runs exact PCSS in bands of rows.)
 //
-// isa budget: vgprs 24, instructions 900, code 5120, scratch 0, loop 400, loops 770
+// isa budget: vgprs 16, instructions 800, code 4096, scratch 0, loop 370, loops 700
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_EXACT_PCSS_GLSL

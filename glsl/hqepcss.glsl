@@ -37,7 +37,7 @@
 // cost: Step 3 4 fetches a refinement; the blocker traversal one fetch a node;
 //   the PCF one fetch per texel of the filter square (O(s²)).
 //
-// isa budget: vgprs 32, instructions 1000, code 5120, scratch 0, loop 350, loops 900
+// isa budget: vgprs 32, instructions 950, code 5120, scratch 0, loop 350, loops 870
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_HQEPCSS_GLSL

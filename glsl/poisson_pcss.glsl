@@ -111,7 +111,8 @@ PnPoisson pnPoissonAddSamplePlane(sampler2D depthMap, vec2 centre, float radius,
   if (!(all(greaterThanEqual(p, vec2(0.0))) && all(lessThan(p, n)))) return sums;
   vec2 q = floor(p);
   float d = texelFetch(depthMap, ivec2(q), 0).r;
-  if (d < pnReceiverPlaneThreshold(threshold, gradient, centre, ivec2(q)) && !isinf(d)) {  // NaN compares false
+  // pcf.glsl's pnPcfOccludes: NaN compares false, +Inf is never below, -Inf excluded (one compare).
+  if (d < pnReceiverPlaneThreshold(threshold, gradient, centre, ivec2(q)) && d > uintBitsToFloat(0xff800000u)) {
     sums.occluders += 1.0;
     sums.depthSum += d;
   }

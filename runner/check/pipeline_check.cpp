@@ -134,21 +134,32 @@ void technique_cases(const QueryDevice& context, TechniqueResources& resources, 
                      std::vector<CaseResult>& results) {
   // Every registry entry: a visibility image, finite and in [0, 1],
   // exactly 1 where the pixel sees no surface (no shadow on the sky).
+  // Its one call in a fragment shader (a full-screen triangle reading the G-buffer, as a deferred
+  // lighting pass runs it) against the runner's path: the same arithmetic, equal on llvmpipe.
+  const auto one_call_case = [&](const std::string& technique_name, const Technique& technique, const Image& visibility) {
+    if (!technique.has_one_call()) return;
+    TechniqueInputs fragment_inputs = inputs;
+    fragment_inputs.stage = ShadeStage::fragment;
+    results.push_back({name + ": technique '" + technique_name + "': its one call in a fragment shader vs its own path",
+                       Tolerance::exact(),
+                       compare(visibility, context.read_texture(*technique.run(fragment_inputs, false).visibility, 0, 0),
+                               Tolerance::exact())});
+  };
   for (const TechniqueEntry& entry : technique_registry()) {
     const std::unique_ptr<Technique> technique = entry.make()->create(resources);
     const Image visibility = context.read_texture(*technique->run(inputs, true).visibility, 0, 0);
     results.push_back(in_unit_range(name + ": technique '" + entry.name + "' through the seam: finite, in [0, 1]", visibility));
     results.push_back(sky_stays_lit(name + ": technique '" + entry.name + "': pixels that see no surface stay lit",
                                     gbuffer, visibility));
-    // Its one call in a fragment shader (a full-screen triangle reading the G-buffer, as a deferred
-    // lighting pass runs it) against the runner's path: the same arithmetic, equal on llvmpipe.
-    if (!technique->has_one_call()) continue;
-    TechniqueInputs fragment_inputs = inputs;
-    fragment_inputs.stage = ShadeStage::fragment;
-    results.push_back({name + ": technique '" + entry.name + "': its one call in a fragment shader vs its own path",
-                       Tolerance::exact(),
-                       compare(visibility, context.read_texture(*technique->run(fragment_inputs, false).visibility, 0, 0),
-                               Tolerance::exact())});
+    one_call_case(entry.name, *technique, visibility);
+  }
+  // A setting no registry row has whose call takes another walk than the shipped settings': HQEPCSS's
+  // node budget (PN_HQEPCSS_ABLATIONS: traversal_pyramid.glsl's walk). Leaves of one texel and a
+  // budget of two nodes: it binds in every window wider than a texel (the root's first child and
+  // every node after it estimated at their min).
+  for (const char* spec : {"hqepcss:leaf=1:budget=2"}) {
+    const std::unique_ptr<Technique> technique = parse_technique(spec)->create(resources);
+    one_call_case(spec, *technique, context.read_texture(*technique->run(inputs, true).visibility, 0, 0));
   }
 
   // The hard shadow with the receiver plane from the G-buffer (pcf:receiver-plane=on) in both stages
