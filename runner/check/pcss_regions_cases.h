@@ -3,6 +3,7 @@
 // tolerance) runs them in order.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -57,13 +58,25 @@ std::vector<PcssRegionsQuery> search_queries(const std::vector<RegionReceiver>& 
 // The property case: one element per lit receiver checked, 1 where a texel can shadow it.
 CaseResult property_case(const std::string& name, const std::vector<float>& violations, const LitCoverage& c,
                          const std::string& extra);
-// Adds one GPU result to the property's counts (SPEC §4.7 Step 3).
-void count_receiver(LitCoverage& c, std::vector<float>& violations, const DepthScan& scan, const LightModel& light,
-                    const RegionReceiver& r, const PcssRegionsResult& observed, double bias, bool count_shadowable);
-// The property over a whole G-buffer's GPU results (in the order of `receivers`).
-LitCoverage count_lit_coverage(const std::string& name, const DepthScan& scan, const LightModel& light,
-                               const std::vector<RegionReceiver>& receivers, const std::vector<PcssRegionsResult>& observed,
-                               double bias);
+// What the CPU says of a receiver (shadowing_blocker): a texel can shadow it, and whether float
+// rounding leaves that open.
+struct ShadowingTruth {
+  bool shadowable = false;
+  bool ambiguous = false;
+};
+ShadowingTruth shadowing_truth(const DepthScan& scan, const LightModel& light, const RegionReceiver& r, double bias);
+// Every receiver's, once for the searches of one scene that share them (the brute force over each
+// search square is most of the check's time).
+std::vector<ShadowingTruth> shadowing_truths(const DepthScan& scan, const LightModel& light,
+                                             const std::vector<RegionReceiver>& receivers, double bias);
+// Adds one GPU result to the property's counts (SPEC §4.7 Step 3); `truth` is asked only for a lit
+// receiver unless count_shadowable.
+void count_receiver(LitCoverage& c, std::vector<float>& violations, const RegionReceiver& r,
+                    const PcssRegionsResult& observed, const std::function<ShadowingTruth()>& truth,
+                    bool count_shadowable);
+// The property over a whole G-buffer's GPU results (in the order of `receivers`, `truths` theirs).
+LitCoverage count_lit_coverage(const std::string& name, const std::vector<RegionReceiver>& receivers,
+                               const std::vector<ShadowingTruth>& truths, const std::vector<PcssRegionsResult>& observed);
 
 // Search queries compared, and of them left out for rounding: the last case's share.
 struct SearchTally {

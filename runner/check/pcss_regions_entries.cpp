@@ -164,32 +164,46 @@ CaseResult property_case(const std::string& name, const std::vector<float>& viol
           Tolerance::exact(), compare(Image(observed.width, 1, 1, 0.0f), observed, Tolerance::exact())};
 }
 
-void count_receiver(LitCoverage& c, std::vector<float>& violations, const DepthScan& scan, const LightModel& light,
-                    const RegionReceiver& r, const PcssRegionsResult& observed, double bias, bool count_shadowable) {
+ShadowingTruth shadowing_truth(const DepthScan& scan, const LightModel& light, const RegionReceiver& r, double bias) {
+  Rounding rounding{kAmbiguity};
+  const bool shadowable = shadowing_blocker(scan, light, r, bias, &rounding);
+  return {shadowable, rounding.ambiguous};
+}
+
+std::vector<ShadowingTruth> shadowing_truths(const DepthScan& scan, const LightModel& light,
+                                             const std::vector<RegionReceiver>& receivers, double bias) {
+  std::vector<ShadowingTruth> out;
+  out.reserve(receivers.size());
+  for (const RegionReceiver& r : receivers)
+    out.push_back(r.valid == 0.0f || std::isnan(r.depth) ? ShadowingTruth{} : shadowing_truth(scan, light, r, bias));
+  return out;
+}
+
+void count_receiver(LitCoverage& c, std::vector<float>& violations, const RegionReceiver& r,
+                    const PcssRegionsResult& observed, const std::function<ShadowingTruth()>& truth,
+                    bool count_shadowable) {
   if (r.valid == 0.0f || std::isnan(r.depth)) return;
   ++c.receivers;
   const bool lit = !(observed.entry[3] >= 0.0f);
   if (!lit && !count_shadowable) return;
-  Rounding rounding{kAmbiguity};
-  const bool shadowable = shadowing_blocker(scan, light, r, bias, &rounding);
-  c.shadowable += shadowable ? 1 : 0;
+  const ShadowingTruth t = truth();
+  c.shadowable += t.shadowable ? 1 : 0;
   if (!lit) return;
   ++c.lit;
-  if (!shadowable && rounding.ambiguous) {
+  if (!t.shadowable && t.ambiguous) {
     ++c.left_out;
     return;
   }
-  violations.push_back(shadowable ? 1.0f : 0.0f);
-  c.violations += shadowable ? 1 : 0;
+  violations.push_back(t.shadowable ? 1.0f : 0.0f);
+  c.violations += t.shadowable ? 1 : 0;
 }
 
-LitCoverage count_lit_coverage(const std::string& name, const DepthScan& scan, const LightModel& light,
-                               const std::vector<RegionReceiver>& receivers, const std::vector<PcssRegionsResult>& observed,
-                               double bias) {
+LitCoverage count_lit_coverage(const std::string& name, const std::vector<RegionReceiver>& receivers,
+                               const std::vector<ShadowingTruth>& truths, const std::vector<PcssRegionsResult>& observed) {
   LitCoverage c;
   std::vector<float> violations;
   for (size_t k = 0; k < receivers.size(); ++k)
-    count_receiver(c, violations, scan, light, receivers[k], observed[k], bias, true);
+    count_receiver(c, violations, receivers[k], observed[k], [&] { return truths[k]; }, true);
   c.result = property_case(name, violations, c,
                            std::to_string(c.receivers) + " receivers, " + std::to_string(c.shadowable) +
                                " of them a texel can shadow; ");

@@ -170,7 +170,8 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
         add_entry(g, expected, rounding.ambiguous, observed[k], counted ? refinements : -1);
         add_regions(g, observed[k], n, q.mode);
         if (q.iterations > 0)  // the property: every mode, refining count and bias
-          count_receiver(coverage, violations, scan, l.light, r, observed[k], q.bias, false);
+          count_receiver(coverage, violations, r, observed[k],
+                         [&] { return shadowing_truth(scan, l.light, r, q.bias); }, false);
       }
     }
     for (RegionMode mode : kModes) {

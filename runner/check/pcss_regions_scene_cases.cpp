@@ -56,7 +56,9 @@ LitCoverage pcss_regions_lit_coverage(const CheckEnvironment& env, RegionMode mo
       pass.run(scene.pyramid, scene.light, search_queries(scene.receivers, mode, defaults.refine_iterations, defaults.bias));
   return count_lit_coverage(scene.name + ", " + mode_name(mode) + ", " + std::to_string(defaults.refine_iterations) +
                                 " iterations",
-                            DepthScan(scene.map), scene.light, scene.receivers, observed, defaults.bias);
+                            scene.receivers,
+                            shadowing_truths(DepthScan(scene.map), scene.light, scene.receivers, defaults.bias),
+                            observed);
 }
 
 void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass,
@@ -65,6 +67,7 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
   const SceneData scene = scene_data(env, "tall_blocker");
   const DepthScan scan(scene.map);
   const PcssSettings defaults;
+  const std::vector<ShadowingTruth> truths = shadowing_truths(scan, scene.light, scene.receivers, defaults.bias);
   struct SceneSearch {
     RegionMode mode;
     Structure structure;
@@ -89,7 +92,7 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
       }
       if (iterations > 0)
         results.push_back(count_lit_coverage(scene.name + ", " + what + ", " + std::to_string(iterations) + " iterations",
-                                             scan, scene.light, scene.receivers, observed, defaults.bias)
+                                             scene.receivers, truths, observed)
                               .result);
     }
     tally.searched += g.queries, tally.left_out += g.left_out;
@@ -104,7 +107,8 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
     SceneData boxes = scene_data(env, "boxes", kBoxesMap, kBoxesScreen);
     boxes.receivers.erase(boxes.receivers.begin() + 320 * kBoxesScreen, boxes.receivers.end());
     boxes.receivers.erase(boxes.receivers.begin(), boxes.receivers.begin() + 128 * kBoxesScreen);
-    const DepthScan boxes_scan(boxes.map);
+    const std::vector<ShadowingTruth> boxes_truths =
+        shadowing_truths(DepthScan(boxes.map), boxes.light, boxes.receivers, defaults.bias);
     for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid},
                                       SceneSearch{RegionMode::exact, Structure::mip}}) {
       const std::string what = search.structure == Structure::mip ? "the mip chain's search" : mode_name(search.mode);
@@ -114,7 +118,7 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
           &boxes.mip);
       results.push_back(count_lit_coverage(boxes.name + " (rows 128-319: the far field), " + what + ", " +
                                                std::to_string(defaults.refine_iterations) + " iterations",
-                                           boxes_scan, boxes.light, boxes.receivers, observed, defaults.bias)
+                                           boxes.receivers, boxes_truths, observed)
                             .result);
     }
   }
