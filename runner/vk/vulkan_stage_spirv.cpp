@@ -11,9 +11,10 @@
 
 namespace pn::vk {
 
-std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const SourceTree& tree, const std::string& pass,
-                                       const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
-  ShaderSource source = standalone_source(flatten(tree, tree.locate_in_root(pass)), Target::vulkan, defines);
+namespace {
+
+std::vector<std::uint32_t> compile_stage(const VulkanDevice::State& s, ShaderSource source, const std::string& pass,
+                                         const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
   if (loops != nullptr && s.bounds.enabled)
     *loops = guard_loops(s.glslang, source, Target::vulkan, {kGuardBinding, s.bounds.loop_iterations});
   const CompileResult glsl = compile_with_glslang(s.glslang, source, Target::vulkan);
@@ -57,6 +58,31 @@ std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const Sourc
   const CompileResult back = compile_hlsl_with_glslang(s.glslang, hlsl, name, source.stage);
   if (!back.ok) throw Error(name + ": " + first_error(back, "glslang could not compile the HLSL"), ExitCode::failed);
   return back.spirv;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const SourceTree& tree, const std::string& pass,
+                                       const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
+  ShaderSource source = standalone_source(flatten(tree, tree.locate_in_root(pass)), Target::vulkan, defines);
+  // A copy's run is recorded each time (origins): never from the cache.
+  if (s.settings.hlsl_root) return compile_stage(s, std::move(source), pass, defines, loops);
+  // The same text, stage, language and loop guard compile to the same SPIR-V and loops.
+  const bool guarded = loops != nullptr && s.bounds.enabled;
+  const std::string key = std::to_string(static_cast<int>(source.stage)) + "|" +
+                          std::to_string(static_cast<int>(s.settings.language)) + "|" +
+                          (guarded ? std::to_string(s.bounds.loop_iterations) : std::string("-")) + "|" +
+                          (loops != nullptr ? "loops" : "") + "|" + source.text;
+  const auto found = s.compiled.find(key);
+  if (found == s.compiled.end()) {
+    VulkanDevice::State::CompiledStage stage;
+    stage.spirv = compile_stage(s, std::move(source), pass, defines, loops ? &stage.loops : nullptr);
+    const auto added = s.compiled.emplace(key, std::move(stage)).first;
+    if (loops != nullptr) *loops = added->second.loops;
+    return added->second.spirv;
+  }
+  if (loops != nullptr) *loops = found->second.loops;
+  return found->second.spirv;
 }
 
 std::string program_name(const VulkanDevice::State& s, const std::string& pass) {

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -14,6 +15,7 @@
 
 #include "device/pass_origin.h"
 #include "shader/glslang_compiler.h"
+#include "shader/loop_guard.h"
 #include "vk/fence_waiter.h"
 #include "vk/vulkan_device.h"
 
@@ -46,6 +48,14 @@ struct VulkanDevice::State {
   mutable std::vector<std::string> messages;  // the validation layer's, since the last check
   mutable std::vector<PassOrigin> origins;     // --hlsl-root: what each stage compiled since ran from
   mutable std::set<std::string> copies_read;   // --hlsl-root: the copies' names read so far
+  // Each stage compiled so far (vk/vulkan_stage_spirv.cpp), by what it was compiled from: a check
+  // makes its passes afresh case by case, and the HLSL route (SPIRV-Cross, then glslang's HLSL
+  // front end and legalization) costs the same text again every time. Not with --hlsl-root.
+  struct CompiledStage {
+    std::vector<std::uint32_t> spirv;
+    std::vector<GuardedLoop> loops;
+  };
+  mutable std::map<std::string, CompiledStage> compiled;
 
   // A submission past its deadline (`check --gpu-timeout`). A Vulkan job cannot be cancelled:
   // lavapipe's worker threads go on running the shader, reading and writing every buffer, image,
