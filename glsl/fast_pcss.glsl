@@ -184,8 +184,10 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleT
 PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                             vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
-  // Lit after Step 3: no region. The count is data, not a constant, so no compiler unrolls the
-  // loop below into two copies of the walk (an early return would make it a constant 2 after it).
+  // Lit after Step 3: no region. The loop's condition reads data, not a constant count alone, so
+  // no compiler unrolls it into two copies of the walk (an early return would make it a constant 2
+  // after it); a bool, not a count of 0 or 2, so the wave holds it as a lane mask, not in a vector
+  // register through the walk (32 VGPRs in a compute shader, 40 with the count).
   bool lit = pnEntryLit(r.searchEntry);
   int n = int(light.mapSize);
   PnMipShape shape = pn_mipShape(mip);
