@@ -215,11 +215,8 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
     // group is the region's (sample_table.glsl), not a leaf's.
     int k = pnSampleGroupLog4(1 << min(top, findMSB(leafSide)));
     int m = pnSampleCount(k), first = pnSampleFirstColumn(k);
-    // traversal_mip.glsl's bound for the largest root: the same for every invocation, so the loop's
-    // count is a scalar (a region's own bound, budget + 3 rootLevel + 4, is never reached without a
-    // budget: the walk ends at its last node first).
     bool empty = isnan(test.threshold) || t.texels == 0.0;
-    for (int it = 0; it < (PN_TRAVERSAL_NO_BUDGET + 3 * (PN_TRAVERSAL_MAX_LEVEL + 1) + 4) && !empty; ++it) {
+    for (int it = 0; it < PN_TRAVERSAL_CURSOR_STEPS && !empty; ++it) {
       ivec2 origin = rootOrigin + (node << level);
       ivec2 lo = max(origin, start), hi = min(origin + (1 << level), end);
       t.nodes += 1;
@@ -240,19 +237,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
           if (!descend) pn_fastPcssSampleLeaf(t, mip, sampleTable, first, m, lo, part, test, set);
         }
       }
-      if (descend) {
-        level -= 1;
-        node *= 2;
-        continue;
-      }
-      // The next sibling, climbing over every level whose last child (x and y odd) this was; the
-      // virtual root's last child done: the walk is over.
-      int climb = findLSB(~(node.x & node.y));
-      level += climb;
-      if (level > top) break;
-      node >>= climb;
-      node.y += node.x & 1;
-      node.x ^= 1;
+      if (pn_traversalCursorNext(node, level, descend, top)) break;  // the virtual root's last child done
     }
     if (region == 1) {
       pn_fastPcssOcclusionDone(r, t);

@@ -87,9 +87,7 @@ PnTraversal pn_hqepcssBlockers(sampler2DArray pyramid, PnRect region, vec3 recei
   int level = top;
   ivec2 node = ivec2(0);
   bool empty = isnan(test.threshold) || r.texels == 0.0;
-  // traversal_pyramid.glsl's bound without a budget: one scalar for the wave, never reached (the walk
-  // ends at its last node first).
-  for (int it = 0; it < (PN_TRAVERSAL_NO_BUDGET + 3 * (PN_TRAVERSAL_MAX_LEVEL + 1) + 4) && !empty; ++it) {
+  for (int it = 0; it < PN_TRAVERSAL_CURSOR_STEPS && !empty; ++it) {
     int side = 1 << level;
     ivec2 origin = start + (node << level);
     ivec2 lo = max(origin, start), hi = min(origin + side, end);
@@ -113,19 +111,7 @@ PnTraversal pn_hqepcssBlockers(sampler2DArray pyramid, PnRect region, vec3 recei
         descend = true;
       }
     }
-    if (descend) {
-      level -= 1;
-      node *= 2;
-      continue;
-    }
-    // The next sibling, climbing over every level whose last child this was; the root (or its last
-    // child) done: the walk is over.
-    int climb = findLSB(~(node.x & node.y));
-    level += climb;
-    if (level >= top) break;
-    node >>= climb;
-    node.y += node.x & 1;
-    node.x ^= 1;
+    if (pn_traversalCursorNext(node, level, descend, top - 1)) break;  // the root (or its last child) done
   }
   return r;
 }

@@ -129,6 +129,29 @@ bool pn_traversalNext(inout int level, inout uint code, bool descend, int rootLe
   return level == rootLevel;
 }
 
+// The lean walks (Fast PCSS's shipped walk, HQEPCSS's blockers): a cursor of the node relative to the
+// root, (x, y) at `level`. Its step: into the first child (descend), or to the next node in Z order —
+// the next sibling, climbing over every level whose last child (x and y odd) this was, the trailing
+// ones of x & y, with no Morton code decoded. True when the climb passes lastLevel (the level of the
+// walk's top nodes): the walk is done.
+bool pn_traversalCursorNext(inout ivec2 node, inout int level, bool descend, int lastLevel) {
+  if (descend) {
+    level -= 1;
+    node *= 2;
+    return false;
+  }
+  int climb = findLSB(~(node.x & node.y));
+  level += climb;
+  node >>= climb;
+  node.y += node.x & 1;
+  node.x ^= 1;
+  return level > lastLevel;
+}
+
+// Their loop's bound: the general walk's without a budget for the largest root — the same for every
+// invocation, so the count is a scalar, and never reached (a walk ends at its last node first).
+#define PN_TRAVERSAL_CURSOR_STEPS (PN_TRAVERSAL_NO_BUDGET + 3 * (PN_TRAVERSAL_MAX_LEVEL + 1) + 4)
+
 // One sample of depth d read at texel p: counted when it occludes its own
 // texel's threshold.
 void pn_traversalCountSample(inout float occluding, inout float depthSum, inout PnTraversal r, float d, ivec2 p,
