@@ -174,8 +174,7 @@ std::vector<ShadowingTruth> shadowing_truths(const DepthScan& scan, const LightM
                                              const std::vector<RegionReceiver>& receivers, double bias) {
   std::vector<ShadowingTruth> out;
   out.reserve(receivers.size());
-  for (const RegionReceiver& r : receivers)
-    out.push_back(r.valid == 0.0f || std::isnan(r.depth) ? ShadowingTruth{} : shadowing_truth(scan, light, r, bias));
+  for (const RegionReceiver& r : receivers) out.push_back(shadowing_truth(scan, light, r, bias));
   return out;
 }
 
