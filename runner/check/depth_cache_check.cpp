@@ -51,8 +51,8 @@ struct Worst {
 
 void module_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
   const DepthCacheQueryPass pass(env.device, env.tree);
-  const auto& fx = fixtures::kTextureFixtures;
-  const size_t count = std::size(fx);
+  const std::vector<fixtures::TextureFixture> fx = check_texture_fixtures(env);
+  const size_t count = fx.size();
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   for (size_t i = 0; i < count; ++i)
     for (size_t j : {i, (i + 3) % count}) {

@@ -69,7 +69,7 @@ std::vector<CaseResult> run_depth_pyramid_check(const CheckEnvironment& env) {
   const DepthPyramidQuery query(env.device, env.tree);
   std::vector<CaseResult> results;
 
-  for (const auto& fixture : fixtures::kTextureFixtures) {
+  for (const auto& fixture : check_texture_fixtures(env)) {
     for (int n : kLevelSizes) {
       const Image map = generate_fixture(fixture, n, n);
       const DepthPyramid pyramid = builder.build(*env.device.upload(map), n, n, 31);

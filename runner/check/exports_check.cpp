@@ -323,7 +323,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                 s, reference, fast_shipped.run(stage, textures, s.receivers, query_block(block))));
     }
   }
-  for (const auto& fixture : fixtures::kScenes) {
+  for (const auto& fixture : check_scenes(env)) {
     const Scene scene = make_scene(fixture, kMap);
     const SceneImages s = ray_cast(scene);
     const std::unique_ptr<DeviceTexture> map = env.device.upload(s.map);

@@ -89,7 +89,7 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
   const PcssPipeline pipeline(device, env.tree);
   const auto read = [&](const DeviceTexture& t) { return device.read_texture(t, 0, 0); };
   std::vector<CaseResult> results;
-  for (const auto& fixture : fixtures::kScenes) {
+  for (const auto& fixture : check_scenes(env)) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";

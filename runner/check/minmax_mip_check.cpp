@@ -43,7 +43,7 @@ std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env) {
   const MinMaxMipBuilder builder(env.device, env.tree);
   std::vector<CaseResult> results;
   const Tolerance exact = Tolerance::exact();
-  for (const auto& fixture : fixtures::kTextureFixtures)
+  for (const auto& fixture : check_texture_fixtures(env))
     for (int n : kSizes) {
       const Image map = generate_fixture(fixture, n, n);
       const Image depth = sanitized_depths(map);

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "check/compare.h"
+#include "scenes.h"
+#include "texture_fixtures.h"
 #include "device/query_device.h"
 #include "modules/blur_face.h"
 #include "shader/source_tree.h"
@@ -17,6 +19,9 @@ namespace pn {
 // What the user may set on the command line for the checks.
 struct CheckOptions {
   std::optional<BlurParams> blur;  // replaces the blur check's parameter list
+  // --quick: each check on the fixtures of check_scenes / check_texture_fixtures below, not all of
+  // them; every program still runs (the suite's Vulkan, HLSL and ES runs: docs/reliability.md).
+  bool quick = false;
 };
 
 // Where the checks run: an executor (device/query_device.h) — a GL context, or a Vulkan device,
@@ -43,6 +48,13 @@ struct ModuleCheck {
 };
 
 const std::vector<ModuleCheck>& module_checks();
+
+// The scenes and texture fixtures a check loops over: all of them; with --quick the scene
+// tall_blocker (the widest penumbrae: the longest walks, a wrong filter size shows most) and the texture fixtures step_edge (an edge), nonfinite (NaN and ±Inf texels) and boxes (a
+// scene-like map) — what another API or a transpiled copy can get wrong, since its programs are
+// the same for every fixture.
+std::vector<fixtures::SceneFixture> check_scenes(const CheckEnvironment& env);
+std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckEnvironment& env);
 const ModuleCheck& find_module_check(const std::string& module);  // throws Error listing the modules
 
 }  // namespace pn

@@ -183,7 +183,7 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
   std::vector<CaseResult> results;
   long queries_total = 0, left_out_total = 0;
 
-  for (const auto& fixture : fixtures::kTextureFixtures) {
+  for (const auto& fixture : check_texture_fixtures(env)) {
     const Image map = generate_fixture(fixture, kMapSize, kMapSize);
     for (float d : map.texels)
       if (std::isfinite(d) && d < 0.0f) throw Error(std::string("pcf check: fixture '") + fixture.name + "' has depths < 0");

@@ -27,10 +27,10 @@ Image shifted_fixture(const char* name, int n) {
   return map;
 }
 
-std::vector<FixtureMap> fixture_maps() {
+std::vector<FixtureMap> fixture_maps(const CheckEnvironment& env) {
   std::vector<FixtureMap> out;
   const std::string size = " " + std::to_string(kMapSize) + "²";
-  for (const auto& f : fixtures::kTextureFixtures)
+  for (const auto& f : check_texture_fixtures(env))
     out.push_back({f.name + size, shifted_fixture(f.name, kMapSize), 31});
   out.push_back({"boxes" + size + ", pyramid capped at level 2", shifted_fixture("boxes", kMapSize), 2});
   out.push_back({"noise 3²", shifted_fixture("noise", 3), 31});
@@ -133,7 +133,7 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
   }
   std::uint32_t seed = 0x5eed0010u;
   bool first = true;
-  for (const FixtureMap& f : fixture_maps()) {
+  for (const FixtureMap& f : fixture_maps(env)) {
     const int n = f.map.width;
     const std::unique_ptr<DeviceTexture> texture = env.device.upload(f.map);
     const DepthPyramid pyramid = builder.build(*texture, n, n, f.max_level);

@@ -204,7 +204,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
   std::vector<const TechniqueConfig*> configs;
   for (const TechniqueEntry& entry : technique_registry()) configs.push_back(entries.emplace_back(entry.make()).get());
   const std::vector<MapLayer> layers = second_layers_of(configs);
-  for (const auto& fixture : fixtures::kScenes) {
+  for (const auto& fixture : check_scenes(env)) {
     const Scene scene = make_scene(fixture, kMap);
     const std::string name = std::string(fixture.name) + " " + std::to_string(kMap) + "² map, " +
                              std::to_string(kScreen) + "² screen";

@@ -75,7 +75,7 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
   long queries_total = 0, left_out_total = 0;
   SeededRandom random(0x5eed0010u);
 
-  for (const auto& fixture : fixtures::kTextureFixtures) {
+  for (const auto& fixture : check_texture_fixtures(env)) {
     const Image map = generate_fixture(fixture, kMapSize, kMapSize);
     for (float d : map.texels)
       if (std::isfinite(d) && d < 0.0f) throw Error(std::string("poisson_pcss check: fixture '") + fixture.name + "' has depths < 0");

@@ -28,7 +28,7 @@ std::vector<CaseResult> run_shadow_map_check(const CheckEnvironment& env) {
   const ShadowMapRenderer back_faces(env.device, env.tree, MapLayer::back_faces);
   const GBufferRenderer gbuffer(env.device, env.tree);
   std::vector<CaseResult> results;
-  for (const auto& fixture : fixtures::kScenes) {
+  for (const auto& fixture : check_scenes(env)) {
     for (int n : {100, 256}) {
       const Scene scene = make_scene(fixture, n);
       const std::string name = std::string(fixture.name) + " " + std::to_string(n) + "x" + std::to_string(n);

@@ -144,7 +144,7 @@ std::vector<CaseResult> summed_area_depth_cases(const CheckEnvironment& env) {
   const SummedAreaPass pass(env.device, env.tree);
   const SummedAreaPass wrapping(env.device, env.tree, kWrapFractionBits);
   std::vector<CaseResult> results;
-  for (const auto& fixture : fixtures::kTextureFixtures) {
+  for (const auto& fixture : check_texture_fixtures(env)) {
     for (const auto& size : kSizes) {
       const Image raw = generate_fixture(fixture, size.width, size.height);
       const std::vector<Rect> rects = rects_for(size.width, size.height);

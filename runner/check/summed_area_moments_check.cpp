@@ -220,7 +220,7 @@ std::vector<CaseResult> summed_area_moments_cases(const CheckEnvironment& env) {
   const SummedAreaMomentsPass pass(env.device, env.tree);
   const SummedAreaMomentsPass coarse(env.device, env.tree, kSmallBits);
   const std::string depths = "light depth 20 + 20 v in [1, 100], +Inf where v >= 0.95";
-  for (const auto& fixture : fixtures::kTextureFixtures)
+  for (const auto& fixture : check_texture_fixtures(env))
     for (const auto& size : {fixtures::FixtureSize{1, 1}, {3, 5}, {17, 9}}) {
       const std::string name = std::string(fixture.name) + " " + std::to_string(size.width) + "x" +
                                std::to_string(size.height) + ", " + depths;

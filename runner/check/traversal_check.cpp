@@ -144,7 +144,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
   };
 
   SeededRandom random(0x5eed0006u);
-  for (const auto& fixture : fixtures::kTextureFixtures) {
+  for (const auto& fixture : check_texture_fixtures(env)) {
     Scene scene;
     scene.map = generate_fixture(fixture, kMapSize, kMapSize);
     scene.depth = sanitized_depths(scene.map);

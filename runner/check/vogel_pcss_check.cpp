@@ -55,7 +55,7 @@ std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
   SeededRandom random(0x5eed0070u);
   const std::vector<int> counts{1, 8, 16, 32, 64, kVogelMaxSamples, 0, kVogelMaxSamples + 72, -3};
 
-  for (const auto& fixture : fixtures::kTextureFixtures) {
+  for (const auto& fixture : check_texture_fixtures(env)) {
     const Image map = generate_fixture(fixture, kMapSize, kMapSize);
     const std::unique_ptr<DeviceTexture> uploaded = env.device.upload(map);
     const DeviceTexture& texture = *uploaded;

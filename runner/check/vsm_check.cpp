@@ -75,9 +75,9 @@ struct Map {
   Image depth;
 };
 
-std::vector<Map> maps() {
+std::vector<Map> maps(const CheckEnvironment& env) {
   std::vector<Map> out;
-  for (const auto& fixture : fixtures::kTextureFixtures)
+  for (const auto& fixture : check_texture_fixtures(env))
     for (int n : kSizes)
       out.push_back({std::string(fixture.name) + " " + std::to_string(n) + "x" + std::to_string(n),
                      generate_fixture(fixture, n, n)});
@@ -252,7 +252,7 @@ std::vector<CaseResult> run_vsm_check(const CheckEnvironment& env) {
   const Gpu gpu{env, VsmMomentsPass(env.device, env.tree), VsmQueryPass(env.device, env.tree),
                 DepthPyramidBuilder(env.device, env.tree)};
   std::vector<CaseResult> results;
-  const std::vector<Map> all = maps();
+  const std::vector<Map> all = maps(env);
   for (VsmKind kind : kKinds) {
     const VsmParams params = params_for(kind);
     for (const Map& map : all) map_cases(gpu, map, params, results);

@@ -43,6 +43,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     std::optional<double> blur_sigma, blur_depth_tolerance;
     bool blur_depth_aware = false;
     bool every_case = false;
+    bool quick = false;
     bool no_validation = false;
     std::string hlsl_root;
     DispatchBounds bounds{true};
@@ -66,6 +67,9 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--blur-sigma", opt->blur_sigma, "Check blur with this sigma only (texels, > 0)");
   cmd->add_flag("--blur-depth-aware", opt->blur_depth_aware, "Check the depth-aware blur only");
   cmd->add_flag("-v,--every-case", opt->every_case, "List every case with its worst element, passing ones too");
+  cmd->add_flag("--quick", opt->quick,
+                "Each check on one scene (tall_blocker) and three texture fixtures (step_edge, nonfinite, boxes), not all: "
+                "every program still runs (the suite's runs on ES, Vulkan and HLSL)");
   cmd->add_option("--blur-depth-tolerance", opt->blur_depth_tolerance, "Relative depth tolerance (>= 0)");
   cmd->add_option("--gpu-timeout", opt->bounds.timeout_s,
                   "Seconds one dispatch may take before the check fails (default 60; 0.1 to 3600)");
@@ -73,6 +77,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
                   "Iterations one loop may run in one invocation, over all its entries (default 65000; 1 to 2^30)");
   cmd->callback([opt, &global, &exit_code] {
     CheckOptions options;
+    options.quick = opt->quick;
     if (opt->blur_radius || opt->blur_sigma || opt->blur_depth_aware || opt->blur_depth_tolerance) {
       BlurParams blur;
       blur.radius = opt->blur_radius.value_or(blur.radius);

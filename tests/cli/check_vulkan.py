@@ -4,9 +4,10 @@
 The Vulkan executor against GL 4.5, side by side (issue 27), one API a run (vulkan or hlsl: two
 CTests, so that two cores share what one ran serially):
 - `penumbra info --api vulkan` names a device and has the validation layer on;
-- `penumbra check -v` on API against GL_CHECK, the same on GL 4.5 (cli_check_all_gl,
-  check_all_gl.sh): every registered check passes on both, with the same cases (the same
-  names) on each;
+- `penumbra check -v --quick` on API against GL_CHECK, every case on GL 4.5 (cli_check_all_gl,
+  check_all_gl.sh): every registered check passes on both, and every case the API ran is one of
+  GL's (the same name) — --quick runs every program on fewer fixtures (docs/reliability.md: the
+  suite's 8 minutes);
 - hlsl: an HLSL copy given with --hlsl-root is what runs: exact_pcss.glsl's export (`bundle
   --target hlsl`, the file an engine takes) passes the exports check as written and fails with one
   operator changed, with a where / expected / observed line.
@@ -62,7 +63,7 @@ def main():
         return 77
     with open(gl_check) as f:
         runs = {'gl450': table(f.read())}
-    r = run(penumbra, 'check', '-v', '--api', api)
+    r = run(penumbra, 'check', '-v', '--quick', '--api', api)
     if r.returncode != 0:
         print(r.stdout + r.stderr)
         print(f'check --api {api}: exit {r.returncode}, expected 0')
@@ -83,9 +84,9 @@ def main():
         names = runs[api][1].get(module, set())
         if verdict != 'pass' or runs['gl450'][0][module][1] != 'pass':
             failures.append(f'{module}: {api} {verdict}, gl450 {runs["gl450"][0][module][1]}: expected pass on both')
-        if not names or names != gl_names:
-            failures.append(f'{module}: {api} ran {len(names)} cases, GL {len(gl_names)}: expected the same '
-                            f'(first differing: {sorted(names ^ gl_names)[:2]})')
+        if not names or not names <= gl_names:
+            failures.append(f'{module}: {api} ran {len(names)} cases, GL {len(gl_names)}: expected some, each one '
+                            f'of GL\'s (first not: {sorted(names - gl_names)[:2]})')
     if len(modules) < 23:
         failures.append(f'only {len(modules)} checks ran: {modules}')
     if api == 'vulkan':
@@ -103,7 +104,7 @@ def main():
     if b.returncode != 0:
         print(b.stdout + b.stderr)
         return 1
-    good = run(penumbra, 'check', 'exports', '--api', 'hlsl', '--hlsl-root', root)
+    good = run(penumbra, 'check', 'exports', '--quick', '--api', 'hlsl', '--hlsl-root', root)
     if good.returncode != 0:
         failures.append('exports on exact_pcss.glsl\'s HLSL export: exit %d, expected 0\n%s' % (good.returncode, good.stdout))
     text = open(export).read()
@@ -112,7 +113,7 @@ def main():
         failures.append('could not put the mistake into exact_pcss.hlsl (return 1.0f - pnPcfOccludedFraction()')
     else:
         open(export, 'w').write(mistake)
-        bad = run(penumbra, 'check', 'exports', '--api', 'hlsl', '--hlsl-root', root)
+        bad = run(penumbra, 'check', 'exports', '--quick', '--api', 'hlsl', '--hlsl-root', root)
         print(bad.stdout, end='')
         if bad.returncode != 1 or not WHERE.search(bad.stdout):
             failures.append(f'exports on a broken HLSL copy: exit {bad.returncode}, expected 1 with a where / expected / observed line')
