@@ -87,7 +87,7 @@
 //   stackless: no local array); what bounds it in practice is the number of
 //   occluding texels whose segments reach: the penumbra's area in texels.
 //
-// isa budget: vgprs 64, instructions 4800, code 25600, scratch 0, loop 4600, loops 7400
+// isa budget: vgprs 64, instructions 2500, code 14336, scratch 0, loop 3800, loops 4400
 //   (`penumbra isa --budgets`: both calls as an engine compiles them, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL
@@ -123,45 +123,6 @@ PnBackprojectionSettings pnBackprojectionDefaults(float bias) {
                                   PN_BACKPROJECTION_DEFAULT_THICKNESS);
 }
 
-// The wall of node `q` of `level` (a texel at level 0; depth d, window W(d); lo, hi: its square
-// relative to the receiver) toward its neighbour node in direction `dir`, if deeper (its min): down
-// to the neighbour where the surface continues into it (depth step <= gap texel widths), down to
-// thickness · (dP - d) below d at a silhouette. Returns the loop iterations spent.
-int pn_backprojectNodeWall(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness,
-                           int level, ivec2 q, ivec2 dir, float d, float window, vec2 lo, vec2 hi, int side,
-                           inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  float dP = receiver.z;
-  float neighbour = pnMipFetch(mip, level, q + dir).x;  // +Inf outside the map
-  if (!(neighbour > d)) return 0;
-  float step = gap * pnLightTexelWorld(light, d);
-  float bottom = neighbour - d <= step ? neighbour : min(neighbour, d + thickness * (dP - d));
-  float deepest = min(bottom, dP - bias);  // only what lies in front of the receiver blocks
-  if (!(deepest > d)) return 0;
-  int a = dir.x != 0 ? 0 : 1;
-  float edge = (dir[a] > 0 ? hi : lo)[a];
-  return pn_backprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, dP, deepest), window,
-                            side, mask);
-}
-
-// Node `q` of `level` as one flat patch at depth d (lo, hi: its square relative to the receiver) with
-// its four walls (written out, not a loop: Mesa's llvmpipe counts every loop iteration of an
-// invocation against one limit, backprojection.h). Exact for a texel (level 0); for a larger node,
-// the estimate of its surface. Returns the loop iterations spent (its walls').
-int pn_backprojectNode(sampler2D mip, PnLight light, vec3 receiver, float bias, float gap, float thickness, int level,
-                       ivec2 q, float d, vec2 lo, vec2 hi, int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  float window = pnLightBlockerWindowTexels(light, receiver.z, d);
-  pn_backprojectPatch(lo, hi, window, side, mask);
-  int spent = pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(1, 0), d, window, lo, hi,
-                                 side, mask);
-  spent += pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(-1, 0), d, window, lo, hi,
-                                  side, mask);
-  spent += pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, 1), d, window, lo, hi,
-                                  side, mask);
-  spent += pn_backprojectNodeWall(mip, light, receiver, bias, gap, thickness, level, q, ivec2(0, -1), d, window, lo, hi,
-                                  side, mask);
-  return spent;
-}
-
 // The node after `node` in depth-first order once its subtree is done: its next sibling (children
 // in the order (0,0), (1,0), (0,1), (1,1)), else its parent's next, and so on; level top + 1 when
 // none is left. No loop: the levels to climb are the node's trailing (1, 1) children, the trailing
@@ -186,48 +147,84 @@ vec2 pn_backprojectionSlab(vec2 range, vec2 back, float dP, float bias) {
   return vec2(top, b > top ? min(b, dP - bias) : top);
 }
 
-// The wall of `slab` (top, bottom) of node q of `level` (lo, hi: its square relative to the
-// receiver) on its edge toward the neighbour node in direction `dir`: only the depths the
-// neighbour's slab does not cover — above the neighbour's top, below its bottom — since a ray
-// that meets the union of the slabs leaves it through a face no other slab covers. Returns the
-// loop iterations spent.
-int pn_backprojectSlabWall(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver, float bias, int level,
-                           ivec2 q, ivec2 dir, vec2 slab, float window, vec2 lo, vec2 hi, int side,
-                           inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  vec2 neighbour = pn_backprojectionSlab(pnMipFetch(mip, level, q + dir), pnMipFetch(secondMip, level, q + dir),
-                                         receiver.z, bias);
-  int a = dir.x != 0 ? 0 : 1, spent = 0;
-  float edge = dir[a] > 0 ? hi[a] : lo[a];
-  float upper = min(neighbour.x, slab.y);  // exposed from the top down to here
-  if (upper > slab.x)
-    spent += pn_backprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, receiver.z, upper),
-                                window, side, mask);
-  float lower = max(neighbour.y, slab.x);  // and from here down to the bottom
-  if (slab.y > lower)
-    spent += pn_backprojectWall(a, edge, lo[1 - a], hi[1 - a], pnLightBlockerWindowTexels(light, receiver.z, slab.y),
-                                pnLightBlockerWindowTexels(light, receiver.z, lower), side, mask);
-  return spent;
+// The wall of node q of `level` on its edge toward the neighbour node in direction `dir`, as up
+// to two pieces, each the windows (near, far) on the light of its bottom and its top: .xy and .zw,
+// far 0 where there is none. `slab`: the node's (top, bottom); `window`: its patch's.
+//   Over slabs: only the depths the neighbour's slab does not cover — from the top down to the
+//   neighbour's top, and from its bottom down to the node's — since a ray that meets the union of
+//   the slabs leaves it through a face no other slab covers.
+//   Else (the gap rule; slab = (d, d)): toward a neighbour deeper than d (its min), down to it where
+//   the surface continues into it (a step of at most gap texel widths), down to thickness · (dP - d)
+//   below d at a silhouette; only what lies in front of the receiver blocks.
+vec4 pn_backprojectionWallPieces(sampler2D mip, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
+                                 float bias, float gap, float thickness, int level, ivec2 q, ivec2 dir, vec2 slab,
+                                 float window) {
+  float dP = receiver.z;
+  if (slabs) {
+    vec2 neighbour = pn_backprojectionSlab(pnMipFetch(mip, level, q + dir), pnMipFetch(secondMip, level, q + dir),
+                                           dP, bias);
+    float upper = min(neighbour.x, slab.y);  // exposed from the top down to here
+    float lower = max(neighbour.y, slab.x);  // and from here down to the bottom
+    return vec4(upper > slab.x ? vec2(pnLightBlockerWindowTexels(light, dP, upper), window) : vec2(0.0),
+                slab.y > lower ? vec2(pnLightBlockerWindowTexels(light, dP, slab.y),
+                                      pnLightBlockerWindowTexels(light, dP, lower))
+                               : vec2(0.0));
+  }
+  float d = slab.x;
+  float neighbour = pnMipFetch(mip, level, q + dir).x;  // +Inf outside the map
+  if (!(neighbour > d)) return vec4(0.0);
+  float step = gap * pnLightTexelWorld(light, d);
+  float bottom = neighbour - d <= step ? neighbour : min(neighbour, d + thickness * (dP - d));
+  float deepest = min(bottom, dP - bias);
+  return deepest > d ? vec4(pnLightBlockerWindowTexels(light, dP, deepest), window, 0.0, 0.0) : vec4(0.0);
 }
 
-// Node q of `level` as a slab (pn_backprojectionSlab of its ranges): its patch at the top and the
-// exposed parts of its four walls (written out, not a loop: llvmpipe's limit, backprojection.h).
-// Exact for a texel (level 0); for a larger node, the estimate of what it holds. Returns the
-// loop iterations spent.
-int pn_backprojectSlabNode(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver, float bias, int level,
-                           ivec2 q, vec2 range, vec2 back, vec2 lo, vec2 hi, int side,
-                           inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  vec2 slab = pn_backprojectionSlab(range, back, receiver.z, bias);
+// Bit 2 d + i: piece i of direction d's wall (d: +x, -x, +y, -y) has samples to test.
+uint pn_backprojectionWallBits(vec4 east, vec4 west, vec4 north, vec4 south, vec2 lo, vec2 hi) {
+  bvec4 first = bvec4(pn_backprojectionWallTests(hi.x, east.y), pn_backprojectionWallTests(lo.x, west.y),
+                      pn_backprojectionWallTests(hi.y, north.y), pn_backprojectionWallTests(lo.y, south.y));
+  bvec4 second = bvec4(pn_backprojectionWallTests(hi.x, east.w), pn_backprojectionWallTests(lo.x, west.w),
+                       pn_backprojectionWallTests(hi.y, north.w), pn_backprojectionWallTests(lo.y, south.w));
+  uvec4 bits = uvec4(first) | (uvec4(second) << 1u);
+  return bits.x | (bits.y << 2u) | (bits.z << 4u) | (bits.w << 6u);
+}
+
+// Node q of `level` as its patch at the top of `slab` (top, bottom) and its four walls' pieces
+// (pn_backprojectionWallPieces; none where the slab is flat). Exact for a texel (level 0); for a
+// larger node, the estimate of what it holds. The pieces are found written out (a loop's
+// iterations would count against llvmpipe's limit, backprojection.h); their samples are tested in
+// one loop over every (piece, mask word), so that a GPU holds one copy of a wall's test, not four
+// or eight (docs/isa.md) — the same iterations the pieces' own word loops ran. Returns the samples
+// tested.
+int pn_backprojectNode(sampler2D mip, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver, float bias,
+                       float gap, float thickness, int level, ivec2 q, vec2 slab, vec2 lo, vec2 hi, int side,
+                       inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   float window = pnLightBlockerWindowTexels(light, receiver.z, slab.x);
   pn_backprojectPatch(lo, hi, window, side, mask);
-  if (!(slab.y > slab.x)) return 0;
-  int spent = pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(1, 0), slab, window, lo, hi,
-                                     side, mask);
-  spent += pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(-1, 0), slab, window, lo, hi,
-                                  side, mask);
-  spent += pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(0, 1), slab, window, lo, hi,
-                                  side, mask);
-  spent += pn_backprojectSlabWall(mip, secondMip, light, receiver, bias, level, q, ivec2(0, -1), slab, window, lo, hi,
-                                  side, mask);
+  if (slabs && !(slab.y > slab.x)) return 0;
+  vec4 east = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+                                          ivec2(1, 0), slab, window);
+  vec4 west = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+                                          ivec2(-1, 0), slab, window);
+  vec4 north = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+                                           ivec2(0, 1), slab, window);
+  vec4 south = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+                                           ivec2(0, -1), slab, window);
+  uint walls = pn_backprojectionWallBits(east, west, north, south, lo, hi);
+  int words = (side * side + 31) / 32, w = 0, spent = 0;
+  for (int i = 0; i < 8 * PN_BACKPROJECTION_MASK_WORDS && walls != 0u; ++i) {
+    int piece = findLSB(walls), d = piece >> 1, a = d >> 1;
+    vec4 pieces = d == 0 ? east : d == 1 ? west : d == 2 ? north : south;
+    vec2 windows = (piece & 1) == 0 ? pieces.xy : pieces.zw;  // (near, far)
+    float edge = (d & 1) == 0 ? hi[a] : lo[a];
+    ivec4 cells = pn_backprojectionWallCells(a, edge, lo[1 - a], hi[1 - a], windows.x, windows.y, side);
+    spent += pn_backprojectWallWord(w, pn_backprojectionBox(w, cells, side) & ~mask[w], a, edge, lo[1 - a], hi[1 - a],
+                                    windows.x, windows.y, side, mask);
+    if (++w == words) {
+      w = 0;
+      walls &= walls - 1u;
+    }
+  }
   return spent;
 }
 
@@ -251,7 +248,7 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
   ivec3 node = ivec3(top, 0, 0);  // (level, node x, node y)
   int visited = 0, work = 0;      // nodes; loop iterations in all (PN_BACKPROJECTION_MAX_WORK)
   for (int step = 0; step < PN_BACKPROJECTION_MAX_BUDGET + PN_BACKPROJECTION_TAIL && node.x <= top; ++step) {
-    vec2 range = pnMipFetch(mip, node.x, node.yz);
+    vec2 range = pn_mipNodeInside(mip, node.x, node.yz);  // every node the walk visits lies in the chain
     ++visited;
     ++work;
     bool resolve = false;
@@ -263,7 +260,7 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
       bool within = !(any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach))));
       if (within) {
         // The second layer's (min, max) over the node (slabs); a uniform one (+Inf alike) spreads 0.
-        vec2 back = slabs ? pnMipFetch(secondMip, node.x, node.yz) : vec2(0.0);
+        vec2 back = slabs ? pn_mipNodeInside(secondMip, node.x, node.yz) : vec2(0.0);
         float spread = max(range.y - range.x,
                            back.y == back.x ? 0.0 : (back.y - back.x) / PN_BACKPROJECTION_SECOND_LAYER_TOLERANCE);
         // A node is resolved unless both layers' ranges are tight (a NaN spread resolves); a texel
@@ -275,13 +272,10 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
           // over slabs, a slab down to the middle of its second layer's range; else with walls toward the
           // neighbour nodes deeper than it, by the texels' rule applied to the nodes' mins.
           result.patches += node.x > 0 ? 1.0 : 0.0;
-          float depth = 0.5 * (range.x + min(range.y, dP - bias));
-          if (slabs)
-            work += pn_backprojectSlabNode(mip, secondMip, light, receiver, bias, node.x, node.yz, range, back, lo, hi,
-                                           side, mask);
-          else
-            work += pn_backprojectNode(mip, light, receiver, bias, s.gap, s.thickness, node.x, node.yz, depth, lo, hi,
-                                       side, mask);
+          vec2 slab = slabs ? pn_backprojectionSlab(range, back, dP, bias)
+                            : vec2(0.5 * (range.x + min(range.y, dP - bias)));
+          work += pn_backprojectNode(mip, secondMip, slabs, light, receiver, bias, s.gap, s.thickness, node.x, node.yz,
+                                     slab, lo, hi, side, mask);
         }
       }
     }

@@ -143,7 +143,7 @@ void pn_backprojectPatch(vec2 lo, vec2 hi, float window, int side, inout uint ma
   mask[7] |= pn_backprojectionBox(7, inside, side);
 }
 
-// The wall's test (pn_backprojectWall) for the candidate samples of word w: each one by one.
+// A wall's test (pn_backprojectionWallCells) for the candidate samples of word w: each one by one.
 // Returns the samples tested.
 int pn_backprojectWallWord(int w, uint candidates, int a, float edge, float from, float to, float near, float far,
                            int side, inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
@@ -161,14 +161,20 @@ int pn_backprojectWallWord(int w, uint candidates, int a, float edge, float from
   return tested;
 }
 
-// Sets the bit of every sample whose ray crosses the wall on the line where axis `a` equals `edge`,
-// between `from` and `to` on the other axis, at windows in [near, far] (the wall's depths). Only
-// the samples not yet set inside the wall's bounding box on the light are tested, one by one:
-// l[a] between edge / far and edge / near, l[b] = across / window between the extremes of
-// from and to over those windows. Returns the loop iterations spent (the samples tested).
-int pn_backprojectWall(int a, float edge, float from, float to, float near, float far, int side,
-                       inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
-  if (edge == 0.0 || !(far > 0.0)) return 0;
+// Whether a wall on the line where axis a equals `edge`, at windows up to `far`, has samples to
+// test: not on the receiver's own line (no ray crosses it there but along it), and in front of the
+// receiver (far > 0).
+bool pn_backprojectionWallTests(float edge, float far) {
+  return edge != 0.0 && far > 0.0;
+}
+
+// The bounding box on the light (fine cells, as pn_backprojectionCells) of the samples whose ray
+// crosses the wall on the line where axis `a` equals `edge`, between `from` and `to` on the other
+// axis, at windows in [near, far] (the wall's depths): l[a] between edge / far and edge / near,
+// l[b] = across / window between the extremes of from and to over those windows. A wall that
+// pn_backprojectionWallTests. pn_backprojectWallWord then tests the samples not yet set inside it,
+// word by word, one by one (backprojection.glsl's walk: one loop over every wall's words).
+ivec4 pn_backprojectionWallCells(int a, float edge, float from, float to, float near, float far, int side) {
   // |l| <= 1/2 for every sample: a bound past 1 (a window near 0) is the whole light.
   float la0 = edge / far, la1 = near > abs(edge) ? edge / near : sign(edge);
   vec2 lb = vec2(-1.0, 1.0);
@@ -179,11 +185,7 @@ int pn_backprojectWall(int a, float edge, float from, float to, float near, floa
   }
   vec2 lo = a == 0 ? vec2(min(la0, la1), lb.x) : vec2(lb.x, min(la0, la1));
   vec2 hi = a == 0 ? vec2(max(la0, la1), lb.y) : vec2(lb.y, max(la0, la1));
-  ivec4 cells = pn_backprojectionCells(lo, hi, side);
-  int tested = 0;
-  for (int w = 0; w < (side * side + 31) / 32; ++w)
-    tested += pn_backprojectWallWord(w, pn_backprojectionBox(w, cells, side) & ~mask[w], a, edge, from, to, near, far, side, mask);
-  return tested;
+  return pn_backprojectionCells(lo, hi, side);
 }
 
 #endif  // PENUMBRA_BACKPROJECTION_MASK_GLSL

@@ -53,8 +53,12 @@ const std::vector<ModuleCheck>& module_checks();
 // tall_blocker (the widest penumbrae: the longest walks, a wrong filter size shows most) and the texture fixtures step_edge (an edge), nonfinite (NaN and ±Inf texels) and boxes (a
 // scene-like map) — what another API or a transpiled copy can get wrong, since its programs are
 // the same for every fixture.
-std::vector<fixtures::SceneFixture> check_scenes(const CheckEnvironment& env);
-std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckEnvironment& env);
+std::vector<fixtures::SceneFixture> check_scenes(const CheckOptions& options);
+std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckOptions& options);
+inline std::vector<fixtures::SceneFixture> check_scenes(const CheckEnvironment& env) { return check_scenes(env.options); }
+inline std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckEnvironment& env) {
+  return check_texture_fixtures(env.options);
+}
 const ModuleCheck& find_module_check(const std::string& module);  // throws Error listing the modules
 
 }  // namespace pn
