@@ -98,17 +98,17 @@ const std::vector<ModuleCheck>& module_checks() {
   return checks;
 }
 
-std::vector<fixtures::SceneFixture> check_scenes(const CheckOptions& options) {
+std::vector<fixtures::SceneFixture> check_scenes(const CheckEnvironment& env) {
   std::vector<fixtures::SceneFixture> out;
   for (const fixtures::SceneFixture& f : fixtures::kScenes)
-    if (!options.quick || f.name == std::string_view("tall_blocker")) out.push_back(f);
+    if (!env.options.quick || f.name == std::string_view("tall_blocker")) out.push_back(f);
   return out;
 }
 
-std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckOptions& options) {
+std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckEnvironment& env) {
   std::vector<fixtures::TextureFixture> out;
   for (const fixtures::TextureFixture& f : fixtures::kTextureFixtures)
-    if (!options.quick || f.name == std::string_view("step_edge") || f.name == std::string_view("nonfinite") ||
+    if (!env.options.quick || f.name == std::string_view("step_edge") || f.name == std::string_view("nonfinite") ||
         f.name == std::string_view("boxes"))
       out.push_back(f);
   return out;

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "check/compare.h"
-#include "scenes.h"
-#include "texture_fixtures.h"
 #include "device/query_device.h"
 #include "modules/blur_face.h"
+#include "scenes.h"
 #include "shader/source_tree.h"
+#include "texture_fixtures.h"
 
 namespace pn {
 
@@ -50,15 +50,12 @@ struct ModuleCheck {
 const std::vector<ModuleCheck>& module_checks();
 
 // The scenes and texture fixtures a check loops over: all of them; with --quick the scene
-// tall_blocker (the widest penumbrae: the longest walks, a wrong filter size shows most) and the texture fixtures step_edge (an edge), nonfinite (NaN and ±Inf texels) and boxes (a
-// scene-like map) — what another API or a transpiled copy can get wrong, since its programs are
-// the same for every fixture.
-std::vector<fixtures::SceneFixture> check_scenes(const CheckOptions& options);
-std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckOptions& options);
-inline std::vector<fixtures::SceneFixture> check_scenes(const CheckEnvironment& env) { return check_scenes(env.options); }
-inline std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckEnvironment& env) {
-  return check_texture_fixtures(env.options);
-}
+// tall_blocker (the widest penumbrae: the longest walks; a wrong filter size shows most there) and
+// the texture fixtures step_edge (an edge), nonfinite (NaN and ±Inf texels) and boxes (a
+// scene-like map). Another API or a transpiled copy runs the same programs on every fixture, so
+// what it can get wrong shows on these.
+std::vector<fixtures::SceneFixture> check_scenes(const CheckEnvironment& env);
+std::vector<fixtures::TextureFixture> check_texture_fixtures(const CheckEnvironment& env);
 const ModuleCheck& find_module_check(const std::string& module);  // throws Error listing the modules
 
 }  // namespace pn
