@@ -179,12 +179,22 @@ vec4 pn_backprojectionWallPieces(sampler2D mip, sampler2D secondMip, bool slabs,
   return deepest > d ? vec4(pnLightBlockerWindowTexels(light, dP, deepest), window, 0.0, 0.0) : vec4(0.0);
 }
 
+// The edge of the node's square [lo, hi] (relative to the receiver) that direction d's wall stands on
+// (d: +x, -x, +y, -y): the line where axis d >> 1 equals it.
+float pn_backprojectionWallEdge(int d, vec2 lo, vec2 hi) {
+  int a = d >> 1;
+  float edge = (d & 1) == 0 ? hi[a] : lo[a];
+  return edge;
+}
+
 // Bit 2 d + i: piece i of direction d's wall (d: +x, -x, +y, -y) has samples to test.
 uint pn_backprojectionWallBits(vec4 east, vec4 west, vec4 north, vec4 south, vec2 lo, vec2 hi) {
-  bvec4 first = bvec4(pn_backprojectionWallTests(hi.x, east.y), pn_backprojectionWallTests(lo.x, west.y),
-                      pn_backprojectionWallTests(hi.y, north.y), pn_backprojectionWallTests(lo.y, south.y));
-  bvec4 second = bvec4(pn_backprojectionWallTests(hi.x, east.w), pn_backprojectionWallTests(lo.x, west.w),
-                       pn_backprojectionWallTests(hi.y, north.w), pn_backprojectionWallTests(lo.y, south.w));
+  vec4 edges = vec4(pn_backprojectionWallEdge(0, lo, hi), pn_backprojectionWallEdge(1, lo, hi),
+                    pn_backprojectionWallEdge(2, lo, hi), pn_backprojectionWallEdge(3, lo, hi));
+  bvec4 first = bvec4(pn_backprojectionWallTests(edges.x, east.y), pn_backprojectionWallTests(edges.y, west.y),
+                      pn_backprojectionWallTests(edges.z, north.y), pn_backprojectionWallTests(edges.w, south.y));
+  bvec4 second = bvec4(pn_backprojectionWallTests(edges.x, east.w), pn_backprojectionWallTests(edges.y, west.w),
+                       pn_backprojectionWallTests(edges.z, north.w), pn_backprojectionWallTests(edges.w, south.w));
   uvec4 bits = uvec4(first) | (uvec4(second) << 1u);
   return bits.x | (bits.y << 2u) | (bits.z << 4u) | (bits.w << 6u);
 }
@@ -216,7 +226,7 @@ int pn_backprojectNode(sampler2D mip, sampler2D secondMip, bool slabs, PnLight l
     int piece = findLSB(walls), d = piece >> 1, a = d >> 1;
     vec4 pieces = d == 0 ? east : d == 1 ? west : d == 2 ? north : south;
     vec2 windows = (piece & 1) == 0 ? pieces.xy : pieces.zw;  // (near, far)
-    float edge = (d & 1) == 0 ? hi[a] : lo[a];
+    float edge = pn_backprojectionWallEdge(d, lo, hi);
     ivec4 cells = pn_backprojectionWallCells(a, edge, lo[1 - a], hi[1 - a], windows.x, windows.y, side);
     spent += pn_backprojectWallWord(w, pn_backprojectionBox(w, cells, side) & ~mask[w], a, edge, lo[1 - a], hi[1 - a],
                                     windows.x, windows.y, side, mask);

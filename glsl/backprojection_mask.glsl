@@ -171,9 +171,10 @@ bool pn_backprojectionWallTests(float edge, float far) {
 // The bounding box on the light (fine cells, as pn_backprojectionCells) of the samples whose ray
 // crosses the wall on the line where axis `a` equals `edge`, between `from` and `to` on the other
 // axis, at windows in [near, far] (the wall's depths): l[a] between edge / far and edge / near,
-// l[b] = across / window between the extremes of from and to over those windows. A wall that
-// pn_backprojectionWallTests. pn_backprojectWallWord then tests the samples not yet set inside it,
-// word by word, one by one (backprojection.glsl's walk: one loop over every wall's words).
+// l[b] = across / window between the extremes of from and to over those windows. For a wall that
+// passes pn_backprojectionWallTests (far > 0, edge != 0: no division by zero); pn_backprojectWallWord
+// then tests the samples not yet set inside the box, word by word, one by one (backprojection.glsl's
+// walk: one loop over every wall's words).
 ivec4 pn_backprojectionWallCells(int a, float edge, float from, float to, float near, float far, int side) {
   // |l| <= 1/2 for every sample: a bound past 1 (a window near 0) is the whole light.
   float la0 = edge / far, la1 = near > abs(edge) ? edge / near : sign(edge);
