@@ -65,17 +65,17 @@
 //   PnBackprojectionSettings pnBackprojectionDefaults(float bias)   side 16 (256 samples), tolerance 0.05,
 //         budget PN_BACKPROJECTION_DEFAULT_BUDGET, gap 3 texel widths,
 //         thickness PN_BACKPROJECTION_DEFAULT_THICKNESS
-//   float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s)
-//         receiver = (u, v, d) as pnLightProject gives; mip: the map's min/max chain
+//   float pnBackprojection(sampler2D map, sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s)
+//         receiver = (u, v, d) as pnLightProject gives; map: the shadow map, mip: its min/max chain
 //         (minmax_mip.glsl); returns the visibility in [0, 1] (1: no surface, lit)
-//   PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver,
+//   PnBackprojection pnBackprojectionWork(sampler2D map, sampler2D mip, PnLight light, vec3 receiver,
 //         PnBackprojectionSettings s)   the same with its work: (visibility, blocked samples,
 //         nodes visited, patches that stood for nodes)
-//   float pnBackprojection(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver,
-//         PnBackprojectionSettings s)   the same over slabs: secondMip, the min/max chain
-//         (minmax_mip.glsl) of the map's second layer (its back faces), the surface behind the map's
-//   PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondMip, PnLight light,
-//         vec3 receiver, PnBackprojectionSettings s)   its work
+//   float pnBackprojection(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip,
+//         PnLight light, vec3 receiver, PnBackprojectionSettings s)   the same over slabs: secondMap,
+//         the map's second layer (its back faces), the surface behind the map's, and secondMip its chain
+//   PnBackprojection pnBackprojectionWork(sampler2D map, sampler2D mip, sampler2D secondMap,
+//         sampler2D secondMip, PnLight light, vec3 receiver, PnBackprojectionSettings s)   its work
 //   (and backprojection_mask.glsl's pnBackprojectionSample(k, side): light sample k, in [-1/2, 1/2]²)
 //
 // cost: per node visited one fetch, per texel four more (its neighbours); per
@@ -156,12 +156,13 @@ vec2 pn_backprojectionSlab(vec2 range, vec2 back, float dP, float bias) {
 //   Else (the gap rule; slab = (d, d)): toward a neighbour deeper than d (its min), down to it where
 //   the surface continues into it (a step of at most gap texel widths), down to thickness · (dP - d)
 //   below d at a silhouette; only what lies in front of the receiver blocks.
-vec4 pn_backprojectionWallPieces(sampler2D mip, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
+vec4 pn_backprojectionWallPieces(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
                                  float bias, float gap, float thickness, int level, ivec2 q, ivec2 dir, vec2 slab,
                                  float window) {
   float dP = receiver.z;
   if (slabs) {
-    vec2 neighbour = pn_backprojectionSlab(pnMipFetch(mip, level, q + dir), pnMipFetch(secondMip, level, q + dir),
+    vec2 neighbour = pn_backprojectionSlab(pnMipFetch(map, mip, level, q + dir),
+                                           pnMipFetch(secondMap, secondMip, level, q + dir),
                                            dP, bias);
     float upper = min(neighbour.x, slab.y);  // exposed from the top down to here
     float lower = max(neighbour.y, slab.x);  // and from here down to the bottom
@@ -171,7 +172,7 @@ vec4 pn_backprojectionWallPieces(sampler2D mip, sampler2D secondMip, bool slabs,
                                : vec2(0.0));
   }
   float d = slab.x;
-  float neighbour = pnMipFetch(mip, level, q + dir).x;  // +Inf outside the map
+  float neighbour = pnMipFetch(map, mip, level, q + dir).x;  // +Inf outside the map
   if (!(neighbour > d)) return vec4(0.0);
   float step = gap * pnLightTexelWorld(light, d);
   float bottom = neighbour - d <= step ? neighbour : min(neighbour, d + thickness * (dP - d));
@@ -206,19 +207,19 @@ uint pn_backprojectionWallBits(vec4 east, vec4 west, vec4 north, vec4 south, vec
 // one loop over every (piece, mask word), so that a GPU holds one copy of a wall's test, not four
 // or eight (docs/isa.md) — the same iterations the pieces' own word loops ran. Returns the samples
 // tested.
-int pn_backprojectNode(sampler2D mip, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver, float bias,
+int pn_backprojectNode(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver, float bias,
                        float gap, float thickness, int level, ivec2 q, vec2 slab, vec2 lo, vec2 hi, int side,
                        inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   float window = pnLightBlockerWindowTexels(light, receiver.z, slab.x);
   pn_backprojectPatch(lo, hi, window, side, mask);
   if (slabs && !(slab.y > slab.x)) return 0;
-  vec4 east = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+  vec4 east = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
                                           ivec2(1, 0), slab, window);
-  vec4 west = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+  vec4 west = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
                                           ivec2(-1, 0), slab, window);
-  vec4 north = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+  vec4 north = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
                                            ivec2(0, 1), slab, window);
-  vec4 south = pn_backprojectionWallPieces(mip, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
+  vec4 south = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
                                            ivec2(0, -1), slab, window);
   uint walls = pn_backprojectionWallBits(east, west, north, south, lo, hi);
   int words = (side * side + 31) / 32, w = 0, spent = 0;
@@ -238,9 +239,11 @@ int pn_backprojectNode(sampler2D mip, sampler2D secondMip, bool slabs, PnLight l
   return spent;
 }
 
-// The walk of both calls: texels as the gap rule's surface (slabs false; secondMip unread), or as
-// slabs down to the second layer, whose min/max chain secondMip is.
-PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
+// The walk of both calls: texels as the gap rule's surface (slabs false; secondMap and secondMip
+// unread), or as slabs down to the second layer, secondMap with its min/max chain secondMip. A
+// texel's depth is read from its map, a node's range from the chain (pn_mipNodeOrTexel: a level-1
+// node's is its level-2 ancestor's, a superset: it stands as a patch less often).
+PnBackprojection pn_backprojectionWalk(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
                                        PnBackprojectionSettings s) {
   float bias = s.bias;
   PnBackprojection result = PnBackprojection(1.0, 0.0, 0.0, 0.0);
@@ -258,7 +261,7 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
   ivec3 node = ivec3(top, 0, 0);  // (level, node x, node y)
   int visited = 0, work = 0;      // nodes; loop iterations in all (PN_BACKPROJECTION_MAX_WORK)
   for (int step = 0; step < PN_BACKPROJECTION_MAX_BUDGET + PN_BACKPROJECTION_TAIL && node.x <= top; ++step) {
-    vec2 range = pn_mipNodeInside(mip, node.x, node.yz);  // every node the walk visits lies in the chain
+    vec2 range = pn_mipNodeOrTexel(map, mip, node.x, node.yz);  // every node the walk visits lies in the chain
     ++visited;
     ++work;
     bool resolve = false;
@@ -270,7 +273,7 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
       bool within = !(any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach))));
       if (within) {
         // The second layer's (min, max) over the node (slabs); a uniform one (+Inf alike) spreads 0.
-        vec2 back = slabs ? pn_mipNodeInside(secondMip, node.x, node.yz) : vec2(0.0);
+        vec2 back = slabs ? pn_mipNodeOrTexel(secondMap, secondMip, node.x, node.yz) : vec2(0.0);
         float spread = max(range.y - range.x,
                            back.y == back.x ? 0.0 : (back.y - back.x) / PN_BACKPROJECTION_SECOND_LAYER_TOLERANCE);
         // A node is resolved unless both layers' ranges are tight (a NaN spread resolves); a texel
@@ -284,7 +287,7 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
           result.patches += node.x > 0 ? 1.0 : 0.0;
           vec2 slab = slabs ? pn_backprojectionSlab(range, back, dP, bias)
                             : vec2(0.5 * (range.x + min(range.y, dP - bias)));
-          work += pn_backprojectNode(mip, secondMip, slabs, light, receiver, bias, s.gap, s.thickness, node.x, node.yz,
+          work += pn_backprojectNode(map, mip, secondMap, secondMip, slabs, light, receiver, bias, s.gap, s.thickness, node.x, node.yz,
                                      slab, lo, hi, side, mask);
         }
       }
@@ -299,21 +302,23 @@ PnBackprojection pn_backprojectionWalk(sampler2D mip, sampler2D secondMip, bool 
   return result;
 }
 
-PnBackprojection pnBackprojectionWork(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
-  return pn_backprojectionWalk(mip, mip, false, light, receiver, s);
-}
-
-PnBackprojection pnBackprojectionWork(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver,
+PnBackprojection pnBackprojectionWork(sampler2D map, sampler2D mip, PnLight light, vec3 receiver,
                                       PnBackprojectionSettings s) {
-  return pn_backprojectionWalk(mip, secondMip, true, light, receiver, s);
+  return pn_backprojectionWalk(map, mip, map, mip, false, light, receiver, s);
 }
 
-float pnBackprojection(sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
-  return pnBackprojectionWork(mip, light, receiver, s).visibility;
+PnBackprojection pnBackprojectionWork(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip,
+                                      PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+  return pn_backprojectionWalk(map, mip, secondMap, secondMip, true, light, receiver, s);
 }
 
-float pnBackprojection(sampler2D mip, sampler2D secondMip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
-  return pnBackprojectionWork(mip, secondMip, light, receiver, s).visibility;
+float pnBackprojection(sampler2D map, sampler2D mip, PnLight light, vec3 receiver, PnBackprojectionSettings s) {
+  return pnBackprojectionWork(map, mip, light, receiver, s).visibility;
+}
+
+float pnBackprojection(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, PnLight light,
+                       vec3 receiver, PnBackprojectionSettings s) {
+  return pnBackprojectionWork(map, mip, secondMap, secondMip, light, receiver, s).visibility;
 }
 
 #endif  // PENUMBRA_BACKPROJECTION_GLSL

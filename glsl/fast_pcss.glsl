@@ -34,7 +34,7 @@
 //   same sums, so the same result bit for bit as traversal_mip.glsl's.
 //
 // use:
-//   float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
+//   float pnFastPcss(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
 //                    PnFastPcssSettings settings)
 //         receiver = (u, v, d): shadow-map texels (continuous) and linear light depth, as
 //         pnLightProject gives (light_model.glsl); pixel = the screen pixel (gl_FragCoord.xy
@@ -45,9 +45,10 @@
 //         decides a node against the plane's range over it (traversal.glsl); 0 is the call above
 //   PnFastPcssSettings pnFastPcssDefaults(float bias)     the shipped settings (fast_pcss.h)
 //   PnFastPcssResult pnFastPcssEstimate(...same parameters, either form...)   visibility and what led to it
-//   mip: minmax_mip.glsl's chain of the map (RGBA32F, built per frame: pnMipLevel0Texel,
+//   map: the shadow map (linear light depth, or as PN_MIP_LEVEL0_DEPTH reads it: minmax_mip.glsl);
+//   mip: minmax_mip.glsl's chain of it (RGBA32F, 0.17× the map, built per frame: pnMipFirstTexel,
 //        pnMipCombineTexel); sampleTable: sample_table.glsl's 21×8 RG32F table
-//        (`penumbra sample-table` prints it), both read with texelFetch only.
+//        (`penumbra sample-table` prints it), all read with texelFetch only.
 //
 // options:
 //   PN_FAST_PCSS_ABLATIONS   defined before the include: the settings' ablation fields (regionMode,
@@ -155,13 +156,13 @@ bool pn_fastPcssShipped(PnFastPcssSettings s) {
 // unrolled ones cost the walk's every step. (llvmpipe counts every loop run of an invocation
 // against one limit of 65,535: a 16-sample leaf is 17 runs here, 4 in the general walk — far
 // below it at the sizes rendered and checked, 2048² maps at ×8 included.)
-void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleTable, int first, int m, ivec2 lo,
+void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D map, sampler2D sampleTable, int first, int m, ivec2 lo,
                            ivec2 size, PnTraversalTest test, int set) {
   float occluding = 0.0, depthSum = 0.0;
   vec2 scale = vec2(size);  // size >= 1: a leaf's part is never empty
   for (int i = 0; i < m; ++i) {
     ivec2 p = pn_sampleTexelIn(texelFetch(sampleTable, ivec2(first + i, set), 0).rg, lo, scale);
-    float d = pn_mipNodeInside(mip, 0, p).x;
+    float d = pnMipMapDepth(map, p);
     if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
       occluding += 1.0;
       depthSum += d;
@@ -181,7 +182,7 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D mip, sampler2D sampleT
 // leafSide sampled, nodes above it descended (no budget; leaf side 1 descends to the texels, one a
 // step, where the general walk visits a level-1 node's four at once).
 // Step 4's midpoint sums are kept in Step 5 too, where nothing reads them.
-PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                             vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
   // Lit after Step 3: no region. The loop's condition reads data, not a constant count alone, so
@@ -222,7 +223,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
       t.nodes += 1;
       bool descend = false;
       if (all(lessThan(lo, hi))) {
-        vec2 depths = pn_mipNodeInside(mip, level, origin >> level);
+        vec2 depths = pn_mipNodeAt(mip, level, origin);
         t.fetches += 1;
         vec2 threshold = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, lo, hi);
         ivec2 part = hi - lo;
@@ -234,7 +235,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
           t.depthSum += (depths.x == depths.y ? depths.x : 0.5 * (depths.x + depths.y)) * texels;
         } else if (depths.x < threshold.y) {  // ambiguous
           descend = (1 << level) > leafSide;
-          if (!descend) pn_fastPcssSampleLeaf(t, mip, sampleTable, first, m, lo, part, test, set);
+          if (!descend) pn_fastPcssSampleLeaf(t, map, sampleTable, first, m, lo, part, test, set);
         }
       }
       if (pn_traversalCursorNext(node, level, descend, top)) break;  // the virtual root's last child done
@@ -253,10 +254,10 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D mip, sampler2D sampleTable
 #ifdef PN_FAST_PCSS_ABLATIONS
 // The bounded-work ablation's count of an entry's region (settings.grid > 0): pnGridRegionMip's
 // grid (Step 4 with depth sums, Step 5 without).
-PnTraversal pn_fastPcssGrid(sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
+PnTraversal pn_fastPcssGrid(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
                             PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
-  return pnGridRegionMip(mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
+  return pnGridRegionMip(map, mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
                          s.grid, s.leafSide, leafMode, depthSums, pixel);
 }
 
@@ -270,7 +271,7 @@ PnTraversalWalk pn_fastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTra
 
 // Any settings (PN_FAST_PCSS_ABLATIONS): traversal_mip.glsl's walk, with its budget, leaf modes,
 // windows and table sums, or the grid.
-PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                               vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   int n = int(light.mapSize);
   PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
@@ -278,11 +279,11 @@ PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D mip, sampler2D sampleTab
 
   int blockerLeafMode = s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE ? s.leafMode : s.blockerLeafMode;
   if (s.grid > 0) {  // the bounded-work ablation: two grid passes
-    PnTraversal blockers = pn_fastPcssGrid(mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
+    PnTraversal blockers = pn_fastPcssGrid(map, mip, sampleTable, n, r.searchEntry, receiverPlane, s, blockerLeafMode,
                                            s.depthSums, pixel);
     pn_fastPcssBlockersDone(r, blockers, light, s);
     if (pnEntryLit(r.filterEntry)) return r;
-    pn_fastPcssOcclusionDone(r, pn_fastPcssGrid(mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
+    pn_fastPcssOcclusionDone(r, pn_fastPcssGrid(map, mip, sampleTable, n, r.filterEntry, receiverPlane, s, s.leafMode,
                                               PN_DEPTH_SUMS_NONE, pixel));
     return r;
   }
@@ -299,7 +300,7 @@ PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D mip, sampler2D sampleTab
   bool blockers = true;
   int limit = max(w.iterations, 1);
   for (int it = 0; it < limit; ++it) {
-    pn_traversalWalkStep(w, mip, shape, sampleTable, test, leafSide, blockers ? blockerLeafMode : s.leafMode, budget,
+    pn_traversalWalkStep(w, map, mip, shape, sampleTable, test, leafSide, blockers ? blockerLeafMode : s.leafMode, budget,
                          blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
     if (!w.done && it + 1 < limit) continue;
     if (!blockers) {  // Step 5 is over
@@ -317,27 +318,27 @@ PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D mip, sampler2D sampleTab
 
 #endif  // PN_FAST_PCSS_ABLATIONS
 
-PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+PnFastPcssResult pnFastPcssEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                     vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
 #ifdef PN_FAST_PCSS_ABLATIONS
-  if (!pn_fastPcssShipped(s)) return pn_fastPcssAblationsEstimate(mip, sampleTable, light, receiver, receiverPlane, pixel, s);
+  if (!pn_fastPcssShipped(s)) return pn_fastPcssAblationsEstimate(map, mip, sampleTable, light, receiver, receiverPlane, pixel, s);
 #endif
-  return pn_fastPcssShippedEstimate(mip, sampleTable, light, receiver, receiverPlane, pixel, s);
+  return pn_fastPcssShippedEstimate(map, mip, sampleTable, light, receiver, receiverPlane, pixel, s);
 }
 
-PnFastPcssResult pnFastPcssEstimate(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
-                                    PnFastPcssSettings s) {
-  return pnFastPcssEstimate(mip, sampleTable, light, receiver, vec2(0.0), pixel, s);
+PnFastPcssResult pnFastPcssEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
+                                    ivec2 pixel, PnFastPcssSettings s) {
+  return pnFastPcssEstimate(map, mip, sampleTable, light, receiver, vec2(0.0), pixel, s);
 }
 
-float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, vec2 receiverPlane, ivec2 pixel,
+float pnFastPcss(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, vec2 receiverPlane,
+                 ivec2 pixel, PnFastPcssSettings settings) {
+  return pnFastPcssEstimate(map, mip, sampleTable, light, receiver, receiverPlane, pixel, settings).visibility;
+}
+
+float pnFastPcss(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
                  PnFastPcssSettings settings) {
-  return pnFastPcssEstimate(mip, sampleTable, light, receiver, receiverPlane, pixel, settings).visibility;
-}
-
-float pnFastPcss(sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,
-                 PnFastPcssSettings settings) {
-  return pnFastPcssEstimate(mip, sampleTable, light, receiver, pixel, settings).visibility;
+  return pnFastPcssEstimate(map, mip, sampleTable, light, receiver, pixel, settings).visibility;
 }
 
 #endif  // PENUMBRA_FAST_PCSS_GLSL

@@ -3,16 +3,20 @@
 // pnTraverseRegionMip), at 4/3 of the map's texels.
 //
 // description:
-//   Issue 11 item 2 (b), SPEC §4.1 "beyond the paper". For an N×N map, P is
-//   the least power of two >= N; level i (0 <= i <= log2 P) holds, for every
-//   aligned node [c·2^i, (c+1)·2^i) on each axis (0 <= c < P / 2^i), the
+//   Issue 11 item 2 (b), SPEC §4.1 "beyond the paper"; issue 50 item 4 (the chain
+//   from level 2: 0.17× the map). For an N×N map, P is the least power of two
+//   >= max(N, 4); level i (0 <= i <= log2 P) has, for every aligned node
+//   [c·2^i, (c+1)·2^i) on each axis (0 <= c < P / 2^i), the
 //     (min, max) of depth over the node's texels that lie in the map
-//   (+Inf, -Inf) for a node wholly outside it. Level 0 texel p is
-//   (d, d), d the sanitized depth (non-finite -> +Inf, "no occluder", SPEC §3),
-//   or (+Inf, -Inf) for p outside the map (the padding up to P); level i
-//   texel c combines level i-1's texels 2c + {0,1}²: min of mins and max of
-//   maxes, exact, and the padding's identities make every node's pair the
-//   min / max of exactly its texels in the map, for any N.
+//   (+Inf, -Inf) for a node wholly outside it; depth sanitized (non-finite ->
+//   +Inf, "no occluder", SPEC §3). Levels 0 and 1 are the map itself: the chain
+//   keeps the levels from PN_MIP_FIRST_LEVEL (2, minmax_mip.h) up — the first
+//   from the map's 4×4 texels, level i from level i-1's four children: min of
+//   mins and max of maxes, exact, and the padding's identities make every
+//   node's pair the min / max of exactly its texels in the map, for any N.
+//   A walk reads a node below level 2 as its level-2 ancestor (a superset: a
+//   decision made from it is right, an undecided node is descended or its
+//   texels read from the map), and a texel's depth from the map (pnMipMapDepth).
 //   Unlike the decreased pyramid (depth_pyramid.glsl: every window origin,
 //   N² texels a level) only aligned nodes are kept, so a region of any
 //   origin is covered by the 2×2 aligned nodes of level ceil(log2 side)
@@ -21,42 +25,47 @@
 //   (summed_area.glsl), exact over any clipped rectangle.
 //
 // storage:
-//   sampler2D, RGBA32F, (P/2)×P with log2 P + 1 mip levels; level i holds its
-//   (P / 2^i)² nodes two to a texel: texel (c, r) = (min, max) of node
-//   (2c, r) in .xy and of node (2c + 1, r) in .zw (the top level's one node
-//   in .xy, (+Inf, -Inf) in .zw). No channel is unused and one fetch reads a
-//   node, as a two-channel RG32F chain would — but rgba32f is an image format
-//   GLSL ES 3.10 can store, rg32f is not. 8 · 4/3 · P² bytes: 10.7 MiB at
-//   1024², 42.7 MiB at 2048².
+//   sampler2D, RGBA32F, (P/8)×(P/4) with log2 P - 1 mip levels: mip level k holds node level
+//   k + 2, its (P / 2^(k+2))² nodes two to a texel: texel (c, r) = (min, max) of node (2c, r) in
+//   .xy and of node (2c + 1, r) in .zw (the top level's one node in .xy, (+Inf, -Inf) in .zw). No
+//   channel is unused and one fetch reads a node, as a two-channel RG32F chain would — but rgba32f
+//   is an image format GLSL ES 3.10 can store, rg32f is not. 8 · P²/12 bytes: 0.17× a 32-bit map
+//   of side P (10.7 MiB at 4096²).
 //
 // use:
-//   vec2 pnMipFetch(sampler2D mip, int level, ivec2 node)   (min, max) of aligned node `node`
-//        of `level`; (+Inf, -Inf) for a node outside the chain (no read is out of bounds)
-//   int  pnMipMaxLevel(sampler2D mip)                        log2 P
-//   vec2 pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side)
-//        (min, max) over a superset of the side×side square at origin, clipped
-//        to the map: the union of the aligned nodes of level ceil(log2 side) - 1
-//        it touches (at most 3×3 fetches; exact for side 1). The min never
-//        exceeds the square's: a lit decision made from it is conservative.
-//   build: vec4 pnMipLevel0Texel(sampler2D shadowMap, ivec2 texel)          level 0's texel
+//   vec2  pnMipFetch(sampler2D map, sampler2D mip, int level, ivec2 node)   (min, max) of aligned
+//         node `node` of `level`: exact from level 2 up and at level 0 (the texel, from the map),
+//         its level-2 ancestor's at level 1 (a superset); (+Inf, -Inf) outside the map (no read
+//         is out of bounds)
+//   float pnMipMapDepth(sampler2D map, ivec2 p)   texel p's depth as the chain holds it (sanitized)
+//   int   pnMipMaxLevel(sampler2D mip)            log2 P
+//   vec2  pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side)
+//         (min, max) over a superset of the side×side square at origin, clipped
+//         to the map: the union of the aligned nodes of level max(ceil(log2 side) - 1, 2)
+//         it touches (at most 3×3 fetches). The min never exceeds the square's: a lit
+//         decision made from it is conservative.
+//   build: vec4 pnMipFirstTexel(sampler2D shadowMap, ivec2 texel)           the first level's texel
 //          vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel)   level's texel from level - 1
 //
 // options:
-//   PN_MIP_LEVEL0_DEPTH(value)   how a texel of the map becomes linear light depth in the build
-//                                (default: as it is); below
+//   PN_MIP_LEVEL0_DEPTH(value)   how a texel of the map becomes linear light depth, in the build
+//                                and wherever a texel is read (default: as it is); below
 //
-// cost: build: per texel of level 0 two fetches of the map, per texel above
-//   four fetches of the level below (log2 P + 1 dispatches); a node read:
+// cost: build: per texel of the first level 32 fetches of the map, per texel above
+//   four fetches of the level below (log2 P - 1 dispatches); a node read:
 //   1 fetch; a square: <= 9 fetches.
 
 #ifndef PENUMBRA_MINMAX_MIP_GLSL
 #define PENUMBRA_MINMAX_MIP_GLSL
 
+#include "minmax_mip.h"
+
 // A texel of the map as linear light depth: the map itself by default; an
-// engine that builds the chain straight from the light's hardware depth buffer
-// defines it before the include, e.g.
+// engine whose map is the light's hardware depth buffer defines it before the
+// include, e.g.
 //   #define PN_MIP_LEVEL0_DEPTH(value) pnLightDepthFromDepthBuffer(lightProjection, value, false)
-// (light_model.glsl), so level 0 is the first reduction and no linear copy is made.
+// (light_model.glsl): the build reduces the converted depths and every texel read converts its
+// own, so no linear copy of the map is made.
 #ifndef PN_MIP_LEVEL0_DEPTH
 #define PN_MIP_LEVEL0_DEPTH(value) (value)
 #endif
@@ -76,54 +85,72 @@ vec2 pn_mipEmpty() {
   return vec2(pn_mipFar(), -pn_mipFar());
 }
 
-int pnMipMaxLevel(sampler2D mip) {
-  return findMSB(max(textureSize(mip, 0).y, 1));
+// The depth of the map's texel p (inside it) as the chain holds it: PN_MIP_LEVEL0_DEPTH of the
+// texel, non-finite -> +Inf. What every leaf, texel and the build read.
+float pnMipMapDepth(sampler2D map, ivec2 p) {
+  float d = PN_MIP_LEVEL0_DEPTH(texelFetch(map, p, 0).r);
+  return (isnan(d) || isinf(d)) ? pn_mipFar() : d;
 }
 
-// The chain's height P (level 0's rows) and top level, read once by a caller that reads many
-// nodes: textureSize is an instruction of its own on a GPU, and the level arithmetic around it
-// would be repeated at every fetch (docs/isa.md).
+// P: rows of the chain's first level times its node side (at least 4: a smaller map's chain is
+// one node of 4×4 texels).
+int pn_mipPaddedSize(sampler2D mip) {
+  return textureSize(mip, 0).y << PN_MIP_FIRST_LEVEL;
+}
+
+int pnMipMaxLevel(sampler2D mip) {
+  return findMSB(max(pn_mipPaddedSize(mip), 1));
+}
+
+// The chain's padded side P and top level, read once by a caller that reads many nodes:
+// textureSize is an instruction of its own on a GPU, and the level arithmetic around it would be
+// repeated at every fetch (docs/isa.md).
 struct PnMipShape {
-  int rows;  // textureSize(mip, 0).y
+  int rows;  // P
   int top;   // pnMipMaxLevel(mip)
 };
 
 PnMipShape pn_mipShape(sampler2D mip) {
-  int rows = textureSize(mip, 0).y;
+  int rows = pn_mipPaddedSize(mip);
   return PnMipShape(rows, findMSB(max(rows, 1)));
 }
 
-// Texel `texel` of `level` when `wanted`: two nodes' (min, max); both empty outside the level or
-// when not wanted. Without a branch: the fetch is made at a clamped texel and its value selected,
-// so a GPU runs no divergent code around it (docs/isa.md); PN_ON_TEXEL_FETCH counts only the
-// fetches whose value is used.
+// Texel `texel` of `level` (>= PN_MIP_FIRST_LEVEL) when `wanted`: two nodes' (min, max); both
+// empty outside the level or when not wanted. Without a branch: the fetch is made at a clamped
+// texel and its value selected, so a GPU runs no divergent code around it (docs/isa.md);
+// PN_ON_TEXEL_FETCH counts only the fetches whose value is used.
 vec4 pn_mipTexelIf(sampler2D mip, PnMipShape shape, int level, ivec2 texel, bool wanted) {
-  int l = clamp(level, 0, shape.top);
-  // The level's size from level 0's: textureSize with a level that differs
+  int l = clamp(level, PN_MIP_FIRST_LEVEL, shape.top);
+  // The level's size from the first's: textureSize with a level that differs
   // between invocations is not computed per invocation by every driver (llvmpipe).
   int rows = shape.rows >> l;
   ivec2 size = ivec2(max(rows >> 1, 1), rows);
   bool inside = wanted && all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
   if (inside) PN_ON_TEXEL_FETCH();
-  vec4 t = texelFetch(mip, clamp(texel, ivec2(0), max(size - 1, ivec2(0))), l);
+  vec4 t = texelFetch(mip, clamp(texel, ivec2(0), max(size - 1, ivec2(0))), l - PN_MIP_FIRST_LEVEL);
   return inside ? t : vec4(pn_mipEmpty(), pn_mipEmpty());
 }
 
-vec4 pn_mipTexelOf(sampler2D mip, PnMipShape shape, int level, ivec2 texel) {
-  return pn_mipTexelIf(mip, shape, level, texel, true);
-}
-
-vec4 pn_mipTexel(sampler2D mip, int level, ivec2 texel) {
-  return pn_mipTexelOf(mip, pn_mipShape(mip), level, texel);
-}
-
 // Node `node` of `level`, known to lie in the chain (0 <= node < P / 2^level on each axis, level
-// <= log2 P): one fetch, no bounds logic — for a walk whose nodes are inside by construction (Fast
-// PCSS's shipped call: nodes touching a region clipped to the map). Level 0 node p is texel p's
-// depth in .x (and .y).
-vec2 pn_mipNodeRead(sampler2D mip, int level, ivec2 node) {
-  vec4 t = texelFetch(mip, ivec2(node.x >> 1, node.y), level);
+// <= log2 P), bounded: its own (min, max) from level PN_MIP_FIRST_LEVEL up, below that its
+// ancestor's of that level — a superset, so a decision made from it (all below a threshold, none
+// below) is right for the node; one fetch, no branch, no bounds logic — for a walk whose nodes are
+// inside by construction (nodes touching a region clipped to the map). A node the bound leaves
+// undecided is descended, or its texels read from the map (pnMipMapDepth).
+vec2 pn_mipKeptNode(sampler2D mip, int level, ivec2 node) {  // level >= PN_MIP_FIRST_LEVEL
+  vec4 t = texelFetch(mip, ivec2(node.x >> 1, node.y), level - PN_MIP_FIRST_LEVEL);
   return (node.x & 1) != 0 ? t.zw : t.xy;
+}
+
+vec2 pn_mipNodeRead(sampler2D mip, int level, ivec2 node) {
+  int l = max(level, PN_MIP_FIRST_LEVEL);
+  return pn_mipKeptNode(mip, l, node >> (l - level));
+}
+
+// The same for the node of `level` that holds texel `texel`.
+vec2 pn_mipNodeAt(sampler2D mip, int level, ivec2 texel) {
+  int l = max(level, PN_MIP_FIRST_LEVEL);
+  return pn_mipKeptNode(mip, l, texel >> l);
 }
 
 vec2 pn_mipNodeInside(sampler2D mip, int level, ivec2 node) {
@@ -131,29 +158,59 @@ vec2 pn_mipNodeInside(sampler2D mip, int level, ivec2 node) {
   return pn_mipNodeRead(mip, level, node);
 }
 
-// Node `node` of `level`; the empty pair outside the level.
+// Node `node` of `level`, bounded as pn_mipNodeRead; the empty pair outside the level.
 vec2 pn_mipFetchOf(sampler2D mip, PnMipShape shape, int level, ivec2 node) {
+  int l = max(level, PN_MIP_FIRST_LEVEL);
+  ivec2 kept = node >> (l - level);
   int nodes = max(shape.rows >> clamp(level, 0, shape.top), 1);
-  vec4 t = pn_mipTexelIf(mip, shape, level, ivec2(node.x >> 1, node.y), node.x < nodes);
-  return (node.x & 1) != 0 ? t.zw : t.xy;
+  vec4 t = pn_mipTexelIf(mip, shape, l, ivec2(kept.x >> 1, kept.y), node.x < nodes && node.y < nodes);
+  return (kept.x & 1) != 0 ? t.zw : t.xy;
 }
 
-vec2 pnMipFetch(sampler2D mip, int level, ivec2 node) {
-  return pn_mipFetchOf(mip, pn_mipShape(mip), level, node);
+// Texel p of the map as a node, (d, d); empty outside the map (the padding).
+vec2 pn_mipMapTexel(sampler2D map, ivec2 p) {
+  ivec2 n = textureSize(map, 0);
+  bool inside = all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, n));
+  float d = pnMipMapDepth(map, clamp(p, ivec2(0), n - 1));
+  return inside ? vec2(d, d) : pn_mipEmpty();
 }
 
-// Level 0 node p of the map: (d, d), d sanitized; empty outside the map (the padding).
-vec2 pn_mipLevel0Node(sampler2D shadowMap, ivec2 p) {
+// Node `node` of `level` inside the chain (0 <= node < P / 2^level): a texel's (d, d) at level 0,
+// from the map (empty in the padding); above, pn_mipNodeRead's pair (level 1: its level-2
+// ancestor's). Both fetched and one selected, not branched on: back-projection's walls read four
+// or eight of these a node, and the branches cost it 10 % more instructions in its loop (docs/isa.md).
+vec2 pn_mipNodeOrTexel(sampler2D map, sampler2D mip, int level, ivec2 node) {
+  vec2 texel = pn_mipMapTexel(map, node), pair = pn_mipNodeRead(mip, level, node);
+  return level <= 0 ? texel : pair;
+}
+
+// The same for any node; empty outside the map.
+vec2 pnMipFetch(sampler2D map, sampler2D mip, int level, ivec2 node) {
+  vec2 texel = pn_mipMapTexel(map, node), pair = pn_mipFetchOf(mip, pn_mipShape(mip), level, node);
+  return level <= 0 ? texel : pair;
+}
+
+// The first level's node of `first` = (x, y) texels [4x, 4x + 4) × [4y, 4y + 4): the min / max
+// of its texels in the map, empty in the padding.
+vec2 pn_mipFirstNode(sampler2D shadowMap, ivec2 first) {
   ivec2 size = textureSize(shadowMap, 0);
-  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) return pn_mipEmpty();
-  float d = PN_MIP_LEVEL0_DEPTH(texelFetch(shadowMap, p, 0).r);
-  d = (isnan(d) || isinf(d)) ? pn_mipFar() : d;
-  return vec2(d, d);
+  int side = 1 << PN_MIP_FIRST_LEVEL;
+  ivec2 lo = first * side;
+  vec2 r = pn_mipEmpty();
+  for (int y = 0; y < side; ++y) {
+    for (int x = 0; x < side; ++x) {
+      ivec2 p = lo + ivec2(x, y);
+      if (any(greaterThanEqual(p, size))) continue;
+      float d = pnMipMapDepth(shadowMap, p);
+      r = vec2(min(r.x, d), max(r.y, d));
+    }
+  }
+  return r;
 }
 
-vec4 pnMipLevel0Texel(sampler2D shadowMap, ivec2 texel) {
-  return vec4(pn_mipLevel0Node(shadowMap, ivec2(2 * texel.x, texel.y)),
-              pn_mipLevel0Node(shadowMap, ivec2(2 * texel.x + 1, texel.y)));
+vec4 pnMipFirstTexel(sampler2D shadowMap, ivec2 texel) {
+  return vec4(pn_mipFirstNode(shadowMap, ivec2(2 * texel.x, texel.y)),
+              pn_mipFirstNode(shadowMap, ivec2(2 * texel.x + 1, texel.y)));
 }
 
 // One node from the two texels below it that hold its four children (each texel's two nodes).
@@ -161,8 +218,12 @@ vec2 pn_mipCombineNode(vec4 upper, vec4 lower) {
   return vec2(min(min(upper.x, upper.z), min(lower.x, lower.z)), max(max(upper.y, upper.w), max(lower.y, lower.w)));
 }
 
+vec4 pn_mipTexel(sampler2D mip, int level, ivec2 texel) {
+  return pn_mipTexelIf(mip, pn_mipShape(mip), level, texel, true);
+}
+
 vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel) {
-  int below = max(level, 1) - 1;
+  int below = max(level, PN_MIP_FIRST_LEVEL + 1) - 1;
   // Nodes 2c and 2c + 1 of this level: children 4c .. 4c + 3 below, texels 2c and 2c + 1 of rows 2r, 2r + 1.
   vec2 a = pn_mipCombineNode(pn_mipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y)),
                              pn_mipTexel(mip, below, ivec2(2 * texel.x, 2 * texel.y + 1)));
@@ -181,15 +242,16 @@ vec2 pn_mipUnion(vec2 a, vec2 b) {
 vec2 pn_mipSquareNode(sampler2D mip, int level, ivec2 first, ivec2 last, ivec2 offset) {
   ivec2 node = first + offset;
   if (all(lessThanEqual(node, last))) PN_ON_TEXEL_FETCH();
-  return pn_mipNodeRead(mip, level, min(node, last));
+  return pn_mipKeptNode(mip, level, min(node, last));
 }
 
 // (min, max) over the aligned nodes that touch [lo, hi), a non-empty rectangle inside the map
 // and the chain (lo < hi <= min(N, P)): pnMipSquareMinMax's cover, for a caller that clipped it.
 vec2 pn_mipRectMinMax(sampler2D mip, PnMipShape shape, ivec2 lo, ivec2 hi) {
   int s = max(hi.x - lo.x, hi.y - lo.y);
-  // Nodes of side 2^level >= s / 2: at most 3 touch the square on each axis.
-  int level = min(max(findMSB(s - 1), 0), shape.top);
+  // Nodes of side 2^level >= s / 2, and of the chain's first level at least: at most 3 touch the
+  // square on each axis.
+  int level = min(max(findMSB(s - 1), PN_MIP_FIRST_LEVEL), shape.top);
   ivec2 first = lo >> level;
   ivec2 last = (hi - ivec2(1)) >> level;
   // The 3×3 nodes from `first`, written out, not looped (llvmpipe runs a loop's control per

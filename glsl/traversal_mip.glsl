@@ -13,30 +13,33 @@
 //   ambiguous node descends, or at a leaf is estimated over its part (samples
 //   spread over the part). So a straddling node costs one fetch (plus 4 for
 //   the table), not a descent to the border: exact regions at the cost of
-//   windows. Level-1 nodes resolve their four texels at once. Leaf side 1 with
-//   the table is exact: counts equal brute force, the depth sum is exact up to
-//   float rounding of the per-node sums.
+//   windows. A node below the chain's first level (2) is decided by its level-2
+//   ancestor's (min, max), a superset (minmax_mip.glsl); level-1 nodes resolve
+//   their four texels at once, from the map, as leaves read theirs. Leaf side 1
+//   with the table is exact: counts equal brute force, the depth sum is exact
+//   up to float rounding of the per-node sums.
 //
 // use:
-//   PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize,
+//   PnTraversal pnTraverseRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide, int leafMode,
 //       int nodeBudget, int depthSums, ivec2 pixel)
-//       over minmax_mip.glsl's chain; depthSums: PN_DEPTH_SUMS_NONE / _TABLE / _MIDPOINT (traversal.h).
+//       over minmax_mip.glsl's chain `mip` of the map `map` (its texels: leaves, level-1 nodes);
+//       depthSums: PN_DEPTH_SUMS_NONE / _TABLE / _MIDPOINT (traversal.h).
 //   PnTraversal pnTraverseRegionMipPlane(... ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, ...)
 //       the same with a receiver plane (receiver_plane.glsl): receiver = (u, v, d), gradient = its
 //       light depth per texel; texel q occludes when d(q) < d - bias + gradient · (q + 1/2 - (u, v)),
 //       a node is decided against the plane's range over its part (pnReceiverPlaneThresholdRange,
 //       widened by rounding), a sampled leaf's sample against its own texel's threshold, a min or
 //       ramp leaf at its part's centre. Gradient 0 is pnTraverseRegionMip exactly.
-//   PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
-//       ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide, int leafMode,
+//   PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
+//       ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide, int leafMode,
 //       int depthSums, ivec2 pixel)
 //       bounded work (Fast PCSS's `grid`): the aligned nodes of the level whose side is the
 //       region's side / grid rounded up to a power of two — at most (grid + 1)² of them, 1 <= grid
 //       <= PN_GRID_MAX_CELLS (traversal.h) — each read once; an ambiguous node is a leaf, sampled
 //       with the table's group for min(its side, leafSide) (16: 16 samples, 4: 4, 1: 1) or estimated
 //       by leafMode. The work no longer grows with the region: the leaves along a shadow edge
-//       stay about 2·grid. grid >= the region's side: the nodes are texels, exact.
+//       stay about 2·grid. grid >= the region's side: the nodes are texels, sampled leaves exact.
 //       _TABLE reads summed_area.glsl's table of the map through PN_TRAVERSAL_SUM_TABLE (below);
 //       without that define it counts as _MIDPOINT, so a shader that never asks for exact sums
 //       declares no table.
@@ -62,26 +65,25 @@
 #endif
 #include "traversal.glsl"
 
-// One sample of a leaf [lo, lo + size) over the mip chain's level 0, at a
-// table position in [0, 1)².
-void pn_traversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                          PnMipShape shape, vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
+// One sample of a leaf [lo, lo + size) of the map, at a table position in [0, 1)².
+void pn_traversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D map,
+                          vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
   ivec2 p = pnSampleTexel(position, lo, size);
-  pn_traversalCountSample(occluding, depthSum, r, pn_mipFetchOf(mip, shape, 0, p).x, p, test);
+  pn_traversalCountSample(occluding, depthSum, r, pnMipMapDepth(map, p), p, test);
 }
 
 // Sample i < m of a sampled leaf, its position from the table.
-void pn_traversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D mip,
-                           PnMipShape shape, sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo,
+void pn_traversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D map,
+                           sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo,
                            ivec2 size, PnTraversalTest test) {
   if (i >= m) return;
-  pn_traversalSampleAt(occluding, depthSum, r, mip, shape, pnSample(sampleTable, first + i, set), lo, size, test);
+  pn_traversalSampleAt(occluding, depthSum, r, map, pnSample(sampleTable, first + i, set), lo, size, test);
 }
 
 // Eq. 5 / 6 over the rectangle [lo, lo + size) with the samples of a node of
-// side `side` over the mip chain's level 0, each sample against its own
+// side `side` from the map, each sample against its own
 // texel's threshold.
-void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable, ivec2 lo,
+void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D map, sampler2D sampleTable, ivec2 lo,
                            ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
   int m = pnSampleCount(k);
@@ -95,19 +97,19 @@ void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape sh
   // plane's threshold made the loop too long to unroll): the first four
   // samples are taken without a loop, the rest (16-sample leaves, at most a
   // sixteenth of the region's texels) four a step.
-  pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 0, m, lo, size, test);
+  pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 0, m, lo, size, test);
   if (m > 1) {
-    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 1, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 2, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 1, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 2, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 3, m, lo, size, test);
   }
   // The bound is min(m, 16), not 16 with a break at m: a loop with a constant trip count and a
   // second exit is unrolled whole by Mesa's NIR (16 copies of a sample in the GPU's code).
   for (int g = 4; g < m; g += 4) {
-    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 1, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 2, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, mip, shape, sampleTable, first, set, g + 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 1, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 2, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 3, m, lo, size, test);
   }
   pn_traversalAddSampled(r, vec2(size), occluding, depthSum, m);
 }
@@ -115,8 +117,8 @@ void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D mip, PnMipShape sh
 
 // The clipped part [lo, hi) of a node whose every texel occludes: its texels,
 // and their depth sum as `depthSums` asks (PN_DEPTH_SUMS_*, traversal.h): the
-// node's depth times its texels when min == max (every texel the same depth:
-// level 0 always); else the summed-area table's exact sum over the part
+// node's depth times its texels when min == max (every texel the same depth);
+// else the summed-area table's exact sum over the part
 // (TABLE, 4 fetches) or the node's midpoint (min + max) / 2 times its texels
 // (MIDPOINT, no table); NONE adds no depth (Step 5 only counts).
 void pn_traversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2 hi,
@@ -159,7 +161,7 @@ bool pn_traversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape sha
 // A node that will not be descended: its clipped part classified, and
 // estimated by the leaf mode when ambiguous (samples spread over the part).
 // Without samples (min, ramp) a sloped test is taken at the part's centre.
-void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
+void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D map, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
                                int level, ivec2 origin, ivec2 lo, ivec2 hi, PnTraversalTest test, int leafMode,
                                int depthSums, ivec2 pixel) {
   vec2 range;
@@ -168,17 +170,20 @@ void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D mip, PnMipShape sh
     ivec2 size = hi - lo;
     pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), pn_traversalTestAtCentre(test, lo, hi));
   } else {
-    pn_traversalSampleLeafMip(r, mip, shape, sampleTable, lo, hi - lo, 1 << level, test, pixel);
+    pn_traversalSampleLeafMip(r, map, sampleTable, lo, hi - lo, 1 << level, test, pixel);
   }
 }
 
 // The four level-0 children (texels) of a level-1 node at `origin`, clipped to the region.
-void pn_traversalVisitTexels(inout PnTraversal r, sampler2D mip, PnMipShape shape, ivec2 origin,
+void pn_traversalVisitTexels(inout PnTraversal r, sampler2D map, ivec2 origin,
                              ivec2 regionStart, ivec2 regionEnd, PnTraversalTest test, int depthSums) {
-  vec4 pair0 = pn_mipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y));
-  vec4 pair1 = pn_mipTexelOf(mip, shape, 0, ivec2(origin.x >> 1, origin.y + 1));
-  vec4 depths = vec4(pair0.x, pair0.z, pair1.x, pair1.z);  // (0,0), (1,0), (0,1), (1,1): min = max = depth
-  r.fetches += 2;
+  // (0,0), (1,0), (0,1), (1,1) from the map; a texel past its edge is read at the edge (outside the
+  // region, so not counted).
+  ivec2 last = textureSize(map, 0) - 1;
+  ivec2 far = min(origin + 1, last);
+  vec4 depths = vec4(pnMipMapDepth(map, origin), pnMipMapDepth(map, ivec2(far.x, origin.y)),
+                     pnMipMapDepth(map, ivec2(origin.x, far.y)), pnMipMapDepth(map, far));
+  r.fetches += 4;
   r.nodes += 4;
   // Per texel: inside the region and occluding (no loop, see above).
   bvec2 lower = greaterThanEqual(origin, regionStart), upper = lessThan(origin + ivec2(1), regionEnd);
@@ -233,7 +238,7 @@ PnTraversalWalk pn_traversalWalkBegin(PnMipShape shape, int mapSize, ivec2 regio
 }
 
 // The walk's next node (none once done). budget: pn_traversalBudget's.
-void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
+void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D map, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
                           PnTraversalTest test, int leafSide, int leafMode, int budget, int depthSums, ivec2 pixel) {
   if (w.done) return;
   int side = 1 << w.level;
@@ -244,7 +249,7 @@ void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape sha
   if (all(lessThan(lo, hi))) {
     bool spent = w.r.nodes + 1 >= budget;
     if (side <= leafSide || spent) {
-      pn_traversalVisitLeafPart(w.r, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums, pixel);
+      pn_traversalVisitLeafPart(w.r, map, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums, pixel);
     } else {
       vec2 range;
       if (pn_traversalClassifyPart(w.r, mip, shape, w.level, origin, lo, hi, test, depthSums, range)) {
@@ -254,7 +259,7 @@ void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape sha
           // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
           // iterations per invocation ended the exact (leaf 1) traversal of
           // a 256² fine checker early; one sampling site a step does not.
-          pn_traversalVisitTexels(w.r, mip, shape, origin, w.regionStart, w.regionEnd, test, depthSums);
+          pn_traversalVisitTexels(w.r, map, origin, w.regionStart, w.regionEnd, test, depthSums);
         } else {
           descend = true;
         }
@@ -267,7 +272,7 @@ void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D mip, PnMipShape sha
   w.done = pn_traversalNext(w.level, w.code, descend, w.rootLevel);
 }
 
-PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int mapSize,
+PnTraversal pnTraverseRegionMipPlane(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
                                      ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias,
                                      int leafSide, int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
   PnMipShape shape = pn_mipShape(mip);
@@ -276,7 +281,7 @@ PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int m
   PnTraversalWalk w = pn_traversalWalkBegin(shape, mapSize, regionOrigin, regionSize, test, budget);
   for (int it = 0; it < w.iterations; ++it) {
     if (w.done) break;
-    pn_traversalWalkStep(w, mip, shape, sampleTable, test, leafSide, leafMode, budget, depthSums, pixel);
+    pn_traversalWalkStep(w, map, mip, shape, sampleTable, test, leafSide, leafMode, budget, depthSums, pixel);
   }
   return w.r;
 }
@@ -287,7 +292,7 @@ PnTraversal pnTraverseRegionMipPlane(sampler2D mip, sampler2D sampleTable, int m
 // descended — sampled from the table's group for min(its side, leafSide), or
 // estimated by the leaf mode. At most (grid + 1)² nodes whatever the region's
 // size; with grid >= the region's side the nodes are texels: exact.
-PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
+PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
                             ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
                             int leafMode, int depthSums, ivec2 pixel) {
   PnMipShape shape = pn_mipShape(mip);
@@ -327,7 +332,7 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
         for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
           if (g >= m) break;
           for (int i = g; i < g + 4; ++i) {  // constant trip count: unrolled
-            if (i < m) pn_traversalSampleAt(occluding, depthSum, r, mip, shape, positions[i], lo, hi - lo, test);
+            if (i < m) pn_traversalSampleAt(occluding, depthSum, r, map, positions[i], lo, hi - lo, test);
           }
         }
         pn_traversalAddSampled(r, vec2(hi - lo), occluding, depthSum, m);
@@ -337,10 +342,10 @@ PnTraversal pnGridRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize, i
   return r;
 }
 
-PnTraversal pnTraverseRegionMip(sampler2D mip, sampler2D sampleTable, int mapSize,
+PnTraversal pnTraverseRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
                                 ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide,
                                 int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
-  return pnTraverseRegionMipPlane(mip, sampleTable, mapSize, regionOrigin, regionSize, vec3(0.0, 0.0, receiverDepth),
+  return pnTraverseRegionMipPlane(map, mip, sampleTable, mapSize, regionOrigin, regionSize, vec3(0.0, 0.0, receiverDepth),
                                   vec2(0.0), bias, leafSide, leafMode, nodeBudget, depthSums, pixel);
 }
 

@@ -67,7 +67,7 @@ Programs make_programs(bool depth_buffer) {
     if (!depth_buffer)
       return compile_program("mip_build",
                              {{GL_COMPUTE_SHADER, {kVersion, kInterface, kFastPcssBundle, kOwnFile, kMipBuildComp}}});
-    // PN_MIP_LEVEL0_DEPTH is defined before the bundle, which then uses it in pnMipLevel0Texel.
+    // PN_MIP_LEVEL0_DEPTH is defined before the bundle, which then uses it in pnMipFirstTexel.
     return compile_program("mip_build from a depth buffer",
                            {{GL_COMPUTE_SHADER, {kVersion, kInterface, kMipFromDepthBuffer, kFastPcssBundle, kOwnFile,
                                                  kMipBuildComp}}});
@@ -76,8 +76,14 @@ Programs make_programs(bool depth_buffer) {
       compile_program("shadow_depth", {{GL_VERTEX_SHADER, {kVersion, kInterface, kOwnFile, kShadowDepthVert}},
                                        {GL_FRAGMENT_SHADER, {kVersion, kInterface, kOwnFile, kShadowDepthFrag}}}),
       mip_build(),
-      compile_program("lit", {{GL_VERTEX_SHADER, {kVersion, kInterface, kOwnFile, kLitVert}},
-                              {GL_FRAGMENT_SHADER, {kVersion, kInterface, kFastPcssBundle, kOwnFile, kLitFrag}}})};
+      // The lit shader reads the map's texels too: through the same PN_MIP_LEVEL0_DEPTH.
+      depth_buffer ? compile_program("lit from a depth buffer",
+                                     {{GL_VERTEX_SHADER, {kVersion, kInterface, kOwnFile, kLitVert}},
+                                      {GL_FRAGMENT_SHADER, {kVersion, kInterface, kMipFromDepthBuffer,
+                                                            kFastPcssBundle, kOwnFile, kLitFrag}}})
+                   : compile_program("lit", {{GL_VERTEX_SHADER, {kVersion, kInterface, kOwnFile, kLitVert}},
+                                             {GL_FRAGMENT_SHADER, {kVersion, kInterface, kFastPcssBundle, kOwnFile,
+                                                                   kLitFrag}}})};
 }
 
 // ---------------------------------------------------------------------------
@@ -156,16 +162,18 @@ GlName render_shadow_map(const Programs& programs, const SceneGeometry& scene, c
 
 // ---------------------------------------------------------------------------
 // Step 3: the aligned min/max mip chain, in minmax_mip.glsl's storage: P the
-// least power of two >= N (at least 2), an RGBA32F texture (P/2) x P with
-// log2 P + 1 levels, two nodes a texel. One dispatch a level, each reading
+// least power of two >= N (at least 4), an RGBA32F texture (P/8) x (P/4) with
+// log2 P - 1 levels (node levels 2 .. log2 P: below, the map itself), two
+// nodes a texel — 0.17x the map's bytes. One dispatch a level, each reading
 // the level below through the sampler: a barrier between them. Rebuilt
 // whenever the shadow map changes (every frame, in an engine).
 
 GlName build_mip_chain(const Programs& programs, const GlName& shadow_map, const Light& light, bool depth_buffer) {
-  int padded = 2, log2_padded = 1;
+  constexpr int kFirstLevel = 2;  // minmax_mip.h's PN_MIP_FIRST_LEVEL
+  int padded = 1 << kFirstLevel, log2_padded = kFirstLevel;
   while (padded < kShadowMapSize) padded *= 2, ++log2_padded;
-  const int levels = log2_padded + 1;
-  GlName chain = make_texture(GL_RGBA32F, padded / 2, padded, levels);
+  const int levels = log2_padded - kFirstLevel + 1;
+  GlName chain = make_texture(GL_RGBA32F, std::max((padded >> kFirstLevel) / 2, 1), padded >> kFirstLevel, levels);
 
   const GLuint program = programs.mip_build.id();
   if (depth_buffer)  // what pnLightDepthFromDepthBuffer inverts
@@ -174,10 +182,10 @@ GlName build_mip_chain(const Programs& programs, const GlName& shadow_map, const
   glUseProgram(program);
   glBindTextureUnit(EX_MIP_SHADOW_MAP_BINDING, shadow_map.id());
   glBindTextureUnit(EX_MIP_READ_BINDING, chain.id());
-  for (int level = 0; level < levels; ++level) {
+  for (int level = kFirstLevel; level <= log2_padded; ++level) {
     const int rows = padded >> level, columns = std::max(rows / 2, 1);
     glProgramUniform1i(program, EX_MIP_LEVEL_LOCATION, level);
-    glBindImageTexture(EX_MIP_WRITE_IMAGE, chain.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(EX_MIP_WRITE_IMAGE, chain.id(), level - kFirstLevel, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const int groups_x = (columns + EX_MIP_GROUP_SIZE - 1) / EX_MIP_GROUP_SIZE;
     const int groups_y = (rows + EX_MIP_GROUP_SIZE - 1) / EX_MIP_GROUP_SIZE;
     glDispatchCompute(groups_x, groups_y, 1);
@@ -228,8 +236,8 @@ FloatImage read_texture(const GlName& texture, int size, int channels) {
   return image;
 }
 
-Frame draw_lit(const Programs& programs, const SceneGeometry& scene, const Light& light, const GlName& mip_chain,
-               const GlName& sample_table, int size, float bias) {
+Frame draw_lit(const Programs& programs, const SceneGeometry& scene, const Light& light, const GlName& shadow_map,
+               const GlName& mip_chain, const GlName& sample_table, int size, float bias) {
   const GlName colour = make_texture(GL_RGBA32F, size, size), visibility = make_texture(GL_R32F, size, size);
   const GlName depth = make_texture(GL_DEPTH_COMPONENT32F, size, size);
   const GlName framebuffer = make_framebuffer({{GL_COLOR_ATTACHMENT0 + EX_LIT_COLOUR_OUTPUT, colour.id()},
@@ -255,6 +263,7 @@ Frame draw_lit(const Programs& programs, const SceneGeometry& scene, const Light
   glProgramUniform1f(program, EX_NORMAL_OFFSET_LOCATION, kNormalOffsetTexels);
   glBindTextureUnit(EX_LIT_MIP_BINDING, mip_chain.id());
   glBindTextureUnit(EX_LIT_SAMPLE_TABLE_BINDING, sample_table.id());
+  glBindTextureUnit(EX_LIT_SHADOW_MAP_BINDING, shadow_map.id());
 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
   glViewport(0, 0, size, size);
@@ -269,6 +278,7 @@ Frame draw_lit(const Programs& programs, const SceneGeometry& scene, const Light
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindTextureUnit(EX_LIT_MIP_BINDING, 0);
   glBindTextureUnit(EX_LIT_SAMPLE_TABLE_BINDING, 0);
+  glBindTextureUnit(EX_LIT_SHADOW_MAP_BINDING, 0);
   check_gl("Step 5, the forward pass");
 
   Frame frame{read_texture(colour, size, 4), read_texture(visibility, size, 1)};
@@ -390,7 +400,7 @@ int run(const Options& options) {
   // Step 4
   const GlName sample_table = upload_sample_table();
   // Step 5
-  const Frame frame = draw_lit(programs, scene, light, mip_chain, sample_table, options.size, options.bias);
+  const Frame frame = draw_lit(programs, scene, light, shadow_map, mip_chain, sample_table, options.size, options.bias);
   // Step 6
   make_directory(outputs.directory);
   write_files({{outputs.lit, encode_png(frame.lit)}, {outputs.visibility, encode_png(frame.visibility)}});

@@ -6,8 +6,10 @@
 #include "backprojection.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
-layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain
-layout(binding = PN_EXPORT_SECOND_LAYER_BINDING) uniform sampler2D pnSecondMip;  // the second layer's chain
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnShadowMap;
+layout(binding = PN_EXPORT_BACKPROJECTION_MIP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain of it
+layout(binding = PN_EXPORT_SECOND_LAYER_BINDING) uniform sampler2D pnSecondMap;
+layout(binding = PN_EXPORT_SECOND_MIP_BINDING) uniform sampler2D pnSecondMip;  // the second layer's chain
 
 #define PN_EXPORT_CALL
 
@@ -17,14 +19,14 @@ float pnExportCall(ivec2 p) {
   PnBackprojectionSettings settings = pnBackprojectionDefaults(pnExport.bias);
 #ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the shipped defaults
 #if defined(PN_EXPORT_BACKPROJECTION_LAYERS) && PN_EXPORT_BACKPROJECTION_LAYERS == 2
-  return pnBackprojection(pnMip, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
+  return pnBackprojection(pnShadowMap, pnMip, pnSecondMap, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
 #else
-  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
+  return pnBackprojection(pnShadowMap, pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
 #endif
 #endif
   if (pnExport.side > 0)
     settings = PnBackprojectionSettings(pnExport.bias, pnExport.side, pnExport.tolerance, pnExport.budget, pnExport.gap,
                                         pnExport.thickness);
-  if (pnExport.slabs != 0) return pnBackprojection(pnMip, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
-  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
+  if (pnExport.slabs != 0) return pnBackprojection(pnShadowMap, pnMip, pnSecondMap, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
+  return pnBackprojection(pnShadowMap, pnMip, PN_LIGHT_FROM_FIELDS(pnExport), r, settings);
 }

@@ -8,7 +8,10 @@
 #include "../passes/uniform_block.h"
 #include "exports.h"
 
-#define PN_EXPORT_SECOND_LAYER_BINDING 5  // sampler2D: the second layer's min/max chain (the slabs' overload)
+// Beside exports.h's depth map: its min/max chain, and the second layer and its chain (the slabs' overload).
+#define PN_EXPORT_SECOND_LAYER_BINDING 5  // sampler2D: the second layer's map
+#define PN_EXPORT_BACKPROJECTION_MIP_BINDING 6  // sampler2D: minmax_mip.glsl's chain of the map
+#define PN_EXPORT_SECOND_MIP_BINDING 7    // sampler2D: the second layer's chain
 
 // PN_EXPORT_BACKPROJECTION_LAYERS (with PN_EXPORT_ENGINE, `penumbra isa`): 2 compiles the call over
 // slabs alone, else the call without the layer.

@@ -15,7 +15,8 @@ layout(binding = PN_EXPORT_SUM_TABLE_BINDING) uniform highp usampler2D pnDepthSu
 #include "fast_pcss.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane
-layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain
+layout(binding = PN_EXPORT_DEPTH_MAP_BINDING) uniform sampler2D pnShadowMap;
+layout(binding = PN_EXPORT_FAST_MIP_BINDING) uniform sampler2D pnMip;  // the aligned min/max mip chain of it
 layout(binding = PN_EXPORT_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
 
 #define PN_EXPORT_CALL
@@ -25,7 +26,7 @@ float pnExportCall(ivec2 p) {
   vec2 plane = pnExportReceiverPlane(p);
   PnLight light = PN_LIGHT_FROM_FIELDS(pnExport);
 #ifdef PN_EXPORT_ENGINE  // as an engine compiles it (exports.h): the shipped defaults, integration.md's overload
-  return pnFastPcss(pnMip, pnSampleTable, light, r.xyz, p, pnFastPcssDefaults(pnExport.bias));
+  return pnFastPcss(pnShadowMap, pnMip, pnSampleTable, light, r.xyz, p, pnFastPcssDefaults(pnExport.bias));
 #endif
   // filterScale <= 0: the shipped defaults with the block's bias (pnFastPcssDefaults, in the export too).
   PnFastPcssSettings settings = pnFastPcssDefaults(pnExport.bias);
@@ -33,6 +34,6 @@ float pnExportCall(ivec2 p) {
     settings = PnFastPcssSettings(pnExport.bias, pnExport.filterScale, pnExport.refineIterations, pnExport.regionMode,
                                   pnExport.leafSide, pnExport.leafDivisor, pnExport.leafMode, pnExport.blockerLeafMode,
                                   pnExport.nodeBudget, pnExport.depthSums, pnExport.grid);
-  return r.w != 0.0 ? pnFastPcss(pnMip, pnSampleTable, light, r.xyz, plane, p, settings)
-                    : pnFastPcss(pnMip, pnSampleTable, light, r.xyz, p, settings);
+  return r.w != 0.0 ? pnFastPcss(pnShadowMap, pnMip, pnSampleTable, light, r.xyz, plane, p, settings)
+                    : pnFastPcss(pnShadowMap, pnMip, pnSampleTable, light, r.xyz, p, settings);
 }

@@ -8,10 +8,11 @@
 #include "../passes/uniform_block.h"
 #include "exports.h"
 
-// exports.h's depth-map slot holds the min/max mip chain here; then the sample table and, with
+// Beside exports.h's depth map: its min/max mip chain, the sample table and, with
 // PN_EXPORT_SUM_TABLE defined (the check's exact case), summed_area.glsl's table of the map.
 #define PN_EXPORT_SAMPLE_TABLE_BINDING 5  // sampler2D: sample_table.glsl's table
 #define PN_EXPORT_SUM_TABLE_BINDING 6     // usampler2D: the map's summed-area table
+#define PN_EXPORT_FAST_MIP_BINDING 7      // sampler2D: minmax_mip.glsl's chain of the map
 
 // PnFastPcssSettings field by field (std140 in a block); filterScale <= 0: pnFastPcssDefaults(bias).
 PN_UNIFORM_BLOCK(PnFastPcssExport, PN_EXPORT_PARAMS_BINDING)

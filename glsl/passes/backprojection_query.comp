@@ -14,6 +14,8 @@ layout(binding = PN_BACKPROJECTION_QUERY_A_BINDING) uniform sampler2D pnQueryA;
 layout(binding = PN_BACKPROJECTION_QUERY_B_BINDING) uniform sampler2D pnQueryB;
 layout(binding = PN_BACKPROJECTION_QUERY_C_BINDING) uniform sampler2D pnQueryC;
 layout(binding = PN_BACKPROJECTION_QUERY_LAYER_BINDING) uniform sampler2D pnSecondMip;
+layout(binding = PN_BACKPROJECTION_QUERY_MAP_BINDING) uniform sampler2D pnShadowMap;
+layout(binding = PN_BACKPROJECTION_QUERY_LAYER_MAP_BINDING) uniform sampler2D pnSecondMap;
 layout(rgba32f, binding = PN_BACKPROJECTION_QUERY_RESULT_IMAGE) writeonly uniform image2D pnResult;
 
 void main() {
@@ -23,7 +25,8 @@ void main() {
   vec4 b = texelFetch(pnQueryB, p, 0);
   vec4 c = texelFetch(pnQueryC, p, 0);
   PnBackprojectionSettings s = PnBackprojectionSettings(a.w, int(b.x), b.y, int(b.z), b.w, c.x);
-  PnBackprojection r = c.y != 0.0 ? pnBackprojectionWork(pnMip, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s)
-                                  : pnBackprojectionWork(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s);
+  PnBackprojection r = c.y != 0.0 ? pnBackprojectionWork(pnShadowMap, pnMip, pnSecondMap, pnSecondMip,
+                                                         PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s)
+                                  : pnBackprojectionWork(pnShadowMap, pnMip, PN_LIGHT_FROM_FIELDS(pnParams), a.xyz, s);
   imageStore(pnResult, p, vec4(r.visibility, r.blocked, r.nodes, r.patches));
 }

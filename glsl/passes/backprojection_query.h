@@ -14,6 +14,8 @@
 #define PN_BACKPROJECTION_QUERY_PARAMS_BINDING 4
 #define PN_BACKPROJECTION_QUERY_C_BINDING 5     // sampler2D, RGBA32F: (thickness, slabs (1: the second layer's call), -, -)
 #define PN_BACKPROJECTION_QUERY_LAYER_BINDING 6  // sampler2D: the second layer's min/max chain (any texture when no query reads it)
+#define PN_BACKPROJECTION_QUERY_MAP_BINDING 7    // sampler2D: the map the chain is of
+#define PN_BACKPROJECTION_QUERY_LAYER_MAP_BINDING 8  // sampler2D: the second layer's map (as its chain)
 
 PN_UNIFORM_BLOCK(PnBackprojectionQueryParams, PN_BACKPROJECTION_QUERY_PARAMS_BINDING)
   PN_LIGHT_FIELDS  // PnLight (light_model.glsl)

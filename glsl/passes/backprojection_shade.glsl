@@ -16,9 +16,11 @@
 #include "backprojection_shade.h"
 
 layout(binding = PN_BACKPROJECTION_SHADE_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_BACKPROJECTION_SHADE_MAP_BINDING) uniform sampler2D pnShadowMap;
 layout(binding = PN_BACKPROJECTION_SHADE_GBUFFER_BINDING) uniform sampler2D pnGBuffer;
 #ifdef PN_BACKPROJECTION_SHADE_SLABS
 layout(binding = PN_BACKPROJECTION_SHADE_LAYER_BINDING) uniform sampler2D pnSecondMip;
+layout(binding = PN_BACKPROJECTION_SHADE_LAYER_MAP_BINDING) uniform sampler2D pnSecondMap;
 #endif
 
 #include "backprojection.glsl"
@@ -33,9 +35,9 @@ float pnShade(ivec2 p) {
                                                         pnParams.budget, pnParams.gap, pnParams.thickness);
 #endif
 #ifdef PN_BACKPROJECTION_SHADE_SLABS
-  return pnBackprojection(pnMip, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
+  return pnBackprojection(pnShadowMap, pnMip, pnSecondMap, pnSecondMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
 #else
-  return pnBackprojection(pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
+  return pnBackprojection(pnShadowMap, pnMip, PN_LIGHT_FROM_FIELDS(pnParams), receiver.xyz, s);
 #endif
 }
 

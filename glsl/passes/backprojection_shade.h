@@ -14,6 +14,8 @@
 #define PN_BACKPROJECTION_SHADE_VISIBILITY_IMAGE 2   // image2D, r32f
 #define PN_BACKPROJECTION_SHADE_PARAMS_BINDING 3
 #define PN_BACKPROJECTION_SHADE_LAYER_BINDING 4      // sampler2D: the second layer's min/max chain (PN_BACKPROJECTION_SHADE_SLABS)
+#define PN_BACKPROJECTION_SHADE_MAP_BINDING 5        // sampler2D: the shadow map the chain is of
+#define PN_BACKPROJECTION_SHADE_LAYER_MAP_BINDING 6  // sampler2D: the second layer's map (PN_BACKPROJECTION_SHADE_SLABS)
 
 PN_UNIFORM_BLOCK(PnBackprojectionShadeParams, PN_BACKPROJECTION_SHADE_PARAMS_BINDING)
   PN_LIGHT_FIELDS   // PnLight (light_model.glsl)

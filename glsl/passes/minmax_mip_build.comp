@@ -1,6 +1,7 @@
 // minmax_mip_build.comp — one level of minmax_mip.glsl's aligned min / max
-// mip chain per dispatch (two nodes a texel): level 0 from the shadow map (padded to the next
-// power of two), level i from level i-1. The chain is read (all levels) and
+// mip chain per dispatch (two nodes a texel): the first (node level PN_MIP_FIRST_LEVEL) from the
+// shadow map's 4×4 texels (padded to the next power of two), level i from level i-1; pnParams.level
+// is the node level, the image bound is its mip level (level - PN_MIP_FIRST_LEVEL). The chain is read (all levels) and
 // written (the level being built) through the same texture. A dispatch covers
 // the whole level, or only the listed texels (texel_list.glsl) when a cache
 // updates the chain where its map changed. Bindings and the parameter block:
@@ -22,6 +23,6 @@ void main() {
   ivec2 p;
   if (!pnTexelListTexel(pnParams.texelFirst, pnParams.texelCount, p) ||
       any(greaterThanEqual(p, imageSize(pnMipWrite)))) return;
-  imageStore(pnMipWrite, p, (pnParams.level == 0) ? pnMipLevel0Texel(pnShadowMap, p)
-                                                  : pnMipCombineTexel(pnMipRead, pnParams.level, p));
+  imageStore(pnMipWrite, p, (pnParams.level <= PN_MIP_FIRST_LEVEL) ? pnMipFirstTexel(pnShadowMap, p)
+                                                                   : pnMipCombineTexel(pnMipRead, pnParams.level, p));
 }

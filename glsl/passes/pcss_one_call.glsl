@@ -104,7 +104,7 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
                                             pnPcss.leafMode, pnPcss.blockerLeafMode, pnPcss.nodeBudget,
                                             pnPcss.depthSums, pnPcss.grid);
 #endif
-  PnFastPcssResult r = pnFastPcssEstimate(pnMip, pnSampleTable, light, receiver.xyz, plane, p, s);
+  PnFastPcssResult r = pnFastPcssEstimate(pnDepthMap, pnMip, pnSampleTable, light, receiver.xyz, plane, p, s);
   fetches = float(r.fetches);
   return vec4(r.visibility, float(r.blockerNodes), float(r.occlusionNodes),
               pnOneCallFlags(r.searchEntry, r.filterEntry));

@@ -9,6 +9,7 @@ layout(local_size_x = 64) in;  // pcss_work.glsl
 
 layout(binding = PN_PCSS_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
 layout(binding = PN_PCSS_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_PCSS_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;  // the map the chain is of
 layout(binding = PN_PCSS_DEPTH_SUMS_BINDING) uniform usampler2D pnDepthSums;
 layout(binding = PN_PCSS_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
 layout(binding = PN_PCSS_ENTRIES_BINDING) uniform sampler2D pnEntries;
@@ -33,10 +34,10 @@ void main() {
   PnRect rect = pnEntryRegion(entry, n, PN_PCSS_REGION_MODE);
   int leafSide = pnTraversalLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, rect.size);
   PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP && pnPcss.grid > 0)
-      ? pnGridRegionMip(pnMip, pnSampleTable, n, rect.origin, rect.size, entry.yzx, vec2(0.0), pnPcss.bias,
+      ? pnGridRegionMip(pnDepthMap, pnMip, pnSampleTable, n, rect.origin, rect.size, entry.yzx, vec2(0.0), pnPcss.bias,
                         pnPcss.grid, pnPcss.leafSide, PN_PCSS_LEAF_MODE, PN_PCSS_DEPTH_SUMS, p)
       : (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
-      ? pnTraverseRegionMip(pnMip, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
+      ? pnTraverseRegionMip(pnDepthMap, pnMip, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
                             leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
       : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, leafSide,
                          PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, p);

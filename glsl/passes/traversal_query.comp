@@ -17,6 +17,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = PN_TRAVERSAL_QUERY_PYRAMID_BINDING) uniform sampler2DArray pnPyramid;
 layout(binding = PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING) uniform sampler2D pnSampleTable;
 layout(binding = PN_TRAVERSAL_QUERY_MIP_BINDING) uniform sampler2D pnMip;
+layout(binding = PN_TRAVERSAL_QUERY_MAP_BINDING) uniform sampler2D pnShadowMap;
 layout(binding = PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING) uniform usampler2D pnDepthSums;
 layout(binding = PN_TRAVERSAL_QUERY_A_BINDING) uniform sampler2D pnQueryA;
 layout(binding = PN_TRAVERSAL_QUERY_B_BINDING) uniform sampler2D pnQueryB;
@@ -37,11 +38,11 @@ void main() {
   // The leaf side as Fast PCSS and HQEPCSS take it (divisor 0: the block's side itself).
   int leafSide = pnTraversalLeafSide(pnParams.leafSide, pnParams.leafDivisor, ivec2(a.zw));
   PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP && pnParams.grid > 0)
-      ? pnGridRegionMip(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
+      ? pnGridRegionMip(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
                         pnParams.bias, pnParams.grid, leafSide, pnParams.leafMode, pnParams.depthSums,
                         ivec2(b.yz))
       : (pnParams.structure == PN_STRUCTURE_MIP)
-      ? pnTraverseRegionMipPlane(pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
+      ? pnTraverseRegionMipPlane(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
                                  vec3(e.xy, b.x), e.zw, pnParams.bias, leafSide, pnParams.leafMode,
                                  pnParams.nodeBudget, pnParams.depthSums, ivec2(b.yz))
       : (all(equal(e.zw, vec2(0.0))) && a.z == a.w)  // a square without a plane: region.glsl's window form

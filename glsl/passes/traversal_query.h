@@ -19,6 +19,7 @@
 #define PN_TRAVERSAL_QUERY_MIP_BINDING 7           // sampler2D, RGBA32F (minmax_mip.glsl)
 #define PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING 8    // usampler2D, RGBA32UI (summed_area.glsl)
 #define PN_TRAVERSAL_QUERY_PLANE_BINDING 9         // sampler2D, RGBA32F: receiver u, v, its plane's gradient u, v
+#define PN_TRAVERSAL_QUERY_MAP_BINDING 10          // sampler2D: the map the mip chain is of
 
 PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   float bias;

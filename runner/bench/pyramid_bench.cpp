@@ -41,7 +41,7 @@ std::vector<PyramidBenchRow> bench_pyramid(const Context& context, const SourceT
     const std::unique_ptr<DeviceTexture> uploaded = context.upload(generate_fixture(find_fixture("noise"), n, n));
     const DeviceTexture& map = *uploaded;
     const DepthPyramid pyramid = pyramid_builder.build(map, n, n, max_level);  // also the warm-up
-    const MinMaxMipChain chain = mip_builder.allocate(n);
+    MinMaxMipChain chain = mip_builder.allocate(n);
     mip_builder.build_into(map, chain);
     sums_builder.build(map, n, n);
     std::vector<double> pyramid_gpu, pyramid_wall, mip_gpu, mip_wall, sums_gpu;

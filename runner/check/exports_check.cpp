@@ -310,7 +310,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
     const MinMaxMipChain mip = mips.build(*map, kMap);
     const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, light, bias, 1.0, kPcssDecisionMargin);
     const glsl::PnFastPcssExport block = exact_fast_block(light, bias, 1.0f, PN_DEPTH_SUMS_MIDPOINT);
-    const std::vector<QueryTexture> textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+    const std::vector<QueryTexture> textures{{PN_EXPORT_DEPTH_MAP_BINDING, *map}, {PN_EXPORT_FAST_MIP_BINDING, *mip.texture},
                                              {PN_EXPORT_SAMPLE_TABLE_BINDING, *table}};
     for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
       results.push_back(against(std::string("blockers of one depth, 64² map: ") + stage_name(stage) +
@@ -385,10 +385,14 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
           backprojection_slab_reference(s.map, second, scene.light, r.u, r.v, r.depth, bias, kBackprojectionSide);
       bp_slab_expected.push_back({false, slab.visibility_lo, slab.visibility_hi});
     }
-    const std::vector<QueryTexture> bp_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
-                                                {PN_EXPORT_SECOND_LAYER_BINDING, *mip.texture}};
-    const std::vector<QueryTexture> bp_slab_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
-                                                     {PN_EXPORT_SECOND_LAYER_BINDING, *second_mip.texture}};
+    const std::vector<QueryTexture> bp_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *map},
+                                                {PN_EXPORT_BACKPROJECTION_MIP_BINDING, *mip.texture},
+                                                {PN_EXPORT_SECOND_LAYER_BINDING, *map},
+                                                {PN_EXPORT_SECOND_MIP_BINDING, *mip.texture}};
+    const std::vector<QueryTexture> bp_slab_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *map},
+                                                     {PN_EXPORT_BACKPROJECTION_MIP_BINDING, *mip.texture},
+                                                     {PN_EXPORT_SECOND_LAYER_BINDING, *second_texture},
+                                                     {PN_EXPORT_SECOND_MIP_BINDING, *second_mip.texture}};
 
     for (const ShadeStage stage : {ShadeStage::compute, ShadeStage::fragment}) {
       const std::string where = name + stage_name(stage) + " ";
@@ -416,7 +420,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
           where + "exports/fast_pcss with PN_EXPORT_SUM_TABLE (pnFastPcss: refine 0, exact regions, leaf 1, table "
                   "sums) vs exact PCSS brute force on the CPU",
           s, exact_reference,
-          fast_table.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+          fast_table.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}, {PN_EXPORT_FAST_MIP_BINDING, *mip.texture},
                                  {PN_EXPORT_SAMPLE_TABLE_BINDING, *table},
                                  {PN_EXPORT_SUM_TABLE_BINDING, *depth_sums.texture}},
                          s.receivers, query_block(fast_block))));
@@ -477,7 +481,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       fast_header.leafSide = PN_FAST_PCSS_LEAF_SIDE, fast_header.leafDivisor = 0, fast_header.leafMode = PN_LEAF_SAMPLED;
       fast_header.blockerLeafMode = PN_FAST_PCSS_SAME_LEAF_MODE, fast_header.nodeBudget = PN_FAST_PCSS_NODE_BUDGET;
       fast_header.depthSums = PN_DEPTH_SUMS_MIDPOINT, fast_header.grid = PN_FAST_PCSS_GRID;
-      const std::vector<QueryTexture> fast_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *mip.texture},
+      const std::vector<QueryTexture> fast_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *map}, {PN_EXPORT_FAST_MIP_BINDING, *mip.texture},
                                                     {PN_EXPORT_SAMPLE_TABLE_BINDING, *table}};
       results.push_back(defaults_case(where + "exports/fast_pcss: pnFastPcssDefaults(bias) = fast_pcss.h's defaults",
                                       fast.run(stage, fast_textures, s.receivers, query_block(fast_defaults)),

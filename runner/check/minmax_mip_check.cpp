@@ -1,6 +1,6 @@
 // Cases of the minmax_mip check: every level of glsl/minmax_mip.glsl's aligned
-// min / max chain, built on the GPU for every fixture at N = 2, 3, 37, 64, 300
-// and 512, against the definition — per aligned node, the min and max of the
+// min / max chain (node levels 2 to log2 P: below, the map itself), built on the GPU for every
+// fixture at N = 2, 3, 37, 64, 300 and 512, against the definition — per aligned node, the min and max of the
 // sanitized depths of its texels that lie in the map, (+Inf, -Inf) for a node
 // wholly in the padding up to the power of two — read back two nodes a texel,
 // bit-exact (min and max round nothing).
@@ -48,7 +48,7 @@ std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env) {
       const Image map = generate_fixture(fixture, n, n);
       const Image depth = sanitized_depths(map);
       const MinMaxMipChain chain = builder.build(*env.device.upload(map), n);
-      for (int level = 0; level < chain.levels; ++level) {
+      for (int level = chain.first_level; level <= chain.top_level; ++level) {
         const Image expected = expected_level(depth, chain.padded_size, level);
         const Image observed = read_mip_chain_level(env.device, chain, level);
         results.push_back({std::string(fixture.name) + " " + std::to_string(n) + "x" + std::to_string(n) + " (P = " +

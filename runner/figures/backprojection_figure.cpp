@@ -20,7 +20,8 @@ Canvas backprojection_figure(const Context& context, const SourceTree& tree) {
   LightModel sun;  // orthographic: texels 0.004 wide, spread 0.12 (penumbrae up to ~12 texels)
   sun.width = 0.0, sun.spread = 0.12, sun.texel_world = 0.004, sun.near_plane = 0.1, sun.far_plane = 2.0;
   sun.map_size = n;
-  const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(*context.upload(map), n);
+  const auto map_texture = context.upload(map);  // read beside the chain: it outlives the queries
+  const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(*map_texture, n);
   std::vector<BackprojectionQuery> queries;
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {

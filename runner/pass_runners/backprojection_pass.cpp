@@ -35,10 +35,12 @@ std::vector<BackprojectionResult> BackprojectionQueryPass::run(const MinMaxMipCh
     b.push_back({static_cast<float>(q.side), q.tolerance, static_cast<float>(q.budget), q.gap});
     c.push_back({q.thickness, second_mip != nullptr ? 1.0f : 0.0f, 0.0f, 0.0f});
   }
-  const DeviceTexture& layer = second_mip != nullptr ? *second_mip->texture : *mip.texture;
+  const MinMaxMipChain& layer = second_mip != nullptr ? *second_mip : mip;
   const QueryResults r = query_.run({a, b, c},
                                     {{PN_BACKPROJECTION_QUERY_MIP_BINDING, *mip.texture},
-                                     {PN_BACKPROJECTION_QUERY_LAYER_BINDING, layer}},
+                                     {PN_BACKPROJECTION_QUERY_MAP_BINDING, mip.built_map()},
+                                     {PN_BACKPROJECTION_QUERY_LAYER_BINDING, *layer.texture},
+                                     {PN_BACKPROJECTION_QUERY_LAYER_MAP_BINDING, layer.built_map()}},
                                     query_block(block));
   std::vector<BackprojectionResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {

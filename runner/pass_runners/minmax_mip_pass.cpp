@@ -8,6 +8,7 @@
 #include "modules/depth_pyramid_face.h"
 
 namespace pn::glsl {
+#include "minmax_mip.h"
 #include "passes/minmax_mip_build.h"
 PN_STD140_SIZE(PnMipBuildParams, 16);
 PN_STD140_OFFSET(PnMipBuildParams, texelCount, 8);
@@ -15,21 +16,33 @@ PN_STD140_OFFSET(PnMipBuildParams, texelCount, 8);
 
 namespace pn {
 
+int MinMaxMipChain::first_level_kept() {
+  return PN_MIP_FIRST_LEVEL;
+}
+
 int MinMaxMipChain::padded_size_for(int map_size) {
-  int p = 2;  // two nodes a texel: level 0 at least one texel wide
+  int p = 1 << first_level_kept();  // the first level's one node at least
   while (p < map_size && p < (1 << 30)) p *= 2;
   return p;
 }
 
 std::size_t MinMaxMipChain::memory_bytes(int map_size) {
   std::size_t texels = 0;
-  for (int side = padded_size_for(map_size); side >= 1; side /= 2)
+  for (int side = padded_size_for(map_size) >> first_level_kept(); side >= 1; side /= 2)
     texels += static_cast<std::size_t>(std::max(side / 2, 1)) * side;
   return 16 * texels;  // RGBA32F texels, two nodes each
 }
 
+const DeviceTexture& MinMaxMipChain::built_map() const {
+  if (map == nullptr) throw Error("min/max mip chain: read before it was built from a map");
+  return *map;
+}
+
 Image read_mip_chain_level(const QueryDevice& device, const MinMaxMipChain& chain, int level) {
-  return device.read_texture(*chain.texture, level);
+  if (level < chain.first_level || level > chain.top_level)
+    throw Error("min/max mip chain level " + std::to_string(level) + ": expected " +
+                std::to_string(chain.first_level) + ".." + std::to_string(chain.top_level));
+  return device.read_texture(*chain.texture, level - chain.first_level);
 }
 
 MinMaxMipBuilder::MinMaxMipBuilder(const QueryDevice& device, const SourceTree& tree)
@@ -42,9 +55,11 @@ MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
   MinMaxMipChain chain;
   chain.map_size = map_size;
   chain.padded_size = MinMaxMipChain::padded_size_for(map_size);
-  chain.levels = floor_log2(chain.padded_size) + 1;
-  chain.texture =
-      device_->make_texture({TexelFormat::rgba32f, chain.padded_size / 2, chain.padded_size, chain.levels, 1, false});
+  chain.first_level = MinMaxMipChain::first_level_kept();
+  chain.top_level = floor_log2(chain.padded_size);
+  chain.levels = chain.top_level - chain.first_level + 1;
+  chain.texture = device_->make_texture({TexelFormat::rgba32f, chain.level_width(chain.first_level),
+                                         chain.level_rows(chain.first_level), chain.levels, 1, false});
   return chain;
 }
 
@@ -56,22 +71,25 @@ void MinMaxMipBuilder::dispatch_level(const DeviceTexture& shadow_map, const Min
   const auto [width, height] = texel_run_grid(run, chain.level_width(level), chain.level_rows(level));
   device_->run(*program_,
                {{{PN_MINMAX_MIP_SHADOW_MAP_BINDING, shadow_map}, {PN_MINMAX_MIP_READ_BINDING, *chain.texture}},
-                {{PN_MINMAX_MIP_WRITE_BINDING, *chain.texture, level}},
+                {{PN_MINMAX_MIP_WRITE_BINDING, *chain.texture, level - chain.first_level}},
                 {{PN_MINMAX_MIP_TEXELS_BINDING, listed ? texels : *no_texels_}},
                 query_block(block)},
                width, height);
 }
 
-void MinMaxMipBuilder::build_into(const DeviceTexture& shadow_map, const MinMaxMipChain& chain) const {
-  for (int level = 0; level < chain.levels; ++level) dispatch_level(shadow_map, chain, level, {0, 0, true}, *no_texels_);
+void MinMaxMipBuilder::build_into(const DeviceTexture& shadow_map, MinMaxMipChain& chain) const {
+  chain.map = &shadow_map;
+  for (int level = chain.first_level; level <= chain.top_level; ++level)
+    dispatch_level(shadow_map, chain, level, {0, 0, true}, *no_texels_);
 }
 
-void MinMaxMipBuilder::update_into(const DeviceTexture& shadow_map, const MinMaxMipChain& chain,
+void MinMaxMipBuilder::update_into(const DeviceTexture& shadow_map, MinMaxMipChain& chain,
                                    const std::vector<TexelRect>& rects, TexelList& texels, bool round_out) const {
+  chain.map = &shadow_map;
   texels.clear();
   std::vector<TexelRun> runs;
   std::vector<TexelRect> at_level;
-  for (int level = 0; level < chain.levels; ++level) {
+  for (int level = chain.first_level; level <= chain.top_level; ++level) {
     at_level.clear();
     for (const TexelRect& r : rects) {
       if (r.empty()) continue;
@@ -84,8 +102,8 @@ void MinMaxMipBuilder::update_into(const DeviceTexture& shadow_map, const MinMax
     runs.push_back(texels.add(at_level, chain.level_width(level), chain.level_rows(level)));
   }
   texels.upload(*device_);
-  for (int level = 0; level < chain.levels; ++level)
-    dispatch_level(shadow_map, chain, level, runs[static_cast<size_t>(level)], texels.buffer());
+  for (int level = chain.first_level; level <= chain.top_level; ++level)
+    dispatch_level(shadow_map, chain, level, runs[static_cast<size_t>(level - chain.first_level)], texels.buffer());
 }
 
 MinMaxMipChain MinMaxMipBuilder::build(const DeviceTexture& shadow_map, int map_size) const {

@@ -82,6 +82,7 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const DeviceTe
   query_.dispatch(*batch.batch_,
                   {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? *empty_array_ : *structure.pyramid->texture},
                    {PN_TRAVERSAL_QUERY_MIP_BINDING, mip ? *structure.mip->texture : *empty_2d_},
+                   {PN_TRAVERSAL_QUERY_MAP_BINDING, mip ? structure.mip->built_map() : *empty_2d_},
                    {PN_TRAVERSAL_QUERY_DEPTH_SUMS_BINDING,
                     mip && structure.depth_sums ? *structure.depth_sums->texture : *empty_uint_},
                    {PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING, sample_table}},

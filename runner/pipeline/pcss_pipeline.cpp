@@ -206,8 +206,9 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const Devic
   add_structures(inputs, frame);
   inputs.add_textures({{PN_PCSS_ENTRIES_BINDING, entries},
                        {PN_PCSS_PARENTS_BINDING, parents ? *parents : *no_parents_},
-                       // the sanitized map, as a sampler2D
-                       {PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid ? *frame.pyramid->level0 : *no_mip_}});
+                       // the sanitized map, as a sampler2D; over the mip chain, the map it was built from
+                       {PN_PCSS_DEPTH_MAP_BINDING, frame.pyramid ? *frame.pyramid->level0
+                                                   : frame.mip ? frame.mip->built_map() : *no_mip_}});
 
   if (estimator == Estimator::scan) {
     // Bands of rows, ping-pong between `result` and a partner so the last band lands in `result`.

@@ -104,6 +104,7 @@ class BackprojectionTechnique : public Technique {
     PassResources resources;
     resources.block = query_block(block);
     resources.add_textures({{PN_BACKPROJECTION_SHADE_MIP_BINDING, *mip->texture},
+                            {PN_BACKPROJECTION_SHADE_MAP_BINDING, mip->built_map()},
                             {PN_BACKPROJECTION_SHADE_GBUFFER_BINDING, *inputs.gbuffer}});
     std::vector<Define> defines;
     if (settings_.engine_form()) defines.push_back({"PN_BACKPROJECTION_ENGINE_FORM", "1"});
@@ -115,7 +116,8 @@ class BackprojectionTechnique : public Technique {
                     " layer, which the frame did not draw");
       second_mip = passes_->mip.build(*layer, n);
       clock->stage("second layer's chain");
-      resources.add_textures({{PN_BACKPROJECTION_SHADE_LAYER_BINDING, *second_mip.texture}});
+      resources.add_textures({{PN_BACKPROJECTION_SHADE_LAYER_BINDING, *second_mip.texture},
+                              {PN_BACKPROJECTION_SHADE_LAYER_MAP_BINDING, second_mip.built_map()}});
       defines.push_back({"PN_BACKPROJECTION_SHADE_SLABS", "1"});
     }
     TechniqueFrame out;

@@ -11,7 +11,7 @@ rm -rf "$out" && mkdir -p "$out" || exit 1
 status=0
 
 # module | declarations before the bundle | the call (receiver r, light L: a macro, expanded only where used)
-calls='fast_pcss.glsl|S(0) uniform sampler2D uMip; S(1) uniform sampler2D uTable;|pnFastPcss(uMip, uTable, L, r, ivec2(gl_FragCoord.xy), pnFastPcssDefaults(0.02))
+calls='fast_pcss.glsl|S(0) uniform sampler2D uMap; S(1) uniform sampler2D uMip; S(2) uniform sampler2D uTable;|pnFastPcss(uMap, uMip, uTable, L, r, ivec2(gl_FragCoord.xy), pnFastPcssDefaults(0.02))
 poisson_pcss.glsl|S(0) uniform sampler2D uMap; const vec2 B[2] = vec2[](vec2(0.1, 0.2), vec2(-0.3, 0.4)); const vec2 F[3] = vec2[](vec2(0.5, 0.0), vec2(0.0, -0.5), vec2(-0.2, 0.1));\n#define PN_POISSON_BLOCKER_DISK B\n#define PN_POISSON_FILTER_DISK F|pnPoissonPcss(uMap, L, r, pnPoissonPcssDefaults(0.02), pnPoissonRotation(gl_FragCoord.x))
 vogel_pcss.glsl|S(0) uniform sampler2D uMap;|pnVogelPcss(uMap, L, r, ivec2(gl_FragCoord.xy), pnVogelPcssDefaults(0.02)) * pnVogelPcss(uMap, L, r, pnReceiverPlaneGradient(dFdx(r), dFdy(r), 0.1), ivec2(gl_FragCoord.xy), pnVogelPcssDefaults(0.02))
 exact_pcss.glsl|S(0) uniform sampler2D uMap;|pnExactPcss(uMap, L, r, 0.02, 1.0)
@@ -54,14 +54,15 @@ src="$out/include_route.frag"
 cat > "$src" <<'GLSL'
 #version 450 core
 #extension GL_GOOGLE_include_directive : require
-layout(binding = 0) uniform sampler2D uMip;
-layout(binding = 1) uniform sampler2D uTable;
+layout(binding = 0) uniform sampler2D uMap;
+layout(binding = 1) uniform sampler2D uMip;
+layout(binding = 2) uniform sampler2D uTable;
 #include "fast_pcss.glsl"
 layout(location = 0) in vec3 vReceiver;
 layout(location = 0) out vec4 outColour;
 void main() {
   PnLight light = PnLight(2.0, 1.0, 2.0, 1024.0, 0.0, 0.0);
-  outColour = vec4(pnFastPcss(uMip, uTable, light, vReceiver, ivec2(gl_FragCoord.xy), pnFastPcssDefaults(0.02)));
+  outColour = vec4(pnFastPcss(uMap, uMip, uTable, light, vReceiver, ivec2(gl_FragCoord.xy), pnFastPcssDefaults(0.02)));
 }
 GLSL
 "$validator" -S frag "$src" > "$out/plain.log" 2>&1 && { echo "glslangValidator without -E accepted #include"; status=1; }

@@ -23,12 +23,13 @@
 // lit.frag: its inputs (texture units) and its two colour outputs.
 #define EX_LIT_MIP_BINDING 0           // the min/max mip chain (RGBA32F, all levels)
 #define EX_LIT_SAMPLE_TABLE_BINDING 1  // the 21x8 RG32F sample table
+#define EX_LIT_SHADOW_MAP_BINDING 2    // the shadow map the chain is of (its texels)
 #define EX_LIT_COLOUR_OUTPUT 0         // RGBA32F: the lit colour
 #define EX_LIT_VISIBILITY_OUTPUT 1     // R32F: the visibility Fast PCSS returned
 
 // mip_build.comp: one level per dispatch.
 #define EX_MIP_SHADOW_MAP_BINDING 0    // texture unit: the R32F shadow map
-#define EX_MIP_READ_BINDING 1          // texture unit: the chain, read at level - 1
+#define EX_MIP_READ_BINDING 1          // texture unit: the chain, read at the level below
 #define EX_MIP_WRITE_IMAGE 0           // image unit: the chain at the level being written
 #define EX_MIP_LEVEL_LOCATION 0        // int
 #define EX_MIP_LIGHT_PROJECTION_LOCATION 1  // mat4: mip_from_depth_buffer.glsl only

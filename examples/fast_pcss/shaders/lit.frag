@@ -5,8 +5,11 @@
 
 layout(binding = EX_LIT_MIP_BINDING) uniform sampler2D uMip;
 layout(binding = EX_LIT_SAMPLE_TABLE_BINDING) uniform sampler2D uSampleTable;
+layout(binding = EX_LIT_SHADOW_MAP_BINDING) uniform sampler2D uShadowMap;
 layout(location = EX_LIGHT_VIEW_LOCATION) uniform mat4 uLightView;
+#ifndef EX_LIGHT_PROJECTION_DECLARED  // mip_from_depth_buffer.glsl declares it at the same location
 layout(location = EX_LIGHT_PROJECTION_LOCATION) uniform mat4 uLightProjection;
+#endif
 layout(location = EX_LIGHT_LOCATION) uniform PnLight uLight;
 layout(location = EX_BIAS_LOCATION) uniform float uBias;
 layout(location = EX_NORMAL_OFFSET_LOCATION) uniform float uNormalOffsetTexels;
@@ -31,7 +34,7 @@ void main() {
   vec3 offsetWorld = vWorld + normal * (uNormalOffsetTexels * pnLightTexelWorld(uLight, lightDepth));
   vec3 receiver = pnLightProject(uLightView, uLightProjection, uLight.mapSize, offsetWorld);
   // The screen pixel picks the sample table's set, so neighbouring pixels sample differently.
-  float visibility = pnFastPcss(uMip, uSampleTable, uLight, receiver, ivec2(gl_FragCoord.xy),
+  float visibility = pnFastPcss(uShadowMap, uMip, uSampleTable, uLight, receiver, ivec2(gl_FragCoord.xy),
                                 pnFastPcssDefaults(uBias));
   // ----------------------------------------------------------------
 
