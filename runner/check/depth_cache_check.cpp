@@ -159,7 +159,7 @@ std::vector<CaseResult> run_motion_sequence(const CheckEnvironment& env, const M
     map.add(compare(context.read_texture(*reference, 0, 0), context.read_texture(*cached.map, 0, 0), exact), f);
 
     const MinMaxMipChain rebuilt = mip_builder.build(*reference, n);
-    for (int level = 0; level < rebuilt.levels; ++level)
+    for (int level = rebuilt.first_level; level <= rebuilt.top_level; ++level)
       mip.add(compare(read_mip_chain_level(context, rebuilt, level), read_mip_chain_level(context, *cached.mip, level), exact), f);
     if (f % kPyramidEvery == 0 || f + 1 == sequence.frames) {
       const DepthPyramid whole = pyramid_builder.build(*reference, n, n, 31);

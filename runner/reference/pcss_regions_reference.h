@@ -56,7 +56,7 @@ Rect entry_region(const RegionEntry& entry, int n, RegionMode mode);
 Rect search_min_square(const RegionEntry& entry, int n);
 
 // The rectangle whose min depth Step 3 reads from the aligned mip chain
-// (pn_searchRegionMinMip): the aligned nodes of side 2^l, l = max(0, ceil(log2 m) - 1),
+// (pn_searchRegionMinMip): the aligned nodes of side 2^l, l = max(2, ceil(log2 m) - 1),
 // that touch the square of side m = max(w, h) at the exact region's origin (clipped
 // to the map), themselves clipped to the map — a superset of search_min_square's
 // texels when both lie in the map; empty when the region is.

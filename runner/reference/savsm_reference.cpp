@@ -111,7 +111,7 @@ int savsm_square_fetches(const Rect& rect, int n) {
   // node on an axis may be cut by the map's edge): one fetch each.
   const int side = std::max(rect.width, rect.height), clipped = std::max(std::min(rect.x + side, n) - rect.x,
                                                                          std::min(rect.y + side, n) - rect.y);
-  int node = 1;
+  int node = 4;  // the chain's first level's side (minmax_mip.glsl)
   while (2 * node < clipped) node *= 2;
   const auto count = [node](int from, int length) { return (from + length - 1) / node - from / node + 1; };
   return count(c.x, c.width) * count(c.y, c.height);

@@ -165,6 +165,15 @@ void add_occluding_part(const Image& depth, int lx, int ly, int hx, int hy, floa
   if (lo != hi) r.fetches += 4;  // the table's four corners
 }
 
+// The chain keeps nodes of side 4 and up (minmax_mip.glsl): a smaller node is decided by the range
+// of the side-4 node that holds it — a superset of its texels.
+constexpr int kKeptSide = 4;
+
+std::pair<float, float> kept_node_range(const Image& depth, int ox, int oy, int side) {
+  if (side >= kKeptSide) return node_range(depth, ox, oy, side);
+  return node_range(depth, ox / kKeptSide * kKeptSide, oy / kKeptSide * kKeptSide, kKeptSide);
+}
+
 // Over aligned nodes clipped to the region (minmax_mip.glsl's chain).
 class AlignedRecursion {
  public:
@@ -175,7 +184,7 @@ class AlignedRecursion {
   TraversalResult run() {
     r_.texels = static_cast<double>(region_.width) * region_.height;
     if (std::isnan(t_) || r_.texels == 0) return r_;
-    int padded = 2, top = 0;
+    int padded = kKeptSide, top = 0;
     while (padded < std::max(depth_.width, depth_.height)) padded *= 2;
     while ((1 << top) < std::max(region_.width, region_.height)) ++top;
     while ((1 << top) > padded) --top;
@@ -204,7 +213,7 @@ class AlignedRecursion {
     const bool spent = r_.nodes + 1 >= std::clamp(p_.node_budget, 1, PN_TRAVERSAL_NO_BUDGET);
     ++r_.nodes;
     ++r_.fetches;
-    const auto [lo, hi] = node_range(depth_, ox, oy, side);
+    const auto [lo, hi] = kept_node_range(depth_, ox, oy, side);
     if (hi < t_) {  // every texel occludes: the part's count and depth sum
       add_occluding_part(depth_, part.lx, part.ly, part.hx, part.hy, lo, hi, sums_, r_);
       return;
@@ -215,7 +224,7 @@ class AlignedRecursion {
       else sample(part, side);
     } else if (level == 1) {  // four texels, classified at once
       r_.nodes += 4;
-      r_.fetches += 2;
+      r_.fetches += 4;  // the map's four texels
       for (int y = part.ly; y < part.hy; ++y)
         for (int x = part.lx; x < part.hx; ++x)
           if (depth_.at(x, y) < t_) r_.occluders += 1.0, r_.depth_sum += sums_ == DepthSums::none ? 0.0 : depth_.at(x, y);
@@ -248,7 +257,7 @@ TraversalResult grid_count(const Image& depth, const SampleTable& table, const R
   r.texels = static_cast<double>(region.width) * region.height;
   const float t = p.receiver_depth - p.bias;
   if (std::isnan(t) || r.texels == 0) return r;
-  int padded = 2, max_level = 1;
+  int padded = kKeptSide, max_level = 2;
   while (padded < std::max(depth.width, depth.height)) padded *= 2, ++max_level;
   const int cells = std::clamp(grid, 1, PN_GRID_MAX_CELLS);
   const int wanted = std::max(1, (std::max(region.width, region.height) + cells - 1) / cells);
@@ -262,7 +271,7 @@ TraversalResult grid_count(const Image& depth, const SampleTable& table, const R
       const int lx = std::max(ox, region.x), ly = std::max(oy, region.y);
       const int hx = std::min(ox + side, region.x + region.width), hy = std::min(oy + side, region.y + region.height);
       ++r.nodes, ++r.fetches;
-      const auto [lo, hi] = node_range(depth, ox, oy, side);
+      const auto [lo, hi] = kept_node_range(depth, ox, oy, side);
       if (hi < t) {  // every texel occludes
         add_occluding_part(depth, lx, ly, hx, hy, lo, hi, sums, r);
         continue;
