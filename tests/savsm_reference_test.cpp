@@ -58,8 +58,8 @@ TEST_CASE("savsm reference: the Chebyshev blocker mu - v / (t - mu) equals (mu -
 
 TEST_CASE("savsm reference: the mip nodes covering a square, their count (1 to 9) and their min and max") {
   const pn::Image map = ground_and_blocker();
-  CHECK(pn::savsm_square_fetches({1, 1, 3, 3}, 8) == 4);   // nodes [0, 2), [2, 4) on each axis
-  CHECK(pn::savsm_square_fetches({2, 2, 1, 1}, 8) == 1);   // one texel: one level-0 node
+  CHECK(pn::savsm_square_fetches({1, 1, 3, 3}, 8) == 1);   // the chain's smallest nodes, side 4: [0, 4)²
+  CHECK(pn::savsm_square_fetches({2, 2, 1, 1}, 8) == 1);   // one texel: the side-4 node that holds it
   CHECK(pn::savsm_square_fetches({0, 0, 8, 8}, 8) == 4);   // side 8: nodes of side 4
   CHECK(pn::savsm_square_fetches({1, 1, 5, 5}, 8) == 4);   // side 5: nodes of side 4, [0, 4) and [4, 8)
   CHECK(pn::savsm_square_fetches({3, 3, 6, 6}, 16) == 9);  // texels 3..8: nodes of side 4 from 0, 4 and 8
@@ -82,13 +82,16 @@ TEST_CASE("savsm reference: under a point light a receiver below the blocker is 
   CHECK(under.has_blocker);
   CHECK(under.blocker == 20.0);
   CHECK(under.filter.width == 1);
-  CHECK(under.bound == PN_VSM_BOUND_SHADOWED);  // t = 39.98 > the texel's 20
+  // The texel's side-4 node [0, 4)² holds ground at 40 too: the bound leaves it to the moments.
+  CHECK(under.bound != PN_VSM_BOUND_SHADOWED);
   CHECK(under.visibility == 0.0);
   CHECK(pn::savsm_fetches(under, s, 8) == 1 + 4 + 1);  // mip node, filter moments, mip node
+  // Every side-4 node holds a texel of the blocker: the bound no longer says lit beside it, the
+  // moments of its one texel do.
   const pn::SavsmEstimate beside = pn::savsm_reference(map, light, {0.5f, 0.5f, 40.0f}, s);
-  CHECK(beside.lit_by_bound);
+  CHECK_FALSE(beside.lit_by_bound);
   CHECK(beside.visibility == 1.0);
-  CHECK(pn::savsm_fetches(beside, s, 8) == 1);
+  CHECK(pn::savsm_fetches(beside, s, 8) == 1 + 4 + 1);  // mip node, filter moments, mip node
   const pn::SavsmEstimate nan = pn::savsm_reference(map, light, {0.5f, 0.5f, std::nanf("")}, s);
   CHECK_FALSE(nan.surface);
   CHECK(nan.visibility == 1.0);
