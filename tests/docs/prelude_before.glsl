@@ -15,6 +15,7 @@ S(11) uniform usampler2D rowPrefix;
 S(12) uniform usampler2D table;
 S(13) uniform sampler2DArray pyramid;
 S(14) uniform sampler2D secondMip;
+S(15) uniform sampler2D secondMap;
 const vec2 PN_BLOCKER_DISK[2] = vec2[](vec2(0.1, 0.2), vec2(-0.3, 0.4));
 const vec2 PN_FILTER_DISK[3] = vec2[](vec2(0.5, 0.0), vec2(0.0, -0.5), vec2(-0.2, 0.1));
 const mat4 lightView = mat4(1.0), lightProjection = mat4(1.0), uLightProjection = mat4(1.0);
