@@ -87,7 +87,7 @@
 //   stackless: no local array); what bounds it in practice is the number of
 //   occluding texels whose segments reach: the penumbra's area in texels.
 //
-// isa budget: vgprs 64, instructions 2500, code 14336, scratch 0, loop 3800, loops 4400
+// isa budget: vgprs 64, instructions 2750, code 14848, scratch 0, loop 4150, loops 4700
 //   (`penumbra isa --budgets`: both calls as an engine compiles them, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL
@@ -147,8 +147,25 @@ vec2 pn_backprojectionSlab(vec2 range, vec2 back, float dP, float bias) {
   return vec2(top, b > top ? min(b, dP - bias) : top);
 }
 
-// The wall of node q of `level` on its edge toward the neighbour node in direction `dir`, as up
-// to two pieces, each the windows (near, far) on the light of its bottom and its top: .xy and .zw,
+// The four neighbours of node q of `level` in one layer (east, west, north, south: +x, -x, +y, -y):
+// their (min, max), empty outside the map — texels from the map at level 0, nodes from the chain
+// above (pnMipFetch), one branch a node rather than one a read.
+struct PnBackprojectionNeighbours {
+  vec2 east, west, north, south;
+};
+
+PnBackprojectionNeighbours pn_backprojectionNeighbours(sampler2D map, sampler2D mip, int level, ivec2 q) {
+  if (level <= 0)
+    return PnBackprojectionNeighbours(pn_mipMapTexel(map, q + ivec2(1, 0)), pn_mipMapTexel(map, q - ivec2(1, 0)),
+                                      pn_mipMapTexel(map, q + ivec2(0, 1)), pn_mipMapTexel(map, q - ivec2(0, 1)));
+  PnMipShape shape = pn_mipShape(mip);
+  return PnBackprojectionNeighbours(
+      pn_mipFetchOf(mip, shape, level, q + ivec2(1, 0)), pn_mipFetchOf(mip, shape, level, q - ivec2(1, 0)),
+      pn_mipFetchOf(mip, shape, level, q + ivec2(0, 1)), pn_mipFetchOf(mip, shape, level, q - ivec2(0, 1)));
+}
+
+// The wall of a node on its edge toward its neighbour in one direction, whose (min, max) are
+// `range` (and `back` in the second layer), as up to two pieces, each the windows (near, far) on the light of its bottom and its top: .xy and .zw,
 // far 0 where there is none. `slab`: the node's (top, bottom); `window`: its patch's.
 //   Over slabs: only the depths the neighbour's slab does not cover — from the top down to the
 //   neighbour's top, and from its bottom down to the node's — since a ray that meets the union of
@@ -156,14 +173,11 @@ vec2 pn_backprojectionSlab(vec2 range, vec2 back, float dP, float bias) {
 //   Else (the gap rule; slab = (d, d)): toward a neighbour deeper than d (its min), down to it where
 //   the surface continues into it (a step of at most gap texel widths), down to thickness · (dP - d)
 //   below d at a silhouette; only what lies in front of the receiver blocks.
-vec4 pn_backprojectionWallPieces(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
-                                 float bias, float gap, float thickness, int level, ivec2 q, ivec2 dir, vec2 slab,
-                                 float window) {
+vec4 pn_backprojectionWallPieces(bool slabs, PnLight light, vec3 receiver, float bias, float gap, float thickness,
+                                 vec2 range, vec2 back, vec2 slab, float window) {
   float dP = receiver.z;
   if (slabs) {
-    vec2 neighbour = pn_backprojectionSlab(pnMipFetch(map, mip, level, q + dir),
-                                           pnMipFetch(secondMap, secondMip, level, q + dir),
-                                           dP, bias);
+    vec2 neighbour = pn_backprojectionSlab(range, back, dP, bias);
     float upper = min(neighbour.x, slab.y);  // exposed from the top down to here
     float lower = max(neighbour.y, slab.x);  // and from here down to the bottom
     return vec4(upper > slab.x ? vec2(pnLightBlockerWindowTexels(light, dP, upper), window) : vec2(0.0),
@@ -172,7 +186,7 @@ vec4 pn_backprojectionWallPieces(sampler2D map, sampler2D mip, sampler2D secondM
                                : vec2(0.0));
   }
   float d = slab.x;
-  float neighbour = pnMipFetch(map, mip, level, q + dir).x;  // +Inf outside the map
+  float neighbour = range.x;  // +Inf outside the map
   if (!(neighbour > d)) return vec4(0.0);
   float step = gap * pnLightTexelWorld(light, d);
   float bottom = neighbour - d <= step ? neighbour : min(neighbour, d + thickness * (dP - d));
@@ -213,14 +227,17 @@ int pn_backprojectNode(sampler2D map, sampler2D mip, sampler2D secondMap, sample
   float window = pnLightBlockerWindowTexels(light, receiver.z, slab.x);
   pn_backprojectPatch(lo, hi, window, side, mask);
   if (slabs && !(slab.y > slab.x)) return 0;
-  vec4 east = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
-                                          ivec2(1, 0), slab, window);
-  vec4 west = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
-                                          ivec2(-1, 0), slab, window);
-  vec4 north = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
-                                           ivec2(0, 1), slab, window);
-  vec4 south = pn_backprojectionWallPieces(map, mip, secondMap, secondMip, slabs, light, receiver, bias, gap, thickness, level, q,
-                                           ivec2(0, -1), slab, window);
+  PnBackprojectionNeighbours first = pn_backprojectionNeighbours(map, mip, level, q);
+  PnBackprojectionNeighbours second = first;
+  if (slabs) second = pn_backprojectionNeighbours(secondMap, secondMip, level, q);
+  vec4 east = pn_backprojectionWallPieces(slabs, light, receiver, bias, gap, thickness, first.east, second.east, slab,
+                                          window);
+  vec4 west = pn_backprojectionWallPieces(slabs, light, receiver, bias, gap, thickness, first.west, second.west, slab,
+                                          window);
+  vec4 north = pn_backprojectionWallPieces(slabs, light, receiver, bias, gap, thickness, first.north, second.north,
+                                           slab, window);
+  vec4 south = pn_backprojectionWallPieces(slabs, light, receiver, bias, gap, thickness, first.south, second.south,
+                                           slab, window);
   uint walls = pn_backprojectionWallBits(east, west, north, south, lo, hi);
   int words = (side * side + 31) / 32, w = 0, spent = 0;
   for (int i = 0; i < 8 * PN_BACKPROJECTION_MASK_WORDS && walls != 0u; ++i) {
