@@ -158,14 +158,14 @@ PnBackprojectionNeighbours pn_backprojectionNeighbours(sampler2D map, sampler2D 
   if (level <= 0)
     return PnBackprojectionNeighbours(pn_mipMapTexel(map, q + ivec2(1, 0)), pn_mipMapTexel(map, q - ivec2(1, 0)),
                                       pn_mipMapTexel(map, q + ivec2(0, 1)), pn_mipMapTexel(map, q - ivec2(0, 1)));
-  PnMipShape shape = pn_mipShape(mip);
   return PnBackprojectionNeighbours(
-      pn_mipFetchOf(mip, shape, level, q + ivec2(1, 0)), pn_mipFetchOf(mip, shape, level, q - ivec2(1, 0)),
-      pn_mipFetchOf(mip, shape, level, q + ivec2(0, 1)), pn_mipFetchOf(mip, shape, level, q - ivec2(0, 1)));
+      pnMipFetch(map, mip, level, q + ivec2(1, 0)), pnMipFetch(map, mip, level, q - ivec2(1, 0)),
+      pnMipFetch(map, mip, level, q + ivec2(0, 1)), pnMipFetch(map, mip, level, q - ivec2(0, 1)));
 }
 
 // The wall of a node on its edge toward its neighbour in one direction, whose (min, max) are
-// `range` (and `back` in the second layer), as up to two pieces, each the windows (near, far) on the light of its bottom and its top: .xy and .zw,
+// `range` (and `back` in the second layer), as up to two pieces, each the windows (near, far) on
+// the light of its bottom and its top: .xy and .zw,
 // far 0 where there is none. `slab`: the node's (top, bottom); `window`: its patch's.
 //   Over slabs: only the depths the neighbour's slab does not cover — from the top down to the
 //   neighbour's top, and from its bottom down to the node's — since a ray that meets the union of
@@ -221,8 +221,9 @@ uint pn_backprojectionWallBits(vec4 east, vec4 west, vec4 north, vec4 south, vec
 // one loop over every (piece, mask word), so that a GPU holds one copy of a wall's test, not four
 // or eight (docs/isa.md) — the same iterations the pieces' own word loops ran. Returns the samples
 // tested.
-int pn_backprojectNode(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver, float bias,
-                       float gap, float thickness, int level, ivec2 q, vec2 slab, vec2 lo, vec2 hi, int side,
+int pn_backprojectNode(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, bool slabs,
+                       PnLight light, vec3 receiver, float bias, float gap, float thickness, int level, ivec2 q,
+                       vec2 slab, vec2 lo, vec2 hi, int side,
                        inout uint mask[PN_BACKPROJECTION_MASK_WORDS]) {
   float window = pnLightBlockerWindowTexels(light, receiver.z, slab.x);
   pn_backprojectPatch(lo, hi, window, side, mask);
@@ -260,7 +261,8 @@ int pn_backprojectNode(sampler2D map, sampler2D mip, sampler2D secondMap, sample
 // unread), or as slabs down to the second layer, secondMap with its min/max chain secondMip. A
 // texel's depth is read from its map, a node's range from the chain (pn_mipNodeOrTexel: a level-1
 // node's is its level-2 ancestor's, a superset: it stands as a patch less often).
-PnBackprojection pn_backprojectionWalk(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip, bool slabs, PnLight light, vec3 receiver,
+PnBackprojection pn_backprojectionWalk(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip,
+                                       bool slabs, PnLight light, vec3 receiver,
                                        PnBackprojectionSettings s) {
   float bias = s.bias;
   PnBackprojection result = PnBackprojection(1.0, 0.0, 0.0, 0.0);
@@ -304,8 +306,8 @@ PnBackprojection pn_backprojectionWalk(sampler2D map, sampler2D mip, sampler2D s
           result.patches += node.x > 0 ? 1.0 : 0.0;
           vec2 slab = slabs ? pn_backprojectionSlab(range, back, dP, bias)
                             : vec2(0.5 * (range.x + min(range.y, dP - bias)));
-          work += pn_backprojectNode(map, mip, secondMap, secondMip, slabs, light, receiver, bias, s.gap, s.thickness, node.x, node.yz,
-                                     slab, lo, hi, side, mask);
+          work += pn_backprojectNode(map, mip, secondMap, secondMip, slabs, light, receiver, bias, s.gap, s.thickness,
+                                     node.x, node.yz, slab, lo, hi, side, mask);
         }
       }
     }

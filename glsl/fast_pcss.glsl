@@ -182,8 +182,8 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D map, sampler2D sampleT
 // leafSide sampled, nodes above it descended (no budget; leaf side 1 descends to the texels, one a
 // step, where the general walk visits a level-1 node's four at once).
 // Step 4's midpoint sums are kept in Step 5 too, where nothing reads them.
-PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
-                                            vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
+PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light,
+                                            vec3 receiver, vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
   // Lit after Step 3: no region. The loop's condition reads data, not a constant count alone, so
   // no compiler unrolls it into two copies of the walk (an early return would make it a constant 2
@@ -254,8 +254,8 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
 #ifdef PN_FAST_PCSS_ABLATIONS
 // The bounded-work ablation's count of an entry's region (settings.grid > 0): pnGridRegionMip's
 // grid (Step 4 with depth sums, Step 5 without).
-PnTraversal pn_fastPcssGrid(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry, vec2 receiverPlane,
-                            PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
+PnTraversal pn_fastPcssGrid(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry,
+                            vec2 receiverPlane, PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
   PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
   return pnGridRegionMip(map, mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
                          s.grid, s.leafSide, leafMode, depthSums, pixel);
@@ -271,8 +271,8 @@ PnTraversalWalk pn_fastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTra
 
 // Any settings (PN_FAST_PCSS_ABLATIONS): traversal_mip.glsl's walk, with its budget, leaf modes,
 // windows and table sums, or the grid.
-PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
-                                              vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
+PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light,
+                                              vec3 receiver, vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
   int n = int(light.mapSize);
   PnFastPcssResult r = pn_fastPcssSearch(mip, light, receiver, receiverPlane, s);
   if (pnEntryLit(r.searchEntry)) return r;
@@ -300,8 +300,8 @@ PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D map, sampler2D mip, samp
   bool blockers = true;
   int limit = max(w.iterations, 1);
   for (int it = 0; it < limit; ++it) {
-    pn_traversalWalkStep(w, map, mip, shape, sampleTable, test, leafSide, blockers ? blockerLeafMode : s.leafMode, budget,
-                         blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
+    pn_traversalWalkStep(w, map, mip, shape, sampleTable, test, leafSide, blockers ? blockerLeafMode : s.leafMode,
+                         budget, blockers ? s.depthSums : PN_DEPTH_SUMS_NONE, pixel);
     if (!w.done && it + 1 < limit) continue;
     if (!blockers) {  // Step 5 is over
       pn_fastPcssOcclusionDone(r, w.r);
@@ -321,7 +321,8 @@ PnFastPcssResult pn_fastPcssAblationsEstimate(sampler2D map, sampler2D mip, samp
 PnFastPcssResult pnFastPcssEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,
                                     vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
 #ifdef PN_FAST_PCSS_ABLATIONS
-  if (!pn_fastPcssShipped(s)) return pn_fastPcssAblationsEstimate(map, mip, sampleTable, light, receiver, receiverPlane, pixel, s);
+  if (!pn_fastPcssShipped(s))
+    return pn_fastPcssAblationsEstimate(map, mip, sampleTable, light, receiver, receiverPlane, pixel, s);
 #endif
   return pn_fastPcssShippedEstimate(map, mip, sampleTable, light, receiver, receiverPlane, pixel, s);
 }

@@ -32,8 +32,8 @@
 //       widened by rounding), a sampled leaf's sample against its own texel's threshold, a min or
 //       ramp leaf at its part's centre. Gradient 0 is pnTraverseRegionMip exactly.
 //   PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
-//       ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide, int leafMode,
-//       int depthSums, ivec2 pixel)
+//       ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
+//       int leafMode, int depthSums, ivec2 pixel)
 //       bounded work (Fast PCSS's `grid`): the aligned nodes of the level whose side is the
 //       region's side / grid rounded up to a power of two — at most (grid + 1)² of them, 1 <= grid
 //       <= PN_GRID_MAX_CELLS (traversal.h) — each read once; an ambiguous node is a leaf, sampled
@@ -161,9 +161,9 @@ bool pn_traversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape sha
 // A node that will not be descended: its clipped part classified, and
 // estimated by the leaf mode when ambiguous (samples spread over the part).
 // Without samples (min, ramp) a sloped test is taken at the part's centre.
-void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D map, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
-                               int level, ivec2 origin, ivec2 lo, ivec2 hi, PnTraversalTest test, int leafMode,
-                               int depthSums, ivec2 pixel) {
+void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D map, sampler2D mip, PnMipShape shape,
+                               sampler2D sampleTable, int level, ivec2 origin, ivec2 lo, ivec2 hi,
+                               PnTraversalTest test, int leafMode, int depthSums, ivec2 pixel) {
   vec2 range;
   if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
@@ -238,8 +238,9 @@ PnTraversalWalk pn_traversalWalkBegin(PnMipShape shape, int mapSize, ivec2 regio
 }
 
 // The walk's next node (none once done). budget: pn_traversalBudget's.
-void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D map, sampler2D mip, PnMipShape shape, sampler2D sampleTable,
-                          PnTraversalTest test, int leafSide, int leafMode, int budget, int depthSums, ivec2 pixel) {
+void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D map, sampler2D mip, PnMipShape shape,
+                          sampler2D sampleTable, PnTraversalTest test, int leafSide, int leafMode, int budget,
+                          int depthSums, ivec2 pixel) {
   if (w.done) return;
   int side = 1 << w.level;
   ivec2 origin = pn_traversalNodeOrigin(w.rootOrigin, side, w.code);
@@ -249,7 +250,8 @@ void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D map, sampler2D mip,
   if (all(lessThan(lo, hi))) {
     bool spent = w.r.nodes + 1 >= budget;
     if (side <= leafSide || spent) {
-      pn_traversalVisitLeafPart(w.r, map, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums, pixel);
+      pn_traversalVisitLeafPart(w.r, map, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums,
+                                pixel);
     } else {
       vec2 range;
       if (pn_traversalClassifyPart(w.r, mip, shape, w.level, origin, lo, hi, test, depthSums, range)) {
@@ -345,8 +347,9 @@ PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable,
 PnTraversal pnTraverseRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
                                 ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias, int leafSide,
                                 int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
-  return pnTraverseRegionMipPlane(map, mip, sampleTable, mapSize, regionOrigin, regionSize, vec3(0.0, 0.0, receiverDepth),
-                                  vec2(0.0), bias, leafSide, leafMode, nodeBudget, depthSums, pixel);
+  return pnTraverseRegionMipPlane(map, mip, sampleTable, mapSize, regionOrigin, regionSize,
+                                  vec3(0.0, 0.0, receiverDepth), vec2(0.0), bias, leafSide, leafMode, nodeBudget,
+                                  depthSums, pixel);
 }
 
 #endif  // PENUMBRA_TRAVERSAL_MIP_GLSL
