@@ -87,7 +87,7 @@
 //   stackless: no local array); what bounds it in practice is the number of
 //   occluding texels whose segments reach: the penumbra's area in texels.
 //
-// isa budget: vgprs 64, instructions 2750, code 14848, scratch 0, loop 4150, loops 4700
+// isa budget: vgprs 64, instructions 2900, code 15616, scratch 0, loop 4450, loops 5000
 //   (`penumbra isa --budgets`: both calls as an engine compiles them, RDNA 2 wave64; docs/isa.md)
 
 #ifndef PENUMBRA_BACKPROJECTION_GLSL
@@ -149,7 +149,9 @@ vec2 pn_backprojectionSlab(vec2 range, vec2 back, float dP, float bias) {
 
 // The four neighbours of node q of `level` in one layer (east, west, north, south: +x, -x, +y, -y):
 // their (min, max), empty outside the map — texels from the map at level 0, nodes from the chain
-// above (pnMipFetch), one branch a node rather than one a read.
+// above (a level-1 neighbour's is its level-2 ancestor's: the walls of a standing level-1 node are
+// estimates anyway; its exact four texels, four neighbours over two layers, cost 1,200
+// instructions more over slabs): one branch a node rather than one a read.
 struct PnBackprojectionNeighbours {
   vec2 east, west, north, south;
 };
@@ -158,9 +160,10 @@ PnBackprojectionNeighbours pn_backprojectionNeighbours(sampler2D map, sampler2D 
   if (level <= 0)
     return PnBackprojectionNeighbours(pn_mipMapTexel(map, q + ivec2(1, 0)), pn_mipMapTexel(map, q - ivec2(1, 0)),
                                       pn_mipMapTexel(map, q + ivec2(0, 1)), pn_mipMapTexel(map, q - ivec2(0, 1)));
+  PnMipShape shape = pn_mipShape(mip);
   return PnBackprojectionNeighbours(
-      pnMipFetch(map, mip, level, q + ivec2(1, 0)), pnMipFetch(map, mip, level, q - ivec2(1, 0)),
-      pnMipFetch(map, mip, level, q + ivec2(0, 1)), pnMipFetch(map, mip, level, q - ivec2(0, 1)));
+      pn_mipFetchOf(mip, shape, level, q + ivec2(1, 0)), pn_mipFetchOf(mip, shape, level, q - ivec2(1, 0)),
+      pn_mipFetchOf(mip, shape, level, q + ivec2(0, 1)), pn_mipFetchOf(mip, shape, level, q - ivec2(0, 1)));
 }
 
 // The wall of a node on its edge toward its neighbour in one direction, whose (min, max) are
@@ -259,8 +262,8 @@ int pn_backprojectNode(sampler2D map, sampler2D mip, sampler2D secondMap, sample
 
 // The walk of both calls: texels as the gap rule's surface (slabs false; secondMap and secondMip
 // unread), or as slabs down to the second layer, secondMap with its min/max chain secondMip. A
-// texel's depth is read from its map, a node's range from the chain (pn_mipNodeOrTexel: a level-1
-// node's is its level-2 ancestor's, a superset: it stands as a patch less often).
+// node's range is read exactly (pn_mipExactNode: below the chain's first level, from the map's
+// texels), as when the chain held every level.
 PnBackprojection pn_backprojectionWalk(sampler2D map, sampler2D mip, sampler2D secondMap, sampler2D secondMip,
                                        bool slabs, PnLight light, vec3 receiver,
                                        PnBackprojectionSettings s) {
@@ -280,7 +283,7 @@ PnBackprojection pn_backprojectionWalk(sampler2D map, sampler2D mip, sampler2D s
   ivec3 node = ivec3(top, 0, 0);  // (level, node x, node y)
   int visited = 0, work = 0;      // nodes; loop iterations in all (PN_BACKPROJECTION_MAX_WORK)
   for (int step = 0; step < PN_BACKPROJECTION_MAX_BUDGET + PN_BACKPROJECTION_TAIL && node.x <= top; ++step) {
-    vec2 range = pn_mipNodeOrTexel(map, mip, node.x, node.yz);  // every node the walk visits lies in the chain
+    vec2 range = pn_mipExactNode(map, mip, node.x, node.yz);  // every node the walk visits lies in the chain
     ++visited;
     ++work;
     bool resolve = false;
@@ -292,7 +295,7 @@ PnBackprojection pn_backprojectionWalk(sampler2D map, sampler2D mip, sampler2D s
       bool within = !(any(greaterThan(lo, vec2(0.5 * reach))) || any(lessThan(hi, vec2(-0.5 * reach))));
       if (within) {
         // The second layer's (min, max) over the node (slabs); a uniform one (+Inf alike) spreads 0.
-        vec2 back = slabs ? pn_mipNodeOrTexel(secondMap, secondMip, node.x, node.yz) : vec2(0.0);
+        vec2 back = slabs ? pn_mipExactNode(secondMap, secondMip, node.x, node.yz) : vec2(0.0);
         float spread = max(range.y - range.x,
                            back.y == back.x ? 0.0 : (back.y - back.x) / PN_BACKPROJECTION_SECOND_LAYER_TOLERANCE);
         // A node is resolved unless both layers' ranges are tight (a NaN spread resolves); a texel

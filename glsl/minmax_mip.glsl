@@ -33,10 +33,6 @@
 //   of side P (10.7 MiB at 4096²).
 //
 // use:
-//   vec2  pnMipFetch(sampler2D map, sampler2D mip, int level, ivec2 node)   (min, max) of aligned
-//         node `node` of `level`: exact from level 2 up and at level 0 (the texel, from the map),
-//         its level-2 ancestor's at level 1 (a superset); (+Inf, -Inf) outside the map (no read
-//         is out of bounds)
 //   float pnMipMapDepth(sampler2D map, ivec2 p)   texel p's depth as the chain holds it (sanitized)
 //   int   pnMipMaxLevel(sampler2D mip)            log2 P
 //   vec2  pnMipSquareMinMax(sampler2D mip, int mapSize, ivec2 origin, int side)
@@ -175,19 +171,26 @@ vec2 pn_mipMapTexel(sampler2D map, ivec2 p) {
   return inside ? vec2(d, d) : pn_mipEmpty();
 }
 
-// Node `node` of `level` inside the chain (0 <= node < P / 2^level): a texel's (d, d) at level 0,
-// from the map (empty in the padding); above, pn_mipNodeRead's pair (level 1: its level-2
-// ancestor's). Both fetched and one selected, not branched on: back-projection's walls read four
-// or eight of these a node, and the branches cost it 10 % more instructions in its loop (docs/isa.md).
-vec2 pn_mipNodeOrTexel(sampler2D map, sampler2D mip, int level, ivec2 node) {
-  vec2 texel = pn_mipMapTexel(map, node), pair = pn_mipNodeRead(mip, level, node);
-  return level <= 0 ? texel : pair;
+// The exact (min, max) of node `node` of level 0 or 1 over its texels in the map (one or four
+// fetches; a texel past the map's edge read as the edge's, which the node holds); empty outside
+// the map.
+vec2 pn_mipMapNode(sampler2D map, int level, ivec2 node) {
+  ivec2 n = textureSize(map, 0);
+  ivec2 lo = node << clamp(level, 0, 1);
+  bool inside = all(greaterThanEqual(lo, ivec2(0))) && all(lessThan(lo, n));
+  ivec2 hi = clamp(lo + (1 << clamp(level, 0, 1)) - 1, ivec2(0), n - 1);
+  lo = clamp(lo, ivec2(0), n - 1);
+  float a = pnMipMapDepth(map, lo), b = pnMipMapDepth(map, ivec2(hi.x, lo.y));
+  float c = pnMipMapDepth(map, ivec2(lo.x, hi.y)), d = pnMipMapDepth(map, hi);
+  return inside ? vec2(min(min(a, b), min(c, d)), max(max(a, b), max(c, d))) : pn_mipEmpty();
 }
 
-// The same for any node; empty outside the map.
-vec2 pnMipFetch(sampler2D map, sampler2D mip, int level, ivec2 node) {
-  vec2 texel = pn_mipMapTexel(map, node), pair = pn_mipFetchOf(mip, pn_mipShape(mip), level, node);
-  return level <= 0 ? texel : pair;
+// The same for node `node` of any `level` inside the chain (0 <= node < P / 2^level): from level
+// PN_MIP_FIRST_LEVEL up the chain's pair (one fetch, no bounds logic). For a walk that needs a small
+// node's own range (back-projection: a node tight enough stands as one patch).
+vec2 pn_mipExactNode(sampler2D map, sampler2D mip, int level, ivec2 node) {
+  if (level >= PN_MIP_FIRST_LEVEL) return pn_mipKeptNode(mip, level, node);
+  return pn_mipMapNode(map, level, node);
 }
 
 // The first level's node of `first` = (x, y) texels [4x, 4x + 4) × [4y, 4y + 4): the min / max

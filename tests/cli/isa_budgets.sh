@@ -44,7 +44,7 @@ on_copy() {
 }
 
 # Fast PCSS's call keeps a local array indexed per pixel: scratch memory.
-on_copy 's/(float pnFastPcss\(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver,\n\s*ivec2 pixel, PnFastPcssSettings settings\) \{\n)/$1  float kept[256];\n  for (int i = 0; i < 256; ++i) kept[i] = receiver.z * float(i);\n  if (kept[(pixel.x * 7 + pixel.y) & 255] < 0.0) return 0.5;\n/' \
+on_copy 's/(float pnFastPcss\(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light, vec3 receiver, ivec2 pixel,\n\s*PnFastPcssSettings settings\) \{\n)/$1  float kept[256];\n  for (int i = 0; i < 256; ++i) kept[i] = receiver.z * float(i);\n  if (kept[(pixel.x * 7 + pixel.y) & 255] < 0.0) return 0.5;\n/' \
   'float kept\[256\]' 1 "a local array"
 printf '%s\n' "$out" | grep -q "over budget: fast_pcss engine compute: [0-9]* scratch > 0 (fast_pcss.glsl:" ||
   { echo "no line naming Fast PCSS's scratch and its budget"; exit 1; }
