@@ -95,7 +95,7 @@ int pn_mipPaddedSize(sampler2D mip) {
 }
 
 int pnMipMaxLevel(sampler2D mip) {
-  return findMSB(max(pn_mipPaddedSize(mip), 1));
+  return findMSB(pn_mipPaddedSize(mip));  // P >= 4: the chain has a first level
 }
 
 // The chain's padded side P and top level, read once by a caller that reads many nodes:
@@ -108,7 +108,7 @@ struct PnMipShape {
 
 PnMipShape pn_mipShape(sampler2D mip) {
   int rows = pn_mipPaddedSize(mip);
-  return PnMipShape(rows, findMSB(max(rows, 1)));
+  return PnMipShape(rows, findMSB(rows));
 }
 
 // Texel `texel` of `level` (>= PN_MIP_FIRST_LEVEL) when `wanted`: two nodes' (min, max); both
