@@ -127,34 +127,24 @@ vec4 pn_mipTexelIf(sampler2D mip, PnMipShape shape, int level, ivec2 texel, bool
   return inside ? t : vec4(pn_mipEmpty(), pn_mipEmpty());
 }
 
-// Node `node` of `level`, known to lie in the chain (0 <= node < P / 2^level on each axis, level
-// <= log2 P), bounded: its own (min, max) from level PN_MIP_FIRST_LEVEL up, below that its
-// ancestor's of that level — a superset, so a decision made from it (all below a threshold, none
-// below) is right for the node; one fetch, no branch, no bounds logic — for a walk whose nodes are
-// inside by construction (nodes touching a region clipped to the map). A node the bound leaves
-// undecided is descended, or its texels read from the map (pnMipMapDepth).
-vec2 pn_mipKeptNode(sampler2D mip, int level, ivec2 node) {  // level >= PN_MIP_FIRST_LEVEL
+// Node `node` of a kept level (PN_MIP_FIRST_LEVEL <= level <= log2 P), inside the chain: one fetch.
+vec2 pn_mipKeptNode(sampler2D mip, int level, ivec2 node) {
   vec4 t = texelFetch(mip, ivec2(node.x >> 1, node.y), level - PN_MIP_FIRST_LEVEL);
   return (node.x & 1) != 0 ? t.zw : t.xy;
 }
 
-vec2 pn_mipNodeRead(sampler2D mip, int level, ivec2 node) {
-  int l = max(level, PN_MIP_FIRST_LEVEL);
-  return pn_mipKeptNode(mip, l, node >> (l - level));
-}
-
-// The same for the node of `level` that holds texel `texel`.
+// The node of `level` (<= log2 P) that holds texel `texel` (in the chain), bounded: its own
+// (min, max) from level PN_MIP_FIRST_LEVEL up, below that its ancestor's of that level — a
+// superset, so a decision made from it (all below a threshold, none below) is right for the node;
+// one fetch, no branch, no bounds logic — for a walk whose nodes are inside by construction (nodes
+// touching a region clipped to the map). A node the bound leaves undecided is descended, or its
+// texels read from the map (pnMipMapDepth).
 vec2 pn_mipNodeAt(sampler2D mip, int level, ivec2 texel) {
   int l = max(level, PN_MIP_FIRST_LEVEL);
   return pn_mipKeptNode(mip, l, texel >> l);
 }
 
-vec2 pn_mipNodeInside(sampler2D mip, int level, ivec2 node) {
-  PN_ON_TEXEL_FETCH();
-  return pn_mipNodeRead(mip, level, node);
-}
-
-// Node `node` of `level`, bounded as pn_mipNodeRead; the empty pair outside the level.
+// Node `node` of `level`, bounded as pn_mipNodeAt; the empty pair outside the level.
 vec2 pn_mipFetchOf(sampler2D mip, PnMipShape shape, int level, ivec2 node) {
   int l = max(level, PN_MIP_FIRST_LEVEL);
   ivec2 kept = node >> (l - level);
