@@ -47,7 +47,8 @@ std::vector<CaseResult> run_minmax_mip_check(const CheckEnvironment& env) {
     for (int n : kSizes) {
       const Image map = generate_fixture(fixture, n, n);
       const Image depth = sanitized_depths(map);
-      const MinMaxMipChain chain = builder.build(*env.device.upload(map), n);
+      const std::unique_ptr<DeviceTexture> texture = env.device.upload(map);
+      const MinMaxMipChain chain = builder.build(*texture, n);
       for (int level = chain.first_level; level <= chain.top_level; ++level) {
         const Image expected = expected_level(depth, chain.padded_size, level);
         const Image observed = read_mip_chain_level(env.device, chain, level);

@@ -1,6 +1,9 @@
 // The pcss_regions check's cases on rendered scenes: the tall blocker's own map and
 // G-buffer in every mode, the lit-coverage property there and on the boxes'
 // far field (pcss_regions_check.cpp states the tolerances).
+#include <memory>
+#include <utility>
+
 #include "check/pcss_regions_cases.h"
 #include "scenes.h"
 #include "pass_runners/depth_pyramid_pass.h"
@@ -20,6 +23,7 @@ struct SceneData {
   LightModel light;
   Image map, gbuffer;
   DepthPyramid pyramid;
+  std::unique_ptr<DeviceTexture> map_texture;  // what `mip` was built from (MinMaxMipChain::map)
   MinMaxMipChain mip;
   std::vector<RegionReceiver> receivers;
 };
@@ -28,7 +32,7 @@ SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int ma
                      int screen_size = kSceneScreen) {
   const Scene scene = make_scene(find_scene_fixture(scene_name), map_size);
   // The scene's map and G-buffer as a frame renders them (render_scene_frame), on the executor.
-  const std::unique_ptr<DeviceTexture> map = ShadowMapRenderer(env.device, env.tree).render_texture(scene, scene.map_light());
+  std::unique_ptr<DeviceTexture> map = ShadowMapRenderer(env.device, env.tree).render_texture(scene, scene.map_light());
   const std::unique_ptr<DeviceTexture> gbuffer = GBufferRenderer(env.device, env.tree)
                                                      .render_texture(scene, screen_size, fixtures::kNormalOffsetTexels,
                                                                      scene.map_light());
@@ -39,6 +43,7 @@ SceneData scene_data(const CheckEnvironment& env, const char* scene_name, int ma
   s.gbuffer = env.device.read_texture(*gbuffer);
   s.pyramid = DepthPyramidBuilder(env.device, env.tree).build(*map, map_size, map_size, 31);
   s.mip = MinMaxMipBuilder(env.device, env.tree).build(*map, map_size);
+  s.map_texture = std::move(map);
   for (int y = 0; y < screen_size; ++y)
     for (int x = 0; x < screen_size; ++x)
       s.receivers.push_back({s.gbuffer.at(x, y, 0), s.gbuffer.at(x, y, 1), s.gbuffer.at(x, y, 2), s.gbuffer.at(x, y, 3)});

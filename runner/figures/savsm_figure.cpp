@@ -44,7 +44,8 @@ Canvas savsm_bleeding_figure(const Context& context, const SourceTree& tree) {
   const GlObject texture = upload_float_texture(context, map);
   const MomentsTable table = SummedAreaMomentsPass(context, tree).build(GlDeviceTexture(texture), n, n, MomentsTableKind::fixed,
                                                                         unit_range(light.near_plane, light.far_plane));
-  const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(GlDeviceTexture(texture), n);
+  const GlDeviceTexture map_texture(texture);  // the chain's map: kept while the chain is
+  const MinMaxMipChain mip = MinMaxMipBuilder(context, tree).build(map_texture, n);
   const SavsmQueryPass pass(context, tree);
   std::vector<SavsmReceiver> receivers;
   for (int y = 0; y < n; ++y)
