@@ -78,7 +78,8 @@
 //         sampler2D secondMip, PnLight light, vec3 receiver, PnBackprojectionSettings s)   its work
 //   (and backprojection_mask.glsl's pnBackprojectionSample(k, side): light sample k, in [-1/2, 1/2]²)
 //
-// cost: per node visited one fetch, per texel four more (its neighbours); per
+// cost: per node visited one fetch (a level-1 node four, of the map's texels), per texel four more
+//   (its neighbours); per
 //   patch side² / 32 mask words and four samples tested one by one; per wall
 //   the samples not yet set in its box on the light, one by one. Over slabs,
 //   per node two fetches, per texel or standing node eight more (both layers
@@ -150,7 +151,7 @@ vec2 pn_backprojectionSlab(vec2 range, vec2 back, float dP, float bias) {
 // The four neighbours of node q of `level` in one layer (east, west, north, south: +x, -x, +y, -y):
 // their (min, max), empty outside the map — texels from the map at level 0, nodes from the chain
 // above (a level-1 neighbour's is its level-2 ancestor's: the walls of a standing level-1 node are
-// estimates anyway; its exact four texels, four neighbours over two layers, cost 1,200
+// estimates anyway; its exact four texels, four neighbours over two layers, cost 1,000
 // instructions more over slabs): one branch a node rather than one a read.
 struct PnBackprojectionNeighbours {
   vec2 east, west, north, south;
@@ -158,8 +159,9 @@ struct PnBackprojectionNeighbours {
 
 PnBackprojectionNeighbours pn_backprojectionNeighbours(sampler2D map, sampler2D mip, int level, ivec2 q) {
   if (level <= 0)
-    return PnBackprojectionNeighbours(pn_mipMapTexel(map, q + ivec2(1, 0)), pn_mipMapTexel(map, q - ivec2(1, 0)),
-                                      pn_mipMapTexel(map, q + ivec2(0, 1)), pn_mipMapTexel(map, q - ivec2(0, 1)));
+    return PnBackprojectionNeighbours(
+        pn_mipMapNode(map, 0, q + ivec2(1, 0)), pn_mipMapNode(map, 0, q - ivec2(1, 0)),
+        pn_mipMapNode(map, 0, q + ivec2(0, 1)), pn_mipMapNode(map, 0, q - ivec2(0, 1)));
   PnMipShape shape = pn_mipShape(mip);
   return PnBackprojectionNeighbours(
       pn_mipFetchOf(mip, shape, level, q + ivec2(1, 0)), pn_mipFetchOf(mip, shape, level, q - ivec2(1, 0)),

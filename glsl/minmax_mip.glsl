@@ -149,16 +149,8 @@ vec2 pn_mipFetchOf(sampler2D mip, PnMipShape shape, int level, ivec2 node) {
   int l = max(level, PN_MIP_FIRST_LEVEL);
   ivec2 kept = node >> (l - level);
   int nodes = max(shape.rows >> clamp(level, 0, shape.top), 1);
-  vec4 t = pn_mipTexelIf(mip, shape, l, ivec2(kept.x >> 1, kept.y), node.x < nodes && node.y < nodes);
+  vec4 t = pn_mipTexelIf(mip, shape, l, ivec2(kept.x >> 1, kept.y), node.x < nodes);
   return (kept.x & 1) != 0 ? t.zw : t.xy;
-}
-
-// Texel p of the map as a node, (d, d); empty outside the map (the padding).
-vec2 pn_mipMapTexel(sampler2D map, ivec2 p) {
-  ivec2 n = textureSize(map, 0);
-  bool inside = all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, n));
-  float d = pnMipMapDepth(map, clamp(p, ivec2(0), n - 1));
-  return inside ? vec2(d, d) : pn_mipEmpty();
 }
 
 // The exact (min, max) of node `node` of level 0 or 1 over its texels in the map (one or four

@@ -8,7 +8,6 @@
 #include "modules/depth_pyramid_face.h"
 
 namespace pn::glsl {
-#include "minmax_mip.h"
 #include "passes/minmax_mip_build.h"
 PN_STD140_SIZE(PnMipBuildParams, 16);
 PN_STD140_OFFSET(PnMipBuildParams, texelCount, 8);
@@ -16,19 +15,15 @@ PN_STD140_OFFSET(PnMipBuildParams, texelCount, 8);
 
 namespace pn {
 
-int MinMaxMipChain::first_level_kept() {
-  return PN_MIP_FIRST_LEVEL;
-}
-
 int MinMaxMipChain::padded_size_for(int map_size) {
-  int p = 1 << first_level_kept();  // the first level's one node at least
+  int p = 1 << first_level;  // the first level's one node at least
   while (p < map_size && p < (1 << 30)) p *= 2;
   return p;
 }
 
 std::size_t MinMaxMipChain::memory_bytes(int map_size) {
   std::size_t texels = 0;
-  for (int side = padded_size_for(map_size) >> first_level_kept(); side >= 1; side /= 2)
+  for (int side = padded_size_for(map_size) >> first_level; side >= 1; side /= 2)
     texels += static_cast<std::size_t>(std::max(side / 2, 1)) * side;
   return 16 * texels;  // RGBA32F texels, two nodes each
 }
@@ -55,11 +50,10 @@ MinMaxMipChain MinMaxMipBuilder::allocate(int map_size) const {
   MinMaxMipChain chain;
   chain.map_size = map_size;
   chain.padded_size = MinMaxMipChain::padded_size_for(map_size);
-  chain.first_level = MinMaxMipChain::first_level_kept();
   chain.top_level = floor_log2(chain.padded_size);
-  chain.levels = chain.top_level - chain.first_level + 1;
   chain.texture = device_->make_texture({TexelFormat::rgba32f, chain.level_width(chain.first_level),
-                                         chain.level_rows(chain.first_level), chain.levels, 1, false});
+                                         chain.level_rows(chain.first_level),
+                                         chain.top_level - chain.first_level + 1, 1, false});
   return chain;
 }
 

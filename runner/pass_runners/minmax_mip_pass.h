@@ -13,6 +13,7 @@
 #include "core/texel_rect.h"
 #include "device/query_device.h"
 #include "device/texel_list.h"
+#include "minmax_mip.h"  // PN_MIP_FIRST_LEVEL
 #include "shader/source_tree.h"
 
 namespace pn {
@@ -23,16 +24,14 @@ struct MinMaxMipChain {
   std::unique_ptr<DeviceTexture> texture;  // RGBA32F, (P/8)×(P/4), log2 P - 1 mip levels, two nodes a texel; P = the least power of two >= max(map_size, 4)
   int map_size = 0;
   int padded_size = 0;  // P
-  int first_level = 0;  // the node level of the texture's mip 0
-  int top_level = 0;    // log2 P
-  int levels = 0;       // the texture's mip levels: top_level - first_level + 1
+  static constexpr int first_level = PN_MIP_FIRST_LEVEL;  // the node level of the texture's mip 0
+  int top_level = 0;                                      // log2 P: mips top_level - first_level + 1
   // The map it was last built from, not owned: every reader binds it beside the chain (its texels,
   // and the levels below first_level). It must outlive the chain's use.
   const DeviceTexture* map = nullptr;
   // *map; throws Error before the chain was built.
   const DeviceTexture& built_map() const;
 
-  static int first_level_kept();
   static int padded_size_for(int map_size);
   static std::size_t memory_bytes(int map_size);  // 16 bytes × texels of every level (8 a node)
   // Texels of node level `level`: P / 2^level rows, half as many (at least one) across.

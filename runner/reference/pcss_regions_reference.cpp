@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "minmax_mip.h"  // PN_MIP_FIRST_LEVEL
 #include "reference/depth_pyramid_reference.h"
 #include "reference/region_reference.h"
 
@@ -87,7 +88,7 @@ Rect mip_square_cover(const Rect& r, int n) {
   if (r.width <= 0 || r.height <= 0) return Rect{};
   const int side = std::max(r.width, r.height);
   const int x1 = std::min(r.x + side, n), y1 = std::min(r.y + side, n);
-  int level = 2;  // the chain's first level (minmax_mip.glsl): nodes of side 4 and up
+  int level = PN_MIP_FIRST_LEVEL;  // the chain's first level: nodes of side 4 and up
   while ((2 << level) < std::max(x1 - r.x, y1 - r.y)) ++level;  // 2^(level+1) >= m
   const int x0 = r.x >> level << level, y0 = r.y >> level << level;
   const int x2 = std::min((((x1 - 1) >> level) + 1) << level, n), y2 = std::min((((y1 - 1) >> level) + 1) << level, n);

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/format.h"
+#include "minmax_mip.h"  // PN_MIP_FIRST_LEVEL
 #include "reference/pcf_reference.h"
 #include "reference/pcss_regions_reference.h"  // pcss_square
 
@@ -111,7 +112,7 @@ int savsm_square_fetches(const Rect& rect, int n) {
   // node on an axis may be cut by the map's edge): one fetch each.
   const int side = std::max(rect.width, rect.height), clipped = std::max(std::min(rect.x + side, n) - rect.x,
                                                                          std::min(rect.y + side, n) - rect.y);
-  int node = 4;  // the chain's first level's side (minmax_mip.glsl)
+  int node = 1 << PN_MIP_FIRST_LEVEL;  // the chain's first level's side
   while (2 * node < clipped) node *= 2;
   const auto count = [node](int from, int length) { return (from + length - 1) / node - from / node + 1; };
   return count(c.x, c.width) * count(c.y, c.height);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "minmax_mip.h"  // PN_MIP_FIRST_LEVEL
 #include "reference/receiver_plane_reference.h"
 
 namespace pn {
@@ -167,7 +168,7 @@ void add_occluding_part(const Image& depth, int lx, int ly, int hx, int hy, floa
 
 // The chain keeps nodes of side 4 and up (minmax_mip.glsl): a smaller node is decided by the range
 // of the side-4 node that holds it — a superset of its texels.
-constexpr int kKeptSide = 4;
+constexpr int kKeptSide = 1 << PN_MIP_FIRST_LEVEL;
 
 std::pair<float, float> kept_node_range(const Image& depth, int ox, int oy, int side) {
   if (side >= kKeptSide) return node_range(depth, ox, oy, side);
@@ -257,7 +258,7 @@ TraversalResult grid_count(const Image& depth, const SampleTable& table, const R
   r.texels = static_cast<double>(region.width) * region.height;
   const float t = p.receiver_depth - p.bias;
   if (std::isnan(t) || r.texels == 0) return r;
-  int padded = kKeptSide, max_level = 2;
+  int padded = kKeptSide, max_level = PN_MIP_FIRST_LEVEL;
   while (padded < std::max(depth.width, depth.height)) padded *= 2, ++max_level;
   const int cells = std::clamp(grid, 1, PN_GRID_MAX_CELLS);
   const int wanted = std::max(1, (std::max(region.width, region.height) + cells - 1) / cells);
