@@ -20,7 +20,10 @@ namespace pn {
 struct CheckOptions {
   std::optional<BlurParams> blur;  // replaces the blur check's parameter list
   // --quick: each check on the fixtures of check_scenes / check_texture_fixtures below, not all of
-  // them; every program still runs (the suite's Vulkan, HLSL and ES runs: docs/reliability.md).
+  // them, and without its large-data cases (the same programs on more texels: pipeline's and
+  // pcss_regions' 512² screens, savsm's 1024² map, summed_area's 1024² and 2048² tables,
+  // depth_cache's sequence at K = 1); every program still runs (the suite's Vulkan, HLSL and
+  // ES runs: docs/reliability.md).
   bool quick = false;
 };
 

@@ -69,7 +69,9 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_flag("-v,--every-case", opt->every_case, "List every case with its worst element, passing ones too");
   cmd->add_flag("--quick", opt->quick,
                 "Each check on one scene (tall_blocker) and three texture fixtures (step_edge, nonfinite, boxes), not all, "
-                "and no 512² quality case: every program still runs (the suite's runs on ES, Vulkan and HLSL)");
+                "and none of the large-data cases (pipeline's and pcss_regions' 512² screens, savsm's 1024² map, summed_area's 1024² "
+                "and 2048² tables, depth_cache's sequence at K = 1): every program still runs (the suite's runs on ES, "
+                "Vulkan and HLSL)");
   cmd->add_option("--blur-depth-tolerance", opt->blur_depth_tolerance, "Relative depth tolerance (>= 0)");
   cmd->add_option("--gpu-timeout", opt->bounds.timeout_s,
                   "Seconds one dispatch may take before the check fails (default 60; 0.1 to 3600)");

@@ -72,9 +72,15 @@ void MinMaxMipBuilder::dispatch_level(const DeviceTexture& shadow_map, const Min
 }
 
 void MinMaxMipBuilder::build_into(const DeviceTexture& shadow_map, MinMaxMipChain& chain) const {
+  build_levels(shadow_map, chain, chain.first_level, chain.top_level);
+}
+
+void MinMaxMipBuilder::build_levels(const DeviceTexture& shadow_map, MinMaxMipChain& chain, int first, int last) const {
+  if (first < chain.first_level || last > chain.top_level)
+    throw Error("mip chain levels " + std::to_string(first) + ".." + std::to_string(last) + ": expected within " +
+                std::to_string(chain.first_level) + ".." + std::to_string(chain.top_level));
   chain.map = &shadow_map;
-  for (int level = chain.first_level; level <= chain.top_level; ++level)
-    dispatch_level(shadow_map, chain, level, {0, 0, true}, *no_texels_);
+  for (int level = first; level <= last; ++level) dispatch_level(shadow_map, chain, level, {0, 0, true}, *no_texels_);
 }
 
 void MinMaxMipBuilder::update_into(const DeviceTexture& shadow_map, MinMaxMipChain& chain,

@@ -174,6 +174,10 @@ bool shadowing_blocker(const DepthScan& scan, const LightModel& light, const Reg
       // rounding of that width and of the square's origin: in all of them, or in some.
       const double w = light.blocker_window_texels(d, z);
       const auto side = [&](double s) { return std::clamp(std::round(s), 1.0, 4.0 * n); };
+      // Outside the widest variant's reach (its side, its origin's rounding, a texel to spare): in
+      // none of them. Only a shortcut: what follows decides the same for such a texel.
+      const double reach = 0.5 * side(w * (1.0 + rel)) + rel * (std::fabs(u) + std::fabs(v) + 4.0 * n + 1.0) + 2.0;
+      if (std::fabs(x + 0.5 - u) > reach || std::fabs(y + 0.5 - v) > reach) continue;
       bool all = true, some = false;
       for (const double m : {side(w), side(w * (1.0 - rel)), side(w * (1.0 + rel))}) {
         const double du = rel * (std::fabs(u) + m + 1.0), dv = rel * (std::fabs(v) + m + 1.0);
