@@ -22,11 +22,12 @@ struct PyramidBenchRow {
   std::size_t mip_bytes = 0;
   double mip_ms = 0.0;
   double mip_wall_ms = 0.0;
-  // The build's first dispatch alone (node level 2 from the map) and the tail after it (levels 3 to
-  // log2 P, one dispatch each), timed apart: the tail bounds what one single-dispatch build (AMD's
-  // SPD: every level in group memory) could save here.
+  // The build's first dispatch alone (node level 2 from the map), and the rest (levels 3 to log2 P,
+  // one dispatch each): the median over rounds of the whole build less the first dispatch, timed in
+  // the same round. The rest bounds what one single-dispatch build (AMD's SPD: every level in group
+  // memory) could save here.
   double mip_first_ms = 0.0;
-  double mip_tail_ms = 0.0;
+  double mip_rest_ms = 0.0;
   int mip_dispatches = 0;
   std::size_t sums_bytes = 0;  // the summed-area table of depth (summed_area.glsl)
   double sums_ms = 0.0;        // median GPU time of its build

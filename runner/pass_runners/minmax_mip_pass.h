@@ -52,7 +52,7 @@ class MinMaxMipBuilder {
   MinMaxMipChain allocate(int map_size) const;
   void build_into(const DeviceTexture& shadow_map, MinMaxMipChain& chain) const;
   // Node levels first..last only (one dispatch each), the levels below first already built: what
-  // `bench pyramid` times apart, the first dispatch (the map read) and the tail after it.
+  // `bench pyramid` times the first dispatch (the map read) apart from the whole build.
   void build_levels(const DeviceTexture& shadow_map, MinMaxMipChain& chain, int first, int last) const;
   // allocate + build_into, for a map_size × map_size R32F shadow map.
   MinMaxMipChain build(const DeviceTexture& shadow_map, int map_size) const;
