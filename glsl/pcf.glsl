@@ -46,6 +46,15 @@
 //                          float bias)          with a receiver plane (receiver_plane.glsl): texel q
 //         occludes when d(q) < d - bias + gradient · (q + 1/2 - (u, v)), receiver = (u, v, d);
 //         gradient 0 is pnPcfWindow exactly (pnPcfAddRowsPlane: the same for a band of rows)
+//   PnPcf pnPcfAreaPlane(sampler2D depthMap, PnArea area, vec3 receiver, vec2 gradient, float bias)
+//         the area-weighted window (region.glsl's pnRegionArea, issue 51): every texel of
+//         area.cover in the map counts with its overlap w with the square (pnRegionAreaSpan's
+//         product): occluders = sum of w over the occluding texels, depthSum = sum of w d over them,
+//         texels = sum of w (the square's area inside the map, read); gradient 0: no receiver plane.
+//         The same PN_PCF_MAX_SIDE bound from the cover's clipped top-left texel.
+//   PnPcf pnPcfAddAreaRowsPlane(sampler2D depthMap, PnArea area, vec3 receiver, vec2 gradient,
+//                               float bias, int firstRow, int rowCount, PnPcf sums)
+//         sums + the band's rows, as pnPcfAddRows: bands in row order add up to the whole call
 //   PnPcf pnPcfZero()
 //   float pnPcfBilinearVisibility(sampler2D depthMap, vec2 position, float receiverDepth, float bias)
 //         hard shadow with 2×2 bilinear PCF (what a hardware shadow sampler does; seed 003's
@@ -77,6 +86,7 @@
 #define PENUMBRA_PCF_GLSL
 
 #include "receiver_plane.glsl"
+#include "region.glsl"
 
 #ifndef PN_PCF_MAX_SIDE
 #define PN_PCF_MAX_SIDE 8192
@@ -150,6 +160,43 @@ PnPcf pnPcfWindowPlane(sampler2D depthMap, ivec2 origin, ivec2 size, vec3 receiv
 PnPcf pnPcfWindow(sampler2D depthMap, ivec2 origin, ivec2 size, float receiverDepth, float bias) {
   // Every row of the map: the clipped window's rows lie in [0, map height).
   return pnPcfAddRows(depthMap, origin, size, receiverDepth, bias, 0, textureSize(depthMap, 0).y, pnPcfZero());
+}
+
+PnPcf pnPcfAddAreaRowsPlane(sampler2D depthMap, PnArea area, vec3 receiver, vec2 gradient, float bias, int firstRow,
+                            int rowCount, PnPcf sums) {
+  ivec2 n = textureSize(depthMap, 0);
+  ivec2 lo = clamp(area.cover.origin, ivec2(0), n);
+  ivec2 hi = clamp(area.cover.origin + max(area.cover.size, ivec2(0)), lo, n);
+  hi = min(hi, lo + ivec2(PN_PCF_MAX_SIDE));
+  int rowStart = max(lo.y, firstRow);
+  int rowEnd = min(hi.y, firstRow + max(rowCount, 0));
+  float t = receiver.z - bias;
+  for (int y = rowStart; y < rowEnd; ++y) {
+    // A row's sums by column weight, then scaled by the row's: w = wx wy, one product a row.
+    PnPcf row = pnPcfZero();
+    for (int x = lo.x; x < hi.x; x += PN_PCF_ROW_STEP) {
+      for (int i = 0; i < PN_PCF_ROW_STEP; ++i) {  // constant trip count: unrolled
+        if (x + i < hi.x) {
+          float w = pnRegionAreaSpan(area, x + i, 0);
+          float d = texelFetch(depthMap, ivec2(x + i, y), 0).r;
+          if (pnPcfOccludes(d, pnReceiverPlaneThreshold(t, gradient, receiver.xy, ivec2(x + i, y)))) {
+            row.occluders += w;
+            row.depthSum += w * d;
+          }
+          row.texels += w;
+        }
+      }
+    }
+    float wy = pnRegionAreaSpan(area, y, 1);
+    sums.occluders += wy * row.occluders;
+    sums.depthSum += wy * row.depthSum;
+    sums.texels += wy * row.texels;
+  }
+  return sums;
+}
+
+PnPcf pnPcfAreaPlane(sampler2D depthMap, PnArea area, vec3 receiver, vec2 gradient, float bias) {
+  return pnPcfAddAreaRowsPlane(depthMap, area, receiver, gradient, bias, 0, textureSize(depthMap, 0).y, pnPcfZero());
 }
 
 // The texel at p, clamped to the map: lit (1) unless it occludes its own

@@ -32,9 +32,20 @@
 //            texels a side, the n×n block whose texel centres are nearest (x, y) —
 //            origin floor(centre - n/2 + 0.5) — clipped to the map; empty when it
 //            lies wholly outside (a receiver outside the light's frustum).
+//   PnArea pnRegionArea(vec2 centre, float side, int mapSize)   the exact region with
+//            area-weighted edges (issue 51): the continuous square of side s = clamp(side, 1, 4N)
+//            centred on (x, y) — texel i spans [i, i + 1) — clipped to the map [0, N]²: its bounds
+//            lo, hi (texels, float; hi == lo on an axis where it misses the map) and `cover`, the
+//            texels it touches, [floor(lo), ceil(hi)). A texel weighs the area of its overlap with
+//            it: 1 inside, a fraction on the edges and corners, 0 outside.
+//            It moves with its centre by any fraction of a texel, where pnRegionSquare's texels
+//            jump a whole texel at a time (the staircase of small maps).
+//   float pnRegionAreaSpan(PnArea a, int texel, int axis)   texel [i, i + 1)'s overlap with a
+//            along one axis (0: x, 1: y); a texel's weight is the product of its two spans
 //   int pnRegionRoundPow2(int w)       Steps 3–4 for one extent (w >= 1)
 //   int pnRegionLargestPow2(int n)     E
 //   PnWindow { ivec2 origin; int side; int level; }: origin + side <= N on both axes.
+//   PnArea { vec2 lo; vec2 hi; PnRect cover; }: 0 <= lo <= hi <= N; cover's size 0 where hi == lo.
 //
 // cost: a few dozen ALU operations, no memory access.
 
@@ -128,6 +139,29 @@ PnRect pn_regionSquareAbout(vec2 c, float side, int mapSize) {
 
 PnRect pnRegionSquare(vec2 centre, float side, int mapSize) {
   return pn_regionSquareAbout(pn_regionSquareCentre(centre, mapSize), side, mapSize);
+}
+
+struct PnArea {
+  vec2 lo;       // the clipped square's corners, texels: 0 <= lo <= hi <= N
+  vec2 hi;
+  PnRect cover;  // the texels it touches: [floor(lo), ceil(hi)), empty where hi == lo
+};
+
+PnArea pnRegionArea(vec2 centre, float side, int mapSize) {
+  int e = max(mapSize, 1);
+  vec2 c = pn_regionSquareCentre(centre, e);
+  // Clamped while float, as pnRegionSquare's side: an infinite side covers the map.
+  float half_ = 0.5 * clamp(max(pn_regionFiniteOrZero(side), 0.0), 1.0, float(4 * e));
+  vec2 lo = clamp(c - half_, vec2(0.0), vec2(float(e)));
+  vec2 hi = clamp(c + half_, lo, vec2(float(e)));
+  // A square that misses the map on an axis has lo == hi == 0 or N there: no texel.
+  ivec2 start = ivec2(floor(lo));
+  return PnArea(lo, hi, PnRect(start, ivec2(ceil(hi)) - start));
+}
+
+float pnRegionAreaSpan(PnArea a, int texel, int axis) {
+  float t = float(texel);
+  return max(min(t + 1.0, a.hi[axis]) - max(t, a.lo[axis]), 0.0);
 }
 
 #endif  // PENUMBRA_REGION_GLSL

@@ -9,6 +9,10 @@
 //   texel columns the one call pnPcf(depthMap, (A.xy, B.x), bias), the same by definition); result
 //   (visibility, 0, 0, 0); with a receiver-plane gradient A.zw != 0, pnPcf's plane overload
 //   (pnPcfBilinearVisibilityPlane at (A.xy, B.x)).
+// B.w = 2 instead: the area-weighted window (issue 51) of pnRegionArea(A.xy, A.z, map width):
+//   band rows 0 pnPcfAreaPlane (flat plane), b > 0 bands of b rows added up with
+//   pnPcfAddAreaRowsPlane; result (occluders, depth sum, texels, r) as areas, r = pnPcfBlockerMean at
+//   odd columns, pnPcfOccludedFraction at even ones (fractional counts: the weights' own test).
 //   bindings: pcf_query.h
 // The check also compiles it with a small PN_PCF_MAX_SIDE to exercise the bound.
 
@@ -38,6 +42,21 @@ void main() {
     return;
   }
   int rows = int(b.z);
+  if (b.w == 2.0) {
+    PnArea area = pnRegionArea(a.xy, a.z, textureSize(pnDepthMap, 0).x);
+    vec3 receiver = vec3(a.xy, b.x);
+    PnPcf s = pnPcfZero();
+    if (rows <= 0) {
+      s = pnPcfAreaPlane(pnDepthMap, area, receiver, vec2(0.0), b.y);
+    } else {
+      int height = textureSize(pnDepthMap, 0).y;
+      for (int first = 0; first < height; first += rows)
+        s = pnPcfAddAreaRowsPlane(pnDepthMap, area, receiver, vec2(0.0), b.y, first, rows, s);
+    }
+    float ratio = (p.x % 2 == 1) ? pnPcfBlockerMean(s) : pnPcfOccludedFraction(s);
+    imageStore(pnResult, p, vec4(s.occluders, s.depthSum, s.texels, ratio));
+    return;
+  }
   PnPcf s;
   if (rows <= 0) {
     // The whole window: every other query through the plane's form with a flat plane (the same sums).

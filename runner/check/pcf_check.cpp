@@ -19,11 +19,13 @@
 // float subtraction may decide that texel either way); the number is printed,
 // and a last case requires it to stay below 1 % of the queries.
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <random>
 #include <string>
 
+#include "check/compare.h"
 #include "check/module_check.h"
 #include "check/occlusion_sums.h"
 #include "core/error.h"
@@ -174,6 +176,88 @@ CaseResult bilinear_plane_case(const PcfQueryPass& pass, const DeviceTexture& te
                              std::to_string(open) + " of 700 queries within rounding of a texel's threshold left out)");
 }
 
+// The area-weighted window (issue 51: pnRegionArea + pnPcfAreaPlane, whole and in bands of 1, 7
+// and 128 rows) against pcf_area_reference: continuous centres inside, across the edges and
+// outside the map, sides from below one texel to past the map's, NaN and infinite inputs;
+// receivers at the nearest texel's depth, before and behind it (twice), with a bias, NaN and +Inf. The
+// decisions are exact (the same float threshold); what rounds: the square's edges, formed in float
+// (each edge texel's weight within 4u (|c| + s) of its value, at most 4 (s + 2) edge texels), and
+// the float sums of non-negative terms ((k + 2) u of the total, k the texels touched), per value:
+// [0] occluded area, [1] its depth-weighted sum, [2] the area read, [3] pnPcfBlockerMean (odd
+// queries) or pnPcfOccludedFraction (even) of the sums — fractional counts, areas below ½ among
+// them (squares almost wholly off the map), within the quotient of both terms' bounds.
+CaseResult area_case(const PcfQueryPass& pass, const DeviceTexture& texture, const Image& map, const std::string& label) {
+  constexpr double u = 0x1p-24;
+  float deepest = 0.0f;
+  for (float d : map.texels)
+    if (std::isfinite(d)) deepest = std::max(deepest, std::fabs(d));
+  std::mt19937 random(0xa4ea);
+  std::uniform_real_distribution<float> position(-20.0f, kMapSize + 20.0f), fraction(0.0f, 1.0f);
+  std::vector<std::array<float, 3>> squares{{150.0f, 150.0f, 7.0f},        {150.5f, 150.5f, 7.0f},
+                                            {0.25f, 0.75f, 3.5f},          {kMapSize - 0.3f, 4.2f, 9.9f},
+                                            {-2.0f, 40.0f, 3.0f},          {-1.25f, 40.0f, 3.0f},
+                                            {150.0f, 150.0f, 0.25f},       {150.3f, 150.6f, 1.0f},
+                                            {150.0f, 150.0f, kMapSize * 1.5f}, {150.0f, 150.0f, 1e30f},
+                                            {NAN, 33.3f, 5.5f},            {12.5f, INFINITY, 5.5f},
+                                            {77.7f, 88.8f, NAN},           {77.7f, 88.8f, -4.0f},
+                                            {-0.3f, 40.5f, 1.0f},          {kMapSize + 0.2f, 77.5f, 1.0f},
+                                            {-0.35f, 200.5f, 1.0f},        {120.5f, -0.1f, 1.5f}};  // areas < 1/2
+  for (float side : {1.0f, 1.5f, 2.7f, 5.25f, 16.4f, 33.9f, 100.6f, 299.5f})
+    for (int k = 0; k < 12; ++k) squares.push_back({position(random), position(random), side + 0.1f * fraction(random)});
+  std::vector<PcfAreaQuery> queries;
+  std::vector<PcfAreaSums> expected;
+  std::vector<double> position_error;
+  for (const auto& [x, y, side] : squares) {
+    const int tx = std::clamp(std::isfinite(x) ? static_cast<int>(std::floor(x)) : 0, 0, kMapSize - 1);
+    const int ty = std::clamp(std::isfinite(y) ? static_cast<int>(std::floor(y)) : 0, 0, kMapSize - 1);
+    const float d = std::isfinite(map.at(tx, ty)) ? map.at(tx, ty) : 0.5f;
+    // Seven receivers a square: each one meets both ratios (odd and even queries) over the squares.
+    for (const auto& [receiver, bias] : {std::pair{d, 0.0f}, {d + 0.02f, 0.0f}, {d - 0.02f, 0.0f}, {d + 0.05f, 0.01f},
+                                         {d + 0.03f, 0.0f}, {NAN, 0.0f}, {INFINITY, 0.0f}}) {
+      static constexpr int kBands[4] = {0, 1, 7, 128};
+      queries.push_back({x, y, side, receiver, bias, kBands[queries.size() % 4]});
+      expected.push_back(pcf_area_reference(map, x, y, side, receiver - bias));
+      const double c = std::max(std::isfinite(x) ? std::fabs(x) : 0.0, std::isfinite(y) ? std::fabs(y) : 0.0);
+      const double s = std::isfinite(side) ? std::clamp(static_cast<double>(side), 1.0, 4.0 * kMapSize) : 4.0 * kMapSize;
+      position_error.push_back(4.0 * u * (std::min(c, 5.0 * kMapSize) + s) * 4.0 * (std::min(s, kMapSize + 0.0) + 2.0));
+    }
+  }
+  const std::vector<PcfQueryResult> observed = pass.area(texture, queries);
+  BoundedElements e;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const PcfAreaSums& x = expected[k];
+    const double rounding = (x.touched + 2) * u;
+    const int at = static_cast<int>(k);
+    e.add(x.occluders, observed[k].occluders, rounding * x.occluders + position_error[k], at, 0, 0);
+    e.add(x.depth_sum, observed[k].depth_sum, rounding * x.depth_sum + position_error[k] * deepest, at, 0, 1);
+    e.add(x.area, observed[k].texels, rounding * x.area + position_error[k], at, 0, 2);
+    // [3] the sums' ratio through the module's own helpers (odd queries the blocker mean, even the
+    // occluded fraction), within both terms' bounds; a blocker mean whose occluded area is within
+    // rounding of none is left out (a texel the edge's rounding touches may decide it).
+    const double occluded_bound = rounding * x.occluders + position_error[k];
+    if (k % 2 == 1 && x.occluders > occluded_bound) {
+      const double mean = x.depth_sum / x.occluders;
+      const double sum_bound = rounding * x.depth_sum + position_error[k] * deepest;
+      e.add(mean, observed[k].ratio,
+            (sum_bound + mean * occluded_bound) / (x.occluders - occluded_bound) + 2.0 * u * mean, at, 0, 3);
+    } else if (k % 2 == 0) {
+      const double area_bound = rounding * x.area + position_error[k];
+      const double fraction = x.area > 0.0 ? x.occluders / x.area : 0.0;
+      const double bound = x.area > area_bound ? fraction * (occluded_bound / std::max(x.occluders, occluded_bound) +
+                                                             area_bound / (x.area - area_bound) + 2.0 * u) +
+                                                     occluded_bound / (x.area - area_bound)
+                                               : 1.0;
+      e.add(fraction, observed[k].ratio, bound, at, 0, 3);
+    }
+  }
+  Tolerance tolerance;
+  const Comparison c = compare_bounded(e, tolerance);
+  return {label + " area-weighted window (pnRegionArea, pnPcfAreaPlane whole and in bands of 1, 7, 128 rows) vs "
+                  "every texel's overlap in double (" + std::to_string(queries.size()) + " queries): [0] occluded area, "
+                  "[1] depth-weighted, [2] area, [3] blocker mean (odd) or occluded fraction (even)",
+          tolerance, c};
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
@@ -234,6 +318,7 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
     }
     results.push_back(bilinear_case(pass, texture, map, label));
     results.push_back(bilinear_plane_case(pass, texture, map, label));
+    results.push_back(area_case(pass, texture, map, label));
   }
   const bool few = left_out_total * 100 <= queries_total;
   const Image want(1, 1, 1, 1.0f), got(1, 1, 1, few ? 1.0f : 0.0f);

@@ -50,6 +50,23 @@ std::vector<PcfQueryResult> PcfQueryPass::run(const DeviceTexture& depth_map, co
   return out;
 }
 
+std::vector<PcfQueryResult> PcfQueryPass::area(const DeviceTexture& depth_map,
+                                               const std::vector<PcfAreaQuery>& queries) const {
+  if (queries.empty()) return {};
+  std::vector<Query> a, b;
+  for (const PcfAreaQuery& q : queries) {
+    a.push_back({q.x, q.y, q.side, 0.0f});
+    b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 2.0f});
+  }
+  const QueryResults r = dispatch(depth_map, a, b);
+  std::vector<PcfQueryResult> out;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const Query q = r.at(0, k);
+    out.push_back({q[0], q[1], q[2], q[3]});
+  }
+  return out;
+}
+
 std::vector<float> PcfQueryPass::bilinear(const DeviceTexture& depth_map, const std::vector<PcfBilinearQuery>& queries) const {
   if (queries.empty()) return {};
   std::vector<Query> a, b;

@@ -23,6 +23,7 @@ struct PcfQuery {
 
 struct PcfQueryResult {
   float occluders = 0.0f, depth_sum = 0.0f, texels = 0.0f;
+  float ratio = 0.0f;  // area queries: pnPcfBlockerMean at odd query indices, pnPcfOccludedFraction at even
 };
 
 // pnPcfBilinearVisibility's inputs: a map position (continuous texels), a receiver depth, a bias;
@@ -32,6 +33,15 @@ struct PcfBilinearQuery {
   float gradient_u = 0.0f, gradient_v = 0.0f;
 };
 
+// The area-weighted window (issue 51): pnRegionArea(centre, side, map width), its sums read by
+// pnPcfAreaPlane (band_rows 0) or added up in bands of band_rows with pnPcfAddAreaRowsPlane.
+struct PcfAreaQuery {
+  float x = 0.0f, y = 0.0f, side = 0.0f;  // the square's centre and side, texels
+  float receiver_depth = 0.0f;
+  float bias = 0.0f;
+  int band_rows = 0;
+};
+
 class PcfQueryPass {
  public:
   // max_side > 0 compiles the pass with that PN_PCF_MAX_SIDE; 0 keeps the module's default.
@@ -39,6 +49,8 @@ class PcfQueryPass {
 
   // `depth_map` is a single-channel float texture; one result per query.
   std::vector<PcfQueryResult> run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries) const;
+  // Each area query's sums: occluded area, its depth-weighted sum, the area read; and `ratio`.
+  std::vector<PcfQueryResult> area(const DeviceTexture& depth_map, const std::vector<PcfAreaQuery>& queries) const;
   // The 2×2 bilinear PCF visibility of each query.
   std::vector<float> bilinear(const DeviceTexture& depth_map, const std::vector<PcfBilinearQuery>& queries) const;
 

@@ -33,6 +33,31 @@ PcfSums pcf_reference(const Image& depth, const Rect& window, double receiver_de
   return s;
 }
 
+PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double side, float threshold) {
+  const double n = depth.width;
+  const auto centre = [&](double c) { return std::clamp(std::isnan(c) ? 0.0 : c, -4.0 * n, 5.0 * n); };
+  const double s = std::clamp(std::isnan(side) ? 0.0 : std::max(side, 0.0), 1.0, 4.0 * n);
+  const double x0 = centre(x) - 0.5 * s, x1 = centre(x) + 0.5 * s;
+  const double y0 = centre(y) - 0.5 * s, y1 = centre(y) + 0.5 * s;
+  const auto overlap = [](double a0, double a1, double b0, double b1) {
+    return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
+  };
+  PcfAreaSums sums;
+  for (int j = 0; j < depth.height; ++j) {
+    const double wy = overlap(j, j + 1.0, y0, y1);
+    if (wy == 0.0) continue;
+    for (int i = 0; i < depth.width; ++i) {
+      const double w = overlap(i, i + 1.0, x0, x1) * wy;
+      if (w == 0.0) continue;
+      const float d = depth.at(i, j);
+      ++sums.touched;
+      sums.area += w;
+      if (std::isfinite(d) && d < threshold) sums.occluders += w, sums.depth_sum += w * d;
+    }
+  }
+  return sums;
+}
+
 }  // namespace pn
 
 namespace pn {

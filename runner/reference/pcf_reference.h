@@ -32,6 +32,19 @@ PcfCover pcf_cover(const Rect& window, int map_width, int map_height, int max_si
 PcfSums pcf_reference(const Image& depth, const Rect& window, double receiver_depth, double bias,
                       int max_side = kPcfMaxSide);
 
+// The area-weighted window (issue 51: pnRegionArea + pnPcfAreaPlane), from its definition: the
+// continuous square of side clamp(side, 1, 4N) centred on (x, y) — a NaN coordinate read as 0, the
+// centre clamped to [-4N, 5N], a NaN or negative side as 0, as the module reads its inputs — and
+// every texel [i, i+1) × [j, j+1) of the map weighed by the area of its overlap with it, in
+// double: occluders = that area over the texels of finite depth < threshold, depth_sum = the
+// area-weighted depths of those, area = the overlap of the square with the map. `threshold` is the
+// float dP - bias the module forms (the caller computes it in float).
+struct PcfAreaSums {
+  double occluders = 0.0, depth_sum = 0.0, area = 0.0;
+  int touched = 0;  // texels of non-zero weight
+};
+PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double side, float threshold);
+
 }  // namespace pn
 
 namespace pn {
