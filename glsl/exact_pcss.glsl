@@ -22,6 +22,13 @@
 //                     float filterScale)   with a receiver-plane depth bias (receiver_plane.glsl): each
 //         texel compared with the plane at its centre (pcf.glsl's pnPcfWindowPlane); 0: the call above
 //
+// options:
+//   PN_EXACT_PCSS_AREA   0 (default): the integer squares above. 1: both squares with area-weighted
+//         edges (issue 51, docs/area-regions.md): region.glsl's pnRegionArea of the entry's centre and
+//         side, read by pcf.glsl's pnPcfAreaPlane — every texel weighed by its overlap; the blocker
+//         mean and the occluded fraction are area-weighted, and move with the receiver by any
+//         fraction of a texel (no staircase on small maps)
+//
 // cost: one fetch per texel of both squares: O(s²) for a side-s region, the
 //   cost the other techniques exist to avoid. (A driver that caps a loop's
 //   iterations per invocation — llvmpipe: 65535 — cuts a region wider than
@@ -37,18 +44,29 @@
 #include "pcf.glsl"
 #include "pcss_regions.glsl"
 
+#ifndef PN_EXACT_PCSS_AREA
+#define PN_EXACT_PCSS_AREA 0
+#endif
+
+// The sums over an entry's region: its integer square, or its square with area-weighted edges.
+PnPcf pn_exactPcssRegion(sampler2D depthMap, vec4 entry, int n, vec3 receiver, vec2 receiverPlane, float bias) {
+#if PN_EXACT_PCSS_AREA
+  return pnPcfAreaPlane(depthMap, pnRegionArea(entry.yz, entry.w, n), receiver, receiverPlane, bias);
+#else
+  PnRect rect = pnEntryRect(entry, n);
+  return pnPcfWindowPlane(depthMap, rect.origin, rect.size, receiver, receiverPlane, bias);
+#endif
+}
+
 float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane, float bias,
                   float filterScale) {
   int n = int(light.mapSize);
   vec4 search = pn_searchStart(light, vec4(receiver, 1.0));
   if (pnEntryLit(search)) return 1.0;
-  PnRect searchRect = pnEntryRect(search, n);
-  PnPcf blockers = pnPcfWindowPlane(depthMap, searchRect.origin, searchRect.size, receiver, receiverPlane, bias);
+  PnPcf blockers = pn_exactPcssRegion(depthMap, search, n, receiver, receiverPlane, bias);
   vec4 filterEntry = pnFilterEntry(light, search, pnPcfBlockerMean(blockers), blockers.occluders > 0.0, filterScale);
   if (pnEntryLit(filterEntry)) return 1.0;
-  PnRect filterRect = pnEntryRect(filterEntry, n);
-  return 1.0 - pnPcfOccludedFraction(
-                   pnPcfWindowPlane(depthMap, filterRect.origin, filterRect.size, receiver, receiverPlane, bias));
+  return 1.0 - pnPcfOccludedFraction(pn_exactPcssRegion(depthMap, filterEntry, n, receiver, receiverPlane, bias));
 }
 
 float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, float bias, float filterScale) {

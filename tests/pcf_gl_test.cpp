@@ -22,8 +22,8 @@ const pn::ModuleCheck& pcf() { return pn::find_module_check("pcf"); }
 TEST_CASE("pcf window scans equal the definition: whole, in bands of 1/7/128 rows, and bounded to 64 texels a side") {
   const auto results = pn::test::run_check(pcf(), PENUMBRA_GLSL_DIR);
   // fixtures × ((whole, bands, bounded) × (sides <= 16, > 16) × (counts, depth sum) + bilinear, without and with a
-  // receiver plane), and the leave-out case.
-  CHECK(results.size() == std::size(pn::fixtures::kTextureFixtures) * (3 * 2 * 2 + 2) + 1);
+  // receiver plane, + the area-weighted window), and the leave-out case.
+  CHECK(results.size() == std::size(pn::fixtures::kTextureFixtures) * (3 * 2 * 2 + 2 + 1) + 1);
   pn::test::check_all_pass(results);
 }
 

@@ -284,6 +284,7 @@ CaseResult defaults_case(const std::string& name, const std::vector<float>& from
 
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss");
+  const ExportPass exact_area(env.device, env.tree, "exact_pcss", {{"PN_EXACT_PCSS_AREA", "1"}});
   const ExportPass pcf(env.device, env.tree, "pcf");
   const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
   const ExportPass fast(env.device, env.tree, "fast_pcss");
@@ -407,6 +408,30 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                       ") vs exact PCSS brute force on the CPU",
                                   s, reference, exact.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
                                                           query_block(block))));
+      }
+      {
+        // PN_EXACT_PCSS_AREA (issue 51): the squares with area-weighted edges. What rounds: each
+        // square's edges, formed in float from a centre within 5N and a side within 4N (4u(9N) a
+        // texel, 16u more of the side through the blocker mean and the light model), which moves
+        // an area fraction by at most 4 edge / side (side >= 1); and the float sums ((k + 2) u).
+        glsl::PnExactPcssExport block{};
+        set_light_fields(block, scene.light);
+        block.bias = bias;
+        block.filterScale = 1.0f;
+        const double u = 0x1p-24, edge = 4.0 * u * 9.0 * kMap + 16.0 * u * 4.0 * kMap;
+        const PcssReference area_reference =
+            exact_pcss_area_reference(s.map, s.gbuffer, scene.light, bias, 1.0, 1e-3);
+        const Tolerance area_tolerance = Tolerance::absolute(4.0 * edge + (kMap * kMap + 2.0) * u);
+        Image seen = area_reference.visibility;
+        const std::vector<float> got =
+            exact_area.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers, query_block(block));
+        for (std::size_t k = 0; k < got.size(); ++k) seen.at(s.pixels[k].first, s.pixels[k].second) = got[k];
+        const int ambiguous = leave_out_ambiguous(area_reference, seen);
+        results.push_back({where + "exports/exact_pcss with PN_EXACT_PCSS_AREA (pnExactPcss, area-weighted edges) vs "
+                                   "the definition in double on the CPU (" + std::to_string(got.size()) +
+                               " receivers, both overloads; " + std::to_string(ambiguous) +
+                               " pixels within rounding of the blocker decision left out)",
+                           area_tolerance, compare(area_reference.visibility, seen, area_tolerance)});
       }
       const glsl::PnHqepcssExport hqepcss_block = exact_settings_block<glsl::PnHqepcssExport>(scene.light, bias, 1.0f);
       results.push_back(against(where + "exports/hqepcss (pnHqepcss: refine 0, exact regions, leaf 1) vs exact PCSS "

@@ -325,6 +325,7 @@ static std::vector<Define> one_call_defines(OneCall call, bool record_work, cons
   std::vector<Define> out{{"PN_PCSS_ONE_CALL", std::to_string(static_cast<int>(call))},
                           {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
   if (shipped_call_settings(settings)) out.push_back({"PN_PCSS_ENGINE_FORM", "1"});
+  if (settings.area_edges) out.push_back({"PN_EXACT_PCSS_AREA", "1"});
   return out;
 }
 

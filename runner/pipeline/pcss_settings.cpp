@@ -42,6 +42,9 @@ void PcssSettings::validate() const {
     throw Error("technique '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
                 "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off; the staged passes "
                 "take no plane (receiver-plane=off)");
+  if (area_edges && (staged || call != OneCall::exact))
+    throw Error("technique '" + name + "': edges=area: expected exact PCSS's one call (exact with stages off: "
+                "pnExactPcss); the other calls read integer squares so far (docs/area-regions.md)");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);
@@ -172,7 +175,7 @@ const std::vector<std::string>& pcss_setting_keys() {
                                              "search-tile", "filter-tile", "skip", "blur", "blur-radius",
                                              "blur-sigma", "blur-depth-aware", "blur-depth-tolerance", "blur-adaptive", "bias", "c", "sigma1", "sigma2", "sigma3",
                                              "blockers", "occlusion", "blocker-samples", "filter-samples", "stages",
-                                             "receiver-plane"};
+                                             "receiver-plane", "edges"};
   return keys;
 }
 
@@ -245,6 +248,11 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   else if (key == "filter-samples") s.filter_samples = integer();
   else if (key == "stages") s.staged = on_off();
   else if (key == "receiver-plane") s.receiver_plane_tan = setting_receiver_plane(s.name, key, value);
+  else if (key == "edges") {
+    if (value == "texel") s.area_edges = false;
+    else if (value == "area") s.area_edges = true;
+    else throw bad("texel or area");
+  }
   else throw unknown_setting(s.name, key, pcss_setting_keys());
 }
 

@@ -80,6 +80,9 @@ struct PcssSettings {
   // > 0: the receiver-plane depth bias (receiver_plane.glsl) from the G-buffer's neighbours, its slope
   // clamped to this tangent; 0: off. The one calls of fast, exact and vogel (validate).
   float receiver_plane_tan = 0.0f;
+  // Issue 51 (docs/area-regions.md): both regions as squares with area-weighted edges
+  // (PN_EXACT_PCSS_AREA). Exact PCSS's one call only, so far (validate).
+  bool area_edges = false;
 
   // Throws Error naming the setting and its accepted range.
   void validate() const;

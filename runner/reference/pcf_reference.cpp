@@ -42,11 +42,15 @@ PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double si
   const auto overlap = [](double a0, double a1, double b0, double b1) {
     return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
   };
+  // Texels outside [floor(x0), ceil(x1)) overlap nothing: the loops skip them (a bound, not a clip:
+  // every texel in it is weighed by the overlap above, zero or not).
+  const auto first = [](double lo) { return static_cast<int>(std::max(0.0, std::floor(lo))); };
+  const auto end = [](double hi, int n) { return static_cast<int>(std::min<double>(n, std::ceil(hi))); };
   PcfAreaSums sums;
-  for (int j = 0; j < depth.height; ++j) {
+  for (int j = first(y0); j < end(y1, depth.height); ++j) {
     const double wy = overlap(j, j + 1.0, y0, y1);
     if (wy == 0.0) continue;
-    for (int i = 0; i < depth.width; ++i) {
+    for (int i = first(x0); i < end(x1, depth.width); ++i) {
       const double w = overlap(i, i + 1.0, x0, x1) * wy;
       if (w == 0.0) continue;
       const float d = depth.at(i, j);

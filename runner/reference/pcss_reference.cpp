@@ -99,6 +99,29 @@ PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer
   return out;
 }
 
+PcssReference exact_pcss_area_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light,
+                                        float bias, double filter_scale, double margin) {
+  PcssReference out{Image(gbuffer.width, gbuffer.height, 1, 1.0f), Image(gbuffer.width, gbuffer.height, 1, 0.0f)};
+  for (int py = 0; py < gbuffer.height; ++py)
+    for (int px = 0; px < gbuffer.width; ++px) {
+      const float u = gbuffer.at(px, py, 0), v = gbuffer.at(px, py, 1), d = gbuffer.at(px, py, 2);
+      if (gbuffer.at(px, py, 3) == 0.0f || std::isnan(d)) continue;
+      const float t = d - bias;  // the float threshold the module forms
+      const double side = light.search_width_texels(d);
+      const PcfAreaSums search = pcf_area_reference(shadow_map, u, v, side, t);
+      // Blockers or none within `margin` of the square's edges: rounding may decide either way.
+      if (search.occluders <= margin * (side + 2.0) * 4.0 &&
+          pcf_area_reference(shadow_map, u, v, side + 2.0 * margin, t).occluders > 0.0)
+        out.ambiguous.at(px, py) = 1.0f;
+      if (search.occluders == 0.0) continue;
+      const double blocker = search.depth_sum / search.occluders;
+      const PcfAreaSums filter =
+          pcf_area_reference(shadow_map, u, v, filter_scale * light.penumbra_texels(d, blocker), t);
+      out.visibility.at(px, py) = static_cast<float>(filter.area > 0.0 ? 1.0 - filter.occluders / filter.area : 1.0);
+    }
+  return out;
+}
+
 PcssReference pcf_plane_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
                                   double margin, double receiver_plane_tan) {
   PcssReference out{Image(gbuffer.width, gbuffer.height, 1, 1.0f), Image(gbuffer.width, gbuffer.height, 1, 0.0f)};

@@ -29,6 +29,14 @@ struct PcssReference {
 PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
                                    double filter_scale, double margin, double receiver_plane_tan = 0.0);
 
+// Exact PCSS with area-weighted edges (issue 51, PN_EXACT_PCSS_AREA): both squares continuous and
+// every texel weighed by its overlap (pcf_area_reference), blocker mean and occluded fraction as
+// areas, the threshold the float dP - bias. Ambiguous where blockers lie within `margin` texels of
+// the search square's edges and its occluded area is within their weight of none (an edge texel's
+// weight, rounded, may be 0 or not: the blocker decision).
+PcssReference exact_pcss_area_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light,
+                                        float bias, double filter_scale, double margin);
+
 // The hard shadow (2×2 bilinear PCF, pcf_reference.h) of each screen pixel with its G-buffer
 // plane as exact_pcss_reference takes it (`receiver_plane_tan` > 0; 0: no plane): ambiguous where
 // the plane is, or where a texel lies within `margin` (relative to the magnitudes) of its threshold.
