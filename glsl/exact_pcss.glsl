@@ -48,14 +48,33 @@
 #define PN_EXACT_PCSS_AREA 0
 #endif
 
-// The sums over an entry's region: its integer square, or its square with area-weighted edges.
-PnPcf pn_exactPcssRegion(sampler2D depthMap, vec4 entry, int n, vec3 receiver, vec2 receiverPlane, float bias) {
+// `sums` + the rows [firstRow, firstRow + rowCount) of an entry's region — its integer square, or
+// its square with area-weighted edges — in row order: the staged scan's bands (pcss_scan.comp) add
+// up to the one call's scan, bit for bit.
+PnPcf pn_exactPcssAddRows(sampler2D depthMap, vec4 entry, int n, vec3 receiver, vec2 receiverPlane, float bias,
+                          int firstRow, int rowCount, PnPcf sums) {
 #if PN_EXACT_PCSS_AREA
-  return pnPcfAreaPlane(depthMap, pnRegionArea(entry.yz, entry.w, n), receiver, receiverPlane, bias);
+  return pnPcfAddAreaRowsPlane(depthMap, pnRegionArea(entry.yz, entry.w, n), receiver, receiverPlane, bias, firstRow,
+                               rowCount, sums);
 #else
   PnRect rect = pnEntryRect(entry, n);
-  return pnPcfWindowPlane(depthMap, rect.origin, rect.size, receiver, receiverPlane, bias);
+  return pnPcfAddRowsPlane(depthMap, rect.origin, rect.size, receiver, receiverPlane, bias, firstRow, rowCount, sums);
 #endif
+}
+
+// The texels the region reads (before PN_PCF_MAX_SIDE): the staged scan's fetch count.
+int pn_exactPcssRegionTexels(vec4 entry, int n) {
+#if PN_EXACT_PCSS_AREA
+  ivec2 size = pnRegionArea(entry.yz, entry.w, n).cover.size;
+#else
+  ivec2 size = pnEntryRect(entry, n).size;
+#endif
+  return size.x * size.y;
+}
+
+PnPcf pn_exactPcssRegion(sampler2D depthMap, vec4 entry, int n, vec3 receiver, vec2 receiverPlane, float bias) {
+  return pn_exactPcssAddRows(depthMap, entry, n, receiver, receiverPlane, bias, 0, textureSize(depthMap, 0).y,
+                             pnPcfZero());
 }
 
 float pnExactPcss(sampler2D depthMap, PnLight light, vec3 receiver, vec2 receiverPlane, float bias,

@@ -17,9 +17,13 @@
 
 namespace pn::test {
 
-inline std::vector<CaseResult> run_check(const ModuleCheck& check, const std::filesystem::path& root) {
+// `quick`: the check's --quick (every program, fewer fixtures and no large-data case), for the
+// broken copies whose mistake shows on those (the suite's 8 minutes).
+inline std::vector<CaseResult> run_check(const ModuleCheck& check, const std::filesystem::path& root,
+                                         bool quick = false) {
   const SourceTree tree(root);
-  const CheckOptions options;
+  CheckOptions options;
+  options.quick = quick;
   return check.run({gl_context(), tree, options});
 }
 

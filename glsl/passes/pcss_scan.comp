@@ -5,6 +5,9 @@
 // loops after 65535 iterations in total, which a whole large window would
 // exceed (a band of r rows of a w-wide region costs r · (ceil(w / 16) + 1)).
 // Result per pixel: (occluders, depth sum, texels, texels fetched).
+// The region and its sums are exact_pcss.glsl's (pn_exactPcssAddRows), so its option
+// PN_EXACT_PCSS_AREA 1 (issue 51) makes them the square with area-weighted edges here too:
+// occluders and texels as areas, the texels fetched its cover's.
 //   bindings and blocks: pcss_params.h
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -16,9 +19,8 @@ layout(binding = PN_PCSS_ENTRIES_BINDING) uniform sampler2D pnEntries;
 layout(binding = PN_PCSS_RESULTS_BINDING) uniform sampler2D pnPrevious;
 layout(rgba32f, binding = PN_PCSS_RESULT_IMAGE) writeonly uniform image2D pnResult;
 
-#include "pcf.glsl"
+#include "exact_pcss.glsl"
 #include "pcss_params.glsl"
-#include "pcss_regions.glsl"
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -26,12 +28,12 @@ void main() {
   vec4 entry = texelFetch(pnEntries, p, 0);
   vec4 sum = pnPcss.bandStart == 0 ? vec4(0.0) : texelFetch(pnPrevious, p, 0);
   if (!pnEntryLit(entry)) {
-    PnRect rect = pnEntryRect(entry, textureSize(pnDepthMap, 0).x);
+    int n = textureSize(pnDepthMap, 0).x;
     // The band's rows added to the running sums, in row order: the bands together equal one scan.
-    PnPcf s = pnPcfAddRows(pnDepthMap, rect.origin, rect.size, entry.x, pnPcss.bias, pnPcss.bandStart,
-                           pnPcss.bandRows, PnPcf(sum.x, sum.y, sum.w));
-    sum = vec4(s.occluders, s.depthSum, sum.z, s.texels);
-    if (pnPcss.bandStart == 0) sum.z = float(rect.size.x * rect.size.y);
+    PnPcf s = pn_exactPcssAddRows(pnDepthMap, entry, n, vec3(entry.yz, entry.x), vec2(0.0), pnPcss.bias,
+                                  pnPcss.bandStart, pnPcss.bandRows, PnPcf(sum.x, sum.y, sum.z));
+    sum = vec4(s.occluders, s.depthSum, s.texels, sum.w);
+    if (pnPcss.bandStart == 0) sum.w = float(pn_exactPcssRegionTexels(entry, n));
   }
   imageStore(pnResult, p, sum);
 }

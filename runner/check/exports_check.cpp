@@ -410,18 +410,15 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                                           query_block(block))));
       }
       {
-        // PN_EXACT_PCSS_AREA (issue 51): the squares with area-weighted edges. What rounds: each
-        // square's edges, formed in float from a centre within 5N and a side within 4N (4u(9N) a
-        // texel, 16u more of the side through the blocker mean and the light model), which moves
-        // an area fraction by at most 4 edge / side (side >= 1); and the float sums ((k + 2) u).
+        // PN_EXACT_PCSS_AREA (issue 51): the squares with area-weighted edges, within what their
+        // float edges and sums round to (pcss_compare.h).
         glsl::PnExactPcssExport block{};
         set_light_fields(block, scene.light);
         block.bias = bias;
         block.filterScale = 1.0f;
-        const double u = 0x1p-24, edge = 4.0 * u * 9.0 * kMap + 16.0 * u * 4.0 * kMap;
         const PcssReference area_reference =
-            exact_pcss_area_reference(s.map, s.gbuffer, scene.light, bias, 1.0, 1e-3);
-        const Tolerance area_tolerance = Tolerance::absolute(4.0 * edge + (kMap * kMap + 2.0) * u);
+            exact_pcss_area_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kAreaEdgeMargin);
+        const Tolerance area_tolerance = Tolerance::absolute(area_edges_rounding(kMap));
         Image seen = area_reference.visibility;
         const std::vector<float> got =
             exact_area.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers, query_block(block));

@@ -13,7 +13,9 @@
 // - pnExactPcss, and pnFastPcss with every improvement off (refine 0, leaf 1,
 //   the table's exact sums), in both stages against exact PCSS brute force on
 //   the CPU (double), the pixels within rounding of a decision left out and
-//   counted;
+//   counted; pnExactPcss with area-weighted edges (PN_EXACT_PCSS_AREA, issue 51)
+//   against its own definition (exact_pcss_area_reference), within what its
+//   float edges round to (pcss_compare.h);
 // - the same calls with the receiver plane from the G-buffer's
 //   neighbours (the receiverPlane overloads of pnFastPcss, pnExactPcss,
 //   pnPoissonPcss, pnHqepcss): fragment vs compute, and the exact ones (exact
@@ -64,8 +66,11 @@ std::vector<PcssSettings> one_call_settings() {
   grid.name = "fast, grid 4, ramp blocker leaves";
   grid.grid = 4;
   grid.blocker_leaf_mode = LeafMode::ramp;
+  PcssSettings exact_area = exact_pcss();  // issue 51: the squares with area-weighted edges
+  exact_area.name = "exact, area-weighted edges";
+  exact_area.area_edges = true;
   std::vector<PcssSettings> out{fast_pcss(), windows, grid, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
-                                exact_pcss(), hqepcss()};
+                                exact_pcss(), exact_area, hqepcss()};
   // HQEPCSS at leaf 1 over exact regions without refinement: exact PCSS over the pyramid.
   PcssSettings hqepcss_exact = hqepcss();
   hqepcss_exact.name = "hqepcss, refine 0, leaf 1, exact regions";
@@ -117,16 +122,21 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
           (settings.blockers == Estimator::scan && settings.occlusion == Estimator::scan) ||
           (settings.blockers == Estimator::traversal && settings.leaf_side == 1 && settings.refine_iterations == 0);
       if (!brute_force_equal) continue;
-      const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, settings.bias,
-                                                           settings.filter_scale, kPcssDecisionMargin, settings.receiver_plane_tan);
+      const PcssReference reference =
+          settings.area_edges
+              ? exact_pcss_area_reference(map, gbuffer, scene.light, settings.bias, settings.filter_scale,
+                                          kAreaEdgeMargin)
+              : exact_pcss_reference(map, gbuffer, scene.light, settings.bias, settings.filter_scale,
+                                     kPcssDecisionMargin, settings.receiver_plane_tan);
+      const Tolerance tolerance =
+          Tolerance::absolute(settings.area_edges ? area_edges_rounding(kMap) : kFractionRounding);
       for (const auto& [stage, image] : {std::pair<const char*, Image>{"compute pass", compute_visibility},
                                          std::pair<const char*, Image>{"fragment shader", channel(fragment, 0)}}) {
         Image observed = image;
         const int ambiguous = leave_out_ambiguous(reference, observed);
         results.push_back({what + ", " + stage + " vs exact PCSS brute force on the CPU (" +
                                std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
-                           Tolerance::absolute(kFractionRounding),
-                           compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
+                           tolerance, compare(reference.visibility, observed, tolerance)});
       }
     }
   }

@@ -13,6 +13,17 @@ namespace pn {
 inline constexpr double kPcssDecisionMargin = 1e-4;
 inline constexpr double kFractionRounding = 1e-6;
 
+// Exact PCSS with area-weighted edges (exact_pcss_area_reference, issue 51) on an n² map: within
+// kAreaEdgeMargin texels of a square's edge the blocker decision may round apart; what rounds in
+// the visibility is each square's edges, formed in float from a centre within 5n and a side within
+// 4n (4u · 9n a texel, 16u more of the side through the blocker mean and the light model), which
+// moves an area fraction by at most 4 edge / side (side >= 1), and the float sums ((k + 2) u, k <= n²).
+inline constexpr double kAreaEdgeMargin = 1e-3;
+inline double area_edges_rounding(int n) {
+  const double u = 0x1p-24, edge = 4.0 * u * 9.0 * n + 16.0 * u * 4.0 * n;
+  return 4.0 * edge + (static_cast<double>(n) * n + 2.0) * u;
+}
+
 // Sets `observed` to the reference where a decision lay within rounding of flipping (the
 // reference's ambiguous pixels), so those are left out of the comparison; returns how many.
 inline int leave_out_ambiguous(const PcssReference& reference, Image& observed) {

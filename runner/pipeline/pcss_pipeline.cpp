@@ -192,6 +192,12 @@ void PcssPipeline::add_structures(PassResources& resources, const PcssFrame& fra
        {PN_PCSS_SAMPLE_TABLE_BINDING, *sample_table_}});
 }
 
+// Exact PCSS's squares with area-weighted edges (exact_pcss.glsl's option; issue 51).
+static std::vector<Define> area_edges_defines(const PcssSettings& settings) {
+  if (!settings.area_edges) return {};
+  return {{"PN_EXACT_PCSS_AREA", "1"}};
+}
+
 void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const DeviceTexture& entries,
                             const DeviceTexture* parents, int tile, Estimator estimator, int samples,
                             bool wants_depth_sums, const DeviceTexture& result) const {
@@ -223,7 +229,7 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const Devic
       resources.block = query_block(block);
       resources.textures.push_back({PN_PCSS_RESULTS_BINDING, *target[(first + band + 1) % 2]});  // the previous band
       resources.images.push_back({PN_PCSS_RESULT_IMAGE, *target[(first + band) % 2]});
-      device_->run(scan_.get(), resources, size, size);
+      device_->run(scan_.get(area_edges_defines(frame.settings)), resources, size, size);
     }
     return;
   }
@@ -325,7 +331,7 @@ static std::vector<Define> one_call_defines(OneCall call, bool record_work, cons
   std::vector<Define> out{{"PN_PCSS_ONE_CALL", std::to_string(static_cast<int>(call))},
                           {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
   if (shipped_call_settings(settings)) out.push_back({"PN_PCSS_ENGINE_FORM", "1"});
-  if (settings.area_edges) out.push_back({"PN_EXACT_PCSS_AREA", "1"});
+  for (const Define& d : area_edges_defines(settings)) out.push_back(d);
   return out;
 }
 

@@ -42,9 +42,9 @@ void PcssSettings::validate() const {
     throw Error("technique '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
                 "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off; the staged passes "
                 "take no plane (receiver-plane=off)");
-  if (area_edges && (staged || call != OneCall::exact))
-    throw Error("technique '" + name + "': edges=area: expected exact PCSS's one call (exact with stages off: "
-                "pnExactPcss); the other calls read integer squares so far (docs/area-regions.md)");
+  if (area_edges && call != OneCall::exact)
+    throw Error("technique '" + name + "': edges=area: expected exact PCSS (pnExactPcss, or its staged passes); the "
+                "other techniques read integer squares so far (docs/area-regions.md)");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);
