@@ -172,19 +172,31 @@ PnPcf pnPcfAddAreaRowsPlane(sampler2D depthMap, PnArea area, vec3 receiver, vec2
   int rowEnd = min(hi.y, firstRow + max(rowCount, 0));
   float t = receiver.z - bias;
   for (int y = rowStart; y < rowEnd; ++y) {
-    // A row's sums by column weight, then scaled by the row's: w = wx wy, one product a row.
+    // The columns between the first and the last weigh exactly 1: they are read as the integer
+    // window's are, and only the two edge columns weigh their overlap (the ring's arithmetic).
     PnPcf row = pnPcfZero();
-    for (int x = lo.x; x < hi.x; x += PN_PCF_ROW_STEP) {
+    for (int x = lo.x + 1; x < hi.x - 1; x += PN_PCF_ROW_STEP) {
       for (int i = 0; i < PN_PCF_ROW_STEP; ++i) {  // constant trip count: unrolled
-        if (x + i < hi.x) {
-          float w = pnRegionAreaSpan(area, x + i, 0);
+        if (x + i < hi.x - 1) {
           float d = texelFetch(depthMap, ivec2(x + i, y), 0).r;
           if (pnPcfOccludes(d, pnReceiverPlaneThreshold(t, gradient, receiver.xy, ivec2(x + i, y)))) {
-            row.occluders += w;
-            row.depthSum += w * d;
+            row.occluders += 1.0;
+            row.depthSum += d;
           }
-          row.texels += w;
         }
+      }
+    }
+    row.texels = float(max(hi.x - lo.x - 2, 0));
+    for (int e = 0; e < 2; ++e) {
+      int x = e == 0 ? lo.x : hi.x - 1;
+      if (x < hi.x && (e == 0 || x > lo.x)) {  // the cover's first column, then its last (when another)
+        float w = pnRegionAreaSpan(area, x, 0);
+        float d = texelFetch(depthMap, ivec2(x, y), 0).r;
+        if (pnPcfOccludes(d, pnReceiverPlaneThreshold(t, gradient, receiver.xy, ivec2(x, y)))) {
+          row.occluders += w;
+          row.depthSum += w * d;
+        }
+        row.texels += w;
       }
     }
     float wy = pnRegionAreaSpan(area, y, 1);
