@@ -17,6 +17,16 @@ PN_STD140_SIZE(PnPcfShadeParams, 32);
 namespace pn {
 namespace {
 
+// The first `count` results as sums: (occluders, depth sum, texels, ratio) a query.
+std::vector<PcfQueryResult> sums(const QueryResults& r, std::size_t count) {
+  std::vector<PcfQueryResult> out;
+  for (std::size_t k = 0; k < count; ++k) {
+    const Query q = r.at(0, k);
+    out.push_back({q[0], q[1], q[2], q[3]});
+  }
+  return out;
+}
+
 std::vector<Define> max_side_define(int max_side) {
   if (max_side <= 0) return {};
   return {{"PN_PCF_MAX_SIDE", std::to_string(max_side)}};
@@ -41,13 +51,7 @@ std::vector<PcfQueryResult> PcfQueryPass::run(const DeviceTexture& depth_map, co
     a.push_back({float(q.x), float(q.y), float(q.width), float(q.height)});
     b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 0.0f});
   }
-  const QueryResults r = dispatch(depth_map, a, b);
-  std::vector<PcfQueryResult> out;
-  for (size_t k = 0; k < queries.size(); ++k) {
-    const Query q = r.at(0, k);
-    out.push_back({q[0], q[1], q[2]});
-  }
-  return out;
+  return sums(dispatch(depth_map, a, b), queries.size());
 }
 
 std::vector<PcfQueryResult> PcfQueryPass::area(const DeviceTexture& depth_map,
@@ -58,13 +62,7 @@ std::vector<PcfQueryResult> PcfQueryPass::area(const DeviceTexture& depth_map,
     a.push_back({q.x, q.y, q.side, 0.0f});
     b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 2.0f});
   }
-  const QueryResults r = dispatch(depth_map, a, b);
-  std::vector<PcfQueryResult> out;
-  for (size_t k = 0; k < queries.size(); ++k) {
-    const Query q = r.at(0, k);
-    out.push_back({q[0], q[1], q[2], q[3]});
-  }
-  return out;
+  return sums(dispatch(depth_map, a, b), queries.size());
 }
 
 std::vector<float> PcfQueryPass::bilinear(const DeviceTexture& depth_map, const std::vector<PcfBilinearQuery>& queries) const {

@@ -23,7 +23,7 @@ struct PcfQuery {
 
 struct PcfQueryResult {
   float occluders = 0.0f, depth_sum = 0.0f, texels = 0.0f;
-  float ratio = 0.0f;  // area queries: pnPcfBlockerMean at odd query indices, pnPcfOccludedFraction at even
+  float ratio = 0.0f;  // area queries: pnPcfBlockerMean at odd query indices, pnPcfOccludedFraction at even; windows: 0
 };
 
 // pnPcfBilinearVisibility's inputs: a map position (continuous texels), a receiver depth, a bias;
