@@ -23,11 +23,11 @@
 //         texel compared with the plane at its centre (pcf.glsl's pnPcfWindowPlane); 0: the call above
 //
 // options:
-//   PN_EXACT_PCSS_AREA   0 (default): the integer squares above. 1: both squares with area-weighted
-//         edges (issue 51, docs/area-regions.md): region.glsl's pnRegionArea of the entry's centre and
-//         side, read by pcf.glsl's pnPcfAreaPlane — every texel weighed by its overlap; the blocker
-//         mean and the occluded fraction are area-weighted, and move with the receiver by any
-//         fraction of a texel (no staircase on small maps)
+//   PN_AREA_EDGES   0 (default): the integer squares above. 1: both squares with area-weighted
+//         edges (issue 51, docs/area-regions.md; the family's option, pcss_regions.glsl): region.glsl's
+//         pnRegionArea of the entry's centre and side, read by pcf.glsl's pnPcfAreaPlane — every texel
+//         weighed by its overlap; the blocker mean and the occluded fraction are area-weighted, and
+//         move with the receiver by any fraction of a texel (no staircase on small maps)
 //
 // cost: one fetch per texel of both squares: O(s²) for a side-s region, the
 //   cost the other techniques exist to avoid. (A driver that caps a loop's
@@ -44,18 +44,14 @@
 #include "pcf.glsl"
 #include "pcss_regions.glsl"
 
-#ifndef PN_EXACT_PCSS_AREA
-#define PN_EXACT_PCSS_AREA 0
-#endif
-
 // `sums` + the rows [firstRow, firstRow + rowCount) of an entry's region — its integer square, or
 // its square with area-weighted edges — in row order: the staged scan's bands (pcss_scan.comp) add
 // up to the one call's scan, bit for bit.
 PnPcf pn_exactPcssAddRows(sampler2D depthMap, vec4 entry, int n, vec3 receiver, vec2 receiverPlane, float bias,
                           int firstRow, int rowCount, PnPcf sums) {
-#if PN_EXACT_PCSS_AREA
-  return pnPcfAddAreaRowsPlane(depthMap, pnRegionArea(entry.yz, entry.w, n), receiver, receiverPlane, bias, firstRow,
-                               rowCount, sums);
+#if PN_AREA_EDGES
+  return pnPcfAddAreaRowsPlane(depthMap, pnEntryArea(entry, n, PN_REGION_EXACT), receiver, receiverPlane, bias,
+                               firstRow, rowCount, sums);
 #else
   PnRect rect = pnEntryRect(entry, n);
   return pnPcfAddRowsPlane(depthMap, rect.origin, rect.size, receiver, receiverPlane, bias, firstRow, rowCount, sums);
@@ -64,11 +60,7 @@ PnPcf pn_exactPcssAddRows(sampler2D depthMap, vec4 entry, int n, vec3 receiver, 
 
 // The texels the region reads (before PN_PCF_MAX_SIDE): the staged scan's fetch count.
 int pn_exactPcssRegionTexels(vec4 entry, int n) {
-#if PN_EXACT_PCSS_AREA
-  ivec2 size = pnRegionArea(entry.yz, entry.w, n).cover.size;
-#else
   ivec2 size = pnEntryRect(entry, n).size;
-#endif
   return size.x * size.y;
 }
 

@@ -156,12 +156,18 @@ bool pn_fastPcssShipped(PnFastPcssSettings s) {
 // unrolled ones cost the walk's every step. (llvmpipe counts every loop run of an invocation
 // against one limit of 65,535: a 16-sample leaf is 17 runs here, 4 in the general walk — far
 // below it at the sizes rendered and checked, 2048² maps at ×8 included.)
+// With PN_AREA_EDGES the samples sit inside the part's overlap with the square (offset, scale:
+// pn_traversalPartOverlap) and count with its area, as traversal_mip.glsl's.
 void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D map, sampler2D sampleTable, int first, int m, ivec2 lo,
-                           ivec2 size, PnTraversalTest test, int set) {
+                           ivec2 hi, vec2 offset, vec2 scale, PnTraversalTest test, int set) {
   float occluding = 0.0, depthSum = 0.0;
-  vec2 scale = vec2(size);  // size >= 1: a leaf's part is never empty
   for (int i = 0; i < m; ++i) {
-    ivec2 p = pn_sampleTexelIn(texelFetch(sampleTable, ivec2(first + i, set), 0).rg, lo, scale);
+    vec2 position = texelFetch(sampleTable, ivec2(first + i, set), 0).rg;
+#if PN_AREA_EDGES
+    ivec2 p = pn_traversalSampleTexel(position, lo, hi, offset, scale);
+#else
+    ivec2 p = pn_sampleTexelIn(position, lo, scale);  // scale = the part's size >= 1: never empty
+#endif
     float d = pnMipMapDepth(map, p);
     if (d < pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, p)) {
       occluding += 1.0;
@@ -169,7 +175,7 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D map, sampler2D sampleT
     }
   }
   t.fetches += m;
-  pn_traversalAddSampled(t, scale, occluding, depthSum, m);
+  pn_traversalAddSampled(t, scale.x * scale.y, occluding, depthSum, m);
 }
 
 // The shipped settings' Steps 3 to 5 (pn_fastPcssShipped): traversal_mip.glsl's walk in the same
@@ -201,11 +207,21 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
   for (int region = 0; region < 2 && !lit; ++region) {  // Step 4, then Step 5
     // The region inside the map and the chain (pn_traversalBegin's clip: the square is inside
     // [0, chain) already, but for the largest root's side), and its texels.
+#if PN_AREA_EDGES
+    PnArea area = pn_regionAreaAbout(centre, entry.w, max(chain, 1));  // pnEntryArea
+    PnRect square = area.cover;
+#else
     PnRect square = pn_regionSquareAbout(centre, entry.w, max(chain, 1));  // pnEntryRect
+#endif
     ivec2 start = square.origin;
     ivec2 size = chain > 0 ? min(square.size, ivec2(1 << PN_TRAVERSAL_MAX_LEVEL)) : ivec2(0);
     ivec2 end = start + size;
+#if PN_AREA_EDGES
+    area.hi = min(area.hi, vec2(end));  // the largest root's clip (pn_traversalBeginArea)
+    PnTraversal t = PnTraversal(0.0, 0.0, pnRegionAreaOver(area, start, end), 0, 0);
+#else
     PnTraversal t = PnTraversal(0.0, 0.0, float(size.x) * float(size.y), 0, 0);
+#endif
     // The 2×2 aligned nodes of level `top` at the region's aligned corner cover it; they are the
     // children of a virtual root at level top + 1, never read.
     int top = min(findMSB(max(size.x, size.y) - 1) + 1, shape.top);
@@ -214,7 +230,13 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
     ivec2 node = ivec2(0);
     // Nodes of side > leafSide descend, so every leaf of the region is of one level: its sample
     // group is the region's (sample_table.glsl), not a leaf's.
+#if PN_AREA_EDGES
+    // A region no wider than a leaf is read to its texels (pnTraversalRegionLeafSide): leaves of side
+    // 1, one sample each (m = 1 exactly then, leafSide >= 2: the region's leaf is not held apart).
+    int k = pnSampleGroupLog4(1 << min(top, findMSB(pnTraversalRegionLeafSide(leafSide, 0, size))));
+#else
     int k = pnSampleGroupLog4(1 << min(top, findMSB(leafSide)));
+#endif
     int m = pnSampleCount(k), first = pnSampleFirstColumn(k);
     bool empty = isnan(test.threshold) || t.texels == 0.0;
     for (int it = 0; it < PN_TRAVERSAL_CURSOR_STEPS && !empty; ++it) {
@@ -226,16 +248,25 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
         vec2 depths = pn_mipNodeAt(mip, level, origin);
         t.fetches += 1;
         vec2 threshold = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, lo, hi);
-        ivec2 part = hi - lo;
+#if PN_AREA_EDGES
+        vec2 offset, scale;  // the part's overlap with the square
+        pn_traversalPartOverlap(area, lo, hi, offset, scale);
+#else
+        // The part's texels as float(x · y) rounds them (x, y < 2^24: the product of two exact
+        // floats, rounded once), without a quarter-rate integer multiply.
+        vec2 offset = vec2(0.0), scale = vec2(hi - lo);
+#endif
         if (depths.y < threshold.x) {  // every texel occludes: its midpoint sum (exact when flat)
-          // The texels as float(x · y) rounds them (x, y < 2^24: the product of two exact floats,
-          // rounded once), without a quarter-rate integer multiply.
-          float texels = float(part.x) * float(part.y);
+          float texels = scale.x * scale.y;
           t.occluders += texels;
           t.depthSum += (depths.x == depths.y ? depths.x : 0.5 * (depths.x + depths.y)) * texels;
         } else if (depths.x < threshold.y) {  // ambiguous
+#if PN_AREA_EDGES
+          descend = m == 1 ? level > 0 : (1 << level) > leafSide;
+#else
           descend = (1 << level) > leafSide;
-          if (!descend) pn_fastPcssSampleLeaf(t, map, sampleTable, first, m, lo, part, test, set);
+#endif
+          if (!descend) pn_fastPcssSampleLeaf(t, map, sampleTable, first, m, lo, hi, offset, scale, test, set);
         }
       }
       if (pn_traversalCursorNext(node, level, descend, top)) break;  // the virtual root's last child done
@@ -256,17 +287,20 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
 // grid (Step 4 with depth sums, Step 5 without).
 PnTraversal pn_fastPcssGrid(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, vec4 entry,
                             vec2 receiverPlane, PnFastPcssSettings s, int leafMode, int depthSums, ivec2 pixel) {
-  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
-  return pnGridRegionMip(map, mip, sampleTable, mapSize, region.origin, region.size, entry.yzx, receiverPlane, s.bias,
-                         s.grid, s.leafSide, leafMode, depthSums, pixel);
+  return pn_gridAreaMip(map, mip, sampleTable, mapSize, pnEntryArea(entry, mapSize, s.regionMode), entry.yzx,
+                        receiverPlane, s.bias, s.grid, s.leafSide, leafMode, depthSums, pixel);
 }
 
 // The walk of an entry's region over the chain, one node a step; its leaf side in `leafSide`.
 PnTraversalWalk pn_fastPcssWalk(PnMipShape shape, int mapSize, vec4 entry, PnTraversalTest test, PnFastPcssSettings s,
                                 out int leafSide) {
-  PnRect region = pnEntryRegion(entry, mapSize, s.regionMode);
-  leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size);
-  return pn_traversalWalkBegin(shape, mapSize, region.origin, region.size, test, pn_traversalBudget(s.nodeBudget));
+  PnArea region = pnEntryArea(entry, mapSize, s.regionMode);
+#if PN_AREA_EDGES
+  leafSide = pnTraversalRegionLeafSide(s.leafSide, s.leafDivisor, region.cover.size);
+#else
+  leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.cover.size);
+#endif
+  return pn_traversalWalkBegin(shape, mapSize, region, test, pn_traversalBudget(s.nodeBudget));
 }
 
 // Any settings (PN_FAST_PCSS_ABLATIONS): traversal_mip.glsl's walk, with its budget, leaf modes,

@@ -51,6 +51,10 @@
 #include "traversal.glsl"
 #ifdef PN_HQEPCSS_ABLATIONS
 #include "traversal_pyramid.glsl"  // the general walk, for a budget
+
+#if PN_AREA_EDGES  // pcss_regions.glsl's option: the pyramid's walk weighs no edges yet (docs/area-regions.md)
+#error "hqepcss.glsl: PN_AREA_EDGES is not supported yet: HQEPCSS reads integer squares"
+#endif
 #endif
 
 struct PnHqepcssSettings {

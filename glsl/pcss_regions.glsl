@@ -31,7 +31,11 @@
 //
 // use:
 //   vec4  pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale)
-//   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry
+//   PnRect pnEntryRect(vec4 entry, int mapSize)                  the exact region of an entry (with
+//                                                  PN_AREA_EDGES, the texels its square touches: its cover)
+//   PnArea pnEntryArea(vec4 entry, int mapSize, int regionMode)  the region Steps 4 and 5 weigh: with
+//         PN_AREA_EDGES in the exact mode the continuous square (pnRegionArea), else pnEntryRegion's
+//         rectangle, every texel of weight 1 (pnRegionAreaOfRect)
 //   PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode)  its power-of-two window (region.glsl)
 //   PnRect pnEntryRegion(vec4 entry, int mapSize, int regionMode)   the texels Steps 4 and 5 read:
 //                                                  the exact region, or the window as a rectangle
@@ -44,6 +48,11 @@
 //               pcss_regions.h, shared with the runner
 //
 // options:
+//   PN_AREA_EDGES 0             1: the exact region is the continuous square of side s with
+//                               area-weighted edges (issue 51, docs/area-regions.md) for every
+//                               technique of the family that reads it (exact PCSS, Fast PCSS): each
+//                               texel counts with its overlap, so a region moves with its receiver by
+//                               any fraction of a texel; Step 3 reads the min over its cover
 //   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement (pcss_regions.h, shared with the runner)
 //
 // cost: entries: ALU only (the search's fetches: pcss_regions_mip.glsl, pcss_regions_pyramid.glsl).
@@ -56,12 +65,20 @@
 #include "receiver_plane.glsl"
 #include "region.glsl"
 
+#ifndef PN_AREA_EDGES
+#define PN_AREA_EDGES 0
+#endif
+
 bool pnEntryLit(vec4 entry) {
   return !(entry.w >= 0.0);
 }
 
 PnRect pnEntryRect(vec4 entry, int mapSize) {
+#if PN_AREA_EDGES
+  return pnRegionArea(entry.yz, entry.w, mapSize).cover;
+#else
   return pnRegionSquare(entry.yz, entry.w, mapSize);
+#endif
 }
 
 PnWindow pnEntryWindow(vec4 entry, int mapSize, int regionMode) {
@@ -105,6 +122,13 @@ PnRect pnEntryRegion(vec4 entry, int mapSize, int regionMode) {
   if (regionMode == PN_REGION_EXACT) return pnEntryRect(entry, mapSize);
   PnWindow w = pnEntryWindow(entry, mapSize, regionMode);
   return PnRect(w.origin, ivec2(w.side));
+}
+
+PnArea pnEntryArea(vec4 entry, int mapSize, int regionMode) {
+#if PN_AREA_EDGES
+  if (regionMode == PN_REGION_EXACT) return pnRegionArea(entry.yz, entry.w, mapSize);
+#endif
+  return pnRegionAreaOfRect(pnEntryRegion(entry, mapSize, regionMode));
 }
 
 vec4 pnFilterEntry(PnLight light, vec4 searchEntry, float blockerMean, bool hasBlocker, float scale) {

@@ -53,7 +53,11 @@ vec4 pnSearchEntryMipPlane(sampler2D mip, int mapSize, PnLight light, vec4 recei
     bool done;
     refinements += 1;
     // The entry's rectangle (pnEntryRect, its centre made once above), for the min and the plane's range.
+#if PN_AREA_EDGES
+    PnRect r = pn_regionAreaAbout(centre, entry.w, n).cover;
+#else
     PnRect r = pn_regionSquareAbout(centre, entry.w, n);
+#endif
     entry = pn_searchRefineRect(light, entry, r, pn_searchRegionMinMip(mip, shape, n, r), receiver.xy, gradient, bias,
                                 done);
     if (done) break;

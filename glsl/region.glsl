@@ -42,6 +42,11 @@
 //            jump a whole texel at a time (the staircase of small maps).
 //   float pnRegionAreaSpan(PnArea a, int texel, int axis)   texel [i, i + 1)'s overlap with a
 //            along one axis (0: x, 1: y); a texel's weight is the product of its two spans
+//   PnArea pnRegionAreaOfRect(PnRect r)   a rectangle as an area: its integer bounds, every texel
+//            of it weight 1 (the traversal's one form for both kinds of region)
+//   float pnRegionAreaOver(PnArea a, ivec2 lo, ivec2 hi)   the area of a's overlap with the texels
+//            [lo, hi): the product of its two spans — for an integer area the texel count exactly
+//            (x · y < 2^24), for a continuous one the texels' overlap weights summed
 //   int pnRegionRoundPow2(int w)       Steps 3–4 for one extent (w >= 1)
 //   int pnRegionLargestPow2(int n)     E
 //   PnWindow { ivec2 origin; int side; int level; }: origin + side <= N on both axes.
@@ -147,9 +152,9 @@ struct PnArea {
   PnRect cover;  // the texels it touches: [floor(lo), ceil(hi)), empty where hi == lo
 };
 
-PnArea pnRegionArea(vec2 centre, float side, int mapSize) {
+// pnRegionArea about a centre pn_regionSquareCentre made for the same map (as pn_regionSquareAbout).
+PnArea pn_regionAreaAbout(vec2 c, float side, int mapSize) {
   int e = max(mapSize, 1);
-  vec2 c = pn_regionSquareCentre(centre, e);
   // Clamped while float, as pnRegionSquare's side: an infinite side covers the map.
   float half_ = 0.5 * clamp(max(pn_regionFiniteOrZero(side), 0.0), 1.0, float(4 * e));
   vec2 lo = clamp(c - half_, vec2(0.0), vec2(float(e)));
@@ -157,6 +162,19 @@ PnArea pnRegionArea(vec2 centre, float side, int mapSize) {
   // A square that misses the map on an axis has lo == hi == 0 or N there: no texel.
   ivec2 start = ivec2(floor(lo));
   return PnArea(lo, hi, PnRect(start, ivec2(ceil(hi)) - start));
+}
+
+PnArea pnRegionArea(vec2 centre, float side, int mapSize) {
+  return pn_regionAreaAbout(pn_regionSquareCentre(centre, mapSize), side, mapSize);
+}
+
+PnArea pnRegionAreaOfRect(PnRect r) {
+  return PnArea(vec2(r.origin), vec2(r.origin + max(r.size, ivec2(0))), r);
+}
+
+float pnRegionAreaOver(PnArea a, ivec2 lo, ivec2 hi) {
+  vec2 span = max(min(vec2(hi), a.hi) - max(vec2(lo), a.lo), vec2(0.0));
+  return span.x * span.y;
 }
 
 float pnRegionAreaSpan(PnArea a, int texel, int axis) {

@@ -43,6 +43,13 @@
 //         the leaf side for a region: leafSide, or with leafDivisor > 0 at least the region's
 //         longer side / leafDivisor (the leaves along a shadow edge, and so the work, stay about
 //         constant as the penumbra widens)
+//   int   pnTraversalRegionLeafSide(int leafSide, int leafDivisor, ivec2 regionSize)
+//         the leaf side Fast PCSS walks a region with over area-weighted squares (issue 51,
+//         PN_AREA_EDGES): pnTraversalLeafSide's, or 1 — its
+//         texels, exact — for a region no wider than that leaf, where the leaf would be the whole
+//         region estimated from one sample group (16 samples for up to 256 texels: the stipple of
+//         small maps, where every region is that small); reading its texels costs about as many
+//         fetches as the samples would along a shadow edge
 //   float pnTraversalBlockerMean(PnTraversal r)        depthSum / occluders (0 if none; Step 4)
 //   float pnTraversalOccludedFraction(PnTraversal r)   occluders / texels (Step 5)
 //   PnTraversal { float occluders; float depthSum; float texels; int nodes; int fetches; }
@@ -58,6 +65,7 @@
 #define PENUMBRA_TRAVERSAL_GLSL
 
 #include "receiver_plane.glsl"
+#include "region.glsl"
 #include "traversal.h"  // PN_TRAVERSAL_MAX_LEVEL, PN_LEAF_SAMPLED, PN_LEAF_MIN
 
 // The shadow test of a traversal over the mip chain (receiver_plane.glsl): a
@@ -79,6 +87,11 @@ struct PnTraversal {
 
 int pnTraversalLeafSide(int leafSide, int leafDivisor, ivec2 regionSize) {
   return leafDivisor > 0 ? max(leafSide, max(regionSize.x, regionSize.y) / leafDivisor) : leafSide;
+}
+
+int pnTraversalRegionLeafSide(int leafSide, int leafDivisor, ivec2 regionSize) {
+  int leaf = pnTraversalLeafSide(leafSide, leafDivisor, regionSize);
+  return max(regionSize.x, regionSize.y) > leaf ? leaf : 1;
 }
 
 float pnTraversalBlockerMean(PnTraversal r) {
@@ -106,6 +119,34 @@ PnTraversal pn_traversalBegin(ivec2 regionOrigin, ivec2 regionSize, int n, out i
   end = clamp(regionOrigin + max(regionSize, ivec2(0)), start, min(ivec2(n), start + (1 << PN_TRAVERSAL_MAX_LEVEL)));
   ivec2 size = end - start;
   return PnTraversal(0.0, 0.0, float(size.x * size.y), 0, 0);
+}
+
+// The same for an area (region.glsl's PnArea): its cover clipped as a rectangle, its bounds into
+// the clipped cover, its texels the clipped square's area — for an integer area (pnRegionAreaOfRect)
+// pn_traversalBegin's count exactly.
+PnTraversal pn_traversalBeginArea(inout PnArea a, int n, out ivec2 start, out ivec2 end) {
+  PnTraversal r = pn_traversalBegin(a.cover.origin, a.cover.size, n, start, end);
+  a.lo = clamp(a.lo, vec2(start), vec2(end));
+  a.hi = clamp(a.hi, a.lo, vec2(end));
+  a.cover = PnRect(start, end - start);
+  r.texels = pnRegionAreaOver(a, start, end);
+  return r;
+}
+
+// Where a sample at table position `position` lands in the part [lo, hi) of an area's cover: at
+// that position inside the part's overlap with the area — the part itself for an integer area,
+// where it is pnSampleTexel's texel (offset 0, scale the part's size) — kept inside the part.
+ivec2 pn_traversalSampleTexel(vec2 position, ivec2 lo, ivec2 hi, vec2 offset, vec2 scale) {
+  // min(bound, x) first: NaN becomes the bound under either reading of min with a NaN (sample_table.glsl).
+  vec2 p = max(vec2(0.0), min(vec2(uintBitsToFloat(0x3f7fffffu)), position));
+  return lo + min(ivec2(floor(offset + p * scale)), hi - lo - 1);
+}
+
+// The part [lo, hi)'s overlap with the area: its offset from lo and its size, as floats.
+void pn_traversalPartOverlap(PnArea a, ivec2 lo, ivec2 hi, out vec2 offset, out vec2 scale) {
+  vec2 from = max(vec2(lo), a.lo);
+  offset = from - vec2(lo);
+  scale = max(min(vec2(hi), a.hi) - from, vec2(0.0));
 }
 
 // The node of Morton code `code` and side `side` below a root at `rootOrigin`.
@@ -164,10 +205,9 @@ void pn_traversalCountSample(inout float occluding, inout float depthSum, inout 
 }
 
 // Eq. 5 / 6: `occluding` of m samples, with their depth sum, scaled to the
-// leaf's texels (its size as floats, which a sampling loop holds already: the
-// product rounds once, as float(x * y) would).
-void pn_traversalAddSampled(inout PnTraversal r, vec2 size, float occluding, float depthSum, int m) {
-  float texels = size.x * size.y;
+// leaf part's weight: its texels (its size as floats, multiplied: the product
+// rounds once, as float(x * y) would), or its area (pnRegionAreaOver).
+void pn_traversalAddSampled(inout PnTraversal r, float texels, float occluding, float depthSum, int m) {
   r.occluders += texels * occluding / float(m);
   r.depthSum += texels * depthSum / float(m);
 }

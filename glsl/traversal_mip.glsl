@@ -31,6 +31,18 @@
 //       a node is decided against the plane's range over its part (pnReceiverPlaneThresholdRange,
 //       widened by rounding), a sampled leaf's sample against its own texel's threshold, a min or
 //       ramp leaf at its part's centre. Gradient 0 is pnTraverseRegionMip exactly.
+//   PnTraversal pnTraverseAreaMipPlane(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
+//       PnArea area, vec3 receiver, vec2 gradient, float bias, int leafSide, int leafMode, int nodeBudget,
+//       int depthSums, ivec2 pixel)
+//       the same over an area (region.glsl's pnRegionArea: issue 51's continuous square): the walk
+//       covers its texels (area.cover) and weighs each part by its overlap (pnRegionAreaOver) —
+//       1 a texel inside, a fraction on the edges — a wholly occluding or wholly lit edge part
+//       weighed, not descended; a sampled leaf's samples sit at their positions inside the part's
+//       overlap with the square; texels = the clipped square's area. With the table's sums an
+//       edge part of differing depths that occludes wholly is weighed texel by texel (descended,
+//       or at a leaf sampled), since the table sums whole texels: leaf side 1 with the table is
+//       exact, as for rectangles. The rectangle forms above are this over pnRegionAreaOfRect,
+//       bit for bit what they were.
 //   PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
 //       ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
 //       int leafMode, int depthSums, ivec2 pixel)
@@ -65,30 +77,34 @@
 #endif
 #include "traversal.glsl"
 
-// One sample of a leaf [lo, lo + size) of the map, at a table position in [0, 1)².
+// One sample of a leaf part [lo, hi) of the map at a table position in [0, 1)², placed inside the
+// part's overlap (offset, scale) with the area (pn_traversalPartOverlap).
 void pn_traversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D map,
-                          vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
-  ivec2 p = pnSampleTexel(position, lo, size);
+                          vec2 position, ivec2 lo, ivec2 hi, vec2 offset, vec2 scale, PnTraversalTest test) {
+  ivec2 p = pn_traversalSampleTexel(position, lo, hi, offset, scale);
   pn_traversalCountSample(occluding, depthSum, r, pnMipMapDepth(map, p), p, test);
 }
 
 // Sample i < m of a sampled leaf, its position from the table.
 void pn_traversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D map,
-                           sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo,
-                           ivec2 size, PnTraversalTest test) {
+                           sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 hi,
+                           vec2 offset, vec2 scale, PnTraversalTest test) {
   if (i >= m) return;
-  pn_traversalSampleAt(occluding, depthSum, r, map, pnSample(sampleTable, first + i, set), lo, size, test);
+  pn_traversalSampleAt(occluding, depthSum, r, map, pnSample(sampleTable, first + i, set), lo, hi, offset, scale,
+                       test);
 }
 
-// Eq. 5 / 6 over the rectangle [lo, lo + size) with the samples of a node of
-// side `side` from the map, each sample against its own
-// texel's threshold.
-void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D map, sampler2D sampleTable, ivec2 lo,
-                           ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
+// Eq. 5 / 6 over the part [lo, hi) of an area with the samples of a node of side `side` from the
+// map, at their positions inside the part's overlap with the area, each sample against its own
+// texel's threshold, scaled to that overlap's area.
+void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D map, sampler2D sampleTable, PnArea a, ivec2 lo,
+                               ivec2 hi, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
   int m = pnSampleCount(k);
   int first = pnSampleFirstColumn(k);
   int set = pnSampleSet(pixel);
+  vec2 offset, scale;
+  pn_traversalPartOverlap(a, lo, hi, offset, scale);
   float occluding = 0.0;
   float depthSum = 0.0;
   // m is 1, 4 or 16. llvmpipe ends a loop once its iterations, summed over
@@ -97,108 +113,123 @@ void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D map, sampler2D sam
   // plane's threshold made the loop too long to unroll): the first four
   // samples are taken without a loop, the rest (16-sample leaves, at most a
   // sixteenth of the region's texels) four a step.
-  pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 0, m, lo, size, test);
+  pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 0, m, lo, hi, offset, scale, test);
   if (m > 1) {
-    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 1, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 2, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 1, m, lo, hi, offset, scale, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 2, m, lo, hi, offset, scale, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, 3, m, lo, hi, offset, scale, test);
   }
   // The bound is min(m, 16), not 16 with a break at m: a loop with a constant trip count and a
   // second exit is unrolled whole by Mesa's NIR (16 copies of a sample in the GPU's code).
   for (int g = 4; g < m; g += 4) {
-    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 1, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 2, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g, m, lo, hi, offset, scale, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 1, m, lo, hi, offset, scale, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 2, m, lo, hi, offset, scale, test);
+    pn_traversalSampleOne(occluding, depthSum, r, map, sampleTable, first, set, g + 3, m, lo, hi, offset, scale, test);
   }
-  pn_traversalAddSampled(r, vec2(size), occluding, depthSum, m);
+  pn_traversalAddSampled(r, scale.x * scale.y, occluding, depthSum, m);
 }
 
 
-// The clipped part [lo, hi) of a node whose every texel occludes: its texels,
-// and their depth sum as `depthSums` asks (PN_DEPTH_SUMS_*, traversal.h): the
-// node's depth times its texels when min == max (every texel the same depth);
-// else the summed-area table's exact sum over the part
-// (TABLE, 4 fetches) or the node's midpoint (min + max) / 2 times its texels
-// (MIDPOINT, no table); NONE adds no depth (Step 5 only counts).
-void pn_traversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2 hi,
-                                  int depthSums) {
-  ivec2 size = hi - lo;
-  float texels = float(size.x * size.y);
-  r.occluders += texels;
+// The clipped part [lo, hi) of a node whose every texel occludes, of weight
+// `weight` (its texels, or its area: pnRegionAreaOver): that weight, and its
+// depth sum as `depthSums` asks (PN_DEPTH_SUMS_*, traversal.h): the node's
+// depth times the weight when min == max (every texel the same depth); else
+// the summed-area table's exact sum over the part (TABLE, 4 fetches: only for
+// a part of weight 1 a texel, pn_traversalClassifyPart) or the node's midpoint
+// (min + max) / 2 times the weight (MIDPOINT, no table); NONE adds no depth
+// (Step 5 only counts).
+void pn_traversalAddOccludingPart(inout PnTraversal r, vec2 node, ivec2 lo, ivec2 hi, float weight, int depthSums) {
+  r.occluders += weight;
   if (depthSums == PN_DEPTH_SUMS_NONE) return;
   if (node.x == node.y) {
-    r.depthSum += node.x * texels;
+    r.depthSum += node.x * weight;
 #ifdef PN_TRAVERSAL_SUM_TABLE
   } else if (depthSums == PN_DEPTH_SUMS_TABLE) {
-    r.depthSum += pnSummedAreaRectSum(PN_TRAVERSAL_SUM_TABLE, lo, size).sum;
+    r.depthSum += pnSummedAreaRectSum(PN_TRAVERSAL_SUM_TABLE, lo, hi - lo).sum;
     r.fetches += 4;
 #endif
   } else {
-    r.depthSum += 0.5 * (node.x + node.y) * texels;  // PN_DEPTH_SUMS_MIDPOINT: within (max - min) / 2 a texel
+    r.depthSum += 0.5 * (node.x + node.y) * weight;  // PN_DEPTH_SUMS_MIDPOINT: within (max - min) / 2 a texel
   }
 }
 
-// Reads an aligned node of the chain and counts its clipped part [lo, hi)
-// when its (min, max) decide it; returns true when it is ambiguous, with its
-// (min, max) in `nodeRange`.
+// Reads an aligned node of the chain and counts its clipped part [lo, hi),
+// of weight `weight`, when its (min, max) decide it; returns true when it is
+// ambiguous, with its (min, max) in `nodeRange`.
 // The test's thresholds over the part (receiver_plane.glsl): all below the
 // lowest -> every texel occludes; none below the highest -> none does.
+// With the table's sums, a wholly occluding part of differing depths that an
+// area weighs by less than its texels is ambiguous too: the table sums whole
+// texels, so its depths are weighed where they are read (texels, or samples).
 bool pn_traversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape shape, int level, ivec2 origin,
-                              ivec2 lo, ivec2 hi, PnTraversalTest test, int depthSums, out vec2 nodeRange) {
+                              ivec2 lo, ivec2 hi, float weight, PnTraversalTest test, int depthSums,
+                              out vec2 nodeRange) {
   vec2 node = pn_mipFetchOf(mip, shape, level, origin >> level);
   r.nodes += 1;
   r.fetches += 1;
   nodeRange = node;
   vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, lo, hi);
   if (node.y < t.x) {
-    pn_traversalAddOccludingPart(r, node, lo, hi, depthSums);
+#ifdef PN_TRAVERSAL_SUM_TABLE
+    ivec2 size = hi - lo;
+    if (depthSums == PN_DEPTH_SUMS_TABLE && node.x != node.y && weight != float(size.x) * float(size.y)) return true;
+#endif
+    pn_traversalAddOccludingPart(r, node, lo, hi, weight, depthSums);
     return false;
   }
   return node.x < t.y;
 }
 
 // A node that will not be descended: its clipped part classified, and
-// estimated by the leaf mode when ambiguous (samples spread over the part).
-// Without samples (min, ramp) a sloped test is taken at the part's centre.
+// estimated by the leaf mode when ambiguous (samples spread over the part's
+// overlap with the area). Without samples (min, ramp) a sloped test is taken
+// at the part's centre.
 void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D map, sampler2D mip, PnMipShape shape,
-                               sampler2D sampleTable, int level, ivec2 origin, ivec2 lo, ivec2 hi,
+                               sampler2D sampleTable, PnArea a, int level, ivec2 origin, ivec2 lo, ivec2 hi,
                                PnTraversalTest test, int leafMode, int depthSums, ivec2 pixel) {
   vec2 range;
-  if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) return;
+  float weight = pnRegionAreaOver(a, lo, hi);
+  if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, weight, test, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
-    ivec2 size = hi - lo;
-    pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, float(size.x * size.y), pn_traversalTestAtCentre(test, lo, hi));
+    pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, weight, pn_traversalTestAtCentre(test, lo, hi));
   } else {
-    pn_traversalSampleLeafMip(r, map, sampleTable, lo, hi - lo, 1 << level, test, pixel);
+    pn_traversalSampleLeafMip(r, map, sampleTable, a, lo, hi, 1 << level, test, pixel);
   }
 }
 
-// The four level-0 children (texels) of a level-1 node at `origin`, clipped to the region.
-void pn_traversalVisitTexels(inout PnTraversal r, sampler2D map, ivec2 origin,
-                             ivec2 regionStart, ivec2 regionEnd, PnTraversalTest test, int depthSums) {
+// The four level-0 children (texels) of a level-1 node at `origin`, each of its weight in the
+// area (0 outside it, 1 inside an integer one).
+void pn_traversalVisitTexels(inout PnTraversal r, sampler2D map, ivec2 origin, PnArea a, PnTraversalTest test,
+                             int depthSums) {
   // (0,0), (1,0), (0,1), (1,1) from the map; a texel past its edge is read at the edge (outside the
-  // region, so not counted).
+  // area, so of weight 0).
   ivec2 last = textureSize(map, 0) - 1;
   ivec2 far = min(origin + 1, last);
   vec4 depths = vec4(pnMipMapDepth(map, origin), pnMipMapDepth(map, ivec2(far.x, origin.y)),
                      pnMipMapDepth(map, ivec2(origin.x, far.y)), pnMipMapDepth(map, far));
   r.fetches += 4;
   r.nodes += 4;
-  // Per texel: inside the region and occluding (no loop, see above).
-  bvec2 lower = greaterThanEqual(origin, regionStart), upper = lessThan(origin + ivec2(1), regionEnd);
-  bvec2 first = lessThan(origin, regionEnd), second = greaterThanEqual(origin + ivec2(1), regionStart);
-  bvec2 x = bvec2(lower.x && first.x, second.x && upper.x);  // columns 0, 1 inside
-  bvec2 y = bvec2(lower.y && first.y, second.y && upper.y);  // rows 0, 1 inside
-  vec4 inside = vec4(x.x && y.x, x.y && y.x, x.x && y.y, x.y && y.y);
+  // Per texel (no loop, see above): its weight, the product of its column's and its row's spans
+  // (columns 0, 1 in x, rows 0, 1 in y), where it occludes.
+  vec2 from = vec2(origin);
+  vec2 x = max(min(from.x + vec2(1.0, 2.0), a.hi.x) - max(from.x + vec2(0.0, 1.0), a.lo.x), vec2(0.0));
+  vec2 y = max(min(from.y + vec2(1.0, 2.0), a.hi.y) - max(from.y + vec2(0.0, 1.0), a.lo.y), vec2(0.0));
+  vec4 weights = vec4(x.x * y.x, x.y * y.x, x.x * y.y, x.y * y.y);
   vec4 t = vec4(pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin),
                 pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin + ivec2(1, 0)),
                 pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin + ivec2(0, 1)),
                 pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin + ivec2(1, 1)));
-  vec4 occluding = inside * vec4(lessThan(depths, t));
-  r.occluders += dot(occluding, vec4(1.0));
-  if (depthSums != PN_DEPTH_SUMS_NONE) r.depthSum += dot(occluding, mix(vec4(0.0), depths, greaterThan(occluding, vec4(0.0))));
+  bvec4 occludes = lessThan(depths, t);
+  // One texel at a time, in Z order, as a walk at leaf side 1 adds them (Fast PCSS's one call
+  // descends to the texels, pnTraversalRegionLeafSide): the same sums, bit for bit.
+  for (int i = 0; i < 4; ++i) {  // constant trip count: unrolled
+    if (!occludes[i]) continue;
+    r.occluders += weights[i];
+    if (depthSums != PN_DEPTH_SUMS_NONE) r.depthSum += weights[i] * depths[i];
+  }
 }
+
 
 // A traversal of the mip chain one node at a time: pnTraverseRegionMipPlane is its loop, and a
 // caller that traverses two regions (Fast PCSS's Steps 4 and 5) runs one loop over both, so a GPU
@@ -207,6 +238,7 @@ void pn_traversalVisitTexels(inout PnTraversal r, sampler2D map, ivec2 origin,
 // for both of Fast PCSS's regions: kept out of the loop's registers).
 struct PnTraversalWalk {
   PnTraversal r;
+  PnArea area;  // the region, clipped (pn_traversalBeginArea): its cover is [regionStart, regionEnd)
   ivec2 regionStart, regionEnd, rootOrigin;
   int rootLevel, level, iterations;
   uint code;
@@ -217,12 +249,12 @@ int pn_traversalBudget(int nodeBudget) {
   return clamp(nodeBudget, 1, PN_TRAVERSAL_NO_BUDGET);
 }
 
-PnTraversalWalk pn_traversalWalkBegin(PnMipShape shape, int mapSize, ivec2 regionOrigin, ivec2 regionSize,
-                                      PnTraversalTest test, int budget) {
+PnTraversalWalk pn_traversalWalkBegin(PnMipShape shape, int mapSize, PnArea area, PnTraversalTest test, int budget) {
   PnTraversalWalk w;
-  w.r = pn_traversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), w.regionStart, w.regionEnd);
+  w.area = area;
+  w.r = pn_traversalBeginArea(w.area, clamp(mapSize, 0, shape.rows), w.regionStart, w.regionEnd);
   ivec2 size = w.regionEnd - w.regionStart;
-  w.done = isnan(test.threshold) || w.r.texels == 0.0;
+  w.done = isnan(test.threshold) || size.x == 0 || size.y == 0;
   // The 2×2 aligned nodes of level `top` at the region's aligned corner cover
   // it (side <= 2^top); they are the children of a virtual root one level up,
   // which is never read: the walk starts at its first child.
@@ -250,18 +282,19 @@ void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D map, sampler2D mip,
   if (all(lessThan(lo, hi))) {
     bool spent = w.r.nodes + 1 >= budget;
     if (side <= leafSide || spent) {
-      pn_traversalVisitLeafPart(w.r, map, mip, shape, sampleTable, w.level, origin, lo, hi, test, leafMode, depthSums,
-                                pixel);
+      pn_traversalVisitLeafPart(w.r, map, mip, shape, sampleTable, w.area, w.level, origin, lo, hi, test, leafMode,
+                                depthSums, pixel);
     } else {
       vec2 range;
-      if (pn_traversalClassifyPart(w.r, mip, shape, w.level, origin, lo, hi, test, depthSums, range)) {
+      if (pn_traversalClassifyPart(w.r, mip, shape, w.level, origin, lo, hi, pnRegionAreaOver(w.area, lo, hi), test,
+                                   depthSums, range)) {
         if (side == 2) {
           // Texels: never ambiguous, so classified here, four at a time and
           // without a sampling loop: with leaf children visited inline (as
           // pnTraverseRegion does) llvmpipe's loop cut-off of 65535
           // iterations per invocation ended the exact (leaf 1) traversal of
           // a 256² fine checker early; one sampling site a step does not.
-          pn_traversalVisitTexels(w.r, map, origin, w.regionStart, w.regionEnd, test, depthSums);
+          pn_traversalVisitTexels(w.r, map, origin, w.area, test, depthSums);
         } else {
           descend = true;
         }
@@ -274,18 +307,25 @@ void pn_traversalWalkStep(inout PnTraversalWalk w, sampler2D map, sampler2D mip,
   w.done = pn_traversalNext(w.level, w.code, descend, w.rootLevel);
 }
 
-PnTraversal pnTraverseRegionMipPlane(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
-                                     ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias,
-                                     int leafSide, int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
+PnTraversal pnTraverseAreaMipPlane(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, PnArea area,
+                                   vec3 receiver, vec2 gradient, float bias, int leafSide, int leafMode,
+                                   int nodeBudget, int depthSums, ivec2 pixel) {
   PnMipShape shape = pn_mipShape(mip);
   PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
   int budget = pn_traversalBudget(nodeBudget);
-  PnTraversalWalk w = pn_traversalWalkBegin(shape, mapSize, regionOrigin, regionSize, test, budget);
+  PnTraversalWalk w = pn_traversalWalkBegin(shape, mapSize, area, test, budget);
   for (int it = 0; it < w.iterations; ++it) {
     if (w.done) break;
     pn_traversalWalkStep(w, map, mip, shape, sampleTable, test, leafSide, leafMode, budget, depthSums, pixel);
   }
   return w.r;
+}
+
+PnTraversal pnTraverseRegionMipPlane(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,
+                                     ivec2 regionOrigin, ivec2 regionSize, vec3 receiver, vec2 gradient, float bias,
+                                     int leafSide, int leafMode, int nodeBudget, int depthSums, ivec2 pixel) {
+  return pnTraverseAreaMipPlane(map, mip, sampleTable, mapSize, pnRegionAreaOfRect(PnRect(regionOrigin, regionSize)),
+                                receiver, gradient, bias, leafSide, leafMode, nodeBudget, depthSums, pixel);
 }
 
 // The same region counted with bounded work: the aligned nodes of the level
@@ -294,15 +334,15 @@ PnTraversal pnTraverseRegionMipPlane(sampler2D map, sampler2D mip, sampler2D sam
 // descended — sampled from the table's group for min(its side, leafSide), or
 // estimated by the leaf mode. At most (grid + 1)² nodes whatever the region's
 // size; with grid >= the region's side the nodes are texels: exact.
-PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
-                            ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
-                            int leafMode, int depthSums, ivec2 pixel) {
+PnTraversal pn_gridAreaMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, PnArea area,
+                           vec3 receiver, vec2 gradient, float bias, int grid, int leafSide, int leafMode,
+                           int depthSums, ivec2 pixel) {
   PnMipShape shape = pn_mipShape(mip);
   ivec2 start, end;
-  PnTraversal r = pn_traversalBegin(regionOrigin, regionSize, clamp(mapSize, 0, shape.rows), start, end);
+  PnTraversal r = pn_traversalBeginArea(area, clamp(mapSize, 0, shape.rows), start, end);
   ivec2 size = end - start;
   PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
-  if (isnan(test.threshold) || r.texels == 0.0) return r;
+  if (isnan(test.threshold) || size.x == 0 || size.y == 0) return r;
   int cells = clamp(grid, 1, PN_GRID_MAX_CELLS);
   int cell = max(1, (max(size.x, size.y) + cells - 1) / cells);
   int level = min(findMSB(cell - 1) + 1, shape.top);  // ceil(log2 cell)
@@ -324,24 +364,33 @@ PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable,
       if (i >= count.x) break;
       ivec2 origin = (first + ivec2(i, j)) << level;
       ivec2 lo = max(origin, start), hi = min(origin + side, end);
+      vec2 offset, scale;
+      pn_traversalPartOverlap(area, lo, hi, offset, scale);
+      float weight = scale.x * scale.y;  // pnRegionAreaOver(area, lo, hi)
       vec2 range;
-      if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, test, depthSums, range)) continue;
+      if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, weight, test, depthSums, range)) continue;
       if (leafMode != PN_LEAF_SAMPLED) {
-        pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, float((hi.x - lo.x) * (hi.y - lo.y)),
-                                 pn_traversalTestAtCentre(test, lo, hi));
+        pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, weight, pn_traversalTestAtCentre(test, lo, hi));
       } else {
         float occluding = 0.0, depthSum = 0.0;
         for (int g = 0; g < PN_SAMPLE_MAX_COUNT; g += 4) {
           if (g >= m) break;
           for (int i = g; i < g + 4; ++i) {  // constant trip count: unrolled
-            if (i < m) pn_traversalSampleAt(occluding, depthSum, r, map, positions[i], lo, hi - lo, test);
+            if (i < m) pn_traversalSampleAt(occluding, depthSum, r, map, positions[i], lo, hi, offset, scale, test);
           }
         }
-        pn_traversalAddSampled(r, vec2(hi - lo), occluding, depthSum, m);
+        pn_traversalAddSampled(r, weight, occluding, depthSum, m);
       }
     }
   }
   return r;
+}
+
+PnTraversal pnGridRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize, ivec2 regionOrigin,
+                            ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int grid, int leafSide,
+                            int leafMode, int depthSums, ivec2 pixel) {
+  return pn_gridAreaMip(map, mip, sampleTable, mapSize, pnRegionAreaOfRect(PnRect(regionOrigin, regionSize)), receiver,
+                        gradient, bias, grid, leafSide, leafMode, depthSums, pixel);
 }
 
 PnTraversal pnTraverseRegionMip(sampler2D map, sampler2D mip, sampler2D sampleTable, int mapSize,

@@ -67,7 +67,7 @@ void pn_traversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler
     pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 2, m, lo, size, test);
     pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 3, m, lo, size, test);
   }
-  pn_traversalAddSampled(r, vec2(size), occluding, depthSum, m);
+  pn_traversalAddSampled(r, float(size.x) * float(size.y), occluding, depthSum, m);
 }
 
 // Reads a node inside the region (with a pyramid level) and counts it: a node

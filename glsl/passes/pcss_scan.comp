@@ -6,7 +6,7 @@
 // exceed (a band of r rows of a w-wide region costs r · (ceil(w / 16) + 1)).
 // Result per pixel: (occluders, depth sum, texels, texels fetched).
 // The region and its sums are exact_pcss.glsl's (pn_exactPcssAddRows), so its option
-// PN_EXACT_PCSS_AREA 1 (issue 51) makes them the square with area-weighted edges here too:
+// PN_AREA_EDGES 1 (issue 51) makes them the square with area-weighted edges here too:
 // occluders and texels as areas, the texels fetched its cover's.
 //   bindings and blocks: pcss_params.h
 

@@ -31,15 +31,20 @@ void main() {
     return;
   }
   int n = int(pnPcss.mapSize);
-  PnRect rect = pnEntryRegion(entry, n, PN_PCSS_REGION_MODE);
-  int leafSide = pnTraversalLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, rect.size);
+  PnArea area = pnEntryArea(entry, n, PN_PCSS_REGION_MODE);  // with PN_AREA_EDGES, the continuous square
+  // Fast PCSS's leaf for the region with area-weighted edges (a region no wider than a leaf: its texels,
+  // fast_pcss.glsl); else, and HQEPCSS's, as the paper's.
+  int leafSide = (PN_AREA_EDGES != 0 && PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
+      ? pnTraversalRegionLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, area.cover.size)
+      : pnTraversalLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, area.cover.size);
   PnTraversal r = (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP && pnPcss.grid > 0)
-      ? pnGridRegionMip(pnDepthMap, pnMip, pnSampleTable, n, rect.origin, rect.size, entry.yzx, vec2(0.0), pnPcss.bias,
-                        pnPcss.grid, pnPcss.leafSide, PN_PCSS_LEAF_MODE, PN_PCSS_DEPTH_SUMS, p)
+      ? pn_gridAreaMip(pnDepthMap, pnMip, pnSampleTable, n, area, entry.yzx, vec2(0.0), pnPcss.bias, pnPcss.grid,
+                       pnPcss.leafSide, PN_PCSS_LEAF_MODE, PN_PCSS_DEPTH_SUMS, p)
       : (PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
-      ? pnTraverseRegionMip(pnDepthMap, pnMip, pnSampleTable, n, rect.origin, rect.size, entry.x, pnPcss.bias,
-                            leafSide, PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
-      : pnTraverseRegion(pnPyramid, pnSampleTable, rect.origin, rect.size, entry.x, pnPcss.bias, leafSide,
+      ? pnTraverseAreaMipPlane(pnDepthMap, pnMip, pnSampleTable, n, area, vec3(0.0, 0.0, entry.x), vec2(0.0), pnPcss.bias,
+                               leafSide,
+                               PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
+      : pnTraverseRegion(pnPyramid, pnSampleTable, area.cover.origin, area.cover.size, entry.x, pnPcss.bias, leafSide,
                          PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, p);
   imageStore(pnResult, p, vec4(r.occluders, r.depthSum, r.texels, float(r.nodes)));
 }

@@ -1,6 +1,7 @@
 // traversal_query.comp — traversal.glsl over a batch of receivers, over the
 // decreased pyramid or the aligned mip chain (pnParams.structure).
-// Query k: texel k of query image A = (region origin x, y, region width, height),
+// Query k: texel k of query image A = (region origin x, y, region width, height), or with
+//          pnParams.areaRegions (centre x, y, side, 0): pnRegionArea's square, pnTraverseAreaMipPlane,
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0),
 //          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the
 //          traversal with that plane (pn_traverseRegionPlane, pnTraverseRegionMipPlane,
@@ -35,9 +36,17 @@ void main() {
   vec4 a = texelFetch(pnQueryA, p, 0);
   vec4 b = texelFetch(pnQueryB, p, 0);
   vec4 e = texelFetch(pnQueryE, p, 0);
-  // The leaf side as Fast PCSS and HQEPCSS take it (divisor 0: the block's side itself).
-  int leafSide = pnTraversalLeafSide(pnParams.leafSide, pnParams.leafDivisor, ivec2(a.zw));
-  PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP && pnParams.grid > 0)
+  PnArea area = pnParams.areaRegions != 0 ? pnRegionArea(a.xy, a.z, pnParams.mapSize)
+                                           : pnRegionAreaOfRect(PnRect(ivec2(a.xy), ivec2(a.zw)));
+  // The leaf side as Fast PCSS (regionLeaf) and HQEPCSS take it (divisor 0: the block's side itself).
+  int leafSide = pnParams.regionLeaf != 0
+      ? pnTraversalRegionLeafSide(pnParams.leafSide, pnParams.leafDivisor, area.cover.size)
+      : pnTraversalLeafSide(pnParams.leafSide, pnParams.leafDivisor, area.cover.size);
+  PnTraversal r = (pnParams.structure == PN_STRUCTURE_MIP && pnParams.areaRegions != 0)
+      ? pnTraverseAreaMipPlane(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, area, vec3(e.xy, b.x), e.zw,
+                               pnParams.bias, leafSide, pnParams.leafMode, pnParams.nodeBudget, pnParams.depthSums,
+                               ivec2(b.yz))
+      : (pnParams.structure == PN_STRUCTURE_MIP && pnParams.grid > 0)
       ? pnGridRegionMip(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
                         pnParams.bias, pnParams.grid, leafSide, pnParams.leafMode, pnParams.depthSums,
                         ivec2(b.yz))

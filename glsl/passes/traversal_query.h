@@ -12,6 +12,7 @@
 #define PN_TRAVERSAL_QUERY_PYRAMID_BINDING 0       // sampler2DArray, RGBA32F (depth_pyramid.glsl)
 #define PN_TRAVERSAL_QUERY_SAMPLE_TABLE_BINDING 1  // sampler2D, RG32F (sample_table.glsl)
 #define PN_TRAVERSAL_QUERY_A_BINDING 2             // sampler2D, RGBA32F: region origin x, y, width, height
+                                                   // (areaRegions: centre x, y, side, 0)
 #define PN_TRAVERSAL_QUERY_RESULT_C_BINDING 3      // image2D, rgba32f: occluders, depth sum, texels, 0
 #define PN_TRAVERSAL_QUERY_RESULT_D_BINDING 4      // image2D, rgba32f: nodes, fetches, blocker mean, occluded fraction
 #define PN_TRAVERSAL_QUERY_B_BINDING 5             // sampler2D, RGBA32F: receiver depth, pixel x, y, 0
@@ -31,9 +32,10 @@ PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   int mapSize;       // the mip chain's map side N
   int grid;          // the mip chain: > 0: pnGridRegionMip with this many cells a side
   int leafDivisor;   // pnTraversalLeafSide's: the leaf side at least the region's longer side / this (0: off)
+  int areaRegions;   // the mip chain: 1: query A is (centre x, y, side, 0), the area-weighted square
+                     // pnRegionArea (issue 51), traversed by pnTraverseAreaMipPlane
+  int regionLeaf;    // 1: the leaf side is pnTraversalRegionLeafSide's (a region no wider than a leaf: 1)
   int pad0;          // the block a whole number of 16-byte rows
-  int pad1;
-  int pad2;
 PN_END_UNIFORM_BLOCK(pnParams)
 
 #endif  // PENUMBRA_PASSES_TRAVERSAL_QUERY_H

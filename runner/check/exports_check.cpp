@@ -284,7 +284,7 @@ CaseResult defaults_case(const std::string& name, const std::vector<float>& from
 
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss");
-  const ExportPass exact_area(env.device, env.tree, "exact_pcss", {{"PN_EXACT_PCSS_AREA", "1"}});
+  const ExportPass exact_area(env.device, env.tree, "exact_pcss", {{"PN_AREA_EDGES", "1"}});
   const ExportPass pcf(env.device, env.tree, "pcf");
   const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
   const ExportPass fast(env.device, env.tree, "fast_pcss");
@@ -410,7 +410,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                                           query_block(block))));
       }
       {
-        // PN_EXACT_PCSS_AREA (issue 51): the squares with area-weighted edges, within what their
+        // PN_AREA_EDGES (issue 51): the squares with area-weighted edges, within what their
         // float edges and sums round to (pcss_compare.h).
         glsl::PnExactPcssExport block{};
         set_light_fields(block, scene.light);
@@ -424,7 +424,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
             exact_area.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers, query_block(block));
         for (std::size_t k = 0; k < got.size(); ++k) seen.at(s.pixels[k].first, s.pixels[k].second) = got[k];
         const int ambiguous = leave_out_ambiguous(area_reference, seen);
-        results.push_back({where + "exports/exact_pcss with PN_EXACT_PCSS_AREA (pnExactPcss, area-weighted edges) vs "
+        results.push_back({where + "exports/exact_pcss with PN_AREA_EDGES (pnExactPcss, area-weighted edges) vs "
                                    "the definition in double on the CPU (" + std::to_string(got.size()) +
                                " receivers, both overloads; " + std::to_string(ambiguous) +
                                " pixels within rounding of the blocker decision left out)",

@@ -13,9 +13,11 @@
 // - pnExactPcss, and pnFastPcss with every improvement off (refine 0, leaf 1,
 //   the table's exact sums), in both stages against exact PCSS brute force on
 //   the CPU (double), the pixels within rounding of a decision left out and
-//   counted; pnExactPcss with area-weighted edges (PN_EXACT_PCSS_AREA, issue 51)
-//   against its own definition (exact_pcss_area_reference), within what its
-//   float edges round to (pcss_compare.h);
+//   counted; pnExactPcss and pnFastPcss with every improvement off, each with
+//   area-weighted edges (PN_AREA_EDGES, issue 51), against their definition
+//   (exact_pcss_area_reference), within what their float edges round to
+//   (pcss_compare.h); the shipped pnFastPcss with area-weighted edges against
+//   its staged passes and across stages as above;
 // - the same calls with the receiver plane from the G-buffer's
 //   neighbours (the receiverPlane overloads of pnFastPcss, pnExactPcss,
 //   pnPoissonPcss, pnHqepcss): fragment vs compute, and the exact ones (exact
@@ -69,8 +71,14 @@ std::vector<PcssSettings> one_call_settings() {
   PcssSettings exact_area = exact_pcss();  // issue 51: the squares with area-weighted edges
   exact_area.name = "exact, area-weighted edges";
   exact_area.area_edges = true;
+  PcssSettings fast_area = fast_pcss();
+  fast_area.name = "fast, area-weighted edges";
+  fast_area.area_edges = true;
+  PcssSettings fast_all_off_area = fast_pcss_all_off();
+  fast_all_off_area.name += ", area-weighted edges";
+  fast_all_off_area.area_edges = true;
   std::vector<PcssSettings> out{fast_pcss(), windows, grid, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
-                                exact_pcss(), exact_area, hqepcss()};
+                                exact_pcss(), exact_area, hqepcss(), fast_area, fast_all_off_area};
   // HQEPCSS at leaf 1 over exact regions without refinement: exact PCSS over the pyramid.
   PcssSettings hqepcss_exact = hqepcss();
   hqepcss_exact.name = "hqepcss, refine 0, leaf 1, exact regions";

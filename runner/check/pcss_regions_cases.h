@@ -48,7 +48,9 @@ struct EntryGroup {
 // `expected_refinements` >= 0: a counted search's (PcssRegionsQuery::Kind::search_mip_counted) count too.
 void add_entry(EntryGroup& g, const RegionEntry& expected, bool ambiguous, const PcssRegionsResult& o,
                int expected_refinements = -1);
-void add_regions(EntryGroup& g, const PcssRegionsResult& o, int n, RegionMode mode);
+// area_edges: pnEntryRect is the area square's cover (area_cover; a bound within rounding of an
+// integer may take either rounding, counted as tied).
+void add_regions(EntryGroup& g, const PcssRegionsResult& o, int n, RegionMode mode, bool area_edges = false);
 void push_group(std::vector<CaseResult>& results, const std::string& name, const EntryGroup& g, const char* what);
 
 // Over the mip chain every other receiver's query is the counted search (pnSearchEntryMipCounted).

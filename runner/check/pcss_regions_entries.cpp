@@ -41,6 +41,18 @@ bool square_tie(const std::array<float, 4>& entry, int n) {
   return false;
 }
 
+// Whether float evaluation of an area square's cover may differ from the double one: a bound
+// c ± s/2 within 4 float ulps of an integer without being one.
+bool area_tie(const std::array<float, 4>& entry, int n) {
+  const double s = std::clamp(std::isnan(entry[3]) ? 0.0 : std::max(static_cast<double>(entry[3]), 0.0), 1.0, 4.0 * n);
+  for (float c : {entry[1], entry[2]})
+    for (double bound : {c - 0.5 * s, c + 0.5 * s}) {
+      const double off = std::fabs(bound - std::round(bound));
+      if (std::isfinite(bound) && off > 0.0 && off <= 4.0 * kUlp * (std::fabs(c) + s + 1.0)) return true;
+    }
+  return false;
+}
+
 // The exact square of a tied entry, as the GPU rounded it when that is one of the
 // roundings the tie allows (either side of the .5, the origin either side of the
 // integer); else the double one (and the comparison fails).
@@ -102,9 +114,18 @@ void add_entry(EntryGroup& g, const RegionEntry& expected, bool ambiguous, const
   g.o_sides.push_back(both ? o.entry[3] : -1.0f);
 }
 
-void add_regions(EntryGroup& g, const PcssRegionsResult& o, int n, RegionMode mode) {
+void add_regions(EntryGroup& g, const PcssRegionsResult& o, int n, RegionMode mode, bool area_edges) {
   std::array<float, 12> expected = regions_of(o.entry, n, mode);
-  if (square_tie(o.entry, n)) {
+  if (area_edges) {
+    const Rect r = area_cover(o.entry[1], o.entry[2], o.entry[3], n);
+    expected[0] = float(r.x), expected[1] = float(r.y), expected[2] = float(r.width), expected[3] = float(r.height);
+    if (area_tie(o.entry, n)) {
+      ++g.regions_tied;
+      for (int c = 0; c < 4; ++c)
+        if (std::fabs(expected[static_cast<size_t>(c)] - o.rect[static_cast<size_t>(c)]) <= 1.0f)
+          expected[static_cast<size_t>(c)] = o.rect[static_cast<size_t>(c)];
+    }
+  } else if (square_tie(o.entry, n)) {
     ++g.regions_tied;
     const Rect r = tied_square(o.entry, n, o.rect);
     expected[0] = float(r.x), expected[1] = float(r.y), expected[2] = float(r.width), expected[3] = float(r.height);

@@ -105,6 +105,36 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
                ("search entries (0 and " + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
   }
 
+  // The squares with area-weighted edges (PN_AREA_EDGES, issue 51): the mip chain's search reads the
+  // min over each square's cover, so its decisions stay conservative — the entries against the
+  // reference reading area_cover, the lit-coverage property, pnEntryRect = the cover.
+  {
+    const PcssRegionsQueryPass area_pass(env.device, env.tree, true);
+    EntryGroup g;
+    const std::vector<PcssRegionsResult> observed =
+        area_pass.run(scene.pyramid, scene.light,
+                      search_queries(scene.receivers, RegionMode::exact, defaults.refine_iterations, defaults.bias,
+                                     Structure::mip),
+                      &scene.mip);
+    for (size_t k = 0; k < scene.receivers.size(); ++k) {
+      Rounding rounding{kAmbiguity};
+      int refinements = 0;
+      const RegionEntry expected = search_entry(scan, scene.light, scene.receivers[k], defaults.bias,
+                                                defaults.refine_iterations, &rounding, Structure::mip, &refinements,
+                                                true);
+      add_entry(g, expected, rounding.ambiguous, observed[k]);
+      add_regions(g, observed[k], kSceneMap, RegionMode::exact, true);
+    }
+    const std::string what = "the mip chain's search over squares with area-weighted edges";
+    results.push_back(count_lit_coverage(scene.name + ", " + what + ", " + std::to_string(defaults.refine_iterations) +
+                                             " iterations",
+                                         scene.receivers, truths, observed)
+                          .result);
+    tally.searched += g.queries, tally.left_out += g.left_out;
+    push_group(results, scene.name + ", " + what, g,
+               ("search entries (" + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
+  }
+
   // The property on the boxes scene at render's resolution, on the far field (screen rows 128-319,
   // where the far boxes' walls are), for the paper's window mode and the shipped search over the mip
   // chain: those walls are where the paper's lit decision scribbled (issue 11 item 6). Not with

@@ -22,6 +22,7 @@
 //   budget + 3·levels + 1 nodes, equal to the recursion with that budget,
 //   its error against brute force in the case name.
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <string>
@@ -107,6 +108,81 @@ void add_comparison(std::vector<CaseResult>& results, const std::string& name, c
   results.push_back({name + " occluded fraction", fraction_tol, compare(e_fraction, o_fraction, fraction_tol)});
 }
 
+// Leaf side 1 over area-weighted squares (issue 51): the mip chain's walk with the table's sums against
+// brute_force_area_occluders, each element within the rounding of its float sums ((terms + 4) ulps,
+// terms = the GPU's nodes + fetches) and of the square's corners in float (4 ulps of the centre's and
+// the side's magnitude on each edge texel's weight). [0] occluded area, [1] depth-weighted, [2] area,
+// [3] the module's occluded fraction, [4] its blocker mean (where the occluded area is above its bound).
+template <class Observe>
+CaseResult area_case(const CheckEnvironment& env, const Observe& observe, const Scene& scene, const std::string& label) {
+  (void)env;
+  constexpr double u = 0x1p-24;
+  std::vector<std::array<float, 3>> squares{{150.0f, 150.0f, 7.0f},  {150.5f, 150.5f, 7.0f}, {0.25f, 0.75f, 3.5f},
+                                            {kMapSize - 0.3f, 4.2f, 9.9f}, {-1.25f, 40.0f, 3.0f},
+                                            {150.3f, 150.6f, 1.0f},  {150.0f, 150.0f, 0.25f}, {-0.35f, 200.5f, 1.0f},
+                                            {150.0f, 150.0f, kMapSize * 1.5f}};
+  SeededRandom random(0x5eed0051u);
+  for (float side : {1.5f, 2.7f, 5.25f, 16.4f, 33.9f, 100.6f})
+    for (int k = 0; k < 6; ++k)
+      squares.push_back({random.uniform_float(-5.0f, kMapSize + 5.0f), random.uniform_float(-5.0f, kMapSize + 5.0f),
+                         side + random.uniform_float(0.0f, 0.1f)});
+  std::vector<TraversalQuery> queries;
+  std::vector<TraversalResult> expected;
+  std::vector<double> position_error;
+  for (const auto& [x, y, side] : squares) {
+    const double half = 0.5 * std::clamp<double>(side, 1.0, 4.0 * kMapSize);
+    const auto bound = [](double v) { return std::clamp(v, 0.0, static_cast<double>(kMapSize)); };
+    const int x0 = static_cast<int>(std::floor(bound(x - half))), y0 = static_cast<int>(std::floor(bound(y - half)));
+    const Rect cover{x0, y0, std::max(1, static_cast<int>(std::ceil(bound(x + half))) - x0),
+                     std::max(1, static_cast<int>(std::ceil(bound(y + half))) - y0)};
+    for (float receiver : receivers_for(scene.depth, Rect{std::min(cover.x, kMapSize - 1), std::min(cover.y, kMapSize - 1),
+                                                          std::min(cover.width, kMapSize - std::min(cover.x, kMapSize - 1)),
+                                                          std::min(cover.height, kMapSize - std::min(cover.y, kMapSize - 1))})) {
+      if (!std::isfinite(receiver)) continue;
+      const TraversalResult e = brute_force_area_occluders(scene.depth, x, y, side, receiver, 0.0f);
+      if (!std::isfinite(e.depth_sum)) continue;  // a -Inf texel occludes with a -Inf sum: nothing to bound
+      TraversalQuery q{{}, receiver, static_cast<int>(queries.size()), 0};
+      q.area_x = x, q.area_y = y, q.area_side = side;
+      queries.push_back(q);
+      expected.push_back(e);
+      const double c = std::max(std::fabs(x), std::fabs(y)), s = std::min(2.0 * half, kMapSize + 0.0);
+      position_error.push_back(4.0 * u * (std::min(c, 5.0 * kMapSize) + 2.0 * half) * 4.0 * (s + 2.0));
+    }
+  }
+  TraversalSettings settings;  // leaf side 1, the table's sums
+  settings.area_regions = true;
+  const std::vector<TraversalReadback> observed = observe(queries, settings);
+  BoundedElements b;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const TraversalResult& e = expected[k];
+    const TraversalReadback& o = observed[k];
+    const int at = static_cast<int>(k);
+    const double rounding = static_cast<double>(o.nodes + o.fetches + 4) * 2.0 * u;
+    const double occluded_bound = rounding * e.occluders + position_error[k];
+    const double sum_bound = rounding * e.occluders * scene.largest + position_error[k] * scene.largest;
+    const double area_bound = 4.0 * u * e.texels + position_error[k];
+    b.add(e.occluders, o.occluders, occluded_bound, at, 0, 0);
+    b.add(e.depth_sum, o.depth_sum, sum_bound, at, 0, 1);
+    b.add(e.texels, o.texels, area_bound, at, 0, 2);
+    const double fraction = e.occluded_fraction();
+    b.add(fraction, o.called_occluded_fraction,
+          e.texels > area_bound ? (occluded_bound + fraction * area_bound) / (e.texels - area_bound) + 4.0 * u : 1.0,
+          at, 0, 3);
+    if (e.occluders > occluded_bound) {
+      const double mean = e.blocker_mean();
+      b.add(mean, o.called_blocker_mean,
+            (sum_bound + std::fabs(mean) * occluded_bound) / (e.occluders - occluded_bound) + 4.0 * u * std::fabs(mean),
+            at, 0, 4);
+    }
+  }
+  Tolerance tolerance;
+  const Comparison c = compare_bounded(b, tolerance);
+  return {label + " mip chain leaf 1 over area-weighted squares (pnRegionArea, pnTraverseAreaMipPlane) vs every texel's "
+                  "overlap in double (" + std::to_string(queries.size()) + " queries at (k, 0)): [0] occluded area, "
+                  "[1] depth-weighted, [2] area, [3] occluded fraction, [4] blocker mean",
+          tolerance, c};
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
@@ -127,7 +203,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
   // The GPU's results over a structure, and the CPU recursion's decisions over the same one.
   const auto observe = [&](const Structure& st, const Scene& scene, const std::vector<TraversalQuery>& queries,
                            const TraversalSettings& s) {
-    const TraversalBatch batch(env.device, queries);
+    const TraversalBatch batch(env.device, queries, s.area_regions);
     pass.dispatch(st.mip ? TraversalStructure{nullptr, &scene.mip, &scene.depth_sums} : TraversalStructure{&scene.pyramid},
                   *table_texture, batch, s);
     return batch.read();
@@ -176,6 +252,13 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       add_comparison(results, label + st.label + " leaf 1 vs brute force:", scene, brute, observed, decisions, false);
       add_comparison(results, label + st.label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
     }
+
+    // Leaf side 1 over area-weighted squares (pnRegionArea, pnTraverseAreaMipPlane; issue 51) on the mip
+    // chain, with the table's sums, against every texel's overlap in double.
+    results.push_back(area_case(
+        env,
+        [&](const std::vector<TraversalQuery>& q, const TraversalSettings& s) { return observe(structures[1], scene, q, s); },
+        scene, label));
 
     // Leaf side 1 with a receiver plane over both structures against the plane's brute force: a node is
     // decided against the plane's range over it, widened by rounding, so the counts are exact but for
@@ -262,6 +345,24 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
                          scene, expected, observed, expected, true, s.depth_sums != DepthSums::none,
                          mode == LeafMode::ramp);
         }
+
+    // Fast PCSS's leaf side for a region (pnTraversalRegionLeafSide): leaf side 16 over regions of side
+    // 16…256, a region no wider than the leaf read to its texels: the recursion with that side.
+    for (const Structure& st : structures) {
+      if (!st.mip) continue;
+      TraversalSettings s;
+      s.leaf_side = 16, s.region_leaf = true, s.bias = 0.001f;
+      std::vector<TraversalResult> expected;
+      for (const TraversalQuery& q : leaf_queries) {
+        TraversalSettings own = s;
+        if (std::max(q.region.width, q.region.height) <= s.leaf_side) own.leaf_side = 1;
+        expected.push_back(recursion(st, scene, {q}, own)[0]);
+      }
+      const auto observed = observe(st, scene, leaf_queries, s);
+      add_comparison(results,
+                     label + st.label + " sampled leaves of side 16, a region no wider than that read to its texels:",
+                     scene, expected, observed, expected, true, true, false);
+    }
 
     // The leaf side from the region (pnTraversalLeafSide's divisor, Fast PCSS's `leafDivisor`): the
     // recursion with the side the definition gives, max(leaf, the region's longer side / divisor);

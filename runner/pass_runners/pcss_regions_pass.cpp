@@ -27,11 +27,12 @@ static_assert(static_cast<int>(PcssRegionsQuery::Kind::search) == PN_PCSS_REGION
                   static_cast<int>(PcssRegionsQuery::Kind::search_mip_counted) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED,
               "query kinds as pcss_regions_query.h numbers them");
 
-PcssRegionsQueryPass::PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree)
+PcssRegionsQueryPass::PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree, bool area_edges)
     : query_(device, tree, "passes/pcss_regions_query.comp",
              {{PN_PCSS_REGIONS_QUERY_A_BINDING, PN_PCSS_REGIONS_QUERY_B_BINDING, PN_PCSS_REGIONS_QUERY_C_BINDING},
               {PN_PCSS_REGIONS_QUERY_ENTRY_BINDING, PN_PCSS_REGIONS_QUERY_RECT_BINDING,
-               PN_PCSS_REGIONS_QUERY_WINDOW_BINDING, PN_PCSS_REGIONS_QUERY_KEY_BINDING}}),
+               PN_PCSS_REGIONS_QUERY_WINDOW_BINDING, PN_PCSS_REGIONS_QUERY_KEY_BINDING}},
+             area_edges ? std::vector<Define>{{"PN_AREA_EDGES", "1"}} : std::vector<Define>{}),
       no_mip_(device.make_texture({TexelFormat::rgba32f, 1, 1})) {}
 
 std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyramid, const LightModel& light,

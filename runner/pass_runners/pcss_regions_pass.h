@@ -38,7 +38,9 @@ struct PcssRegionsResult {
 
 class PcssRegionsQueryPass {
  public:
-  PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree);
+  // area_edges: the pass compiled with PN_AREA_EDGES (issue 51): the searches read the area squares'
+  // covers, pnEntryRect is the cover.
+  PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree, bool area_edges = false);
 
   // One result per query; the light's map size must be the pyramid's N, and the mip
   // chain's when given (search_mip queries need it). Throws Error otherwise.

@@ -25,10 +25,11 @@ std::unique_ptr<DeviceTexture> upload_sample_table(const QueryDevice& device, co
 
 namespace {
 
-std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries) {
+std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries, bool area_regions) {
   std::vector<Query> a, b, e;
   for (const TraversalQuery& q : queries) {
-    a.push_back({float(q.region.x), float(q.region.y), float(q.region.width), float(q.region.height)});
+    a.push_back(area_regions ? Query{q.area_x, q.area_y, q.area_side, 0.0f}
+                             : Query{float(q.region.x), float(q.region.y), float(q.region.width), float(q.region.height)});
     b.push_back({q.receiver_depth, float(q.pixel_x), float(q.pixel_y), 0.0f});
     e.push_back({q.receiver_u, q.receiver_v, q.gradient_u, q.gradient_v});
   }
@@ -37,8 +38,8 @@ std::vector<Image> batch_inputs(const std::vector<TraversalQuery>& queries) {
 
 }  // namespace
 
-TraversalBatch::TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries)
-    : count_(queries.size()), batch_(device.make_batch(batch_inputs(queries), 2, 0)) {}
+TraversalBatch::TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries, bool area_regions)
+    : count_(queries.size()), batch_(device.make_batch(batch_inputs(queries, area_regions), 2, 0)) {}
 
 std::vector<TraversalReadback> TraversalBatch::read() const {
   const QueryResults r = batch_->read();
@@ -67,6 +68,8 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const DeviceTe
   const bool mip = structure.mip != nullptr;
   if (mip == (structure.pyramid != nullptr) || (mip && settings.depth_sums == DepthSums::table && !structure.depth_sums))
     throw Error("traversal: expected a pyramid or a mip chain (with its summed-area table for table depth sums)");
+  if (settings.area_regions && (!mip || settings.grid > 0))
+    throw Error("traversal: area regions: expected the mip chain's traversal (no grid)");
   const glsl::PnTraversalQueryParams block{settings.bias,
                                            settings.leaf_side,
                                            static_cast<int>(settings.leaf_mode),
@@ -76,8 +79,8 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const DeviceTe
                                            mip ? structure.mip->map_size : 0,
                                            settings.grid,
                                            settings.leaf_divisor,
-                                           0,
-                                           0,
+                                           settings.area_regions ? 1 : 0,
+                                           settings.region_leaf ? 1 : 0,
                                            0};
   query_.dispatch(*batch.batch_,
                   {{PN_TRAVERSAL_QUERY_PYRAMID_BINDING, mip ? *empty_array_ : *structure.pyramid->texture},

@@ -23,6 +23,9 @@ struct TraversalQuery {
   // with this light depth per texel; 0: none.
   float receiver_u = 0.0f, receiver_v = 0.0f;
   float gradient_u = 0.0f, gradient_v = 0.0f;
+  // With TraversalSettings::area_regions: the area-weighted square (pnRegionArea) of side
+  // `area_side` centred on (area_x, area_y) instead of `region`.
+  float area_x = 0.0f, area_y = 0.0f, area_side = 0.0f;
 };
 
 // The same for every query of a batch.
@@ -34,6 +37,8 @@ struct TraversalSettings {
   DepthSums depth_sums = DepthSums::table;  // the mip chain's traversal
   int grid = 0;  // the mip chain: > 0 counts over pnGridRegionMip's grid instead of traversing
   int leaf_divisor = 0;  // > 0: leaves of at least the region's longer side / this (pnTraversalLeafSide)
+  bool area_regions = false;  // the mip chain: each query's area square, pnTraverseAreaMipPlane
+  bool region_leaf = false;   // the leaf side from pnTraversalRegionLeafSide (Fast PCSS's)
 };
 
 // What a traversal reads: the decreased pyramid, or the aligned mip chain
@@ -57,7 +62,7 @@ struct TraversalReadback : TraversalResult {
 // Queries on the GPU and their result images; read() returns one result per query.
 class TraversalBatch {
  public:
-  TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries);
+  TraversalBatch(const QueryDevice& device, const std::vector<TraversalQuery>& queries, bool area_regions = false);
   std::vector<TraversalReadback> read() const;
 
  private:

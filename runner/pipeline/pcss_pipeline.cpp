@@ -83,6 +83,18 @@ bool uses_sanitized_map(const PcssSettings& s) {
 
 Define switch_define(const char* name, int value) { return {name, std::to_string(value)}; }
 
+// The squares with area-weighted edges (pcss_regions.glsl's PN_AREA_EDGES; issue 51): every pass
+// that reads a region (the search's cover, the scan, the traversal, the one call) compiles with it.
+std::vector<Define> area_edges_defines(const PcssSettings& settings) {
+  if (!settings.area_edges) return {};
+  return {{"PN_AREA_EDGES", "1"}};
+}
+
+std::vector<Define> with_area_edges(std::vector<Define> defines, const PcssSettings& settings) {
+  for (const Define& d : area_edges_defines(settings)) defines.push_back(d);
+  return defines;
+}
+
 // pcss_params.glsl's compile-time switches from the block a dispatch runs with.
 std::vector<Define> search_defines(const PcssBlock& b) {
   return {switch_define("PN_PCSS_STRUCTURE", b.structure), switch_define("PN_PCSS_REGION_MODE", b.regionMode),
@@ -192,11 +204,6 @@ void PcssPipeline::add_structures(PassResources& resources, const PcssFrame& fra
        {PN_PCSS_SAMPLE_TABLE_BINDING, *sample_table_}});
 }
 
-// Exact PCSS's squares with area-weighted edges (exact_pcss.glsl's option; issue 51).
-static std::vector<Define> area_edges_defines(const PcssSettings& settings) {
-  if (!settings.area_edges) return {};
-  return {{"PN_EXACT_PCSS_AREA", "1"}};
-}
 
 void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const DeviceTexture& entries,
                             const DeviceTexture* parents, int tile, Estimator estimator, int samples,
@@ -234,7 +241,7 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const Devic
     return;
   }
 
-  const QueryProgram& program = estimator == Estimator::poisson ? poisson_.get() : traverse_.get(traverse_defines(block));
+  const QueryProgram& program = estimator == Estimator::poisson ? poisson_.get() : traverse_.get(with_area_edges(traverse_defines(block), frame.settings));
   // The list holds the pixels that must compute — not lit, and representatives
   // when reuse is on — so lit pixels are skipped with or without reuse.
   const bool list = frame.settings.skip == WorkSkip::list;
@@ -331,8 +338,7 @@ static std::vector<Define> one_call_defines(OneCall call, bool record_work, cons
   std::vector<Define> out{{"PN_PCSS_ONE_CALL", std::to_string(static_cast<int>(call))},
                           {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
   if (shipped_call_settings(settings)) out.push_back({"PN_PCSS_ENGINE_FORM", "1"});
-  for (const Define& d : area_edges_defines(settings)) out.push_back(d);
-  return out;
+  return with_area_edges(out, settings);
 }
 
 PcssFrame PcssPipeline::run_one_call(PcssFrame frame, const TechniqueInputs& inputs, bool record_work) const {
@@ -403,7 +409,7 @@ PcssFrame PcssPipeline::run(const TechniqueInputs& inputs, const PcssSettings& s
     resources.add_images({{PN_PCSS_SEARCH_MAP_IMAGE, *frame.search_map},
                           {PN_PCSS_SEARCH_KEYS_IMAGE, *frame.search_keys},
                           {PN_PCSS_RECEIVER_DEPTH_IMAGE, *frame.receiver_depth}});
-    device_->run(search_.get(search_defines(search_block)), resources, size, size);
+    device_->run(search_.get(with_area_edges(search_defines(search_block), settings)), resources, size, size);
   }
   clock->stage("3 search region");
 

@@ -1,6 +1,7 @@
 #include "reference/pcf_reference.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 
 #include "reference/receiver_plane_reference.h"
@@ -33,8 +34,9 @@ PcfSums pcf_reference(const Image& depth, const Rect& window, double receiver_de
   return s;
 }
 
-PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double side, float threshold) {
-  const double n = depth.width;
+void for_each_area_texel(int width, int height, double x, double y, double side,
+                         const std::function<void(int, int, double)>& visit) {
+  const double n = width;
   const auto centre = [&](double c) { return std::clamp(std::isnan(c) ? 0.0 : c, -4.0 * n, 5.0 * n); };
   const double s = std::clamp(std::isnan(side) ? 0.0 : std::max(side, 0.0), 1.0, 4.0 * n);
   const double x0 = centre(x) - 0.5 * s, x1 = centre(x) + 0.5 * s;
@@ -46,19 +48,24 @@ PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double si
   // every texel in it is weighed by the overlap above, zero or not).
   const auto first = [](double lo) { return static_cast<int>(std::max(0.0, std::floor(lo))); };
   const auto end = [](double hi, int n) { return static_cast<int>(std::min<double>(n, std::ceil(hi))); };
-  PcfAreaSums sums;
-  for (int j = first(y0); j < end(y1, depth.height); ++j) {
+  for (int j = first(y0); j < end(y1, height); ++j) {
     const double wy = overlap(j, j + 1.0, y0, y1);
     if (wy == 0.0) continue;
-    for (int i = first(x0); i < end(x1, depth.width); ++i) {
+    for (int i = first(x0); i < end(x1, width); ++i) {
       const double w = overlap(i, i + 1.0, x0, x1) * wy;
-      if (w == 0.0) continue;
-      const float d = depth.at(i, j);
-      ++sums.touched;
-      sums.area += w;
-      if (std::isfinite(d) && d < threshold) sums.occluders += w, sums.depth_sum += w * d;
+      if (w != 0.0) visit(i, j, w);
     }
   }
+}
+
+PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double side, float threshold) {
+  PcfAreaSums sums;
+  for_each_area_texel(depth.width, depth.height, x, y, side, [&](int i, int j, double w) {
+    const float d = depth.at(i, j);
+    ++sums.touched;
+    sums.area += w;
+    if (std::isfinite(d) && d < threshold) sums.occluders += w, sums.depth_sum += w * d;
+  });
   return sums;
 }
 

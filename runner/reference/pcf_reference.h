@@ -5,6 +5,8 @@
 // (SPEC §3). Nothing is sanitised beforehand: the map is the raw input.
 #pragma once
 
+#include <functional>
+
 #include "core/image.h"
 #include "core/texel_rect.h"
 #include "modules/pcf_face.h"
@@ -39,6 +41,11 @@ PcfSums pcf_reference(const Image& depth, const Rect& window, double receiver_de
 // double: occluders = that area over the texels of finite depth < threshold, depth_sum = the
 // area-weighted depths of those, area = the overlap of the square with the map. `threshold` is the
 // float dP - bias the module forms (the caller computes it in float).
+// The texels of that square on a width × height map, each with its overlap weight w > 0 (the
+// geometry pcf_area_reference and the traversal's area reference share).
+void for_each_area_texel(int width, int height, double x, double y, double side,
+                         const std::function<void(int, int, double)>& visit);
+
 struct PcfAreaSums {
   double occluders = 0.0, depth_sum = 0.0, area = 0.0;
   int touched = 0;  // texels of non-zero weight

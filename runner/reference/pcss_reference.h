@@ -29,7 +29,7 @@ struct PcssReference {
 PcssReference exact_pcss_reference(const Image& shadow_map, const Image& gbuffer, const LightModel& light, double bias,
                                    double filter_scale, double margin, double receiver_plane_tan = 0.0);
 
-// Exact PCSS with area-weighted edges (issue 51, PN_EXACT_PCSS_AREA): both squares continuous and
+// Exact PCSS with area-weighted edges (issue 51, PN_AREA_EDGES): both squares continuous and
 // every texel weighed by its overlap (pcf_area_reference), blocker mean and occluded fraction as
 // areas, the threshold the float dP - bias. Ambiguous where blockers lie within `margin` texels of
 // the search square's edges and its occluded area is within their weight of none (an edge texel's

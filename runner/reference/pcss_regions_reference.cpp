@@ -41,6 +41,16 @@ void note_region(const RegionEntry& e, int n, RegionMode mode, Rounding& roundin
       if (std::isfinite(bound) && from_integer(bound) <= rel * (std::fabs(c) + s + 1.0)) rounding.ambiguous = true;
 }
 
+// The area square's cover: its bounds c ± s/2 floored and ceiled — a bound within rounding of an
+// integer may land on either side in float.
+void note_area(const RegionEntry& e, int n, Rounding& rounding) {
+  const double s = std::clamp(std::isnan(e.side) ? 0.0 : std::max(e.side, 0.0), 1.0, 4.0 * n);
+  for (double c : {e.x, e.y})
+    for (double bound : {c - 0.5 * s, c + 0.5 * s})
+      if (std::isfinite(bound) && from_integer(bound) <= rounding.relative * (std::fabs(c) + s + 1.0))
+        rounding.ambiguous = true;
+}
+
 }  // namespace
 
 Rect pcss_square(double x, double y, double side, int n, double* margin) {
@@ -73,8 +83,26 @@ Rect entry_region(const RegionEntry& entry, int n, RegionMode mode) {
   return pcss_square(entry.x, entry.y, entry.side, n, nullptr);
 }
 
+Rect area_cover(double x, double y, double side, int n) {
+  const double s = std::clamp(std::isnan(side) ? 0.0 : std::max(side, 0.0), 1.0, 4.0 * n);
+  const auto axis = [&](double c, int& start, int& length) {
+    c = std::clamp(std::isnan(c) ? 0.0 : c, -4.0 * n, 5.0 * n);
+    const double lo = std::clamp(c - 0.5 * s, 0.0, static_cast<double>(n));
+    const double hi = std::clamp(c + 0.5 * s, lo, static_cast<double>(n));
+    start = static_cast<int>(std::floor(lo));
+    length = static_cast<int>(std::ceil(hi)) - start;
+  };
+  Rect r;
+  axis(x, r.x, r.width);
+  axis(y, r.y, r.height);
+  return r;
+}
+
 Rect search_min_square(const RegionEntry& entry, int n) {
-  const Rect r = pcss_square(entry.x, entry.y, entry.side, n, nullptr);
+  return covering_square(pcss_square(entry.x, entry.y, entry.side, n, nullptr), n);
+}
+
+Rect covering_square(const Rect& r, int n) {
   if (r.width == 0 || r.height == 0) return Rect{};
   const int side = std::min(std::max(r.width, r.height), n);
   return {std::clamp(r.x, 0, n - side), std::clamp(r.y, 0, n - side), side, side};
@@ -111,7 +139,7 @@ double DepthScan::min(const Rect& r) const {
 }
 
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, Rounding* rounding, Structure structure, int* refinements) {
+                         int iterations, Rounding* rounding, Structure structure, int* refinements, bool area_edges) {
   int reads = 0;
   if (!refinements) refinements = &reads;
   *refinements = 0;
@@ -121,9 +149,11 @@ RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const R
   const double threshold = d - bias;
   RegionEntry e{d, receiver.u, receiver.v, light.search_width_texels(d)};
   for (int i = 0; i < std::min(iterations, kRefineMaxIterations); ++i) {
-    if (rounding) note_region(e, n, RegionMode::exact, *rounding);
+    if (rounding && !area_edges) note_region(e, n, RegionMode::exact, *rounding);
+    if (rounding && area_edges) note_area(e, n, *rounding);
+    const Rect region = area_edges ? area_cover(e.x, e.y, e.side, n) : pcss_square(e.x, e.y, e.side, n, nullptr);
     const double zmin =
-        scan.min(structure == Structure::mip ? mip_search_cover(e, n) : search_min_square(e, n));
+        scan.min(structure == Structure::mip ? mip_square_cover(region, n) : covering_square(region, n));
     ++*refinements;
     if (rounding && bias != 0.0 && std::isfinite(zmin) && std::isfinite(threshold) &&
         std::fabs(zmin - threshold) <= rounding->relative * std::fabs(threshold))

@@ -54,6 +54,13 @@ Rect entry_region(const RegionEntry& entry, int n, RegionMode mode);
 // square of side max(w, h) at the exact region's origin, moved inside the map — it
 // covers the region (SPEC §4.7); empty when the region is.
 Rect search_min_square(const RegionEntry& entry, int n);
+// The same square for any rectangle inside the map: side max(w, h) at its origin, moved inside the map.
+Rect covering_square(const Rect& r, int n);
+
+// The texels the square with area-weighted edges touches (pnRegionArea's cover, issue 51): per axis
+// [floor(c - s/2), ceil(c + s/2)), s = clamp(side, 1, 4n) — a NaN or negative side read as 0, a
+// NaN centre coordinate as 0, the centre clamped to [-4n, 5n] — the bounds clipped to [0, n].
+Rect area_cover(double x, double y, double side, int n);
 
 // The rectangle whose min depth Step 3 reads from the aligned mip chain
 // (pn_searchRegionMinMip): the aligned nodes of side 2^l, l = max(2, ceil(log2 m) - 1),
@@ -95,10 +102,11 @@ struct Rounding {
 // Step 3. Invalid receivers and NaN depths: lit (0, 0, 0, lit). `iterations` is
 // bounded by kRefineMaxIterations; 0 gives PCSS's search width as is.
 // `structure`: which square's min refinement reads (search_min_square, or mip_search_cover);
-// `refinements` (optional): how many squares' mins it read.
+// `refinements` (optional): how many squares' mins it read. `area_edges` (PN_AREA_EDGES, issue 51):
+// the squares read cover area_cover instead of pcss_square.
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
                          int iterations, Rounding* rounding = nullptr, Structure structure = Structure::pyramid,
-                         int* refinements = nullptr);
+                         int* refinements = nullptr, bool area_edges = false);
 
 // Step 4, from the search entry and the blocker mean of its pixel.
 RegionEntry filter_entry(const LightModel& light, const RegionEntry& search, double blocker_mean, bool has_blocker,

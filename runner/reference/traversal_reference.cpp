@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "minmax_mip.h"  // PN_MIP_FIRST_LEVEL
+#include "reference/pcf_reference.h"
 #include "reference/receiver_plane_reference.h"
 
 namespace pn {
@@ -19,6 +20,18 @@ TraversalResult brute_force_occluders(const Image& depth, const Rect& region, fl
       const float d = depth.at(x, y);
       if (d < t) r.occluders += 1.0, r.depth_sum += d;
     }
+  return r;
+}
+
+TraversalResult brute_force_area_occluders(const Image& depth, double x, double y, double side, float receiver_depth,
+                                           float bias) {
+  TraversalResult r;
+  const float t = receiver_depth - bias;
+  for_each_area_texel(depth.width, depth.height, x, y, side, [&](int i, int j, double w) {
+    const float d = depth.at(i, j);
+    r.texels += w;
+    if (d < t) r.occluders += w, r.depth_sum += w * d;
+  });
   return r;
 }
 

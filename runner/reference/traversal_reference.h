@@ -18,6 +18,10 @@ namespace pn {
 
 // `depth` is a sanitized N×N map (sanitized_depths); `region` lies inside it.
 TraversalResult brute_force_occluders(const Image& depth, const Rect& region, float receiver_depth, float bias);
+// The same over the area-weighted square of side `side` centred on (x, y) (pnRegionArea, issue 51):
+// every texel weighed by its overlap (for_each_area_texel), texels = the square's area in the map.
+TraversalResult brute_force_area_occluders(const Image& depth, double x, double y, double side, float receiver_depth,
+                                           float bias);
 
 // The definition with a receiver plane (glsl/receiver_plane.glsl), in double: texel q occludes when
 // d(q) < receiver_depth - bias + g · (q + ½ − (u, v)). A texel whose depth lies within
