@@ -63,12 +63,12 @@ std::string width_text(double w) { return "x" + format_number("%g", w); }
 FrontierBenchSetup quick_frontier_setup() {
   FrontierBenchSetup s;
   s.scenes = {"boxes", "tall_blocker"};
-  s.widths = {1, 8};
-  s.sizes = {128};
+  s.widths = {1, 4};
+  s.sizes = {128, 256};
   s.repeats = 1;
   s.truth_samples = 4;
-  s.techniques = {samples_technique("poisson", 16), "poisson", "vogel", samples_technique("vogel", 64), "fast", "fast:leaf=8",
-               "hqepcss", "savsm", "vsm", "pcf", "exact", "backprojection:samples=64"};
+  s.techniques = {"poisson", "vogel", "fast", "fast:edges=area", "hqepcss", "savsm", "vsm", "pcf", "exact",
+                  "backprojection:samples=64"};
   return s;
 }
 
@@ -77,6 +77,8 @@ void validate_frontier_setup(const FrontierBenchSetup& s) {
   require_list_length("frontier light width factors", s.widths.size());
   require_list_length("frontier sizes", s.sizes.size());
   validate_width_bench_settings(s.sizes, s.repeats, s.truth_samples, s.exact_up_to);
+  if (s.screen && (*s.screen < 16 || *s.screen > 4096))
+    throw Error("screen " + std::to_string(*s.screen) + ": expected 16..4096");
   for (const std::string& name : s.scenes)
     for (double w : s.widths) frontier_scene(name, 16, w);  // the scene (its models read), the factor, the light
   for (const std::string& m : s.techniques) parse_technique(m)->validate();
@@ -129,7 +131,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
         progress.step(name + " " + std::to_string(n) + " " + width_text(w) + ": " + std::to_string(configs.size()) +
                       " configurations, the truth");
         ComparisonSetup cs;
-        cs.screen_size = n;
+        cs.screen_size = setup.screen.value_or(n);
         cs.repeats = setup.repeats;
         cs.truth_samples = setup.truth_samples;
         cs.census = estimator.has_value();
@@ -143,7 +145,7 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
         Comparison result = compare_techniques(context, tree, frontier_scene(name, n, w), cs);
         const std::vector<GpuEstimate> estimates = estimator ? estimator->estimate(result) : std::vector<GpuEstimate>{};
         FrontierPoint p;
-        p.scene = name, p.size = n, p.width = w;
+        p.scene = name, p.size = n, p.screen = cs.screen_size, p.width = w;
         for (const TechniqueResult& r : result.results) {
           FrontierRow row;
           row.technique = r.name, row.family = technique_family(r.name);
@@ -167,7 +169,8 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
     std::vector<std::string> names;
     for (const FrontierRow& r : p.rows) names.push_back(r.technique);
     const int w = name_column_width(names);
-    out << "scene " << p.scene << ", " << p.size << "x" << p.size << ", light width " << width_text(p.width)
+    out << "scene " << p.scene << ", " << p.size << "x" << p.size << " map, " << p.screen << "² screen, light width "
+        << width_text(p.width)
         << "; light-facing pixels vs the ray-traced truth, by time:\n"
         << std::left << std::setw(w) << "technique" << std::right << std::setw(10) << "GPU ms" << std::setw(8) << "SSIM"
         << std::setw(9) << "MAE" << std::setw(8) << "acne" << std::setw(8) << "leak" << std::setw(10) << "fetch/px"
@@ -232,6 +235,7 @@ nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::v
     for (const FrontierRow& r : p.rows) rows.push_back(row_json(r));
     list.push_back({{"scene", p.scene},
                     {"size", p.size},
+                    {"screen", p.screen},
                     {"width", p.width},
                     {"rows", rows},
                     {"default", kFrontierDefault},
@@ -240,6 +244,7 @@ nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::v
                      p.beats_default_estimate ? row_json(*p.beats_default_estimate) : nlohmann::json(nullptr)}});
   }
   return {{"scenes", setup.scenes}, {"widths", setup.widths}, {"sizes", setup.sizes},
+          {"screen", setup.screen ? nlohmann::json(*setup.screen) : nlohmann::json("map")},
           {"repeats", setup.repeats}, {"truth_samples", setup.truth_samples},
           {"exact_up_to", setup.exact_up_to},
           {"estimate", setup.estimate ? nlohmann::json(gpu_estimate_label(*setup.estimate)) : nlohmann::json(nullptr)},

@@ -30,7 +30,10 @@ struct FrontierBenchSetup {
   // on kFrontierCascades cascades).
   std::vector<std::string> scenes{"boxes", "fence", "tall_blocker", "spider", "city"};
   std::vector<double> widths{1, 2, 4, 8};  // light width factors
-  std::vector<int> sizes{512, 1024};       // shadow map = screen (each cascade's map on the city)
+  // Shadow-map sizes (each cascade's map on the city): 256² is where engines' spot lights live (atlas
+  // tiles), and where the filter's edge decides (issue 51).
+  std::vector<int> sizes{256, 512, 1024};
+  std::optional<int> screen;  // the screen's side; none: the map's (each point's size)
   int repeats = 3;
   int truth_samples = 16;
   // Exact PCSS and HQEPCSS (their PCF reads every texel of the filter region, which grows as the
@@ -43,8 +46,8 @@ struct FrontierBenchSetup {
 inline constexpr int kFrontierCascades = 3;
 inline constexpr const char* kFrontierDefault = "fast";  // the configuration the frontier is asked about
 
-// `--quick`: boxes and the tall blocker at 128², widths 1 and 8, one round, 4² truth samples, and
-// a configuration of each technique family (short enough for CI).
+// `--quick`: boxes and the tall blocker at 128² and 256², widths 1 and 4, one round, 4² truth
+// samples, and a configuration of each technique family (short enough for CI).
 FrontierBenchSetup quick_frontier_setup();
 
 // Throws Error naming the first bad setting (unknown scene, bad width, size outside 16..4096,
@@ -65,6 +68,7 @@ struct FrontierRow {
 struct FrontierPoint {
   std::string scene;
   int size = 0;
+  int screen = 0;      // the screen's side it was scored on
   double width = 1.0;  // factor
   std::vector<FrontierRow> rows;
   // The default's standing: the fastest row of another family with MAE <= the default's and less

@@ -53,7 +53,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* scenes = applies_to(cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes); frontier: default boxes,fence,tall_blocker,spider,city")->delimiter(','), {"sweep", "frontier"});
   auto* widths = applies_to(cmd->add_option("--widths", opt->sweep.factors, "sweep, frontier: light width factors (default 1,2,4,8)")->delimiter(','), {"sweep", "frontier"});
   auto* exact_up_to = applies_to(cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep, frontier: run exact PCSS (frontier: and HQEPCSS) only at light width factors up to this (default 2; inf: at every factor)"), {"sweep", "frontier"});
-  applies_to(cmd->add_flag("--quick", opt->quick, "frontier: the short run for CI (boxes and tall_blocker at 128², widths 1 and 8, a configuration per technique, one round)"), {"frontier"});
+  applies_to(cmd->add_flag("--quick", opt->quick, "frontier: the short run for CI (boxes and tall_blocker at 128² and 256², widths 1 and 4, a configuration per technique family, one round)"), {"frontier"});
   applies_to(cmd->add_option("--techniques", opt->techniques, "pipeline: techniques (default: every registry entry but fast-all-off); sweep: default exact,poisson,hqepcss,fast")->delimiter(','), {"pipeline", "sweep", "frontier", "cascades"});
   auto* truth_samples = applies_to(cmd->add_option("--truth-samples", opt->pipeline.truth_samples, "pipeline, sweep: S for the ray-traced truth's S x S light samples (default 16)"), {"pipeline", "sweep", "frontier", "cascades"});
   applies_to(cmd->add_option("--max-level", opt->max_level, "pyramid: maximum level (default: all)"), {"pyramid"});
@@ -64,7 +64,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   applies_to(cmd->add_option("--sources", opt->cache.sources, "cache: shadow-map sources (default full,two-map,dirty-rect)")->delimiter(','), {"cache"});
   applies_to(cmd->add_option("--frames", opt->cache.frames, "cache: timed frames per K (default 20, after --warmup untimed ones)"), {"cache"});
   applies_to(cmd->add_option("--warmup", opt->cache.warmup, "cache: untimed frames first (default 3)"), {"cache"});
-  auto* screen = applies_to(cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512); cascades: the screen (default 256)"), {"cache", "cascades"});
+  auto* screen = applies_to(cmd->add_option("--screen", opt->cache.screen, "cache: Fast PCSS's screen size (default 512); cascades: the screen (default 256); frontier: the screen (default: the map's size)"), {"cache", "cascades", "frontier"});
   applies_to(cmd->add_option("--animated-scene", opt->cache.scene, "cache: moving_city | moving (default moving_city)"), {"cache"});
   applies_to(cmd->add_option("--counts", opt->cascades.counts, "cascades: split counts at --size (default 0,1,2,3,4; 0: one map over the scene)")->delimiter(','), {"cascades"});
   applies_to(cmd->add_option("--enlargements", opt->cascades.ks, "cascades: first-split enlargements k at --count, --size (default 1,2,4)")->delimiter(','), {"cascades"});
@@ -105,6 +105,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (repeats->count() > 0) opt->frontier.repeats = opt->repeats;
       if (truth_samples->count() > 0) opt->frontier.truth_samples = opt->pipeline.truth_samples;
       if (exact_up_to->count() > 0) opt->frontier.exact_up_to = opt->sweep.exact_up_to;
+      if (screen->count() > 0) opt->frontier.screen = opt->cache.screen;
       if (!opt->techniques.empty()) opt->frontier.techniques = opt->techniques;
       validate_frontier_setup(opt->frontier);
     } else if (opt->what == "cascades") {

@@ -2,7 +2,7 @@
 # bench_frontier_quick.sh PENUMBRA WORKDIR
 # `penumbra bench frontier --quick` (through gl_or_skip.sh: exit 77 without a
 # GL context) as CI runs it: the tables with Fast PCSS's standing, a JSON with
-# its 4 points (2 scenes × 2 widths), each with at least one row on the
+# its 8 points (2 scenes × 2 sizes, 128² and 256², × 2 widths), each with at least one row on the
 # frontier and the cost proxy beside the PCSS rows, and a PNG plot.
 penumbra=$1 work=$2
 here=$(dirname "$0")
@@ -15,9 +15,9 @@ status=$?
 import json, sys
 doc = json.load(open(sys.argv[1]))
 points = doc["results"]["points"]
-assert len(points) == 4, f"expected 4 points, found {len(points)}"
+assert len(points) == 8, f"expected 8 points, found {len(points)}"
 for p in points:
-    where = f"{p['scene']} x{p['width']:g}"
+    where = f"{p['scene']} {p['size']} x{p['width']:g}"
     assert any(r["on_frontier"] for r in p["rows"]), f"{where}: no row on the frontier"
     fast = [r for r in p["rows"] if r["technique"] == "fast"]
     assert fast and fast[0]["fetches_per_pixel"] is not None, f"{where}: fast has no fetch count"
@@ -26,7 +26,7 @@ for p in points:
     assert all(r["estimate_ms"] is not None and r["estimate_ms"] > 0 for r in p["rows"]), f"{where}: a row has no estimate"
     assert any(r["on_estimate_frontier"] for r in p["rows"]), f"{where}: no row on the estimate's frontier"
 assert doc["results"]["estimate"] == "navi21 wave64", doc["results"]["estimate"]
-print("frontier.json: 4 points, a frontier in each, fast's fetch proxy, an estimate for every row")
+print("frontier.json: 8 points, a frontier in each, fast's fetch proxy, an estimate for every row")
 PY
 signature=$(head -c 8 "$work/frontier.png" | od -An -tx1 | tr -d ' \n')
 [ "$signature" = "89504e470d0a1a0a" ] || { echo "$work/frontier.png is not a PNG ($signature)"; exit 1; }
