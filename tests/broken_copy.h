@@ -19,6 +19,8 @@ namespace pn::test {
 
 // `quick`: the check's --quick (every program, fewer fixtures and no large-data case), for the
 // broken copies whose mistake shows on those (the suite's 8 minutes).
+inline constexpr bool kQuick = true;  // run_check's `quick`
+
 inline std::vector<CaseResult> run_check(const ModuleCheck& check, const std::filesystem::path& root,
                                          bool quick = false) {
   const SourceTree tree(root);

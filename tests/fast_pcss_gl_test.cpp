@@ -17,10 +17,10 @@ const pn::ModuleCheck& fast_pcss() { return pn::find_module_check("fast_pcss"); 
 
 TEST_CASE("the one calls equal the staged passes in compute and fragment stage, and exact PCSS with everything off") {
   const auto results = pn::test::run_check(fast_pcss(), PENUMBRA_GLSL_DIR);
-  // 3 scenes × 9 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
-  // fragment vs compute (the staged passes take no plane) + 3 scenes × 2 stages vs the CPU × (all off, exact and
-  // exact with area-weighted edges without the plane, all off, exact and HQEPCSS at leaf 1 with it).
-  CHECK(results.size() == 3 * 9 * 2 + 3 * 6 + 3 * 2 * (3 + 3));
+  // 3 scenes × 11 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
+  // fragment vs compute (the staged passes take no plane) + 3 scenes × 2 stages vs the CPU × (all off, exact, and
+  // both with area-weighted edges without the plane; all off, exact and HQEPCSS at leaf 1 with it).
+  CHECK(results.size() == 3 * 11 * 2 + 3 * 6 + 3 * 2 * (4 + 3));
   pn::test::check_all_pass(results);
 }
 
@@ -28,15 +28,16 @@ TEST_CASE("negative: a copy that halves Fast PCSS's occluded fraction fails in b
   // (traversal.glsl's pnTraversalOccludedFraction: only fast_pcss.glsl's call calls it)
   const pn::test::BrokenCopy copy("traversal.glsl", "? r.occluders / r.texels : 0.0", "? 0.5 * r.occluders / r.texels : 0.0");
   REQUIRE(copy.found());
-  const auto results = pn::test::run_check(fast_pcss(), copy.root());
+  const auto results = pn::test::run_check(fast_pcss(), copy.root(), pn::test::kQuick);  // one scene shows it
   size_t fast_failing = 0;
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
     if (named(r, ": poisson") || named(r, ": exact") || named(r, ": hqepcss")) CHECK(r.comparison.pass);
     else if (named(r, "vs the staged passes") || named(r, "brute force")) fast_failing += r.comparison.pass ? 0 : 1;
   }
-  // Every scene: four fast settings vs the staged passes; all off, without and with the plane, in both stages vs the CPU.
-  CHECK(fast_failing == 3 * 4 + 3 * 2 * 2);
+  // The quick run's scene (the tall blocker): six fast settings vs the staged passes (four, and two with
+  // area-weighted edges); all off, without and with the plane and with area-weighted edges, in both stages vs the CPU.
+  CHECK(fast_failing == 6 + 2 * 3);
   CHECK(pn::test::failing_cases(results) == fast_failing);  // the fragment shader still equals the compute pass
 }
 
@@ -44,12 +45,12 @@ TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fai
   const pn::test::BrokenCopy copy("passes/pcss_one_call.frag", "pnOneCallShade(ivec2(gl_FragCoord.xy), fetches)",
                                   "pnOneCallShade(ivec2(gl_FragCoord.xy + vec2(0.5, 0.0)), fetches)");
   REQUIRE(copy.found());
-  const auto results = pn::test::run_check(fast_pcss(), copy.root());
+  const auto results = pn::test::run_check(fast_pcss(), copy.root(), pn::test::kQuick);
   size_t fragment_failing = 0;
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
     if (named(r, "vs the staged passes")) CHECK(r.comparison.pass);
     if (named(r, "fragment shader vs the compute pass")) fragment_failing += r.comparison.pass ? 0 : 1;
   }
-  CHECK(fragment_failing == 3 * 15);  // every setting, with a plane or not
+  CHECK(fragment_failing == 17);  // every setting, with a plane or not, on the quick run's scene
 }

@@ -19,7 +19,6 @@ const pn::ModuleCheck& savsm() { return pn::find_module_check("savsm"); }
 // configurations (5; the one without bound and reduction adds the upper-bound case). The broken
 // copies run the check so; the library's whole run is cli_check_all_gl's.
 constexpr size_t kMaps = 2, kConfigs = 5, kCasesPerConfig = 9;
-constexpr bool kQuick = true;
 
 }  // namespace
 
@@ -28,7 +27,7 @@ constexpr bool kQuick = true;
 TEST_CASE("negative: a copy whose Chebyshev blocker adds the mean fails the table blocker's cases only") {
   const pn::test::BrokenCopy copy("savsm.glsl", "/ (t - s.mean), near, t);", "/ (t + s.mean), near, t);");
   REQUIRE(copy.found());
-  const auto results = pn::test::run_check(savsm(), copy.root(), kQuick);
+  const auto results = pn::test::run_check(savsm(), copy.root(), pn::test::kQuick);
   CHECK(results.size() == kMaps * (kConfigs * kCasesPerConfig + 2));  // + exports/savsm, the defaults
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
@@ -41,7 +40,7 @@ TEST_CASE("negative: a copy whose filter square is a texel too wide fails the fi
   const pn::test::BrokenCopy copy("savsm.glsl", "r.filterRect = pnRegionSquare(receiver.xy, r.filterSide, n);",
                                   "r.filterRect = pnRegionSquare(receiver.xy, r.filterSide + 1.0, n);");
   REQUIRE(copy.found());
-  const auto results = pn::test::run_check(savsm(), copy.root(), kQuick);
+  const auto results = pn::test::run_check(savsm(), copy.root(), pn::test::kQuick);
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
     if (named(r, "search square") || named(r, ": blocker") || named(r, "filter side")) CHECK(r.comparison.pass);
@@ -54,7 +53,7 @@ TEST_CASE("negative: a copy that reads the filter's moments twice fails the fetc
       "savsm.glsl", "PnSavsmStats f = pnSavsmRectStats(table, r.filterRect, unitRange);",
       "PnSavsmStats f = pnSavsmRectStats(table, r.filterRect, unitRange); f = pnSavsmRectStats(table, r.filterRect, unitRange);");
   REQUIRE(copy.found());
-  const auto results = pn::test::run_check(savsm(), copy.root(), kQuick);
+  const auto results = pn::test::run_check(savsm(), copy.root(), pn::test::kQuick);
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
     if (!named(r, "texel fetches per receiver") && !named(r, "constant cost")) CHECK(r.comparison.pass);
@@ -66,7 +65,7 @@ TEST_CASE("negative: a copy of summed_area.glsl whose variance skips the exact c
   const pn::test::BrokenCopy copy("summed_area.glsl", "pn_summedAreaUnsignedToFloat(centred) / m.texels - d * d",
                                   "pn_summedAreaUnsignedToFloat(s.zw) / m.texels - (float(centre) + d) * (float(centre) + d)");
   REQUIRE(copy.found());
-  const auto results = pn::test::run_check(savsm(), copy.root(), kQuick);
+  const auto results = pn::test::run_check(savsm(), copy.root(), pn::test::kQuick);
   for (const auto& r : results) {
     INFO(r.name << ": " << r.comparison.where(r.tolerance));
     if (named(r, "search square") || named(r, "filter mean")) CHECK(r.comparison.pass);

@@ -118,14 +118,13 @@ SceneImages ray_cast(const Scene& scene) {
 // The receivers' visibilities against the reference's on the screen (pixels without a surface
 // are not receivers: they keep the reference's value).
 CaseResult against(const std::string& name, const SceneImages& s, const PcssReference& reference,
-                   const std::vector<float>& observed) {
+                   const std::vector<float>& observed, Tolerance tolerance = Tolerance::absolute(kFractionRounding)) {
   Image seen = reference.visibility;
   for (std::size_t k = 0; k < observed.size(); ++k) seen.at(s.pixels[k].first, s.pixels[k].second) = observed[k];
   const int ambiguous = leave_out_ambiguous(reference, seen);
   return {name + " (" + std::to_string(observed.size()) + " receivers, both overloads; " + std::to_string(ambiguous) +
               " pixels within rounding of a decision left out)",
-          Tolerance::absolute(kFractionRounding),
-          compare(reference.visibility, seen, Tolerance::absolute(kFractionRounding))};
+          tolerance, compare(reference.visibility, seen, tolerance)};
 }
 
 // The settings pnFastPcss and pnHqepcss share, as they make the call exact PCSS (fast_pcss.glsl
@@ -289,6 +288,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
   const ExportPass fast(env.device, env.tree, "fast_pcss");
   const ExportPass fast_shipped(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}});
+  const ExportPass fast_area(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}, {"PN_AREA_EDGES", "1"}});
   const ExportPass hqepcss(env.device, env.tree, "hqepcss");
   const ExportPass poisson(env.device, env.tree, "poisson_pcss");
   const ExportPass vogel(env.device, env.tree, "vogel_pcss");
@@ -310,6 +310,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
     const std::unique_ptr<DeviceTexture> map = env.device.upload(s.map);
     const MinMaxMipChain mip = mips.build(*map, kMap);
     const PcssReference reference = exact_pcss_reference(s.map, s.gbuffer, light, bias, 1.0, kPcssDecisionMargin);
+    const PcssReference area_reference = exact_pcss_area_reference(s.map, s.gbuffer, light, bias, 1.0, kAreaEdgeMargin);
     const glsl::PnFastPcssExport block = exact_fast_block(light, bias, 1.0f, PN_DEPTH_SUMS_MIDPOINT);
     const std::vector<QueryTexture> textures{{PN_EXPORT_DEPTH_MAP_BINDING, *map}, {PN_EXPORT_FAST_MIP_BINDING, *mip.texture},
                                              {PN_EXPORT_SAMPLE_TABLE_BINDING, *table}};
@@ -322,6 +323,11 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                     " exports/fast_pcss without PN_FAST_PCSS_ABLATIONS (the shipped walk, leaf 1 "
                                     "descending to the texels) vs exact PCSS brute force on the CPU",
                                 s, reference, fast_shipped.run(stage, textures, s.receivers, query_block(block))));
+      results.push_back(against(std::string("blockers of one depth, 64² map: ") + stage_name(stage) +
+                                    " exports/fast_pcss with PN_AREA_EDGES, without PN_FAST_PCSS_ABLATIONS (the shipped "
+                                    "walk over area-weighted squares, leaf 1) vs the definition in double on the CPU",
+                                s, area_reference, fast_area.run(stage, textures, s.receivers, query_block(block)),
+                                Tolerance::absolute(area_edges_rounding(kMap))));
     }
   }
   for (const auto& fixture : check_scenes(env)) {
@@ -418,17 +424,12 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
         block.filterScale = 1.0f;
         const PcssReference area_reference =
             exact_pcss_area_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kAreaEdgeMargin);
-        const Tolerance area_tolerance = Tolerance::absolute(area_edges_rounding(kMap));
-        Image seen = area_reference.visibility;
-        const std::vector<float> got =
-            exact_area.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers, query_block(block));
-        for (std::size_t k = 0; k < got.size(); ++k) seen.at(s.pixels[k].first, s.pixels[k].second) = got[k];
-        const int ambiguous = leave_out_ambiguous(area_reference, seen);
-        results.push_back({where + "exports/exact_pcss with PN_AREA_EDGES (pnExactPcss, area-weighted edges) vs "
-                                   "the definition in double on the CPU (" + std::to_string(got.size()) +
-                               " receivers, both overloads; " + std::to_string(ambiguous) +
-                               " pixels within rounding of the blocker decision left out)",
-                           area_tolerance, compare(area_reference.visibility, seen, area_tolerance)});
+        results.push_back(against(where + "exports/exact_pcss with PN_AREA_EDGES (pnExactPcss, area-weighted edges) "
+                                          "vs the definition in double on the CPU",
+                                  s, area_reference,
+                                  exact_area.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
+                                                 query_block(block)),
+                                  Tolerance::absolute(area_edges_rounding(kMap))));
       }
       const glsl::PnHqepcssExport hqepcss_block = exact_settings_block<glsl::PnHqepcssExport>(scene.light, bias, 1.0f);
       results.push_back(against(where + "exports/hqepcss (pnHqepcss: refine 0, exact regions, leaf 1) vs exact PCSS "

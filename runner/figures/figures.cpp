@@ -238,6 +238,7 @@ const std::vector<std::pair<const char*, Draw>>& figure_table() {
       {"backprojection", &backprojection_figure},
       {"backprojection_layers", &backprojection_layers_figure},
       {"techniques", &techniques_figure},
+      {"area_edges", &area_edges_figure},
   };
   return figures;
 }

@@ -14,7 +14,7 @@ namespace pn {
 
 // Writes blur.png, pyramid_levels.png, region_snapping.png, sample_table.png
 // traversal_nodes.png, reuse_groups.png, pipeline_stages.png, vsm_bleeding.png, savsm_bleeding.png,
-// cascades_splits.png, backprojection.png, backprojection_layers.png and techniques.png into `out`
+// cascades_splits.png, backprojection.png, backprojection_layers.png, techniques.png and area_edges.png into `out`
 // (created if missing), all drawn before any is written; returns the paths written.
 std::vector<std::filesystem::path> write_figures(const Context& context, const SourceTree& tree,
                                                  const std::filesystem::path& out);
@@ -39,6 +39,10 @@ Rgb node_heat(float share);
 // Every technique render draws by default (the registry's `rendered` entries) and the truth, on
 // the boxes scene at 128² (techniques_figure.cpp).
 Canvas techniques_figure(const Context& context, const SourceTree& tree);
+
+// One penumbra of the boxes scene at 128² on a 512² screen, zoomed: integer squares against squares
+// with area-weighted edges (issue 51; area_edges_figure.cpp).
+Canvas area_edges_figure(const Context& context, const SourceTree& tree);
 
 // pnBackprojection over a boxes map under the sun: the map, the visibility, the nodes visited
 // (backprojection_figure.cpp).

@@ -81,7 +81,7 @@ struct PcssSettings {
   // clamped to this tangent; 0: off. The one calls of fast, exact and vogel (validate).
   float receiver_plane_tan = 0.0f;
   // Issue 51 (docs/area-regions.md): both regions as squares with area-weighted edges
-  // (PN_AREA_EDGES). Exact PCSS only, so far: its one call and its staged scan (validate).
+  // (PN_AREA_EDGES). Exact PCSS and Fast PCSS over exact regions, one call or staged (validate).
   bool area_edges = false;
 
   // Throws Error naming the setting and its accepted range.
