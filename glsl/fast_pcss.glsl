@@ -63,7 +63,8 @@
 //   PN_AREA_EDGES 1          both regions the continuous squares with area-weighted edges (issue 51,
 //                            pcss_regions.glsl's option): Step 3 reads the squares' covers, the walk
 //                            weighs each part by its overlap, sampled leaves sit inside it, and a
-//                            region no wider than a leaf is read to its texels (pnTraversalRegionLeafSide)
+//                            leaf is at most a quarter of the region's side, a region under 16 texels
+//                            a side read to its texels (pnTraversalRegionLeafSide)
 //   PN_TRAVERSAL_MAX_LEVEL, PN_REFINE_MAX_ITERATIONS   loop bounds (traversal.h, pcss_regions.h)
 //
 // cost: Step 3 <= 9 fetches a refinement; each traversal one fetch a node
@@ -235,9 +236,10 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
     // Nodes of side > leafSide descend, so every leaf of the region is of one level: its sample
     // group is the region's (sample_table.glsl), not a leaf's.
 #if PN_AREA_EDGES
-    // A region no wider than a leaf is read to its texels (pnTraversalRegionLeafSide): leaves of side
-    // 1, one sample each (m = 1 exactly then, leafSide >= 2: the region's leaf is not held apart).
-    int k = pnSampleGroupLog4(1 << min(top, findMSB(pnTraversalRegionLeafSide(leafSide, 0, size))));
+    // The leaf for the region (pnTraversalRegionLeafSide): at most a quarter of its side, and 1 —
+    // its texels, one sample each — where that is under 4.
+    int regionLeaf = pnTraversalRegionLeafSide(leafSide, 0, size);
+    int k = pnSampleGroupLog4(1 << min(top, findMSB(regionLeaf)));
 #else
     int k = pnSampleGroupLog4(1 << min(top, findMSB(leafSide)));
 #endif
@@ -273,7 +275,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
           t.depthSum += (depths.x == depths.y ? depths.x : 0.5 * (depths.x + depths.y)) * texels;
         } else if (depths.x < threshold.y) {  // ambiguous
 #if PN_AREA_EDGES
-          descend = m == 1 ? level > 0 : (1 << level) > leafSide;
+          descend = (1 << level) > regionLeaf;
 #else
           descend = (1 << level) > leafSide;
 #endif

@@ -45,11 +45,12 @@
 //         constant as the penumbra widens)
 //   int   pnTraversalRegionLeafSide(int leafSide, int leafDivisor, ivec2 regionSize)
 //         the leaf side Fast PCSS walks a region with over area-weighted squares (issue 51,
-//         PN_AREA_EDGES): pnTraversalLeafSide's, or 1 — its
-//         texels, exact — for a region no wider than that leaf, where the leaf would be the whole
-//         region estimated from one sample group (16 samples for up to 256 texels: the stipple of
-//         small maps, where every region is that small); reading its texels costs about as many
-//         fetches as the samples would along a shadow edge
+//         PN_AREA_EDGES): pnTraversalLeafSide's, at most a quarter of the region's longer side
+//         (rounded down to a power of two: every region is at least four leaves a side), and 1 —
+//         its texels, exact — where that leaves a side under 4 (a region under 16 texels a side):
+//         a leaf as wide as the region is the region estimated from one sample group (16 samples
+//         for up to 256 texels: the stipple of small maps, where nearly every region is that
+//         small), and a side-2 leaf's 4 samples cost its 4 texels' fetches
 //   float pnTraversalBlockerMean(PnTraversal r)        depthSum / occluders (0 if none; Step 4)
 //   float pnTraversalOccludedFraction(PnTraversal r)   occluders / texels (Step 5)
 //   PnTraversal { float occluders; float depthSum; float texels; int nodes; int fetches; }
@@ -90,8 +91,10 @@ int pnTraversalLeafSide(int leafSide, int leafDivisor, ivec2 regionSize) {
 }
 
 int pnTraversalRegionLeafSide(int leafSide, int leafDivisor, ivec2 regionSize) {
-  int leaf = pnTraversalLeafSide(leafSide, leafDivisor, regionSize);
-  return max(regionSize.x, regionSize.y) > leaf ? leaf : 1;
+  // A quarter of the longer side, rounded down to a power of two (1 for a region under 8 texels).
+  int quarter = 1 << max(findMSB(max(regionSize.x, regionSize.y) / 4), 0);
+  int leaf = min(pnTraversalLeafSide(leafSide, leafDivisor, regionSize), quarter);
+  return leaf >= 4 ? leaf : 1;
 }
 
 float pnTraversalBlockerMean(PnTraversal r) {

@@ -32,7 +32,7 @@ void main() {
   }
   int n = int(pnPcss.mapSize);
   PnArea area = pnEntryArea(entry, n, PN_PCSS_REGION_MODE);  // with PN_AREA_EDGES, the continuous square
-  // Fast PCSS's leaf for the region with area-weighted edges (a region no wider than a leaf: its texels,
+  // Fast PCSS's leaf for the region with area-weighted edges (at most a quarter of its side; its texels under 16,
   // fast_pcss.glsl); else, and HQEPCSS's, as the paper's.
   int leafSide = (PN_AREA_EDGES != 0 && PN_PCSS_STRUCTURE == PN_STRUCTURE_MIP)
       ? pnTraversalRegionLeafSide(pnPcss.leafSide, pnPcss.leafDivisor, area.cover.size)

@@ -34,7 +34,7 @@ PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   int leafDivisor;   // pnTraversalLeafSide's: the leaf side at least the region's longer side / this (0: off)
   int areaRegions;   // the mip chain: 1: query A is (centre x, y, side, 0), the area-weighted square
                      // pnRegionArea (issue 51), traversed by pnTraverseAreaMipPlane
-  int regionLeaf;    // 1: the leaf side is pnTraversalRegionLeafSide's (a region no wider than a leaf: 1)
+  int regionLeaf;    // 1: the leaf side is pnTraversalRegionLeafSide's (Fast PCSS's over area-weighted squares)
   int pad0;          // the block a whole number of 16-byte rows
 PN_END_UNIFORM_BLOCK(pnParams)
 

@@ -347,7 +347,8 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
         }
 
     // Fast PCSS's leaf side for a region (pnTraversalRegionLeafSide): leaf side 16 over regions of side
-    // 16…256, a region no wider than the leaf read to its texels: the recursion with that side.
+    // 16…256, the leaf at most a quarter of the region's side (a power of two), 1 under 4: the
+    // recursion with that side (4 at side 16, 8 at 32, 16 from 64 on).
     for (const Structure& st : structures) {
       if (!st.mip) continue;
       TraversalSettings s;
@@ -355,12 +356,15 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       std::vector<TraversalResult> expected;
       for (const TraversalQuery& q : leaf_queries) {
         TraversalSettings own = s;
-        if (std::max(q.region.width, q.region.height) <= s.leaf_side) own.leaf_side = 1;
+        int quarter = 1;
+        while (quarter * 2 <= std::max(q.region.width, q.region.height) / 4) quarter *= 2;
+        own.leaf_side = std::min(s.leaf_side, quarter);
+        if (own.leaf_side < 4) own.leaf_side = 1;
         expected.push_back(recursion(st, scene, {q}, own)[0]);
       }
       const auto observed = observe(st, scene, leaf_queries, s);
       add_comparison(results,
-                     label + st.label + " sampled leaves of side 16, a region no wider than that read to its texels:",
+                     label + st.label + " sampled leaves of side 16, at most a quarter of the region's side:",
                      scene, expected, observed, expected, true, true, false);
     }
 
