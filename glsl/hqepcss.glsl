@@ -33,6 +33,8 @@
 //                          PN_TRAVERSAL_NO_BUDGET runs traversal_pyramid.glsl's general walk with its
 //                          budget. Without it the budget is not read (the call's walk has none:
 //                          pn_hqepcssBlockers) and an engine's program holds one walk, not two.
+//   PN_AREA_EDGES          (pcss_regions.glsl) not supported yet: 1 stops the compile with an #error
+//                          (HQEPCSS reads integer squares; issue 51, docs/area-regions.md)
 //
 // cost: Step 3 4 fetches a refinement; the blocker traversal one fetch a node;
 //   the PCF one fetch per texel of the filter square (O(s²)).
