@@ -169,7 +169,7 @@ PnArea pnRegionArea(vec2 centre, float side, int mapSize) {
 }
 
 PnArea pnRegionAreaOfRect(PnRect r) {
-  return PnArea(vec2(r.origin), vec2(r.origin + max(r.size, ivec2(0))), r);
+  return PnArea(vec2(r.origin), vec2(r.origin + r.size), r);  // an empty rectangle: hi <= lo, no texel
 }
 
 float pnRegionAreaOver(PnArea a, ivec2 lo, ivec2 hi) {

@@ -5,8 +5,9 @@
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0),
 //          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the
 //          traversal with that plane (pn_traverseRegionPlane, pnTraverseRegionMipPlane,
-//          pnGridRegionMip; gradient 0: none; on the pyramid a square without a plane goes
-//          through pnTraverseWindow, the same traversal).
+//          pnGridRegionMip; gradient 0: none — the mip chain's rectangles then go through
+//          pnTraverseRegionMip, and on the pyramid a square through pnTraverseWindow, the same
+//          traversals).
 // Result k: image C = (occluders, depth sum, texels, 0), image D = (nodes, fetches,
 //          pnTraversalBlockerMean, pnTraversalOccludedFraction).
 // Bindings and the parameter block: traversal_query.h.
@@ -50,6 +51,10 @@ void main() {
       ? pnGridRegionMip(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
                         pnParams.bias, pnParams.grid, leafSide, pnParams.leafMode, pnParams.depthSums,
                         ivec2(b.yz))
+      : (pnParams.structure == PN_STRUCTURE_MIP && all(equal(e.zw, vec2(0.0))))  // no plane: the plain call
+      ? pnTraverseRegionMip(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), b.x,
+                            pnParams.bias, leafSide, pnParams.leafMode, pnParams.nodeBudget, pnParams.depthSums,
+                            ivec2(b.yz))
       : (pnParams.structure == PN_STRUCTURE_MIP)
       ? pnTraverseRegionMipPlane(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw),
                                  vec3(e.xy, b.x), e.zw, pnParams.bias, leafSide, pnParams.leafMode,
