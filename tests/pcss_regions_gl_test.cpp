@@ -44,7 +44,7 @@ TEST_CASE("negative: a lit decision that lets a texel at exactly d - bias occlud
   const BrokenCopy copy("pcss_regions.glsl", "if (!(zmin < highestThreshold)) return",
                         "if (!(zmin <= highestThreshold)) return");
   REQUIRE(copy.found());
-  const auto results = run_check(regions(), copy.root());
+  const auto results = run_check(regions(), copy.root(), pn::test::kQuick);
   CHECK(failing_named(results, "lit decisions") > 0);  // receivers at the depth of the texel under them, bias 0
   CHECK(failing_cases(results) > 0);
 }
@@ -53,7 +53,7 @@ TEST_CASE("negative: a lit decision over the square of the region's shorter side
           "the lit-coverage property included") {
   const BrokenCopy copy("pcss_regions_pyramid.glsl", "max(r.size.x, r.size.y)", "min(r.size.x, r.size.y)");
   REQUIRE(copy.found());
-  const auto results = run_check(regions(), copy.root());
+  const auto results = run_check(regions(), copy.root(), pn::test::kQuick);
   for (const char* mode : {"exact region: ", "window region: ", "centred region: "})
     CHECK(failing_named(results, mode) > 0);  // clipped regions at the map's edges
   CHECK(failing_named(results, "although a texel can shadow them") > 0);
