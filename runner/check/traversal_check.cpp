@@ -114,8 +114,7 @@ void add_comparison(std::vector<CaseResult>& results, const std::string& name, c
 // the side's magnitude on each edge texel's weight). [0] occluded area, [1] depth-weighted, [2] area,
 // [3] the module's occluded fraction, [4] its blocker mean (where the occluded area is above its bound).
 template <class Observe>
-CaseResult area_case(const CheckEnvironment& env, const Observe& observe, const Scene& scene, const std::string& label) {
-  (void)env;
+CaseResult area_case(const Observe& observe, const Scene& scene, const std::string& label) {
   constexpr double u = 0x1p-24;
   std::vector<std::array<float, 3>> squares{{150.0f, 150.0f, 7.0f},  {150.5f, 150.5f, 7.0f}, {0.25f, 0.75f, 3.5f},
                                             {kMapSize - 0.3f, 4.2f, 9.9f}, {-1.25f, 40.0f, 3.0f},
@@ -256,7 +255,6 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     // Leaf side 1 over area-weighted squares (pnRegionArea, pnTraverseAreaMipPlane; issue 51) on the mip
     // chain, with the table's sums, against every texel's overlap in double.
     results.push_back(area_case(
-        env,
         [&](const std::vector<TraversalQuery>& q, const TraversalSettings& s) { return observe(structures[1], scene, q, s); },
         scene, label));
 
