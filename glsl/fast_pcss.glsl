@@ -169,7 +169,7 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D map, sampler2D sampleT
   for (int i = 0; i < m; ++i) {
     vec2 position = texelFetch(sampleTable, ivec2(first + i, set), 0).rg;
 #if PN_AREA_EDGES
-    ivec2 p = pn_traversalSampleTexel(position, lo, hi, offset, scale);
+    ivec2 p = pn_sampleTexelOver(position, lo, hi, offset, scale);
 #else
     ivec2 p = pn_sampleTexelIn(position, lo, scale);  // scale = the part's size >= 1: never empty
 #endif

@@ -68,10 +68,20 @@ vec2 pnSample(sampler2D table, int column, int set) {
 // texel to the rectangle: for any side s < 2^24, floor(p · s) <= s - 1 (the product rounds below
 // s), so a table position in [0, 1) lands where it always did and any other value (NaN, ±Inf, a bad
 // upload) still inside — two float clamps with constants, no register for the last texel.
-ivec2 pn_sampleTexelIn(vec2 position, ivec2 origin, vec2 scale) {
+vec2 pn_samplePosition(vec2 position) {
   // min(bound, x) first: NaN becomes the bound under either reading of min with a NaN.
-  vec2 p = max(vec2(0.0), min(vec2(uintBitsToFloat(0x3f7fffffu)), position));
-  return origin + ivec2(floor(p * scale));
+  return max(vec2(0.0), min(vec2(uintBitsToFloat(0x3f7fffffu)), position));
+}
+
+ivec2 pn_sampleTexelIn(vec2 position, ivec2 origin, vec2 scale) {
+  return origin + ivec2(floor(pn_samplePosition(position) * scale));
+}
+
+// Where a sample lands in the texels [lo, hi) when it is spread over a part of them only, [lo +
+// offset, lo + offset + scale) (a square with area-weighted edges clipping them: traversal.glsl's
+// pn_traversalPartOverlap), kept inside [lo, hi); offset 0 and scale hi - lo is pn_sampleTexelIn.
+ivec2 pn_sampleTexelOver(vec2 position, ivec2 lo, ivec2 hi, vec2 offset, vec2 scale) {
+  return lo + min(ivec2(floor(offset + pn_samplePosition(position) * scale)), hi - lo - 1);
 }
 
 ivec2 pnSampleTexel(vec2 position, ivec2 origin, ivec2 size) {

@@ -136,15 +136,6 @@ PnTraversal pn_traversalBeginArea(inout PnArea a, int n, out ivec2 start, out iv
   return r;
 }
 
-// Where a sample at table position `position` lands in the part [lo, hi) of an area's cover: at
-// that position inside the part's overlap with the area — the part itself for an integer area,
-// where it is pnSampleTexel's texel (offset 0, scale the part's size) — kept inside the part.
-ivec2 pn_traversalSampleTexel(vec2 position, ivec2 lo, ivec2 hi, vec2 offset, vec2 scale) {
-  // min(bound, x) first: NaN becomes the bound under either reading of min with a NaN (sample_table.glsl).
-  vec2 p = max(vec2(0.0), min(vec2(uintBitsToFloat(0x3f7fffffu)), position));
-  return lo + min(ivec2(floor(offset + p * scale)), hi - lo - 1);
-}
-
 // The part [lo, hi)'s overlap with the area: its offset from lo and its size, as floats.
 void pn_traversalPartOverlap(PnArea a, ivec2 lo, ivec2 hi, out vec2 offset, out vec2 scale) {
   vec2 from = max(vec2(lo), a.lo);

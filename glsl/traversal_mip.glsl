@@ -81,7 +81,7 @@
 // part's overlap (offset, scale) with the area (pn_traversalPartOverlap).
 void pn_traversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2D map,
                           vec2 position, ivec2 lo, ivec2 hi, vec2 offset, vec2 scale, PnTraversalTest test) {
-  ivec2 p = pn_traversalSampleTexel(position, lo, hi, offset, scale);
+  ivec2 p = pn_sampleTexelOver(position, lo, hi, offset, scale);
   pn_traversalCountSample(occluding, depthSum, r, pnMipMapDepth(map, p), p, test);
 }
 
@@ -95,16 +95,15 @@ void pn_traversalSampleOne(inout float occluding, inout float depthSum, inout Pn
 }
 
 // Eq. 5 / 6 over the part [lo, hi) of an area with the samples of a node of side `side` from the
-// map, at their positions inside the part's overlap with the area, each sample against its own
-// texel's threshold, scaled to that overlap's area.
-void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D map, sampler2D sampleTable, PnArea a, ivec2 lo,
-                               ivec2 hi, int side, PnTraversalTest test, ivec2 pixel) {
+// map, at their positions inside the part's overlap with the area (offset, scale:
+// pn_traversalPartOverlap), each sample against its own texel's threshold, scaled to that
+// overlap's area.
+void pn_traversalSampleLeafMip(inout PnTraversal r, sampler2D map, sampler2D sampleTable, ivec2 lo, ivec2 hi,
+                               vec2 offset, vec2 scale, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
   int m = pnSampleCount(k);
   int first = pnSampleFirstColumn(k);
   int set = pnSampleSet(pixel);
-  vec2 offset, scale;
-  pn_traversalPartOverlap(a, lo, hi, offset, scale);
   float occluding = 0.0;
   float depthSum = 0.0;
   // m is 1, 4 or 16. llvmpipe ends a loop once its iterations, summed over
@@ -188,13 +187,14 @@ bool pn_traversalClassifyPart(inout PnTraversal r, sampler2D mip, PnMipShape sha
 void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D map, sampler2D mip, PnMipShape shape,
                                sampler2D sampleTable, PnArea a, int level, ivec2 origin, ivec2 lo, ivec2 hi,
                                PnTraversalTest test, int leafMode, int depthSums, ivec2 pixel) {
-  vec2 range;
-  float weight = pnRegionAreaOver(a, lo, hi);
+  vec2 range, offset, scale;
+  pn_traversalPartOverlap(a, lo, hi, offset, scale);
+  float weight = scale.x * scale.y;  // pnRegionAreaOver(a, lo, hi)
   if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, weight, test, depthSums, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
     pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, weight, pn_traversalTestAtCentre(test, lo, hi));
   } else {
-    pn_traversalSampleLeafMip(r, map, sampleTable, a, lo, hi, 1 << level, test, pixel);
+    pn_traversalSampleLeafMip(r, map, sampleTable, lo, hi, offset, scale, 1 << level, test, pixel);
   }
 }
 
@@ -211,10 +211,9 @@ void pn_traversalVisitTexels(inout PnTraversal r, sampler2D map, ivec2 origin, P
   r.fetches += 4;
   r.nodes += 4;
   // Per texel (no loop, see above): its weight, the product of its column's and its row's spans
-  // (columns 0, 1 in x, rows 0, 1 in y), where it occludes.
-  vec2 from = vec2(origin);
-  vec2 x = max(min(from.x + vec2(1.0, 2.0), a.hi.x) - max(from.x + vec2(0.0, 1.0), a.lo.x), vec2(0.0));
-  vec2 y = max(min(from.y + vec2(1.0, 2.0), a.hi.y) - max(from.y + vec2(0.0, 1.0), a.lo.y), vec2(0.0));
+  // (region.glsl: columns 0, 1 in x, rows 0, 1 in y), where it occludes.
+  vec2 x = vec2(pnRegionAreaSpan(a, origin.x, 0), pnRegionAreaSpan(a, origin.x + 1, 0));
+  vec2 y = vec2(pnRegionAreaSpan(a, origin.y, 1), pnRegionAreaSpan(a, origin.y + 1, 1));
   vec4 weights = vec4(x.x * y.x, x.y * y.x, x.x * y.y, x.y * y.y);
   vec4 t = vec4(pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin),
                 pnReceiverPlaneThreshold(test.threshold, test.gradient, test.centre, origin + ivec2(1, 0)),

@@ -28,6 +28,7 @@
 #include "check/compare.h"
 #include "check/module_check.h"
 #include "check/occlusion_sums.h"
+#include "check/pcss_compare.h"
 #include "core/error.h"
 #include "fixture_images/texture_fixture.h"
 #include "gl/texture.h"
@@ -217,9 +218,7 @@ CaseResult area_case(const PcfQueryPass& pass, const DeviceTexture& texture, con
       static constexpr int kBands[4] = {0, 1, 7, 128};
       queries.push_back({x, y, side, receiver, bias, kBands[queries.size() % 4]});
       expected.push_back(pcf_area_reference(map, x, y, side, receiver - bias));
-      const double c = std::max(std::isfinite(x) ? std::fabs(x) : 0.0, std::isfinite(y) ? std::fabs(y) : 0.0);
-      const double s = std::isfinite(side) ? std::clamp(static_cast<double>(side), 1.0, 4.0 * kMapSize) : 4.0 * kMapSize;
-      position_error.push_back(4.0 * u * (std::min(c, 5.0 * kMapSize) + s) * 4.0 * (std::min(s, kMapSize + 0.0) + 2.0));
+      position_error.push_back(area_corner_error(x, y, side, kMapSize));
     }
   }
   const std::vector<PcfQueryResult> observed = pass.area(texture, queries);

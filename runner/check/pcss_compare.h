@@ -3,6 +3,9 @@
 // pcf_plane_reference.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/image.h"
 #include "reference/pcss_reference.h"
 
@@ -22,6 +25,17 @@ inline constexpr double kAreaEdgeMargin = 1e-3;
 inline double area_edges_rounding(int n) {
   const double u = 0x1p-24, edge = 4.0 * u * 9.0 * n + 16.0 * u * 4.0 * n;
   return 4.0 * edge + (static_cast<double>(n) * n + 2.0) * u;
+}
+
+// What a square with area-weighted edges (pnRegionArea) of side `side` centred on (x, y) on an n²
+// map can move its sums by through its corners' rounding: each corner formed in float from a centre
+// within 5n and a side clamped to [1, 4n] (a non-finite side as 4n), 4 ulps of their magnitude, on
+// each of the up to 4 (side + 2) edge texels (the side clipped to the map). In texels of weight.
+inline double area_corner_error(double x, double y, double side, int n) {
+  const double u = 0x1p-24;
+  const double c = std::max(std::isfinite(x) ? std::fabs(x) : 0.0, std::isfinite(y) ? std::fabs(y) : 0.0);
+  const double s = std::isfinite(side) ? std::clamp(side, 1.0, 4.0 * n) : 4.0 * n;
+  return 4.0 * u * (std::min(c, 5.0 * n) + s) * 4.0 * (std::min(s, n + 0.0) + 2.0);
 }
 
 // Sets `observed` to the reference where a decision lay within rounding of flipping (the

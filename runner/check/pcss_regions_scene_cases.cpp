@@ -76,24 +76,32 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
   struct SceneSearch {
     RegionMode mode;
     Structure structure;
+    bool area_edges;  // PN_AREA_EDGES (issue 51): the search reads the min over each square's cover
   };
-  for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid},
-                                    SceneSearch{RegionMode::exact, Structure::pyramid},
-                                    SceneSearch{RegionMode::centred, Structure::pyramid},
-                                    SceneSearch{RegionMode::exact, Structure::mip}}) {
+  // The squares with area-weighted edges: the pass compiled with the option, its entries against the
+  // reference reading area_cover (the decisions stay conservative), pnEntryRect = the cover.
+  const PcssRegionsQueryPass area_pass(env.device, env.tree, true);
+  for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid, false},
+                                    SceneSearch{RegionMode::exact, Structure::pyramid, false},
+                                    SceneSearch{RegionMode::centred, Structure::pyramid, false},
+                                    SceneSearch{RegionMode::exact, Structure::mip, false},
+                                    SceneSearch{RegionMode::exact, Structure::mip, true}}) {
     const RegionMode mode = search.mode;
-    const std::string what = search.structure == Structure::mip ? "the mip chain's search" : mode_name(mode);
+    const std::string what = search.area_edges                     ? "the mip chain's search over squares with area-weighted edges"
+                             : search.structure == Structure::mip ? "the mip chain's search"
+                                                                  : mode_name(mode);
     EntryGroup g;
     for (int iterations : {0, defaults.refine_iterations}) {
       const std::vector<PcssRegionsResult> observed =
-          pass.run(scene.pyramid, scene.light,
+          (search.area_edges ? area_pass : pass)
+              .run(scene.pyramid, scene.light,
                    search_queries(scene.receivers, mode, iterations, defaults.bias, search.structure), &scene.mip);
       for (size_t k = 0; k < scene.receivers.size(); ++k) {
         Rounding rounding{kAmbiguity};
         const RegionEntry expected = search_entry(scan, scene.light, scene.receivers[k], defaults.bias, iterations,
-                                                  &rounding, search.structure);
+                                                  &rounding, search.structure, nullptr, search.area_edges);
         add_entry(g, expected, rounding.ambiguous, observed[k]);
-        add_regions(g, observed[k], kSceneMap, mode);
+        add_regions(g, observed[k], kSceneMap, mode, search.area_edges);
       }
       if (iterations > 0)
         results.push_back(count_lit_coverage(scene.name + ", " + what + ", " + std::to_string(iterations) + " iterations",
@@ -103,36 +111,6 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
     tally.searched += g.queries, tally.left_out += g.left_out;
     push_group(results, scene.name + ", " + what, g,
                ("search entries (0 and " + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
-  }
-
-  // The squares with area-weighted edges (PN_AREA_EDGES, issue 51): the mip chain's search reads the
-  // min over each square's cover, so its decisions stay conservative — the entries against the
-  // reference reading area_cover, the lit-coverage property, pnEntryRect = the cover.
-  {
-    const PcssRegionsQueryPass area_pass(env.device, env.tree, true);
-    EntryGroup g;
-    const std::vector<PcssRegionsResult> observed =
-        area_pass.run(scene.pyramid, scene.light,
-                      search_queries(scene.receivers, RegionMode::exact, defaults.refine_iterations, defaults.bias,
-                                     Structure::mip),
-                      &scene.mip);
-    for (size_t k = 0; k < scene.receivers.size(); ++k) {
-      Rounding rounding{kAmbiguity};
-      int refinements = 0;
-      const RegionEntry expected = search_entry(scan, scene.light, scene.receivers[k], defaults.bias,
-                                                defaults.refine_iterations, &rounding, Structure::mip, &refinements,
-                                                true);
-      add_entry(g, expected, rounding.ambiguous, observed[k]);
-      add_regions(g, observed[k], kSceneMap, RegionMode::exact, true);
-    }
-    const std::string what = "the mip chain's search over squares with area-weighted edges";
-    results.push_back(count_lit_coverage(scene.name + ", " + what + ", " + std::to_string(defaults.refine_iterations) +
-                                             " iterations",
-                                         scene.receivers, truths, observed)
-                          .result);
-    tally.searched += g.queries, tally.left_out += g.left_out;
-    push_group(results, scene.name + ", " + what, g,
-               ("search entries (" + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
   }
 
   // The property on the boxes scene at render's resolution, on the far field (screen rows 128-319,
@@ -146,8 +124,8 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
     boxes.receivers.erase(boxes.receivers.begin(), boxes.receivers.begin() + 128 * kBoxesScreen);
     const std::vector<ShadowingTruth> boxes_truths =
         shadowing_truths(DepthScan(boxes.map), boxes.light, boxes.receivers, defaults.bias);
-    for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid},
-                                      SceneSearch{RegionMode::exact, Structure::mip}}) {
+    for (const SceneSearch& search : {SceneSearch{RegionMode::window, Structure::pyramid, false},
+                                      SceneSearch{RegionMode::exact, Structure::mip, false}}) {
       const std::string what = search.structure == Structure::mip ? "the mip chain's search" : mode_name(search.mode);
       const std::vector<PcssRegionsResult> observed = pass.run(
           boxes.pyramid, boxes.light,

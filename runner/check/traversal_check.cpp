@@ -28,6 +28,7 @@
 #include <string>
 
 #include "check/module_check.h"
+#include "check/pcss_compare.h"
 #include "core/format.h"
 #include "core/seeded_random.h"
 #include "fixture_images/texture_fixture.h"
@@ -144,8 +145,7 @@ CaseResult area_case(const Observe& observe, const Scene& scene, const std::stri
       q.area_x = x, q.area_y = y, q.area_side = side;
       queries.push_back(q);
       expected.push_back(e);
-      const double c = std::max(std::fabs(x), std::fabs(y)), s = std::min(2.0 * half, kMapSize + 0.0);
-      position_error.push_back(4.0 * u * (std::min(c, 5.0 * kMapSize) + 2.0 * half) * 4.0 * (s + 2.0));
+      position_error.push_back(area_corner_error(x, y, side, kMapSize));
     }
   }
   TraversalSettings settings;  // leaf side 1, the table's sums

@@ -85,13 +85,8 @@ Define switch_define(const char* name, int value) { return {name, std::to_string
 
 // The squares with area-weighted edges (pcss_regions.glsl's PN_AREA_EDGES; issue 51): every pass
 // that reads a region (the search's cover, the scan, the traversal, the one call) compiles with it.
-std::vector<Define> area_edges_defines(const PcssSettings& settings) {
-  if (!settings.area_edges) return {};
-  return {{"PN_AREA_EDGES", "1"}};
-}
-
 std::vector<Define> with_area_edges(std::vector<Define> defines, const PcssSettings& settings) {
-  for (const Define& d : area_edges_defines(settings)) defines.push_back(d);
+  if (settings.area_edges) defines.push_back({"PN_AREA_EDGES", "1"});
   return defines;
 }
 
@@ -236,7 +231,7 @@ void PcssPipeline::estimate(const PcssFrame& frame, PcssBlock block, const Devic
       resources.block = query_block(block);
       resources.textures.push_back({PN_PCSS_RESULTS_BINDING, *target[(first + band + 1) % 2]});  // the previous band
       resources.images.push_back({PN_PCSS_RESULT_IMAGE, *target[(first + band) % 2]});
-      device_->run(scan_.get(area_edges_defines(frame.settings)), resources, size, size);
+      device_->run(scan_.get(with_area_edges({}, frame.settings)), resources, size, size);
     }
     return;
   }
