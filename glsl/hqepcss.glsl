@@ -12,7 +12,7 @@
 //               leaves count every texel as a blocker at the leaf's min
 //               (PN_LEAF_MIN): mean = sum / count
 //     filter  = pnFilterEntry: side filterScale · penumbra; no blocker -> 1
-//     visibility = 1 - exact PCF over the filter square (pcf.glsl)
+//     visibility = 1 - exact PCF over the filter square (pcf.glsl, as exact_pcss.glsl reads it)
 //   The staged passes compute the same numbers: equal bit for bit.
 //
 // use:
@@ -33,8 +33,11 @@
 //                          PN_TRAVERSAL_NO_BUDGET runs traversal_pyramid.glsl's general walk with its
 //                          budget. Without it the budget is not read (the call's walk has none:
 //                          pn_hqepcssBlockers) and an engine's program holds one walk, not two.
-//   PN_AREA_EDGES          (pcss_regions.glsl) not supported yet: 1 stops the compile with an #error
-//                          (HQEPCSS reads integer squares; issue 51, docs/area-regions.md)
+//   PN_AREA_EDGES          (pcss_regions.glsl, issue 51, docs/area-regions.md) 1: the filter square
+//                          with area-weighted edges (exact_pcss.glsl's PCF over pnEntryArea: every
+//                          texel weighed by its overlap), and with regionMode PN_REGION_EXACT the
+//                          search square too (traversal_pyramid.glsl's area rules: a node weighed by
+//                          its overlap; one of differing depths that occludes wholly is ambiguous)
 //
 // cost: Step 3 4 fetches a refinement; the blocker traversal one fetch a node;
 //   the PCF one fetch per texel of the filter square (O(s²)).
@@ -46,6 +49,7 @@
 #define PENUMBRA_HQEPCSS_GLSL
 
 #include "depth_pyramid.glsl"
+#include "exact_pcss.glsl"  // the filter's PCF, as exact PCSS reads its squares
 #include "hqepcss.h"
 #include "light_model.glsl"
 #include "pcf.glsl"
@@ -53,10 +57,6 @@
 #include "traversal.glsl"
 #ifdef PN_HQEPCSS_ABLATIONS
 #include "traversal_pyramid.glsl"  // the general walk, for a budget
-
-#if PN_AREA_EDGES  // pcss_regions.glsl's option: the pyramid's walk weighs no edges yet (docs/area-regions.md)
-#error "hqepcss.glsl: PN_AREA_EDGES is not supported yet: HQEPCSS reads integer squares"
-#endif
 #endif
 
 struct PnHqepcssSettings {
@@ -81,18 +81,19 @@ PnHqepcssSettings pnHqepcssDefaults(float bias) {
 // node; leaves (side <= leafSide) estimated at their min in the step that reads them, one node a step
 // (the general walk reads a node's four leaves in its step). Nodes straddling the region (only a
 // window or a rectangle the pyramid's map clips: a light.mapSize that is not the pyramid's) or above
-// the pyramid's last level descend unread, as there.
-PnTraversal pn_hqepcssBlockers(sampler2DArray pyramid, PnRect region, vec3 receiver, vec2 gradient, float bias,
+// the pyramid's last level descend unread, as there. With PN_AREA_EDGES a node is weighed by its
+// overlap with the area, as there.
+PnTraversal pn_hqepcssBlockers(sampler2DArray pyramid, PnArea area, vec3 receiver, vec2 gradient, float bias,
                                int leafSide) {
   ivec2 start, end;
-  PnTraversal r = pn_traversalBegin(region.origin, region.size, pnPyramidMapSize(pyramid), start, end);
+  PnTraversal r = pn_traversalBeginArea(area, pnPyramidMapSize(pyramid), start, end);
   PnTraversalTest test = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
   ivec2 size = end - start;
   int top = findMSB(max(size.x, size.y) - 1) + 1;  // the root: the least power of two over the region
   int maxLevel = pnPyramidMaxLevel(pyramid);
   int level = top;
   ivec2 node = ivec2(0);
-  bool empty = isnan(test.threshold) || r.texels == 0.0;
+  bool empty = isnan(test.threshold) || any(equal(start, end));  // no texel (r.texels is not read)
   for (int it = 0; it < PN_TRAVERSAL_CURSOR_STEPS && !empty; ++it) {
     int side = 1 << level;
     ivec2 origin = start + (node << level);
@@ -103,7 +104,14 @@ PnTraversal pn_hqepcssBlockers(sampler2DArray pyramid, PnRect region, vec3 recei
         vec4 v = texelFetch(pyramid, ivec3(origin, level), 0);
         vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, origin, origin + side);
         float texels = float(side * side);
-        if (v.y < t.x) {  // every texel occludes: its mean times its texels
+        bool whole = v.y < t.x;
+#if PN_AREA_EDGES
+        // Its overlap with the square; an edge node of differing depths is ambiguous (its mean is of whole texels).
+        float weight = pnRegionAreaOver(area, origin, origin + side);
+        whole = whole && (v.x == v.y || weight == texels);
+        texels = weight;
+#endif
+        if (whole) {  // every texel occludes: its mean times its weight
           r.occluders += texels;
           r.depthSum += v.z * texels;
         } else if (v.x < t.y) {  // ambiguous: a leaf at its min (PN_LEAF_MIN), or its children
@@ -127,14 +135,14 @@ float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 
   int n = int(light.mapSize);
   vec4 search = pnSearchEntryPlane(pyramid, light, vec4(receiver, 1.0), receiverPlane, s.bias, s.refineIterations);
   if (pnEntryLit(search)) return 1.0;
-  PnRect region = pnEntryRegion(search, n, s.regionMode);
-  int leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.size);
+  PnArea region = pnEntryArea(search, n, s.regionMode);
+  int leafSide = pnTraversalLeafSide(s.leafSide, s.leafDivisor, region.cover.size);
   PnTraversal blockers;
 #ifdef PN_HQEPCSS_ABLATIONS
   if (s.nodeBudget < PN_TRAVERSAL_NO_BUDGET)  // the budget's ablation: the general walk
     // Min leaves take no samples: the sample table is never read (the map stands in for it).
-    blockers = pn_traverseRegionPlane(pyramid, depthMap, region.origin, region.size, receiver, receiverPlane,
-                                      s.bias, leafSide, PN_LEAF_MIN, s.nodeBudget, ivec2(0));
+    blockers = pnTraverseAreaPlane(pyramid, depthMap, region, receiver, receiverPlane, s.bias, leafSide, PN_LEAF_MIN,
+                                   s.nodeBudget, ivec2(0));
   else
 #endif
     blockers = pn_hqepcssBlockers(pyramid, region, receiver, receiverPlane, s.bias, leafSide);
@@ -142,9 +150,7 @@ float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 
   vec4 filterEntry = pnFilterEntry(light, search, pnTraversalBlockerMean(blockers),
                                    hasBlocker, s.filterScale);
   if (pnEntryLit(filterEntry)) return 1.0;
-  PnRect filterRect = pnEntryRect(filterEntry, n);
-  return 1.0 - pnPcfOccludedFraction(pnPcfWindowPlane(depthMap, filterRect.origin, filterRect.size, receiver,
-                                                       receiverPlane, s.bias));
+  return 1.0 - pnPcfOccludedFraction(pn_exactPcssRegion(depthMap, filterEntry, n, receiver, receiverPlane, s.bias));
 }
 
 float pnHqepcss(sampler2DArray pyramid, sampler2D depthMap, PnLight light, vec3 receiver, PnHqepcssSettings s) {

@@ -17,6 +17,16 @@
 //       ivec2 regionOrigin, ivec2 regionSize, float receiverDepth, float bias,
 //       int leafSide, int leafMode, int nodeBudget, ivec2 pixel)
 //   PnTraversal pnTraverseWindow(... PnWindow window ...)       the region.glsl window
+//   PnTraversal pnTraverseAreaPlane(sampler2DArray pyramid, sampler2D sampleTable, PnArea area,
+//       vec3 receiver, vec2 gradient, float bias, int leafSide, int leafMode, int nodeBudget, ivec2 pixel)
+//       over an area (region.glsl's pnRegionArea: issue 51's continuous square) with a receiver
+//       plane (receiver = (u, v, d), gradient: receiver_plane.glsl; 0: none): the walk covers its
+//       texels (area.cover), a node inside them weighed by its overlap with the square
+//       (pnRegionAreaOver: 1 a texel inside, a fraction on the edges), a wholly occluding or wholly
+//       lit edge node weighed, not descended — but one of differing depths that occludes wholly,
+//       whose mean is of whole texels, is ambiguous (descended, or at a leaf estimated); a sampled
+//       leaf's samples sit inside its overlap. Leaf side 1 is exact: each texel with its overlap.
+//       The rectangle forms above are this over pnRegionAreaOfRect, bit for bit what they were.
 //   (PnTraversal, pnTraversalLeafSide, pnTraversalBlockerMean, pnTraversalOccludedFraction: traversal.glsl)
 //
 // cost: one fetch per node inside the region, 4^k <= 16 per sampled leaf;
@@ -30,23 +40,25 @@
 #include "sample_table.glsl"
 #include "traversal.glsl"
 
-// One sample of a leaf [lo, lo + size) over the pyramid's level 0 (as pn_traversalSampleAt).
+// One sample of a leaf part [lo, hi) over the pyramid's level 0, placed inside the part's overlap
+// (offset, scale) with the area (as traversal_mip.glsl's pn_traversalSampleAt).
 void pn_traversalSampleAt(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
-                         vec2 position, ivec2 lo, ivec2 size, PnTraversalTest test) {
-  ivec2 p = pnSampleTexel(position, lo, size);
+                         vec2 position, ivec2 lo, ivec2 hi, vec2 offset, vec2 scale, PnTraversalTest test) {
+  ivec2 p = pn_sampleTexelOver(position, lo, hi, offset, scale);
   pn_traversalCountSample(occluding, depthSum, r, pnPyramidFetch(pyramid, 0, p).x, p, test);
 }
 
 void pn_traversalSampleOne(inout float occluding, inout float depthSum, inout PnTraversal r, sampler2DArray pyramid,
-                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 size,
-                          PnTraversalTest test) {
+                          sampler2D sampleTable, int first, int set, int i, int m, ivec2 lo, ivec2 hi, vec2 offset,
+                          vec2 scale, PnTraversalTest test) {
   if (i >= m) return;
-  pn_traversalSampleAt(occluding, depthSum, r, pyramid, pnSample(sampleTable, first + i, set), lo, size, test);
+  pn_traversalSampleAt(occluding, depthSum, r, pyramid, pnSample(sampleTable, first + i, set), lo, hi, offset, scale,
+                       test);
 }
 
-// The same over the pyramid's level 0.
+// The same over the pyramid's level 0, scaled to the overlap's area.
 void pn_traversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, ivec2 lo,
-                           ivec2 size, int side, PnTraversalTest test, ivec2 pixel) {
+                           ivec2 hi, vec2 offset, vec2 scale, int side, PnTraversalTest test, ivec2 pixel) {
   int k = pnSampleGroupLog4(side);
   int m = pnSampleCount(k);
   int first = pnSampleFirstColumn(k);
@@ -54,27 +66,34 @@ void pn_traversalSampleLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler
   float occluding = 0.0;
   float depthSum = 0.0;
   // As over the mip chain: the first four without a loop (llvmpipe's loop cut-off).
-  pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 0, m, lo, size, test);
+  pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 0, m, lo, hi, offset, scale, test);
   if (m > 1) {
-    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 1, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 2, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 1, m, lo, hi, offset, scale, test);
+    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 2, m, lo, hi, offset, scale, test);
+    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, 3, m, lo, hi, offset, scale, test);
   }
   for (int g = 4; g < PN_SAMPLE_MAX_COUNT; g += 4) {
     if (g >= m) break;
-    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 1, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 2, m, lo, size, test);
-    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 3, m, lo, size, test);
+    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g, m, lo, hi, offset, scale,
+                          test);
+    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 1, m, lo, hi, offset, scale,
+                          test);
+    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 2, m, lo, hi, offset, scale,
+                          test);
+    pn_traversalSampleOne(occluding, depthSum, r, pyramid, sampleTable, first, set, g + 3, m, lo, hi, offset, scale,
+                          test);
   }
-  pn_traversalAddSampled(r, float(size.x) * float(size.y), occluding, depthSum, m);
+  pn_traversalAddSampled(r, scale.x * scale.y, occluding, depthSum, m);
 }
 
 // Reads a node inside the region (with a pyramid level) and counts it: a node
 // whose texels all occlude (below the lowest of the test's thresholds over it)
-// is added whole; returns true when it is ambiguous, with its (min, max) depth
-// in `nodeRange`.
-bool pn_traversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level, ivec2 origin,
+// is added with its weight (its texels, or its overlap with an area); returns
+// true when it is ambiguous, with its (min, max) depth in `nodeRange`. A wholly
+// occluding node of differing depths that an area weighs by less than its
+// texels is ambiguous too: its mean is of whole texels, so its depths are
+// weighed where they are read (a descent, or a leaf's estimate).
+bool pn_traversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level, ivec2 origin, float weight,
                          PnTraversalTest test, out vec2 nodeRange) {
   vec4 node = pnPyramidFetch(pyramid, level, origin);
   r.nodes += 1;
@@ -83,9 +102,9 @@ bool pn_traversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level
   int side = 1 << level;
   vec2 t = pnReceiverPlaneThresholdRange(test.threshold, test.gradient, test.centre, origin, origin + side);
   if (node.y < t.x) {
-    float texels = float(side * side);
-    r.occluders += texels;
-    r.depthSum += node.z * texels;
+    if (node.x != node.y && weight != float(side * side)) return true;
+    r.occluders += weight;
+    r.depthSum += node.z * weight;
     return false;
   }
   return node.x < t.y;
@@ -93,25 +112,27 @@ bool pn_traversalClassify(inout PnTraversal r, sampler2DArray pyramid, int level
 
 // A node inside the region, with a pyramid level, that will not be descended:
 // classified, and estimated by the leaf mode when ambiguous (min and ramp
-// against the test's threshold at the node's centre).
-void pn_traversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, int level, ivec2 origin,
-                          PnTraversalTest test, int leafMode, ivec2 pixel) {
-  vec2 range;
-  if (!pn_traversalClassify(r, pyramid, level, origin, test, range)) return;
+// against the test's threshold at the node's centre, over its weight; samples
+// spread over its overlap with the area).
+void pn_traversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2D sampleTable, PnArea a, int level,
+                          ivec2 origin, PnTraversalTest test, int leafMode, ivec2 pixel) {
   int side = 1 << level;
+  vec2 range, offset, scale;
+  pn_traversalPartOverlap(a, origin, origin + side, offset, scale);
+  float weight = scale.x * scale.y;  // pnRegionAreaOver(a, origin, origin + side)
+  if (!pn_traversalClassify(r, pyramid, level, origin, weight, test, range)) return;
   if (leafMode != PN_LEAF_SAMPLED) {
-    pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, float(side * side),
+    pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, weight,
                             pn_traversalTestAtCentre(test, origin, origin + side));
   } else {
-    pn_traversalSampleLeaf(r, pyramid, sampleTable, origin, ivec2(side), side, test, pixel);
+    pn_traversalSampleLeaf(r, pyramid, sampleTable, origin, origin + side, offset, scale, side, test, pixel);
   }
 }
 
-PnTraversal pn_traverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin,
-                                  ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int leafSide,
-                                  int leafMode, int nodeBudget, ivec2 pixel) {
+PnTraversal pnTraverseAreaPlane(sampler2DArray pyramid, sampler2D sampleTable, PnArea area, vec3 receiver,
+                                vec2 gradient, float bias, int leafSide, int leafMode, int nodeBudget, ivec2 pixel) {
   ivec2 regionStart, regionEnd;
-  PnTraversal r = pn_traversalBegin(regionOrigin, regionSize, pnPyramidMapSize(pyramid), regionStart, regionEnd);
+  PnTraversal r = pn_traversalBeginArea(area, pnPyramidMapSize(pyramid), regionStart, regionEnd);
   ivec2 size = regionEnd - regionStart;
   PnTraversalTest t = PnTraversalTest(receiver.z - bias, gradient, receiver.xy);
   if (isnan(t.threshold) || r.texels == 0.0) return r;
@@ -136,16 +157,17 @@ PnTraversal pn_traverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable
       bool inside = all(equal(lo, origin)) && all(equal(hi, origin + side));
       bool spent = r.nodes + 1 >= budget;
       if (inside && level <= maxLevel && (side <= leafSide || spent)) {
-        pn_traversalVisitLeaf(r, pyramid, sampleTable, level, origin, t, leafMode, pixel);
+        pn_traversalVisitLeaf(r, pyramid, sampleTable, area, level, origin, t, leafMode, pixel);
       } else if (inside && level <= maxLevel) {
         vec2 range;
-        if (pn_traversalClassify(r, pyramid, level, origin, t, range)) {  // ambiguous: descend
+        if (pn_traversalClassify(r, pyramid, level, origin, pnRegionAreaOver(area, origin, origin + side), t,
+                                range)) {  // ambiguous: descend
           if ((side >> 1) <= leafSide) {
             int h = side >> 1;
-            pn_traversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin, t, leafMode, pixel);
-            pn_traversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(h, 0), t, leafMode, pixel);
-            pn_traversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(0, h), t, leafMode, pixel);
-            pn_traversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(h, h), t, leafMode, pixel);
+            pn_traversalVisitLeaf(r, pyramid, sampleTable, area, level - 1, origin, t, leafMode, pixel);
+            pn_traversalVisitLeaf(r, pyramid, sampleTable, area, level - 1, origin + ivec2(h, 0), t, leafMode, pixel);
+            pn_traversalVisitLeaf(r, pyramid, sampleTable, area, level - 1, origin + ivec2(0, h), t, leafMode, pixel);
+            pn_traversalVisitLeaf(r, pyramid, sampleTable, area, level - 1, origin + ivec2(h, h), t, leafMode, pixel);
           } else {
             descend = true;
           }
@@ -155,7 +177,9 @@ PnTraversal pn_traverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable
         descend = true;  // straddles the region, or has no pyramid level
       } else {
         r.nodes += 1;
-        pn_traversalSampleLeaf(r, pyramid, sampleTable, lo, hi - lo, side, t, pixel);
+        vec2 offset, scale;
+        pn_traversalPartOverlap(area, lo, hi, offset, scale);
+        pn_traversalSampleLeaf(r, pyramid, sampleTable, lo, hi, offset, scale, side, t, pixel);
       }
     } else {
       r.nodes += 1;  // outside the region: visited, nothing to read
@@ -163,6 +187,13 @@ PnTraversal pn_traverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable
     if (pn_traversalNext(level, code, descend, rootLevel)) break;  // the root is done
   }
   return r;
+}
+
+PnTraversal pn_traverseRegionPlane(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin,
+                                  ivec2 regionSize, vec3 receiver, vec2 gradient, float bias, int leafSide,
+                                  int leafMode, int nodeBudget, ivec2 pixel) {
+  return pnTraverseAreaPlane(pyramid, sampleTable, pnRegionAreaOfRect(PnRect(regionOrigin, regionSize)), receiver,
+                             gradient, bias, leafSide, leafMode, nodeBudget, pixel);
 }
 
 PnTraversal pnTraverseRegion(sampler2DArray pyramid, sampler2D sampleTable, ivec2 regionOrigin, ivec2 regionSize,

@@ -17,10 +17,11 @@ const pn::ModuleCheck& fast_pcss() { return pn::find_module_check("fast_pcss"); 
 
 TEST_CASE("the one calls equal the staged passes in compute and fragment stage, and exact PCSS with everything off") {
   const auto results = pn::test::run_check(fast_pcss(), PENUMBRA_GLSL_DIR);
-  // 3 scenes × 11 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
-  // fragment vs compute (the staged passes take no plane) + 3 scenes × 2 stages vs the CPU × (all off, exact, and
-  // both with area-weighted edges without the plane; all off, exact and HQEPCSS at leaf 1 with it).
-  CHECK(results.size() == 3 * 11 * 2 + 3 * 6 + 3 * 2 * (4 + 3));
+  // 3 scenes × 13 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
+  // fragment vs compute (the staged passes take no plane) + 3 scenes × 2 stages vs the CPU × (all off and exact, and
+  // with area-weighted edges all off, exact and HQEPCSS at leaf 1, without the plane; all off, exact and HQEPCSS at
+  // leaf 1 with it).
+  CHECK(results.size() == 3 * 13 * 2 + 3 * 6 + 3 * 2 * (5 + 3));
   pn::test::check_all_pass(results);
 }
 
@@ -52,5 +53,5 @@ TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fai
     if (named(r, "vs the staged passes")) CHECK(r.comparison.pass);
     if (named(r, "fragment shader vs the compute pass")) fragment_failing += r.comparison.pass ? 0 : 1;
   }
-  CHECK(fragment_failing == 17);  // every setting, with a plane or not, on the quick run's scene
+  CHECK(fragment_failing == 19);  // every setting, with a plane or not, on the quick run's scene
 }

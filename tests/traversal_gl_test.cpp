@@ -19,7 +19,7 @@ TEST_CASE("negative: a traversal that counts a texel at exactly dP - bias as occ
 
 TEST_CASE("negative: a traversal that drops a child fails the exact check") {
   const BrokenCopy copy("traversal_pyramid.glsl",
-                        "pn_traversalVisitLeaf(r, pyramid, sampleTable, level - 1, origin + ivec2(h, h), t, leafMode, pixel);",
+                        "pn_traversalVisitLeaf(r, pyramid, sampleTable, area, level - 1, origin + ivec2(h, h), t, leafMode, pixel);",
                         "");
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root())) > 0);

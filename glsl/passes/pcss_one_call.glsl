@@ -36,9 +36,7 @@ layout(binding = PN_PCSS_DEPTH_MAP_BINDING) uniform sampler2D pnDepthMap;
 #include "pcss_params.glsl"
 #include "exact_pcss.glsl"
 #include "fast_pcss.glsl"
-#if !PN_AREA_EDGES  // HQEPCSS reads integer squares only (hqepcss.glsl)
 #include "hqepcss.glsl"
-#endif
 #include "poisson_pcss.glsl"
 #include "vogel_pcss.glsl"
 #include "gbuffer_receiver_plane.glsl"
@@ -62,7 +60,6 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
     return vec4(pnExactPcss(pnDepthMap, light, receiver.xyz, plane, pnPcss.bias, pnPcss.filterScale), 0.0, 0.0,
                 receiver.z > 0.0 ? 4.0 : 0.0);
   }
-#if !PN_AREA_EDGES
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_HQEPCSS) {
 #ifdef PN_PCSS_ENGINE_FORM
     PnHqepcssSettings s = pnHqepcssDefaults(pnPcss.bias);
@@ -73,7 +70,6 @@ vec4 pnOneCallShade(ivec2 p, out float fetches) {
 #endif
     return vec4(pnHqepcss(pnPyramid, pnDepthMap, light, receiver.xyz, plane, s), 0.0, 0.0, receiver.z > 0.0 ? 4.0 : 0.0);
   }
-#endif
   if (PN_PCSS_ONE_CALL == PN_ONE_CALL_POISSON) {
 #ifdef PN_PCSS_ENGINE_FORM
     PnPoissonPcssSettings s = pnPoissonPcssDefaults(pnPcss.bias);

@@ -44,7 +44,7 @@ void main() {
       ? pnTraverseAreaMipPlane(pnDepthMap, pnMip, pnSampleTable, n, area, vec3(0.0, 0.0, entry.x), vec2(0.0), pnPcss.bias,
                                leafSide,
                                PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, PN_PCSS_DEPTH_SUMS, p)
-      : pnTraverseRegion(pnPyramid, pnSampleTable, area.cover.origin, area.cover.size, entry.x, pnPcss.bias, leafSide,
-                         PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, p);
+      : pnTraverseAreaPlane(pnPyramid, pnSampleTable, area, vec3(0.0, 0.0, entry.x), vec2(0.0), pnPcss.bias, leafSide,
+                            PN_PCSS_LEAF_MODE, pnPcss.nodeBudget, p);
   imageStore(pnResult, p, vec4(r.occluders, r.depthSum, r.texels, float(r.nodes)));
 }

@@ -1,7 +1,8 @@
 // traversal_query.comp — traversal.glsl over a batch of receivers, over the
 // decreased pyramid or the aligned mip chain (pnParams.structure).
 // Query k: texel k of query image A = (region origin x, y, region width, height), or with
-//          pnParams.areaRegions (centre x, y, side, 0): pnRegionArea's square, pnTraverseAreaMipPlane,
+//          pnParams.areaRegions (centre x, y, side, 0): pnRegionArea's square, pnTraverseAreaMipPlane
+//          (pnTraverseAreaPlane on the pyramid),
 //          texel k of query image B = (receiver depth, screen pixel x, y, 0),
 //          texel k of query image E = (receiver u, v, receiver-plane gradient u, v): the
 //          traversal with that plane (pn_traverseRegionPlane, pnTraverseRegionMipPlane,
@@ -47,6 +48,9 @@ void main() {
       ? pnTraverseAreaMipPlane(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, area, vec3(e.xy, b.x), e.zw,
                                pnParams.bias, leafSide, pnParams.leafMode, pnParams.nodeBudget, pnParams.depthSums,
                                ivec2(b.yz))
+      : (pnParams.areaRegions != 0)
+      ? pnTraverseAreaPlane(pnPyramid, pnSampleTable, area, vec3(e.xy, b.x), e.zw, pnParams.bias, leafSide,
+                            pnParams.leafMode, pnParams.nodeBudget, ivec2(b.yz))
       : (pnParams.structure == PN_STRUCTURE_MIP && pnParams.grid > 0)
       ? pnGridRegionMip(pnShadowMap, pnMip, pnSampleTable, pnParams.mapSize, ivec2(a.xy), ivec2(a.zw), vec3(e.xy, b.x), e.zw,
                         pnParams.bias, pnParams.grid, leafSide, pnParams.leafMode, pnParams.depthSums,

@@ -29,7 +29,7 @@ PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   int nodeBudget;
   int structure;     // PN_STRUCTURE_* (traversal.h)
   int depthSums;     // the mip chain's traversal: PN_DEPTH_SUMS_* (traversal.h)
-  int mapSize;       // the mip chain's map side N
+  int mapSize;       // the map side N of the mip chain (or of the pyramid)
   int grid;          // the mip chain: > 0: pnGridRegionMip with this many cells a side
   int leafDivisor;   // pnTraversalLeafSide's: the leaf side at least the region's longer side / this (0: off)
   int areaRegions;   // the mip chain: 1: query A is (centre x, y, side, 0), the area-weighted square

@@ -6,7 +6,8 @@
 // - pnExactPcss against exact PCSS brute force (exact_pcss_reference, double);
 // - pnPcf against 2×2 bilinear PCF (pcf_plane_reference, double);
 // - pnHqepcss with its exact settings (no refinement, exact regions, leaf 1) over the decreased
-//   depth pyramid built on the executor, against exact PCSS brute force;
+//   depth pyramid built on the executor, against exact PCSS brute force, and with PN_AREA_EDGES
+//   against the squares' definition with area-weighted edges (exact_pcss_area_reference);
 // - pnFastPcss with its exact settings (no refinement, exact regions, leaf 1) against exact PCSS
 //   brute force, over the min/max mip chain built on the same executor: with the summed-area
 //   table's blocker sums (exports/fast_pcss with PN_EXPORT_SUM_TABLE) and, as an engine includes
@@ -290,6 +291,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass fast_shipped(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}});
   const ExportPass fast_area(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}, {"PN_AREA_EDGES", "1"}});
   const ExportPass hqepcss(env.device, env.tree, "hqepcss");
+  const ExportPass hqepcss_area(env.device, env.tree, "hqepcss", {{"PN_AREA_EDGES", "1"}});
   const ExportPass poisson(env.device, env.tree, "poisson_pcss");
   const ExportPass vogel(env.device, env.tree, "vogel_pcss");
   const ExportPass backprojection(env.device, env.tree, "backprojection");
@@ -415,15 +417,15 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                   s, reference, exact.run(stage, {{PN_EXPORT_DEPTH_MAP_BINDING, *map}}, s.receivers,
                                                           query_block(block))));
       }
+      // PN_AREA_EDGES (issue 51): the squares with area-weighted edges, within what their
+      // float edges and sums round to (pcss_compare.h).
+      const PcssReference area_reference =
+          exact_pcss_area_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kAreaEdgeMargin);
       {
-        // PN_AREA_EDGES (issue 51): the squares with area-weighted edges, within what their
-        // float edges and sums round to (pcss_compare.h).
         glsl::PnExactPcssExport block{};
         set_light_fields(block, scene.light);
         block.bias = bias;
         block.filterScale = 1.0f;
-        const PcssReference area_reference =
-            exact_pcss_area_reference(s.map, s.gbuffer, scene.light, bias, 1.0, kAreaEdgeMargin);
         results.push_back(against(where + "exports/exact_pcss with PN_AREA_EDGES (pnExactPcss, area-weighted edges) "
                                           "vs the definition in double on the CPU",
                                   s, area_reference,
@@ -438,6 +440,13 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
                                 hqepcss.run(stage, {{PN_EXPORT_PYRAMID_BINDING, *pyramid.texture},
                                                     {PN_EXPORT_DEPTH_MAP_BINDING, *map}},
                                             s.receivers, query_block(hqepcss_block))));
+      results.push_back(against(where + "exports/hqepcss with PN_AREA_EDGES (pnHqepcss: refine 0, exact regions, leaf 1, "
+                                        "area-weighted edges) vs the definition in double on the CPU",
+                                s, area_reference,
+                                hqepcss_area.run(stage, {{PN_EXPORT_PYRAMID_BINDING, *pyramid.texture},
+                                                         {PN_EXPORT_DEPTH_MAP_BINDING, *map}},
+                                                 s.receivers, query_block(hqepcss_block)),
+                                Tolerance::absolute(area_edges_rounding(kMap))));
       const glsl::PnFastPcssExport fast_block = exact_fast_block(scene.light, bias, 1.0f);
       results.push_back(against(
           where + "exports/fast_pcss with PN_EXPORT_SUM_TABLE (pnFastPcss: refine 0, exact regions, leaf 1, table "

@@ -16,8 +16,9 @@
 //   counted; pnExactPcss and pnFastPcss with every improvement off, each with
 //   area-weighted edges (PN_AREA_EDGES, issue 51), against their definition
 //   (exact_pcss_area_reference), within what their float edges round to
-//   (pcss_compare.h); the shipped pnFastPcss with area-weighted edges against
-//   its staged passes and across stages as above;
+//   (pcss_compare.h), and so pnHqepcss at leaf 1 over exact regions without
+//   refinement with them; the shipped pnFastPcss and pnHqepcss with
+//   area-weighted edges against their staged passes and across stages as above;
 // - the same calls with the receiver plane from the G-buffer's
 //   neighbours (the receiverPlane overloads of pnFastPcss, pnExactPcss,
 //   pnPoissonPcss, pnHqepcss): fragment vs compute, and the exact ones (exact
@@ -77,14 +78,21 @@ std::vector<PcssSettings> one_call_settings() {
   PcssSettings fast_all_off_area = fast_pcss_all_off();
   fast_all_off_area.name += ", area-weighted edges";
   fast_all_off_area.area_edges = true;
-  std::vector<PcssSettings> out{fast_pcss(), windows, grid, fast_pcss_all_off(), poisson_pcss(), poisson_fewer,
-                                exact_pcss(), exact_area, hqepcss(), fast_area, fast_all_off_area};
+  PcssSettings hqepcss_area = hqepcss();
+  hqepcss_area.name = "hqepcss, area-weighted edges";
+  hqepcss_area.area_edges = true;
   // HQEPCSS at leaf 1 over exact regions without refinement: exact PCSS over the pyramid.
   PcssSettings hqepcss_exact = hqepcss();
   hqepcss_exact.name = "hqepcss, refine 0, leaf 1, exact regions";
   hqepcss_exact.refine_iterations = 0;
   hqepcss_exact.leaf_side = 1;
   hqepcss_exact.region = RegionMode::exact;
+  PcssSettings hqepcss_exact_area = hqepcss_exact;
+  hqepcss_exact_area.name += ", area-weighted edges";
+  hqepcss_exact_area.area_edges = true;
+  std::vector<PcssSettings> out{fast_pcss(),   windows,      grid,         fast_pcss_all_off(), poisson_pcss(),
+                                poisson_fewer, exact_pcss(), exact_area,   hqepcss(),           fast_area,
+                                fast_all_off_area, hqepcss_area, hqepcss_exact_area};
   // With the receiver plane from the G-buffer's neighbours (receiver_plane.glsl): every one call takes one.
   for (PcssSettings s : {fast_pcss(), fast_pcss_all_off(), exact_pcss(), poisson_pcss(), hqepcss(), hqepcss_exact}) {
     s.name += ", receiver plane";

@@ -109,13 +109,14 @@ void add_comparison(std::vector<CaseResult>& results, const std::string& name, c
   results.push_back({name + " occluded fraction", fraction_tol, compare(e_fraction, o_fraction, fraction_tol)});
 }
 
-// Leaf side 1 over area-weighted squares (issue 51): the mip chain's walk with the table's sums against
-// brute_force_area_occluders, each element within the rounding of its float sums ((terms + 4) ulps,
-// terms = the GPU's nodes + fetches) and of the square's corners in float (4 ulps of the centre's and
-// the side's magnitude on each edge texel's weight). [0] occluded area, [1] depth-weighted, [2] area,
-// [3] the module's occluded fraction, [4] its blocker mean (where the occluded area is above its bound).
+// Leaf side 1 over area-weighted squares (issue 51): the mip chain's walk with the table's sums, or the
+// pyramid's with its means, against brute_force_area_occluders, each element within the rounding of its
+// float sums ((terms + 4) ulps, terms = the GPU's nodes + fetches, and on the pyramid 2 a level its means
+// were averaged over) and of the square's corners in float (4 ulps of the centre's and the side's
+// magnitude on each edge texel's weight). [0] occluded area, [1] depth-weighted, [2] area, [3] the
+// module's occluded fraction, [4] its blocker mean (where the occluded area is above its bound).
 template <class Observe>
-CaseResult area_case(const Observe& observe, const Scene& scene, const std::string& label) {
+CaseResult area_case(const Observe& observe, const Scene& scene, const std::string& label, bool mip) {
   constexpr double u = 0x1p-24;
   std::vector<std::array<float, 3>> squares{{150.0f, 150.0f, 7.0f},  {150.5f, 150.5f, 7.0f}, {0.25f, 0.75f, 3.5f},
                                             {kMapSize - 0.3f, 4.2f, 9.9f}, {-1.25f, 40.0f, 3.0f},
@@ -157,8 +158,9 @@ CaseResult area_case(const Observe& observe, const Scene& scene, const std::stri
     const TraversalReadback& o = observed[k];
     const int at = static_cast<int>(k);
     const double rounding = static_cast<double>(o.nodes + o.fetches + 4) * 2.0 * u;
+    const double means = mip ? 0.0 : 2.0 * scene.pyramid.levels * u;  // a pyramid node's mean, averaged level by level
     const double occluded_bound = rounding * e.occluders + position_error[k];
-    const double sum_bound = rounding * e.occluders * scene.largest + position_error[k] * scene.largest;
+    const double sum_bound = (rounding + means) * e.occluders * scene.largest + position_error[k] * scene.largest;
     const double area_bound = 4.0 * u * e.texels + position_error[k];
     b.add(e.occluders, o.occluders, occluded_bound, at, 0, 0);
     b.add(e.depth_sum, o.depth_sum, sum_bound, at, 0, 1);
@@ -176,8 +178,9 @@ CaseResult area_case(const Observe& observe, const Scene& scene, const std::stri
   }
   Tolerance tolerance;
   const Comparison c = compare_bounded(b, tolerance);
-  return {label + " mip chain leaf 1 over area-weighted squares (pnRegionArea, pnTraverseAreaMipPlane) vs every texel's "
-                  "overlap in double (" + std::to_string(queries.size()) + " queries at (k, 0)): [0] occluded area, "
+  return {label + (mip ? " mip chain leaf 1 over area-weighted squares (pnRegionArea, pnTraverseAreaMipPlane)"
+                      : " pyramid leaf 1 over area-weighted squares (pnRegionArea, pnTraverseAreaPlane)") +
+              " vs every texel's overlap in double (" + std::to_string(queries.size()) + " queries at (k, 0)): [0] occluded area, "
                   "[1] depth-weighted, [2] area, [3] occluded fraction, [4] blocker mean",
           tolerance, c};
 }
@@ -252,11 +255,12 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       add_comparison(results, label + st.label + " leaf 1 vs recursion:", scene, decisions, observed, decisions, true);
     }
 
-    // Leaf side 1 over area-weighted squares (pnRegionArea, pnTraverseAreaMipPlane; issue 51) on the mip
-    // chain, with the table's sums, against every texel's overlap in double.
-    results.push_back(area_case(
-        [&](const std::vector<TraversalQuery>& q, const TraversalSettings& s) { return observe(structures[1], scene, q, s); },
-        scene, label));
+    // Leaf side 1 over area-weighted squares (pnRegionArea; issue 51) on both structures (the mip chain
+    // with the table's sums), against every texel's overlap in double.
+    for (const Structure& st : structures)
+      results.push_back(area_case(
+          [&](const std::vector<TraversalQuery>& q, const TraversalSettings& s) { return observe(st, scene, q, s); },
+          scene, label, st.mip));
 
     // Leaf side 1 with a receiver plane over both structures against the plane's brute force: a node is
     // decided against the plane's range over it, widened by rounding, so the counts are exact but for

@@ -68,15 +68,15 @@ void TraversalPass::dispatch(const TraversalStructure& structure, const DeviceTe
   const bool mip = structure.mip != nullptr;
   if (mip == (structure.pyramid != nullptr) || (mip && settings.depth_sums == DepthSums::table && !structure.depth_sums))
     throw Error("traversal: expected a pyramid or a mip chain (with its summed-area table for table depth sums)");
-  if (settings.area_regions && (!mip || settings.grid > 0))
-    throw Error("traversal: area regions: expected the mip chain's traversal (no grid)");
+  if (settings.area_regions && settings.grid > 0)
+    throw Error("traversal: area regions: expected the traversal, not the grid");
   const glsl::PnTraversalQueryParams block{settings.bias,
                                            settings.leaf_side,
                                            static_cast<int>(settings.leaf_mode),
                                            settings.node_budget,
                                            mip ? PN_STRUCTURE_MIP : PN_STRUCTURE_PYRAMID,
                                            static_cast<int>(settings.depth_sums),
-                                           mip ? structure.mip->map_size : 0,
+                                           mip ? structure.mip->map_size : structure.pyramid->map_size,
                                            settings.grid,
                                            settings.leaf_divisor,
                                            settings.area_regions ? 1 : 0,

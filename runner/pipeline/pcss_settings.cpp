@@ -42,10 +42,12 @@ void PcssSettings::validate() const {
     throw Error("technique '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
                 "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off; the staged passes "
                 "take no plane (receiver-plane=off)");
-  if (area_edges && call != OneCall::exact && !(call == OneCall::fast && region == RegionMode::exact))
-    throw Error("technique '" + name + "': edges=area: expected exact PCSS (pnExactPcss, or its staged passes) or Fast "
-                "PCSS over exact regions (pnFastPcss, or its staged passes: region=exact); the other techniques "
-                "read integer squares so far (docs/area-regions.md)");
+  // HQEPCSS's filter is always an exact square; Fast PCSS's windows are the paper's integer squares.
+  if (area_edges && call != OneCall::exact && call != OneCall::hqepcss &&
+      !(call == OneCall::fast && region == RegionMode::exact))
+    throw Error("technique '" + name + "': edges=area: expected exact PCSS, HQEPCSS (pnExactPcss, pnHqepcss, or "
+                "their staged passes) or Fast PCSS over exact regions (pnFastPcss, or its staged passes: "
+                "region=exact); the other techniques have no squares (docs/area-regions.md)");
   // poisson_pcss.glsl's disk array, or vogel_pcss.glsl's loop bound
   const int most = vogel ? kVogelMaxSamples : kPoissonMaxSamples;
   const std::string samples = "1.." + std::to_string(most);
