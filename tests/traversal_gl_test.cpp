@@ -11,8 +11,8 @@ using pn::test::run_check;
 TEST_CASE("negative: a traversal that counts a texel at exactly dP - bias as occluding fails the exact check") {
   const BrokenCopy copy("traversal_pyramid.glsl", "if (node.y < t.x) {", "if (node.y <= t.x) {");
   REQUIRE(copy.found());
-  // The library's run is cli_check_all_gl's (it must pass); the copy's run holds the case count.
-  const auto results = run_check(pn::find_module_check("traversal"), copy.root());
+  // The library's run is cli_check_all_gl's (it must pass); the copy's quick run holds the case count.
+  const auto results = run_check(pn::find_module_check("traversal"), copy.root(), pn::test::kQuick);
   CHECK(results.size() > 150);
   CHECK(failing_cases(results) > 0);
 }
@@ -22,5 +22,5 @@ TEST_CASE("negative: a traversal that drops a child fails the exact check") {
                         "pn_traversalVisitLeaf(r, pyramid, sampleTable, area, level - 1, origin + ivec2(h, h), t, leafMode, pixel);",
                         "");
   REQUIRE(copy.found());
-  CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root())) > 0);
+  CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root(), pn::test::kQuick)) > 0);
 }

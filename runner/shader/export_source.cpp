@@ -78,6 +78,8 @@ std::vector<std::string> declarations_of(const std::string& code, CrossLanguage 
   const std::regex declaration(R"(^\s*(.*?)\s*:\s*register\(([tsub])(\d+)(, space\d+)?\))");
   std::istringstream lines(code);
   for (std::string line; std::getline(lines, line);) {
+    // Only a declaration names a register: the regex (slow in libstdc++) reads those lines alone.
+    if (line.find("register(") == std::string::npos) continue;
     std::smatch m;
     if (std::regex_search(line, m, declaration) && m[3] == n)
       out.push_back(m[1].str() + " : register(" + m[2].str() + n + m[4].str() + ")");
