@@ -121,7 +121,8 @@ CaseResult area_case(const Observe& observe, const Scene& scene, const std::stri
   std::vector<std::array<float, 3>> squares{{150.0f, 150.0f, 7.0f},  {150.5f, 150.5f, 7.0f}, {0.25f, 0.75f, 3.5f},
                                             {kMapSize - 0.3f, 4.2f, 9.9f}, {-1.25f, 40.0f, 3.0f},
                                             {150.3f, 150.6f, 1.0f},  {150.0f, 150.0f, 0.25f}, {-0.35f, 200.5f, 1.0f},
-                                            {150.0f, 150.0f, kMapSize * 1.5f}};
+                                            {150.0f, 150.0f, kMapSize * 1.5f},
+                                            {0.0f, 150.5f, 1.0f}};  // half a texel inside the map: area 0.5
   SeededRandom random(0x5eed0051u);
   for (float side : {1.5f, 2.7f, 5.25f, 16.4f, 33.9f, 100.6f})
     for (int k = 0; k < 6; ++k)
