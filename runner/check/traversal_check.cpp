@@ -15,6 +15,10 @@
 //   double leaves open to float rounding (texels within a band of their own
 //   threshold), shallow to steep gradients, the plane's centre inside and far
 //   outside the region; the open texels stay under 1 %;
+// - leaf side 1 over squares with area-weighted edges (issue 51: pnRegionArea;
+//   pnTraverseAreaMipPlane with the table's sums, pnTraverseAreaPlane over the
+//   pyramid) against every texel's overlap in double (brute_force_area_occluders),
+//   within the rounding of the float sums and corners (area_case);
 // - the grid (pnGridRegionMip) at 1, 4 and 16 cells, sampled (leaf side 16,
 //   4) and ramp leaves: equal to the CPU's grid with the same decisions and
 //   samples; at 16 cells on regions of side <= 16 (texels) equal to brute force;
