@@ -32,7 +32,7 @@ PN_UNIFORM_BLOCK(PnTraversalQueryParams, PN_TRAVERSAL_QUERY_PARAMS_BINDING)
   int mapSize;       // the map side N of the mip chain (or of the pyramid)
   int grid;          // the mip chain: > 0: pnGridRegionMip with this many cells a side
   int leafDivisor;   // pnTraversalLeafSide's: the leaf side at least the region's longer side / this (0: off)
-  int areaRegions;   // the mip chain: 1: query A is (centre x, y, side, 0), the area-weighted square
+  int areaRegions;   // 1: query A is (centre x, y, side, 0), the area-weighted square (either structure)
                      // pnRegionArea (issue 51), traversed by pnTraverseAreaMipPlane
   int regionLeaf;    // 1: the leaf side is pnTraversalRegionLeafSide's (Fast PCSS's over area-weighted squares)
   int pad0;          // the block a whole number of 16-byte rows

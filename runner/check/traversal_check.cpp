@@ -158,12 +158,12 @@ CaseResult area_case(const Observe& observe, const Scene& scene, const std::stri
   settings.area_regions = true;
   const std::vector<TraversalReadback> observed = observe(queries, settings);
   BoundedElements b;
+  const double means = mip ? 0.0 : 2.0 * scene.pyramid.levels * u;  // a pyramid node's mean, averaged level by level
   for (size_t k = 0; k < queries.size(); ++k) {
     const TraversalResult& e = expected[k];
     const TraversalReadback& o = observed[k];
     const int at = static_cast<int>(k);
     const double rounding = static_cast<double>(o.nodes + o.fetches + 4) * 2.0 * u;
-    const double means = mip ? 0.0 : 2.0 * scene.pyramid.levels * u;  // a pyramid node's mean, averaged level by level
     const double occluded_bound = rounding * e.occluders + position_error[k];
     const double sum_bound = (rounding + means) * e.occluders * scene.largest + position_error[k] * scene.largest;
     const double area_bound = 4.0 * u * e.texels + position_error[k];
