@@ -23,7 +23,7 @@
 //         texel compared with the plane at its centre (pcf.glsl's pnPcfWindowPlane); 0: the call above
 //
 // options:
-//   PN_AREA_EDGES   0 (default): the integer squares above. 1: both squares with area-weighted
+//   PN_AREA_EDGES   0: the integer squares above. 1 (the default): both squares with area-weighted
 //         edges (issue 51, docs/area-regions.md; the family's option, pcss_regions.glsl): region.glsl's
 //         pnRegionArea of the entry's centre and side, read by pcf.glsl's pnPcfAreaPlane — every texel
 //         weighed by its overlap; the blocker mean and the occluded fraction are area-weighted, and
@@ -34,8 +34,9 @@
 //   iterations per invocation — llvmpipe: 65535 — cuts a region wider than
 //   about 1000 texels short: the runner runs exact PCSS in bands of rows.)
 //
-// isa budget: vgprs 16, instructions 800, code 4096, scratch 0, loop 370, loops 700
-//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
+// isa budget: vgprs 24, instructions 900, code 5120, scratch 0, loop 370, loops 880
+//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md; the
+//   area form, the default: PN_AREA_EDGES 0 takes 16 VGPRs and fewer instructions — docs/area-regions.md)
 
 #ifndef PENUMBRA_EXACT_PCSS_GLSL
 #define PENUMBRA_EXACT_PCSS_GLSL

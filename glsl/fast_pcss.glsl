@@ -60,8 +60,9 @@
 //   PN_TRAVERSAL_SUM_TABLE   a usampler2D (summed_area.glsl's table of the map) declared before the
 //                            include: settings.depthSums = PN_DEPTH_SUMS_TABLE then gives exact
 //                            blocker sums (traversal.glsl; with PN_FAST_PCSS_ABLATIONS)
-//   PN_AREA_EDGES 1          both regions the continuous squares with area-weighted edges (issue 51,
-//                            pcss_regions.glsl's option): Step 3 reads the squares' covers, the walk
+//   PN_AREA_EDGES 1          (the default) both regions the continuous squares with area-weighted
+//                            edges (issue 51, pcss_regions.glsl's option; 0: the integer squares of
+//                            whole texels: 8 VGPRs and ~40 instructions fewer): Step 3 reads the squares' covers, the walk
 //                            weighs each part by its overlap, sampled leaves sit inside it, and a
 //                            leaf is at most a quarter of the region's side, a region under 16 texels
 //                            a side read to its texels (pnTraversalRegionLeafSide)
@@ -71,8 +72,9 @@
 //   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
 //   receiver stops after Step 3.
 //
-// isa budget: vgprs 32, instructions 650, code 4096, scratch 0, loop 330, loops 870
-//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
+// isa budget: vgprs 40, instructions 700, code 4096, scratch 0, loop 380, loops 960
+//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md; the
+//   area form, the default: PN_AREA_EDGES 0 takes 32, 647, 321 and 855 — docs/area-regions.md)
 
 #ifndef PENUMBRA_FAST_PCSS_GLSL
 #define PENUMBRA_FAST_PCSS_GLSL

@@ -33,7 +33,7 @@
 //                          PN_TRAVERSAL_NO_BUDGET runs traversal_pyramid.glsl's general walk with its
 //                          budget. Without it the budget is not read (the call's walk has none:
 //                          pn_hqepcssBlockers) and an engine's program holds one walk, not two.
-//   PN_AREA_EDGES          (pcss_regions.glsl, issue 51, docs/area-regions.md) 1: the filter square
+//   PN_AREA_EDGES          (pcss_regions.glsl, issue 51, docs/area-regions.md) 1 (the default): the filter square
 //                          with area-weighted edges (exact_pcss.glsl's PCF over pnEntryArea: every
 //                          texel weighed by its overlap), and with regionMode PN_REGION_EXACT the
 //                          search square too (traversal_pyramid.glsl's area rules: a node weighed by
@@ -42,8 +42,9 @@
 // cost: Step 3 4 fetches a refinement; the blocker traversal one fetch a node;
 //   the PCF one fetch per texel of the filter square (O(s²)).
 //
-// isa budget: vgprs 32, instructions 950, code 5120, scratch 0, loop 350, loops 870
-//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md)
+// isa budget: vgprs 32, instructions 1020, code 5120, scratch 0, loop 350, loops 990
+//   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md; the
+//   area form, the default: PN_AREA_EDGES 0 takes 916 instructions — docs/area-regions.md)
 
 #ifndef PENUMBRA_HQEPCSS_GLSL
 #define PENUMBRA_HQEPCSS_GLSL

@@ -65,7 +65,7 @@
 //         the same at receiver.xy, each texel read (after the clamp) against its own threshold
 //         receiver.z - bias + gradient · (q + 1/2 - receiver.xy)
 //   float pnPcfBlockerMean(PnPcf s)         depthSum / occluders, 0 without occluders
-//   float pnPcfOccludedFraction(PnPcf s)    occluders / texels, 0 without texels
+//   float pnPcfOccludedFraction(PnPcf s)    occluders / texels, at most 1; 0 without texels
 //   bool  pnPcfOccludes(float depth, float threshold)   depth < threshold and finite
 //   struct PnPcf { float occluders; float depthSum; float texels; }
 //   depthMap: linear light depth in .r (R32F, or any float format; one level,
@@ -116,7 +116,8 @@ float pnPcfBlockerMean(PnPcf s) {
 }
 
 float pnPcfOccludedFraction(PnPcf s) {
-  return s.texels > 0.0 ? s.occluders / s.texels : 0.0;
+  // At most 1: area-weighted rows (pnPcfAreaPlane) sum in another order than the window's area.
+  return s.texels > 0.0 ? min(s.occluders / s.texels, 1.0) : 0.0;
 }
 
 PnPcf pnPcfAddRowsPlane(sampler2D depthMap, ivec2 origin, ivec2 size, vec3 receiver, vec2 gradient, float bias,

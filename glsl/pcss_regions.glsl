@@ -48,11 +48,14 @@
 //               pcss_regions.h, shared with the runner
 //
 // options:
-//   PN_AREA_EDGES 0             1: the exact region is the continuous square of side s with
-//                               area-weighted edges (issue 51, docs/area-regions.md) for every
-//                               technique of the family that reads it (exact PCSS, Fast PCSS): each
-//                               texel counts with its overlap, so a region moves with its receiver by
-//                               any fraction of a texel; Step 3 reads the min over its cover
+//   PN_AREA_EDGES 1             (the default) the exact region is the continuous square of side s
+//                               with area-weighted edges (issue 51, docs/area-regions.md) for every
+//                               technique of the family that reads it (exact PCSS, Fast PCSS,
+//                               HQEPCSS): each texel counts with its overlap, so a region moves with
+//                               its receiver by any fraction of a texel; Step 3 reads the min over its
+//                               cover. 0: the integer squares of whole texels (pnRegionSquare), a
+//                               step at every texel on a small map, but fewer registers and
+//                               instructions (the modules' pages give both forms' isa)
 //   PN_REFINE_MAX_ITERATIONS 16   loop bound of the refinement (pcss_regions.h, shared with the runner)
 //
 // cost: entries: ALU only (the search's fetches: pcss_regions_mip.glsl, pcss_regions_pyramid.glsl).
@@ -66,7 +69,7 @@
 #include "region.glsl"
 
 #ifndef PN_AREA_EDGES
-#define PN_AREA_EDGES 0
+#define PN_AREA_EDGES 1
 #endif
 
 bool pnEntryLit(vec4 entry) {

@@ -52,7 +52,7 @@
 //         for up to 256 texels: the stipple of small maps, where nearly every region is that
 //         small), and a side-2 leaf's 4 samples cost its 4 texels' fetches
 //   float pnTraversalBlockerMean(PnTraversal r)        depthSum / occluders (0 if none; Step 4)
-//   float pnTraversalOccludedFraction(PnTraversal r)   occluders / texels (Step 5)
+//   float pnTraversalOccludedFraction(PnTraversal r)   occluders / texels, at most 1 (Step 5)
 //   PnTraversal { float occluders; float depthSum; float texels; int nodes; int fetches; }
 //   Counts are floats: sampled leaves add fractional counts (exact: c / m is dyadic).
 //
@@ -102,7 +102,9 @@ float pnTraversalBlockerMean(PnTraversal r) {
 }
 
 float pnTraversalOccludedFraction(PnTraversal r) {
-  return r.texels > 0.0 ? r.occluders / r.texels : 0.0;
+  // At most 1: area-weighted parts (PN_AREA_EDGES) sum in another order than the square's area,
+  // a wholly occluded square's sum rounding a few ulps above it (visibility -1.2e-7 unclamped).
+  return r.texels > 0.0 ? min(r.occluders / r.texels, 1.0) : 0.0;
 }
 
 // The even bits of v, packed: one coordinate of a Morton code.

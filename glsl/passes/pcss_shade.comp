@@ -24,7 +24,7 @@ void main() {
     ivec2 r = pnPcss.reuseTile > 0 ? pnReuseRepresentative(pnParents, p, pnPcss.reuseTile) : p;
     vec4 result = texelFetch(pnOcclusion, r, 0);
     bool lit = pnEntryLit(texelFetch(pnFilterMap, r, 0));
-    fraction = (!lit && result.z > 0.0) ? result.x / result.z : 0.0;
+    fraction = (!lit && result.z > 0.0) ? min(result.x / result.z, 1.0) : 0.0;  // as pnTraversalOccludedFraction
   }
   imageStore(pnVisibility, p, vec4(1.0 - fraction));
 }

@@ -67,7 +67,7 @@ FrontierBenchSetup quick_frontier_setup() {
   s.sizes = {128, 256};
   s.repeats = 1;
   s.truth_samples = 4;
-  s.techniques = {"poisson", "vogel", "fast", "fast:edges=area", "hqepcss", "savsm", "vsm", "pcf", "exact",
+  s.techniques = {"poisson", "vogel", "fast", "hqepcss", "savsm", "vsm", "pcf", "exact",
                   "backprojection:samples=64"};
   return s;
 }

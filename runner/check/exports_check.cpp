@@ -283,15 +283,18 @@ CaseResult defaults_case(const std::string& name, const std::vector<float>& from
 }
 
 std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
-  const ExportPass exact(env.device, env.tree, "exact_pcss");
-  const ExportPass exact_area(env.device, env.tree, "exact_pcss", {{"PN_AREA_EDGES", "1"}});
+  // PN_AREA_EDGES 0: the integer squares; the modules' default (1, the squares with area-weighted
+  // edges) is what the `_area` exports compile.
+  const Define texel_squares{"PN_AREA_EDGES", "0"};
+  const ExportPass exact(env.device, env.tree, "exact_pcss", {texel_squares});
+  const ExportPass exact_area(env.device, env.tree, "exact_pcss");
   const ExportPass pcf(env.device, env.tree, "pcf");
-  const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}});
-  const ExportPass fast(env.device, env.tree, "fast_pcss");
-  const ExportPass fast_shipped(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}});
-  const ExportPass fast_area(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}, {"PN_AREA_EDGES", "1"}});
-  const ExportPass hqepcss(env.device, env.tree, "hqepcss");
-  const ExportPass hqepcss_area(env.device, env.tree, "hqepcss", {{"PN_AREA_EDGES", "1"}});
+  const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}, texel_squares});
+  const ExportPass fast(env.device, env.tree, "fast_pcss", {texel_squares});
+  const ExportPass fast_shipped(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}, texel_squares});
+  const ExportPass fast_area(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}});
+  const ExportPass hqepcss(env.device, env.tree, "hqepcss", {texel_squares});
+  const ExportPass hqepcss_area(env.device, env.tree, "hqepcss");
   const ExportPass poisson(env.device, env.tree, "poisson_pcss");
   const ExportPass vogel(env.device, env.tree, "vogel_pcss");
   const ExportPass backprojection(env.device, env.tree, "backprojection");

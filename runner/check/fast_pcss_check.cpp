@@ -71,16 +71,16 @@ std::vector<PcssSettings> one_call_settings() {
   grid.blocker_leaf_mode = LeafMode::ramp;
   PcssSettings exact_area = exact_pcss();  // issue 51: the squares with area-weighted edges
   exact_area.name = "exact, area-weighted edges";
-  exact_area.area_edges = true;
+  exact_area.edges = true;
   PcssSettings fast_area = fast_pcss();
   fast_area.name = "fast, area-weighted edges";
-  fast_area.area_edges = true;
+  fast_area.edges = true;
   PcssSettings fast_all_off_area = fast_pcss_all_off();
   fast_all_off_area.name += ", area-weighted edges";
-  fast_all_off_area.area_edges = true;
+  fast_all_off_area.edges = true;
   PcssSettings hqepcss_area = hqepcss();
   hqepcss_area.name = "hqepcss, area-weighted edges";
-  hqepcss_area.area_edges = true;
+  hqepcss_area.edges = true;
   // HQEPCSS at leaf 1 over exact regions without refinement: exact PCSS over the pyramid.
   PcssSettings hqepcss_exact = hqepcss();
   hqepcss_exact.name = "hqepcss, refine 0, leaf 1, exact regions";
@@ -89,7 +89,7 @@ std::vector<PcssSettings> one_call_settings() {
   hqepcss_exact.region = RegionMode::exact;
   PcssSettings hqepcss_exact_area = hqepcss_exact;
   hqepcss_exact_area.name += ", area-weighted edges";
-  hqepcss_exact_area.area_edges = true;
+  hqepcss_exact_area.edges = true;
   std::vector<PcssSettings> out{fast_pcss(),   windows,      grid,         fast_pcss_all_off(), poisson_pcss(),
                                 poisson_fewer, exact_pcss(), exact_area,   hqepcss(),           fast_area,
                                 fast_all_off_area, hqepcss_area, hqepcss_exact_area};
@@ -99,7 +99,10 @@ std::vector<PcssSettings> one_call_settings() {
     s.receiver_plane_tan = kReceiverPlaneTan;
     out.push_back(s);
   }
-  for (PcssSettings& s : out) s.staged = false;  // exact PCSS and HQEPCSS run staged by default
+  for (PcssSettings& s : out) {
+    s.staged = false;  // exact PCSS and HQEPCSS run staged by default
+    s.edges = s.edges.value_or(false);  // the integer squares but where named (against their own reference)
+  }
   return out;
 }
 
@@ -139,13 +142,13 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
           (settings.blockers == Estimator::traversal && settings.leaf_side == 1 && settings.refine_iterations == 0);
       if (!brute_force_equal) continue;
       const PcssReference reference =
-          settings.area_edges
+          settings.area_edges()
               ? exact_pcss_area_reference(map, gbuffer, scene.light, settings.bias, settings.filter_scale,
                                           kAreaEdgeMargin)
               : exact_pcss_reference(map, gbuffer, scene.light, settings.bias, settings.filter_scale,
                                      kPcssDecisionMargin, settings.receiver_plane_tan);
       const Tolerance tolerance =
-          Tolerance::absolute(settings.area_edges ? area_edges_rounding(kMap) : kFractionRounding);
+          Tolerance::absolute(settings.area_edges() ? area_edges_rounding(kMap) : kFractionRounding);
       for (const auto& [stage, image] : {std::pair<const char*, Image>{"compute pass", compute_visibility},
                                          std::pair<const char*, Image>{"fragment shader", channel(fragment, 0)}}) {
         Image observed = image;

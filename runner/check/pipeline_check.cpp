@@ -214,21 +214,25 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
 
     technique_cases(context, resources, name, scene, inputs, map, gbuffer, results);
 
-    // Exact PCSS against the CPU's definition, ambiguous pixels left out (counted in the name).
+    // Exact PCSS (its default: the squares with area-weighted edges, issue 51) against the CPU's
+    // definition, ambiguous pixels left out (counted in the name); the integer squares: the
+    // fast_pcss check and the zero-size light below.
     const PcssSettings exact = exact_pcss();
     const PcssFrame exact_frame = pipeline.run(inputs, exact);
     const Image exact_visibility = read(context, exact_frame.soft_shadow());
-    const PcssReference reference = exact_pcss_reference(map, gbuffer, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
+    const Tolerance area_rounding = Tolerance::absolute(area_edges_rounding(kMap));
+    const auto area_reference = [&](const Image& shadow_map, const Image& receivers, const LightModel& light) {
+      return exact_pcss_area_reference(shadow_map, receivers, light, exact.bias, exact.filter_scale, kAreaEdgeMargin);
+    };
+    const PcssReference reference = area_reference(map, gbuffer, scene.light);
     Image observed = exact_visibility;
     const int ambiguous = leave_out_ambiguous(reference, observed);
     results.push_back({name + ": exact PCSS vs CPU brute force (" + std::to_string(ambiguous) + " pixels within rounding of a decision left out)",
-                       Tolerance::absolute(kFractionRounding),
-                       compare(reference.visibility, observed, Tolerance::absolute(kFractionRounding))});
+                       area_rounding, compare(reference.visibility, observed, area_rounding)});
 
-    // The wiring check: every improvement off. Counts are exact either way;
-    // the blocker mean is summed in another order, so a pixel may differ only
-    // where the two blocker means differ (by float rounding, checked) and move
-    // a filter square's rounding.
+    // The wiring check: every improvement off. The blocker mean is summed in another order, so a
+    // pixel may differ where the two blocker means differ (by float rounding, checked) and move a
+    // filter square; the areas too, within their rounding (area_edges_rounding).
     PcssSettings off = fast_pcss_all_off();
     off.staged = true;  // its blocker means, Step 4's output (the one call's: the fast_pcss check)
     const PcssFrame off_frame = pipeline.run(inputs, off);
@@ -245,7 +249,7 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
           aligned.at(x, y) = exact_visibility.at(x, y), ++moved;
     results.push_back({name + ": soft shadow, all improvements off vs exact PCSS (" + std::to_string(moved) +
                            " pixels whose blocker mean rounded apart left out)",
-                       Tolerance::exact(), compare(exact_visibility, aligned, Tolerance::exact())});
+                       area_rounding, compare(exact_visibility, aligned, area_rounding)});
 
     // The reuse scheme and the fixed-radius blur of the paper's settings (fast-paper), and the
     // adaptive blur of fast-blur: each on the scene's own maps.
@@ -293,24 +297,34 @@ std::vector<CaseResult> run_pipeline_check(const CheckEnvironment& env) {
     TechniqueInputs bad = inputs;
     bad.shadow_map = damaged_map.get();
     bad.gbuffer = outside_gbuffer.get();
-    const PcssReference bad_reference = exact_pcss_reference(damaged, outside, scene.light, exact.bias, exact.filter_scale, kPcssDecisionMargin);
+    const PcssReference bad_reference = area_reference(damaged, outside, scene.light);
     Image bad_observed = read(context, pipeline.run(bad, exact).soft_shadow());
     leave_out_ambiguous(bad_reference, bad_observed);
     results.push_back({name + ": exact PCSS, NaN/+Inf texels (no occluder) and receivers outside the frustum (lit)",
-                       Tolerance::absolute(kFractionRounding),
-                       compare(bad_reference.visibility, bad_observed, Tolerance::absolute(kFractionRounding))});
+                       area_rounding, compare(bad_reference.visibility, bad_observed, area_rounding)});
     results.push_back(in_unit_range(name + ": Fast PCSS, NaN/+Inf texels and receivers outside the frustum: finite, in [0, 1]",
                                     read(context, pipeline.run(bad, fast_pcss()).soft_shadow())));
 
-    // A zero-size light: every region is one texel, a hard shadow.
+    // A zero-size light: every region one texel wide — over the integer squares (edges=texel) the
+    // texel under the receiver, a hard shadow; over the default squares with area-weighted edges
+    // the texels a one-texel square about it overlaps, each by its overlap (the definition).
     Scene point = scene;
     point.light.width = 0.0;
     const DeviceSceneFrame point_frame = render_device_frame(env, point, kScreen);
     const TechniqueInputs& point_inputs = point_frame.inputs;
-    const Image hard = hard_shadow(read(context, *point_frame.shadow_map), read(context, *point_frame.gbuffer), exact.bias);
-    for (const PcssSettings& s : {exact, fast_pcss()})  // fast: exact regions, no blur
-      results.push_back({name + ", zero-size light: " + s.name + " vs the hard shadow", Tolerance::exact(),
+    const Image point_map = read(context, *point_frame.shadow_map), point_gbuffer = read(context, *point_frame.gbuffer);
+    const Image hard = hard_shadow(point_map, point_gbuffer, exact.bias);
+    const PcssReference one_texel = area_reference(point_map, point_gbuffer, point.light);
+    for (PcssSettings s : {exact, fast_pcss()}) {  // fast: exact regions, no blur
+      Image area = read(context, pipeline.run(point_inputs, s).soft_shadow());
+      const int left_out = leave_out_ambiguous(one_texel, area);
+      results.push_back({name + ", zero-size light: " + s.name + " vs a one-texel square's area-weighted texels (" +
+                             std::to_string(left_out) + " pixels within rounding of a decision left out)",
+                         area_rounding, compare(one_texel.visibility, area, area_rounding)});
+      s.edges = false;
+      results.push_back({name + ", zero-size light: " + s.name + ", edges=texel vs the hard shadow", Tolerance::exact(),
                          compare(hard, read(context, pipeline.run(point_inputs, s).soft_shadow()), Tolerance::exact())});
+    }
     results.push_back(in_unit_range(name + ", zero-size light: fast-paper (2x2-texel windows): finite, in [0, 1]",
                                     read(context, pipeline.run(point_inputs, fast_paper_pcss()).soft_shadow())));
   }

@@ -1,6 +1,7 @@
 // Issue 51's picture: one penumbra of the boxes scene on a 128² map seen on a 512² screen, zoomed
 // — the truth, Poisson PCSS, and exact PCSS and Fast PCSS over integer squares (the staircase and
-// Fast PCSS's stipple) and over squares with area-weighted edges (PN_AREA_EDGES: no steps).
+// Fast PCSS's stipple: `edges=texel`, the form before issue 51) and over squares with area-weighted
+// edges (PN_AREA_EDGES, the modules' default since: no steps).
 #include <memory>
 #include <string>
 #include <utility>
@@ -37,11 +38,11 @@ Canvas area_edges_figure(const Context& context, const SourceTree& tree) {
   // area-weighted edges. Each panel: its caption and the technique (none: the truth).
   const std::vector<std::pair<std::string, std::string>> panels{
       {"truth (ray traced)", ""},
-      {"exact PCSS, texel squares", "exact:stages=off"},
-      {"fast, texel squares", "fast"},
+      {"exact PCSS, texel squares", "exact:stages=off:edges=texel"},
+      {"fast, texel squares", "fast:edges=texel"},
       {"Poisson 36/64", "poisson"},
-      {"exact PCSS, area-weighted edges", "exact:stages=off:edges=area"},
-      {"fast, area-weighted edges", "fast:edges=area"}};
+      {"exact PCSS, area-weighted edges", "exact:stages=off"},
+      {"fast, area-weighted edges", "fast"}};
   std::vector<std::unique_ptr<TechniqueConfig>> configs;
   ComparisonSetup setup;
   setup.screen_size = screen, setup.repeats = 1, setup.truth_samples = 8;

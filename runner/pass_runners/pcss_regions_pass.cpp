@@ -32,7 +32,7 @@ PcssRegionsQueryPass::PcssRegionsQueryPass(const QueryDevice& device, const Sour
              {{PN_PCSS_REGIONS_QUERY_A_BINDING, PN_PCSS_REGIONS_QUERY_B_BINDING, PN_PCSS_REGIONS_QUERY_C_BINDING},
               {PN_PCSS_REGIONS_QUERY_ENTRY_BINDING, PN_PCSS_REGIONS_QUERY_RECT_BINDING,
                PN_PCSS_REGIONS_QUERY_WINDOW_BINDING, PN_PCSS_REGIONS_QUERY_KEY_BINDING}},
-             area_edges ? std::vector<Define>{{"PN_AREA_EDGES", "1"}} : std::vector<Define>{}),
+             {{"PN_AREA_EDGES", area_edges ? "1" : "0"}}),
       no_mip_(device.make_texture({TexelFormat::rgba32f, 1, 1})) {}
 
 std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyramid, const LightModel& light,

@@ -38,8 +38,8 @@ struct PcssRegionsResult {
 
 class PcssRegionsQueryPass {
  public:
-  // area_edges: the pass compiled with PN_AREA_EDGES (issue 51): the searches read the area squares'
-  // covers, pnEntryRect is the cover.
+  // area_edges: the pass compiled with PN_AREA_EDGES 1 (issue 51; the module's default): the searches
+  // read the area squares' covers, pnEntryRect is the cover; false: PN_AREA_EDGES 0, the integer squares.
   PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree, bool area_edges = false);
 
   // One result per query; the light's map size must be the pyramid's N, and the mip

@@ -86,7 +86,7 @@ Define switch_define(const char* name, int value) { return {name, std::to_string
 // The squares with area-weighted edges (pcss_regions.glsl's PN_AREA_EDGES; issue 51): every pass
 // that reads a region (the search's cover, the scan, the traversal, the one call) compiles with it.
 std::vector<Define> with_area_edges(std::vector<Define> defines, const PcssSettings& settings) {
-  if (settings.area_edges) defines.push_back({"PN_AREA_EDGES", "1"});
+  defines.push_back({"PN_AREA_EDGES", settings.area_edges() ? "1" : "0"});
   return defines;
 }
 

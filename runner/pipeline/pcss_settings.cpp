@@ -43,8 +43,7 @@ void PcssSettings::validate() const {
                 "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off; the staged passes "
                 "take no plane (receiver-plane=off)");
   // HQEPCSS's filter is always an exact square; Fast PCSS's windows are the paper's integer squares.
-  if (area_edges && call != OneCall::exact && call != OneCall::hqepcss &&
-      !(call == OneCall::fast && region == RegionMode::exact))
+  if (edges.value_or(false) && !has_area_squares(*this))
     throw Error("technique '" + name + "': edges=area: expected exact PCSS, HQEPCSS (pnExactPcss, pnHqepcss, or "
                 "their staged passes) or Fast PCSS over exact regions (pnFastPcss, or its staged passes: "
                 "region=exact); the other techniques have no squares (docs/area-regions.md)");
@@ -59,6 +58,15 @@ void PcssSettings::validate() const {
   } catch (const Error& e) {
     throw Error("technique '" + name + "': " + e.what());
   }
+}
+
+bool has_area_squares(const PcssSettings& s) {
+  const std::optional<OneCall> call = one_call(s);
+  return call == OneCall::exact || call == OneCall::hqepcss || (call == OneCall::fast && s.region == RegionMode::exact);
+}
+
+bool PcssSettings::area_edges() const {
+  return edges.value_or(has_area_squares(*this));
 }
 
 std::optional<OneCall> one_call(const PcssSettings& s) {
@@ -252,8 +260,8 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
   else if (key == "stages") s.staged = on_off();
   else if (key == "receiver-plane") s.receiver_plane_tan = setting_receiver_plane(s.name, key, value);
   else if (key == "edges") {
-    if (value == "texel") s.area_edges = false;
-    else if (value == "area") s.area_edges = true;
+    if (value == "texel") s.edges = false;
+    else if (value == "area") s.edges = true;
     else throw bad("texel or area");
   }
   else throw unknown_setting(s.name, key, pcss_setting_keys());

@@ -80,9 +80,13 @@ struct PcssSettings {
   // > 0: the receiver-plane depth bias (receiver_plane.glsl) from the G-buffer's neighbours, its slope
   // clamped to this tangent; 0: off. The one calls of fast, exact and vogel (validate).
   float receiver_plane_tan = 0.0f;
-  // Issue 51 (docs/area-regions.md): both regions as squares with area-weighted edges
-  // (PN_AREA_EDGES). Exact PCSS and Fast PCSS over exact regions, one call or staged (validate).
-  bool area_edges = false;
+  // Issue 51 (docs/area-regions.md): `edges=area` (true) both regions as squares with
+  // area-weighted edges, `edges=texel` (false) the integer squares; unset, the modules' default
+  // (PN_AREA_EDGES 1, pcss_regions.glsl) where the technique has such squares (exact PCSS,
+  // HQEPCSS, Fast PCSS over exact regions: has_area_squares) and the integer form elsewhere.
+  // Every pass is compiled with PN_AREA_EDGES set to area_edges() (pcss_pipeline.cpp).
+  std::optional<bool> edges;
+  bool area_edges() const;
 
   // Throws Error naming the setting and its accepted range.
   void validate() const;
@@ -100,6 +104,9 @@ enum class OneCall {
   vogel,    // pnVogelPcss (vogel_pcss.glsl)
 };
 std::optional<OneCall> one_call(const PcssSettings& s);
+// Whether `s` reads squares that can weigh their edges (PN_AREA_EDGES): exact PCSS, HQEPCSS and Fast
+// PCSS over exact regions, one call or staged; the others have no squares (docs/area-regions.md).
+bool has_area_squares(const PcssSettings& s);
 // Whether `s` is its one call's shipped settings — everything the call reads but the bias and the
 // receiver plane equal to its technique's (fast_pcss(), poisson_pcss(), vogel_pcss(), hqepcss():
 // the module's pnXDefaults) — so that the runner's pass compiles the call as an engine does, the
