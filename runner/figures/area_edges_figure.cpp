@@ -1,5 +1,5 @@
 // Issue 51's picture: one penumbra of the boxes scene on a 128² map seen on a 512² screen, zoomed
-// — the truth, Poisson PCSS, and exact PCSS and Fast PCSS over integer squares (the staircase and
+// — the truth, Poisson PCSS, and exact PCSS, HQEPCSS and Fast PCSS over integer squares (the staircase and
 // Fast PCSS's stipple: `edges=texel`, the form before issue 51) and over squares with area-weighted
 // edges (PN_AREA_EDGES, the modules' default since: no steps).
 #include <memory>
@@ -39,9 +39,11 @@ Canvas area_edges_figure(const Context& context, const SourceTree& tree) {
   const std::vector<std::pair<std::string, std::string>> panels{
       {"truth (ray traced)", ""},
       {"exact PCSS, texel squares", "exact:stages=off:edges=texel"},
+      {"HQEPCSS, texel squares", "hqepcss:edges=texel"},
       {"fast, texel squares", "fast:edges=texel"},
       {"Poisson 36/64", "poisson"},
       {"exact PCSS, area-weighted edges", "exact:stages=off"},
+      {"HQEPCSS, area-weighted edges", "hqepcss"},
       {"fast, area-weighted edges", "fast"}};
   std::vector<std::unique_ptr<TechniqueConfig>> configs;
   ComparisonSetup setup;
@@ -54,7 +56,7 @@ Canvas area_edges_figure(const Context& context, const SourceTree& tree) {
   const Comparison c = compare_techniques(context, tree, scene, setup);
   const Font font;
   const Rgb ink{40, 40, 40};
-  const int panel_w = crop_w * scale, panel_h = crop_h * scale, columns = 3;
+  const int panel_w = crop_w * scale, panel_h = crop_h * scale, columns = 4;
   Canvas canvas(columns * (panel_w + gap) + gap, 2 * (panel_h + label + gap) + gap, {255, 255, 255});
   size_t result = 0;
   for (size_t i = 0; i < panels.size(); ++i) {
