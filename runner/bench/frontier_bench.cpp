@@ -25,12 +25,9 @@ namespace {
 
 constexpr const char* kFrontierModelScene = "spider";  // fixtures::kCityModels[0] on the ground
 
-std::string samples_technique(const char* family, int n) {
-  return std::string(family) + ":blocker-samples=" + std::to_string(n) + ":filter-samples=" + std::to_string(n);
-}
-
-// The scene at one map size and width factor.
-Scene frontier_scene(const std::string& name, int size, double width) {
+// The scene at one map size and width factor: the setup's model, or the scene `name`.
+Scene frontier_scene(const FrontierBenchSetup& setup, const std::string& name, int size, double width) {
+  if (!setup.model.empty()) return sweep_scene(setup.model, size, width);
   // The scenes frontier takes, named in its refusal (issue 39 C21: it used to list the area-light three).
   const std::vector<std::string> known = FrontierBenchSetup{}.scenes;
   if (std::find(known.begin(), known.end(), name) == known.end()) {
@@ -38,9 +35,9 @@ Scene frontier_scene(const std::string& name, int size, double width) {
     for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
     throw Error("unknown scene '" + name + "': expected one of " + list);
   }
-  Scene scene = name == kFrontierModelScene                     ? make_model_scene(fixtures::kCityModels[0], size)
-                : find_city_scene_fixture_or_null(name) != nullptr ? make_city_scene(*find_city_scene_fixture_or_null(name), size)
-                                                                : make_scene(find_scene_fixture(name), size);
+  if (name == kFrontierModelScene) return sweep_scene(fixtures::kCityModels[0], size, width);
+  Scene scene = find_city_scene_fixture_or_null(name) != nullptr ? make_city_scene(*find_city_scene_fixture_or_null(name), size)
+                                                                 : make_scene(find_scene_fixture(name), size);
   scale_light_width(scene, width, "light width factor");
   return scene;
 }
@@ -82,7 +79,7 @@ void validate_frontier_setup(const FrontierBenchSetup& s) {
   if (s.screen && (*s.screen < 16 || *s.screen > 4096))
     throw Error("screen " + std::to_string(*s.screen) + ": expected 16..4096");
   for (const std::string& name : s.scenes)
-    for (double w : s.widths) frontier_scene(name, 16, w);  // the scene (its models read), the factor, the light
+    for (double w : s.widths) frontier_scene(s, name, 16, w);  // the scene (its models read), the factor, the light
   for (const std::string& m : s.techniques) parse_technique(m)->validate();
 }
 
@@ -137,14 +134,14 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
         cs.repeats = setup.repeats;
         cs.truth_samples = setup.truth_samples;
         cs.census = estimator.has_value();
-        if (find_city_scene_fixture_or_null(name)) {
+        if (setup.model.empty() && find_city_scene_fixture_or_null(name)) {
           CascadeSettings c;
           c.count = kFrontierCascades, c.map_size = n, c.stable = true;
           cs.cascades = c;
         }
         for (const auto& c : configs)
           if (w <= setup.exact_up_to || !scans_filter_region(c->name())) cs.techniques.push_back(c.get());
-        Comparison result = compare_techniques(context, tree, frontier_scene(name, n, w), cs);
+        Comparison result = compare_techniques(context, tree, frontier_scene(setup, name, n, w), cs);
         const std::vector<GpuEstimate> estimates = estimator ? estimator->estimate(result) : std::vector<GpuEstimate>{};
         FrontierPoint p;
         p.scene = name, p.size = n, p.screen = cs.screen_size, p.width = w;

@@ -11,6 +11,8 @@
 // mean of each 8×8 tile's maximum.
 #pragma once
 
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
@@ -29,6 +31,9 @@ struct FrontierBenchSetup {
   // boxes, fence, tall_blocker (area light), spider (the Assimp model on the ground), city (the sun,
   // on kFrontierCascades cascades).
   std::vector<std::string> scenes{"boxes", "fence", "tall_blocker", "spider", "city"};
+  // Non-empty: this mesh file on the ground (make_model_scene, the box scenes' light) is the one
+  // scene, named by its stem in `scenes` (the command line's --model; issue 52 item 4).
+  std::filesystem::path model;
   std::vector<double> widths{1, 2, 4, 8};  // light width factors
   // Shadow-map sizes (each cascade's map on the city): 256² is where engines' spot lights live (atlas
   // tiles), and where the filter's edge decides (issue 51).

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/progress.h"
+#include "scene/model.h"
 #include "technique/technique_registry.h"
 
 namespace pn {
@@ -20,6 +21,21 @@ Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor
   scale_light_width(scene, factor, "light width factor");
   return scene;
 }
+
+Scene sweep_scene(const std::filesystem::path& model, int size, double factor) {
+  Scene scene = make_model_scene(model, size);
+  scale_light_width(scene, factor, "light width factor");
+  return scene;
+}
+
+namespace {
+
+// A point's scene: the setup's model, or the fixture `name`.
+Scene sweep_point_scene(const SweepBenchSetup& s, const std::string& name, int size, double factor) {
+  return s.model.empty() ? sweep_scene(find_scene_fixture(name), size, factor) : sweep_scene(s.model, size, factor);
+}
+
+}  // namespace
 
 void validate_width_bench_settings(const std::vector<int>& sizes, int repeats, int truth_samples, double exact_up_to) {
   for (int n : sizes)
@@ -36,10 +52,8 @@ void validate_sweep_setup(const SweepBenchSetup& s) {
   require_list_length("sweep light width factors", s.factors.size());
   require_list_length("sweep sizes", s.sizes.size());
   validate_width_bench_settings(s.sizes, s.repeats, s.truth_samples, s.exact_up_to);
-  for (const std::string& name : s.scenes) {
-    const auto& fixture = find_scene_fixture(name);
-    for (double f : s.factors) sweep_scene(fixture, 16, f);  // the factor and the scaled light, without GL
-  }
+  for (const std::string& name : s.scenes)
+    for (double f : s.factors) sweep_point_scene(s, name, 16, f);  // the factor and the scaled light (the model read), without GL
   for (const auto& m : s.techniques) m->validate();
 }
 
@@ -64,7 +78,6 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
   for (const TechniqueConfig* c : all) bench.techniques.push_back(c->name());
   Progress progress("bench sweep", setup.scenes.size() * setup.sizes.size() * setup.factors.size());
   for (const std::string& name : setup.scenes) {
-    const auto& fixture = find_scene_fixture(name);
     for (int n : setup.sizes)
       for (double factor : setup.factors) {
         progress.step(name + " " + std::to_string(n) + " x" + format_number("%g", factor));
@@ -80,7 +93,7 @@ SweepBench bench_sweep(const Context& context, const SourceTree& tree, const Swe
         p.scene = name;
         p.size = n;
         p.factor = factor;
-        const Scene scene = sweep_scene(fixture, n, factor);
+        const Scene scene = sweep_point_scene(setup, name, n, factor);
         p.light_width = scene.light.width;
         p.comparison = compare_techniques(context, tree, scene, cs);
         if (estimator) {

@@ -7,6 +7,7 @@
 // (`exact_up_to`); the truth is the reference that matters.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -25,6 +26,9 @@ namespace pn {
 
 struct SweepBenchSetup {
   std::vector<std::string> scenes{"tall_blocker", "boxes"};
+  // Non-empty: this mesh file on the ground (make_model_scene) is the one scene, named by its stem
+  // in `scenes` (the command line's --model); the fixtures are not read.
+  std::filesystem::path model;
   std::vector<double> factors{1, 2, 4, 8};  // multiply the fixture's light width
   std::vector<int> sizes{512};              // shadow map = screen
   int repeats = 3;
@@ -51,6 +55,8 @@ void validate_sweep_setup(const SweepBenchSetup& setup);
 // The fixture's scene at `size` with its light's width multiplied by `factor`; throws Error for a
 // factor that is not finite and > 0, or a light that does not validate.
 Scene sweep_scene(const fixtures::SceneFixture& fixture, int size, double factor);
+// The same for a mesh file on the ground (make_model_scene: the box scenes' ground and light).
+Scene sweep_scene(const std::filesystem::path& model, int size, double factor);
 
 // Whether a technique names exact PCSS ("exact" or "exact:key=value…").
 bool is_exact_technique(const std::string& name);

@@ -49,7 +49,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* sizes = applies_to(cmd->add_option("--sizes", opt->sizes, "pyramid: shadow-map sizes N (default 512 1024 2048); tables: default 256 512 1024 2048 4096; pipeline, sweep: map = screen sizes (default 512 1024; sweep 512)")->delimiter(','), {"pyramid", "pipeline", "sweep", "frontier", "cache", "cascades", "tables"});
   auto* repeats = applies_to(cmd->add_option("--repeats", opt->repeats, "Timed runs (default 15 for pyramid, 5 for traversal, pipeline and tables, 3 for sweep)"), {"pyramid", "traversal", "pipeline", "sweep", "frontier", "cascades", "tables"});
   applies_to(cmd->add_option("--scene", opt->pipeline.scene, "pipeline: boxes | fence | tall_blocker (default boxes)"), {"pipeline"});
-  applies_to(cmd->add_option("--model", opt->pipeline.model, "pipeline: a mesh file (any format Assimp reads) on the ground instead of --scene"), {"pipeline", "cache"});
+  applies_to(cmd->add_option("--model", opt->pipeline.model, "pipeline: a mesh file (any format Assimp reads) on the ground instead of --scene; sweep, frontier: the one scene, instead of --scenes; cache: the animated scene's model"), {"pipeline", "cache", "sweep", "frontier"});
   auto* scenes = applies_to(cmd->add_option("--scenes", opt->sweep.scenes, "sweep: scenes (default tall_blocker,boxes); frontier: default boxes,fence,tall_blocker,spider,city")->delimiter(','), {"sweep", "frontier"});
   auto* widths = applies_to(cmd->add_option("--widths", opt->sweep.factors, "sweep, frontier: light width factors (default 1,2,4,8)")->delimiter(','), {"sweep", "frontier"});
   auto* exact_up_to = applies_to(cmd->add_option("--exact-up-to", opt->sweep.exact_up_to, "sweep, frontier: run exact PCSS (frontier: and HQEPCSS) only at light width factors up to this (default 2; inf: at every factor)"), {"sweep", "frontier"});
@@ -78,6 +78,14 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([opt, applies, repeats, sizes, truth_samples, screen, scenes, widths, exact_up_to, estimate, &global, &exit_code] {
+    // sweep and frontier: the model on the ground is the one scene, named by its stem.
+    const auto model_scenes = [&](std::vector<std::string>& names, std::filesystem::path& model) {
+      if (opt->pipeline.model.empty()) return;
+      if (scenes->count() > 0)
+        throw Error("--model: bench " + opt->what + " puts the model on the ground as its one scene; expected --model or --scenes, not both");
+      model = opt->pipeline.model;
+      names = {model.stem().string()};
+    };
     if (opt->what != "pyramid" && opt->what != "traversal" && opt->what != "pipeline" && opt->what != "sweep" &&
         opt->what != "frontier" && opt->what != "cache" && opt->what != "cascades" && opt->what != "tables")
       throw Error("bench '" + opt->what + "': expected one of pyramid, traversal, pipeline, sweep, frontier, cache, cascades, tables");
@@ -95,6 +103,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (repeats->count() > 0) opt->sweep.repeats = opt->repeats;
       if (sizes->count() > 0) opt->sweep.sizes = opt->sizes;
       if (truth_samples->count() > 0) opt->sweep.truth_samples = opt->pipeline.truth_samples;
+      model_scenes(opt->sweep.scenes, opt->sweep.model);
       validate_sweep_setup(opt->sweep);
     } else if (opt->what == "frontier") {
       if (opt->quick) opt->frontier = quick_frontier_setup();
@@ -107,6 +116,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (exact_up_to->count() > 0) opt->frontier.exact_up_to = opt->sweep.exact_up_to;
       if (screen->count() > 0) opt->frontier.screen = opt->cache.screen;
       if (!opt->techniques.empty()) opt->frontier.techniques = opt->techniques;
+      model_scenes(opt->frontier.scenes, opt->frontier.model);
       validate_frontier_setup(opt->frontier);
     } else if (opt->what == "cascades") {
       if (sizes->count() > 0) opt->cascades.sizes = opt->sizes;
