@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "bench/frontier_goal.h"
 #include "bench/sweep_bench.h"
 #include "core/bounds.h"
 #include "core/error.h"
@@ -211,6 +212,7 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
     }
     out << "\n";
   }
+  print_frontier_goal(out, frontier_goal_rows(points));
 }
 
 nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::vector<FrontierPoint>& points) {
@@ -247,7 +249,8 @@ nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::v
           {"repeats", setup.repeats}, {"truth_samples", setup.truth_samples},
           {"exact_up_to", setup.exact_up_to},
           {"estimate", setup.estimate ? nlohmann::json(gpu_estimate_label(*setup.estimate)) : nlohmann::json(nullptr)},
-          {"points", list}};
+          {"points", list},
+          {"fast_against_poisson", frontier_goal_json(frontier_goal_rows(points))}};
 }
 
 Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std::string& title,

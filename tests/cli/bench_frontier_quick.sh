@@ -3,7 +3,8 @@
 # `penumbra bench frontier --quick` (through gl_or_skip.sh: exit 77 without a
 # GL context) as CI runs it: the tables with Fast PCSS's standing, a JSON with
 # its 8 points (2 scenes × 2 sizes, 128² and 256², × 2 widths), each with at least one row on the
-# frontier and the cost proxy beside the PCSS rows, and a PNG plot.
+# frontier and the cost proxy beside the PCSS rows, issue 52's rows (fast against Poisson: the
+# estimate's ratio and growth, recomputed here from the points), and a PNG plot.
 penumbra=$1 work=$2
 here=$(dirname "$0")
 rm -rf "$work" && mkdir -p "$work" || exit 1
@@ -26,7 +27,20 @@ for p in points:
     assert all(r["estimate_ms"] is not None and r["estimate_ms"] > 0 for r in p["rows"]), f"{where}: a row has no estimate"
     assert any(r["on_estimate_frontier"] for r in p["rows"]), f"{where}: no row on the estimate's frontier"
 assert doc["results"]["estimate"] == "navi21 wave64", doc["results"]["estimate"]
-print("frontier.json: 8 points, a frontier in each, fast's fetch proxy, an estimate for every row")
+# Issue 52's yardstick: a row a point, its ratios recomputed here from the points' rows.
+goal = doc["results"]["fast_against_poisson"]
+assert len(goal) == 8, f"expected 8 goal rows, found {len(goal)}"
+def est(p, t):
+    return next(r["estimate_ms"] for r in p["rows"] if r["technique"] == t)
+for g, p in zip(goal, points):
+    where = f"{p['scene']} {p['size']} x{p['width']:g}"
+    assert (g["scene"], g["size"], g["width"]) == (p["scene"], p["size"], p["width"]), where
+    assert abs(g["estimate_ratio"] - est(p, "fast") / est(p, "poisson")) <= 1e-9 * g["estimate_ratio"], where
+    first = min((q for q in points if (q["scene"], q["size"]) == (p["scene"], p["size"])), key=lambda q: q["width"])
+    assert abs(g["growth"] - est(p, "fast") / est(first, "fast")) <= 1e-9 * g["growth"], where
+    assert g["cost_bound"] == (1.0 if p["width"] == first["width"] else 2.0), where
+    assert g["closer"] == (g["fast_mae"] <= g["poisson_mae"] and g["fast_ssim"] >= g["poisson_ssim"]), where
+print("frontier.json: 8 points, a frontier in each, fast's fetch proxy, an estimate for every row, fast against Poisson at each")
 PY
 signature=$(head -c 8 "$work/frontier.png" | od -An -tx1 | tr -d ' \n')
 [ "$signature" = "89504e470d0a1a0a" ] || { echo "$work/frontier.png is not a PNG ($signature)"; exit 1; }

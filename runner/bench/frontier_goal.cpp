@@ -1,0 +1,88 @@
+#include "bench/frontier_goal.h"
+
+#include <algorithm>
+#include <iomanip>
+
+#include "core/format.h"
+#include "technique/technique_registry.h"
+
+namespace pn {
+
+namespace {
+
+const FrontierRow* row_named(const FrontierPoint& p, const char* technique) {
+  const auto it = std::find_if(p.rows.begin(), p.rows.end(), [&](const FrontierRow& r) { return r.technique == technique; });
+  return it == p.rows.end() ? nullptr : &*it;
+}
+
+std::string ratio_text(const std::optional<double>& r) { return r ? format_number("%.2f", *r) + "x" : "-"; }
+
+}  // namespace
+
+std::vector<FrontierGoalRow> frontier_goal_rows(const std::vector<FrontierPoint>& points) {
+  std::vector<FrontierGoalRow> out;
+  for (const FrontierPoint& p : points) {
+    const FrontierRow* fast = row_named(p, kFrontierDefault);
+    const FrontierRow* poisson = row_named(p, kPoissonTechnique);
+    if (!fast || !poisson) continue;
+    FrontierGoalRow g;
+    g.scene = p.scene, g.size = p.size, g.width = p.width;
+    // The smallest width of this scene and size in the run, and fast's estimate there.
+    const FrontierPoint* first = &p;
+    for (const FrontierPoint& q : points)
+      if (q.scene == p.scene && q.size == p.size && q.width < first->width && row_named(q, kFrontierDefault)) first = &q;
+    g.first_width = first == &p;
+    if (fast->estimate_ms && poisson->estimate_ms) g.estimate_ratio = *fast->estimate_ms / *poisson->estimate_ms;
+    g.time_ratio = fast->ms / poisson->ms;
+    const FrontierRow* fast_first = row_named(*first, kFrontierDefault);
+    if (fast->estimate_ms && fast_first->estimate_ms) g.growth = *fast->estimate_ms / *fast_first->estimate_ms;
+    g.fast_mae = fast->mae, g.poisson_mae = poisson->mae, g.fast_ssim = fast->ssim, g.poisson_ssim = poisson->ssim;
+    out.push_back(g);
+  }
+  return out;
+}
+
+void print_frontier_goal(std::ostream& out, const std::vector<FrontierGoalRow>& rows) {
+  if (rows.empty()) return;
+  out << "fast against " << kPoissonTechnique << " (issue 52: estimate <= 1x at the smallest width, <= 2x above; "
+      << "growth <= 2x; MAE <= and SSIM >= Poisson's):\n"
+      << std::left << std::setw(14) << "scene" << std::right << std::setw(6) << "size" << std::setw(7) << "width"
+      << std::setw(10) << "est." << std::setw(9) << "time" << std::setw(9) << "growth" << std::setw(10) << "MAE"
+      << std::setw(10) << "Poisson" << std::setw(8) << "SSIM" << std::setw(9) << "Poisson" << "  goals\n";
+  int cheap = 0, flat = 0, closer = 0;
+  for (const FrontierGoalRow& g : rows) {
+    cheap += g.cheap_enough(), flat += g.flat_enough(), closer += g.closer();
+    out << std::left << std::setw(14) << g.scene << std::right << std::setw(6) << g.size << std::setw(7)
+        << ("x" + format_number("%g", g.width)) << std::setw(10) << ratio_text(g.estimate_ratio) << std::setw(9)
+        << ratio_text(g.time_ratio) << std::setw(9) << ratio_text(g.growth) << std::setw(10)
+        << format_number("%.4f", g.fast_mae) << std::setw(10) << format_number("%.4f", g.poisson_mae) << std::setw(8)
+        << format_number("%.4f", g.fast_ssim) << std::setw(9) << format_number("%.4f", g.poisson_ssim) << "  "
+        << (g.cheap_enough() ? "cost " : "") << (g.flat_enough() ? "flat " : "") << (g.closer() ? "closer" : "") << "\n";
+  }
+  const size_t n = rows.size();
+  out << "points meeting each goal: cost " << cheap << "/" << n << ", flat " << flat << "/" << n << ", closer "
+      << closer << "/" << n << "\n";
+}
+
+nlohmann::json frontier_goal_json(const std::vector<FrontierGoalRow>& rows) {
+  nlohmann::json list = nlohmann::json::array();
+  const auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  for (const FrontierGoalRow& g : rows)
+    list.push_back({{"scene", g.scene},
+                    {"size", g.size},
+                    {"width", g.width},
+                    {"estimate_ratio", optional(g.estimate_ratio)},
+                    {"time_ratio", g.time_ratio},
+                    {"growth", optional(g.growth)},
+                    {"cost_bound", g.cost_bound()},
+                    {"fast_mae", g.fast_mae},
+                    {"poisson_mae", g.poisson_mae},
+                    {"fast_ssim", g.fast_ssim},
+                    {"poisson_ssim", g.poisson_ssim},
+                    {"cheap_enough", g.cheap_enough()},
+                    {"flat_enough", g.flat_enough()},
+                    {"closer", g.closer()}});
+  return list;
+}
+
+}  // namespace pn
