@@ -62,8 +62,8 @@
 //                            blocker sums (traversal.glsl; with PN_FAST_PCSS_ABLATIONS)
 //   PN_AREA_EDGES 1          (the default) both regions the continuous squares with area-weighted
 //                            edges (issue 51, pcss_regions.glsl's option; 0: the integer squares of
-//                            whole texels: 8 VGPRs and ~40 instructions fewer): Step 3 reads the squares' covers, the walk
-//                            weighs each part by its overlap, sampled leaves sit inside it, and a
+//                            whole texels: 8 VGPRs and ~40 instructions fewer): Step 3 reads the
+//                            squares' covers, the walk weighs each part by its overlap, sampled leaves sit inside it, and a
 //                            leaf is at most a quarter of the region's side, a region under 16 texels
 //                            a side read to its texels (pnTraversalRegionLeafSide)
 //   PN_TRAVERSAL_MAX_LEVEL, PN_REFINE_MAX_ITERATIONS   loop bounds (traversal.h, pcss_regions.h)

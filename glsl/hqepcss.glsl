@@ -44,7 +44,7 @@
 //
 // isa budget: vgprs 32, instructions 1020, code 5120, scratch 0, loop 350, loops 990
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md; the
-//   area form, the default: PN_AREA_EDGES 0 takes 916 instructions — docs/area-regions.md)
+//   area form, the default: PN_AREA_EDGES 0 takes 917 instructions — docs/area-regions.md)
 
 #ifndef PENUMBRA_HQEPCSS_GLSL
 #define PENUMBRA_HQEPCSS_GLSL

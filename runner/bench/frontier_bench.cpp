@@ -97,9 +97,8 @@ void mark_by(FrontierPoint& point, Time time, bool FrontierRow::*flag, std::opti
         r.*flag = false;
   }
   beats.reset();
-  const auto fast = std::find_if(point.rows.begin(), point.rows.end(),
-                                 [](const FrontierRow& r) { return r.technique == kFrontierDefault; });
-  if (fast == point.rows.end() || !time(*fast)) return;
+  const FrontierRow* fast = frontier_row(point, kFrontierDefault);
+  if (!fast || !time(*fast)) return;
   for (const FrontierRow& o : point.rows)
     if (o.family != fast->family && time(o) && o.mae <= fast->mae && *time(o) < *time(*fast) &&
         (!beats || *time(o) < *time(*beats)))
@@ -107,6 +106,11 @@ void mark_by(FrontierPoint& point, Time time, bool FrontierRow::*flag, std::opti
 }
 
 }  // namespace
+
+const FrontierRow* frontier_row(const FrontierPoint& point, const std::string& technique) {
+  const auto it = std::find_if(point.rows.begin(), point.rows.end(), [&](const FrontierRow& r) { return r.technique == technique; });
+  return it == point.rows.end() ? nullptr : &*it;
+}
 
 void mark_frontier(FrontierPoint& point) {
   mark_by(point, [](const FrontierRow& r) { return std::optional<double>(r.ms); }, &FrontierRow::on_frontier,
@@ -191,9 +195,8 @@ void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& p
       out << (r->on_frontier ? "  *" : "") << (r->on_estimate_frontier ? "  (est. *)" : "") << "\n";
     }
     out.unsetf(std::ios::floatfield);
-    const auto fast = std::find_if(p.rows.begin(), p.rows.end(),
-                                   [](const FrontierRow& r) { return r.technique == kFrontierDefault; });
-    if (fast != p.rows.end()) {
+    const FrontierRow* fast = frontier_row(p, kFrontierDefault);
+    if (fast) {
       out << kFrontierDefault << " on the frontier: ";
       if (!p.beats_default) out << "yes (no other technique reaches its MAE in less time)\n";
       else

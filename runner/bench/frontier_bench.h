@@ -87,6 +87,9 @@ std::vector<FrontierPoint> bench_frontier(const Context& context, const SourceTr
 // Marks rows on the Pareto frontier and finds what beats the default (no GL; the bench calls it).
 void mark_frontier(FrontierPoint& point);
 
+// The point's row of `technique` (kFrontierDefault, kPoissonTechnique, ...), or none.
+const FrontierRow* frontier_row(const FrontierPoint& point, const std::string& technique);
+
 void print_frontier_bench(std::ostream& out, const std::vector<FrontierPoint>& points,
                           const std::optional<GpuEstimateSetup>& estimate);
 nlohmann::json frontier_bench_json(const FrontierBenchSetup& setup, const std::vector<FrontierPoint>& points);

@@ -1,6 +1,5 @@
 #include "bench/frontier_goal.h"
 
-#include <algorithm>
 #include <iomanip>
 
 #include "core/format.h"
@@ -10,11 +9,6 @@ namespace pn {
 
 namespace {
 
-const FrontierRow* row_named(const FrontierPoint& p, const char* technique) {
-  const auto it = std::find_if(p.rows.begin(), p.rows.end(), [&](const FrontierRow& r) { return r.technique == technique; });
-  return it == p.rows.end() ? nullptr : &*it;
-}
-
 std::string ratio_text(const std::optional<double>& r) { return r ? format_number("%.2f", *r) + "x" : "-"; }
 
 }  // namespace
@@ -22,19 +16,19 @@ std::string ratio_text(const std::optional<double>& r) { return r ? format_numbe
 std::vector<FrontierGoalRow> frontier_goal_rows(const std::vector<FrontierPoint>& points) {
   std::vector<FrontierGoalRow> out;
   for (const FrontierPoint& p : points) {
-    const FrontierRow* fast = row_named(p, kFrontierDefault);
-    const FrontierRow* poisson = row_named(p, kPoissonTechnique);
+    const FrontierRow* fast = frontier_row(p, kFrontierDefault);
+    const FrontierRow* poisson = frontier_row(p, kPoissonTechnique);
     if (!fast || !poisson) continue;
     FrontierGoalRow g;
     g.scene = p.scene, g.size = p.size, g.width = p.width;
     // The smallest width of this scene and size in the run, and fast's estimate there.
     const FrontierPoint* first = &p;
     for (const FrontierPoint& q : points)
-      if (q.scene == p.scene && q.size == p.size && q.width < first->width && row_named(q, kFrontierDefault)) first = &q;
+      if (q.scene == p.scene && q.size == p.size && q.width < first->width && frontier_row(q, kFrontierDefault)) first = &q;
     g.first_width = first == &p;
     if (fast->estimate_ms && poisson->estimate_ms) g.estimate_ratio = *fast->estimate_ms / *poisson->estimate_ms;
     g.time_ratio = fast->ms / poisson->ms;
-    const FrontierRow* fast_first = row_named(*first, kFrontierDefault);
+    const FrontierRow* fast_first = frontier_row(*first, kFrontierDefault);
     if (fast->estimate_ms && fast_first->estimate_ms) g.growth = *fast->estimate_ms / *fast_first->estimate_ms;
     g.fast_mae = fast->mae, g.poisson_mae = poisson->mae, g.fast_ssim = fast->ssim, g.poisson_ssim = poisson->ssim;
     out.push_back(g);
