@@ -72,9 +72,10 @@
 //   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
 //   receiver stops after Step 3.
 //
-// isa budget: vgprs 40, instructions 700, code 4096, scratch 0, loop 380, loops 960
+// isa budget: vgprs 40, instructions 700, code 4096, scratch 0, loop 390, loops 960
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md; the
-//   area form, the default: PN_AREA_EDGES 0 takes 32, 647, 321 and 855 — docs/area-regions.md)
+//   area form, the default: PN_AREA_EDGES 0 takes 32, 657, 347 and 881 — docs/area-regions.md; the
+//   work budget's per-region leaf, issue 52, added 12 cycles to the region loop of 375)
 
 #ifndef PENUMBRA_FAST_PCSS_GLSL
 #define PENUMBRA_FAST_PCSS_GLSL
@@ -115,8 +116,8 @@ struct PnFastPcssResult {
 };
 
 PnFastPcssSettings pnFastPcssDefaults(float bias) {
-  return PnFastPcssSettings(bias, 1.0, PN_FAST_PCSS_REFINE_ITERATIONS, PN_REGION_EXACT, PN_FAST_PCSS_LEAF_SIDE, 0,
-                            PN_LEAF_SAMPLED, PN_FAST_PCSS_SAME_LEAF_MODE, PN_FAST_PCSS_NODE_BUDGET,
+  return PnFastPcssSettings(bias, 1.0, PN_FAST_PCSS_REFINE_ITERATIONS, PN_REGION_EXACT, PN_FAST_PCSS_LEAF_SIDE,
+                            PN_FAST_PCSS_LEAF_DIVISOR, PN_FAST_PCSS_LEAF_MODE, PN_FAST_PCSS_SAME_LEAF_MODE, PN_FAST_PCSS_NODE_BUDGET,
                             PN_DEPTH_SUMS_MIDPOINT, PN_FAST_PCSS_GRID);
 }
 
@@ -152,8 +153,8 @@ void pn_fastPcssOcclusionDone(inout PnFastPcssResult r, PnTraversal occlusion) {
 // refinements and leaf side >= 2): exact regions, sampled leaves of a fixed side, no budget, the
 // chain's midpoint sums, no grid — the walk below computes them.
 bool pn_fastPcssShipped(PnFastPcssSettings s) {
-  return s.regionMode == PN_REGION_EXACT && s.leafSide >= 2 && s.leafDivisor == 0 && s.leafMode == PN_LEAF_SAMPLED &&
-         (s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE || s.blockerLeafMode == PN_LEAF_SAMPLED) &&
+  return s.regionMode == PN_REGION_EXACT && s.leafSide >= 2 && s.leafDivisor >= 0 && pn_traversalSamples(s.leafMode) &&
+         (s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE || s.blockerLeafMode == s.leafMode) &&
          s.nodeBudget >= PN_TRAVERSAL_NO_BUDGET && s.depthSums == PN_DEPTH_SUMS_MIDPOINT && s.grid == 0;
 }
 
@@ -237,14 +238,16 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
     ivec2 node = ivec2(0);
     // Nodes of side > leafSide descend, so every leaf of the region is of one level: its sample
     // group is the region's (sample_table.glsl), not a leaf's.
+    // The leaf for the region: at least its longer side / leafDivisor (the work budget, fast_pcss.h;
+    // 0: leafSide); with PN_AREA_EDGES at most a quarter of its side, and 1 — its texels, one
+    // sample each — where that is under 4 (pnTraversalRegionLeafSide).
 #if PN_AREA_EDGES
-    // The leaf for the region (pnTraversalRegionLeafSide): at most a quarter of its side, and 1 —
-    // its texels, one sample each — where that is under 4.
-    int regionLeaf = pnTraversalRegionLeafSide(leafSide, 0, size);
-    int k = pnSampleGroupLog4(1 << min(top, findMSB(regionLeaf)));
+    int regionLeaf = pnTraversalRegionLeafSide(leafSide, s.leafDivisor, size);
 #else
-    int k = pnSampleGroupLog4(1 << min(top, findMSB(leafSide)));
+    int regionLeaf = pnTraversalLeafSide(leafSide, s.leafDivisor, size);
 #endif
+    int leafLevel = min(top, findMSB(regionLeaf));  // nodes above it descend
+    int k = pnSampleGroupLog4(pn_traversalSampleSide(s.leafMode, 1 << leafLevel));
     int m = pnSampleCount(k), first = pnSampleFirstColumn(k);
     bool empty = isnan(test.threshold) || t.texels == 0.0;
     for (int it = 0; it < PN_TRAVERSAL_CURSOR_STEPS && !empty; ++it) {
@@ -276,11 +279,7 @@ PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sample
           t.occluders += texels;
           t.depthSum += (depths.x == depths.y ? depths.x : 0.5 * (depths.x + depths.y)) * texels;
         } else if (depths.x < threshold.y) {  // ambiguous
-#if PN_AREA_EDGES
-          descend = (1 << level) > regionLeaf;
-#else
-          descend = (1 << level) > leafSide;
-#endif
+          descend = level > leafLevel;
           if (!descend) pn_fastPcssSampleLeaf(t, map, sampleTable, first, m, lo, hi, offset, scale, test, set);
         }
       }

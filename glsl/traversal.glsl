@@ -97,6 +97,16 @@ int pnTraversalRegionLeafSide(int leafSide, int leafDivisor, ivec2 regionSize) {
   return leaf >= 4 ? leaf : 1;
 }
 
+// Whether a leaf mode samples the leaf (PN_LEAF_SAMPLED, PN_LEAF_QUAD), and the side whose sample
+// group a sampled leaf of side `side` takes: its own, at most 4 for PN_LEAF_QUAD (traversal.h).
+bool pn_traversalSamples(int leafMode) {
+  return leafMode == PN_LEAF_SAMPLED || leafMode == PN_LEAF_QUAD;
+}
+
+int pn_traversalSampleSide(int leafMode, int side) {
+  return leafMode == PN_LEAF_QUAD ? min(side, 4) : side;
+}
+
 float pnTraversalBlockerMean(PnTraversal r) {
   return r.occluders > 0.0 ? r.depthSum / r.occluders : 0.0;
 }

@@ -23,6 +23,10 @@
 // planar blocker's depths are): (t - min) / (max - min) of them occlude, at
 // mean depth (min + t) / 2 — no fetch beyond the node's own.
 #define PN_LEAF_RAMP 2
+// Or the sample table's four-sample group (one sample a 2×2 stratum) for a leaf
+// of any side >= 4 — PN_LEAF_SAMPLED's for sides 2 and 4, a quarter of its 16
+// fetches for sides 8 and above (issue 52: Fast PCSS's shipped leaves).
+#define PN_LEAF_QUAD 3
 
 // Which structure a traversal reads: the paper's decreased pyramid (every
 // window origin, depth_pyramid.glsl) or the aligned min/max mip chain with a

@@ -191,10 +191,11 @@ void pn_traversalVisitLeafPart(inout PnTraversal r, sampler2D map, sampler2D mip
   pn_traversalPartOverlap(a, lo, hi, offset, scale);
   float weight = scale.x * scale.y;  // pnRegionAreaOver(a, lo, hi)
   if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, weight, test, depthSums, range)) return;
-  if (leafMode != PN_LEAF_SAMPLED) {
+  if (!pn_traversalSamples(leafMode)) {
     pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, weight, pn_traversalTestAtCentre(test, lo, hi));
   } else {
-    pn_traversalSampleLeafMip(r, map, sampleTable, lo, hi, offset, scale, 1 << level, test, pixel);
+    pn_traversalSampleLeafMip(r, map, sampleTable, lo, hi, offset, scale, pn_traversalSampleSide(leafMode, 1 << level),
+                              test, pixel);
   }
 }
 
@@ -350,10 +351,10 @@ PnTraversal pn_gridAreaMip(sampler2D map, sampler2D mip, sampler2D sampleTable, 
   ivec2 count = ((end - 1) >> level) - first + 1;  // <= cells + 1 a side
   // One sample group for every leaf (the pixel's set of the group for
   // min(side, leafSide)): its positions read once, not once a leaf.
-  int k = pnSampleGroupLog4(min(side, max(leafSide, 1)));
+  int k = pnSampleGroupLog4(pn_traversalSampleSide(leafMode, min(side, max(leafSide, 1))));
   int m = pnSampleCount(k);
   vec2 positions[PN_SAMPLE_MAX_COUNT];
-  if (leafMode == PN_LEAF_SAMPLED) {
+  if (pn_traversalSamples(leafMode)) {
     int firstColumn = pnSampleFirstColumn(k), set = pnSampleSet(pixel);
     for (int i = 0; i < PN_SAMPLE_MAX_COUNT; ++i) positions[i] = i < m ? pnSample(sampleTable, firstColumn + i, set) : vec2(0.0);
   }
@@ -368,7 +369,7 @@ PnTraversal pn_gridAreaMip(sampler2D map, sampler2D mip, sampler2D sampleTable, 
       float weight = scale.x * scale.y;  // pnRegionAreaOver(area, lo, hi)
       vec2 range;
       if (!pn_traversalClassifyPart(r, mip, shape, level, origin, lo, hi, weight, test, depthSums, range)) continue;
-      if (leafMode != PN_LEAF_SAMPLED) {
+      if (!pn_traversalSamples(leafMode)) {
         pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, weight, pn_traversalTestAtCentre(test, lo, hi));
       } else {
         float occluding = 0.0, depthSum = 0.0;

@@ -121,11 +121,12 @@ void pn_traversalVisitLeaf(inout PnTraversal r, sampler2DArray pyramid, sampler2
   pn_traversalPartOverlap(a, origin, origin + side, offset, scale);
   float weight = scale.x * scale.y;  // pnRegionAreaOver(a, origin, origin + side)
   if (!pn_traversalClassify(r, pyramid, level, origin, weight, test, range)) return;
-  if (leafMode != PN_LEAF_SAMPLED) {
+  if (!pn_traversalSamples(leafMode)) {
     pn_traversalEstimateLeaf(r, leafMode, range.x, range.y, weight,
                             pn_traversalTestAtCentre(test, origin, origin + side));
   } else {
-    pn_traversalSampleLeaf(r, pyramid, sampleTable, origin, origin + side, offset, scale, side, test, pixel);
+    pn_traversalSampleLeaf(r, pyramid, sampleTable, origin, origin + side, offset, scale,
+                           pn_traversalSampleSide(leafMode, side), test, pixel);
   }
 }
 
@@ -179,7 +180,8 @@ PnTraversal pnTraverseAreaPlane(sampler2DArray pyramid, sampler2D sampleTable, P
         r.nodes += 1;
         vec2 offset, scale;
         pn_traversalPartOverlap(area, lo, hi, offset, scale);
-        pn_traversalSampleLeaf(r, pyramid, sampleTable, lo, hi, offset, scale, side, t, pixel);
+        pn_traversalSampleLeaf(r, pyramid, sampleTable, lo, hi, offset, scale, pn_traversalSampleSide(leafMode, side), t,
+                               pixel);
       }
     } else {
       r.nodes += 1;  // outside the region: visited, nothing to read

@@ -17,11 +17,11 @@ const pn::ModuleCheck& fast_pcss() { return pn::find_module_check("fast_pcss"); 
 
 TEST_CASE("the one calls equal the staged passes in compute and fragment stage, and exact PCSS with everything off") {
   const auto results = pn::test::run_check(fast_pcss(), PENUMBRA_GLSL_DIR);
-  // 3 scenes × 13 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
+  // 3 scenes × 14 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
   // fragment vs compute (the staged passes take no plane) + 3 scenes × 2 stages vs the CPU × (all off and exact, and
   // with area-weighted edges all off, exact and HQEPCSS at leaf 1, without the plane; all off, exact and HQEPCSS at
   // leaf 1 with it).
-  CHECK(results.size() == 3 * 13 * 2 + 3 * 6 + 3 * 2 * (5 + 3));
+  CHECK(results.size() == 3 * 14 * 2 + 3 * 6 + 3 * 2 * (5 + 3));
   pn::test::check_all_pass(results);
 }
 
@@ -36,10 +36,27 @@ TEST_CASE("negative: a copy that halves Fast PCSS's occluded fraction fails in b
     if (named(r, ": poisson") || named(r, ": exact") || named(r, ": hqepcss")) CHECK(r.comparison.pass);
     else if (named(r, "vs the staged passes") || named(r, "brute force")) fast_failing += r.comparison.pass ? 0 : 1;
   }
-  // The quick run's scene (the tall blocker): six fast settings vs the staged passes (four, and two with
+  // The quick run's scene (the tall blocker): seven fast settings vs the staged passes (five, and two with
   // area-weighted edges); all off, without and with the plane and with area-weighted edges, in both stages vs the CPU.
-  CHECK(fast_failing == 6 + 2 * 3);
+  CHECK(fast_failing == 7 + 2 * 3);
   CHECK(pn::test::failing_cases(results) == fast_failing);  // the fragment shader still equals the compute pass
+}
+
+TEST_CASE("negative: a shipped walk that ignores the work budget fails against the staged passes, the rest passes") {
+  // Issue 52 (fast_pcss.h): the leaves' divisor dropped (leaves of leafSide at every width), and
+  // every quad leaf of side 8 or more sampled 16 times — two mistakes in one copy (the suite's time),
+  // each failing its own setting: the budget binding at leaf 2, and the shipped defaults.
+  const pn::test::BrokenCopy copy(
+      "fast_pcss.glsl",
+      {{"pnTraversalLeafSide(leafSide, s.leafDivisor, size)", "pnTraversalLeafSide(leafSide, 0, size)"},
+       {"pn_traversalSampleSide(s.leafMode, 1 << min(top", "pn_traversalSampleSide(PN_LEAF_SAMPLED, 1 << min(top"}});
+  REQUIRE(copy.found());
+  const auto results = pn::test::run_check(fast_pcss(), copy.root(), pn::test::kQuick);
+  for (const auto& r : results)
+    if (!r.comparison.pass) INFO(r.name << ": " << r.comparison.where(r.tolerance));
+  CHECK(pn::test::failing_named(results, ": fast: one call in a compute pass vs the staged passes") == 1);
+  CHECK(pn::test::failing_named(results, "(the work budget binding): one call in a compute pass vs the staged") == 1);
+  CHECK(pn::test::failing_cases(results) == 2);
 }
 
 TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fails only against the compute pass") {

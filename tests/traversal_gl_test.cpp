@@ -24,3 +24,12 @@ TEST_CASE("negative: a traversal that drops a child fails the exact check") {
   REQUIRE(copy.found());
   CHECK(failing_cases(run_check(pn::find_module_check("traversal"), copy.root(), pn::test::kQuick)) > 0);
 }
+
+TEST_CASE("negative: quad leaves sampled as the paper's (16 samples from side 8) fail the quad cases only") {
+  // Issue 52 (traversal.h's PN_LEAF_QUAD): the 4-sample group's cap dropped.
+  const BrokenCopy copy("traversal.glsl", "return leafMode == PN_LEAF_QUAD ? min(side, 4) : side;", "return side;");
+  REQUIRE(copy.found());
+  const auto results = run_check(pn::find_module_check("traversal"), copy.root(), pn::test::kQuick);
+  CHECK(pn::test::failing_named(results, " quad ") > 0);
+  CHECK(failing_cases(results) == pn::test::failing_named(results, " quad "));
+}

@@ -513,7 +513,7 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
       glsl::PnFastPcssExport fast_defaults = exact_fast_block(scene.light, bias, 1.0f), fast_header = fast_defaults;
       fast_defaults.filterScale = 0.0f;
       fast_header.refineIterations = PN_FAST_PCSS_REFINE_ITERATIONS, fast_header.regionMode = PN_REGION_EXACT;
-      fast_header.leafSide = PN_FAST_PCSS_LEAF_SIDE, fast_header.leafDivisor = 0, fast_header.leafMode = PN_LEAF_SAMPLED;
+      fast_header.leafSide = PN_FAST_PCSS_LEAF_SIDE, fast_header.leafDivisor = PN_FAST_PCSS_LEAF_DIVISOR, fast_header.leafMode = PN_FAST_PCSS_LEAF_MODE;
       fast_header.blockerLeafMode = PN_FAST_PCSS_SAME_LEAF_MODE, fast_header.nodeBudget = PN_FAST_PCSS_NODE_BUDGET;
       fast_header.depthSums = PN_DEPTH_SUMS_MIDPOINT, fast_header.grid = PN_FAST_PCSS_GRID;
       const std::vector<QueryTexture> fast_textures{{PN_EXPORT_DEPTH_MAP_BINDING, *map}, {PN_EXPORT_FAST_MIP_BINDING, *mip.texture},

@@ -50,7 +50,7 @@ Image channel(const Image& image, int c) {
 }
 
 // The settings the one calls are checked with: the shipped defaults, the
-// paper's windows with a growing leaf and min-estimated blocker leaves (every
+// shipped walk at leaf 2 with a divisor of 4 (where the work budget binds), the paper's windows with a growing leaf and min-estimated blocker leaves (every
 // per-pixel option of pnFastPcss), every improvement off, Poisson PCSS, exact
 // PCSS and HQEPCSS.
 std::vector<PcssSettings> one_call_settings() {
@@ -60,6 +60,13 @@ std::vector<PcssSettings> one_call_settings() {
   windows.leaf_side = 4;
   windows.leaf_divisor = 8;
   windows.blocker_leaf_mode = LeafMode::min;
+  // The work budget where it binds on the check's 128² maps, whose regions are mostly under 64 texels
+  // (fast_pcss.h: leaves of at least a region's side / the divisor): the shipped walk at leaf 2 with
+  // a divisor of 4, so leaves of 4 from side 16 on, 8 from 32; quad leaves.
+  PcssSettings budget = fast_pcss();
+  budget.name = "fast, leaf 2, leaf divisor 4 (the work budget binding)";
+  budget.leaf_side = 2;
+  budget.leaf_divisor = 4;
   PcssSettings poisson_fewer = poisson_pcss();
   poisson_fewer.name = "poisson, 16 / 32 samples, c 0.5";
   poisson_fewer.blocker_samples = 16;
@@ -90,9 +97,9 @@ std::vector<PcssSettings> one_call_settings() {
   PcssSettings hqepcss_exact_area = hqepcss_exact;
   hqepcss_exact_area.name += ", area-weighted edges";
   hqepcss_exact_area.edges = true;
-  std::vector<PcssSettings> out{fast_pcss(),   windows,      grid,         fast_pcss_all_off(), poisson_pcss(),
-                                poisson_fewer, exact_pcss(), exact_area,   hqepcss(),           fast_area,
-                                fast_all_off_area, hqepcss_area, hqepcss_exact_area};
+  std::vector<PcssSettings> out{fast_pcss(),   budget,       windows,      grid,         fast_pcss_all_off(),
+                                poisson_pcss(), poisson_fewer, exact_pcss(), exact_area, hqepcss(),
+                                fast_area,     fast_all_off_area, hqepcss_area, hqepcss_exact_area};
   // With the receiver plane from the G-buffer's neighbours (receiver_plane.glsl): every one call takes one.
   for (PcssSettings s : {fast_pcss(), fast_pcss_all_off(), exact_pcss(), poisson_pcss(), hqepcss(), hqepcss_exact}) {
     s.name += ", receiver plane";

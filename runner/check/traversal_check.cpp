@@ -338,8 +338,9 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
       leaf_queries.push_back({r, random.uniform_float(rs[0], rs[4]), random.uniform_int(0, 1023), random.uniform_int(0, 1023)});
     }
     for (const Structure& st : structures)
-      for (LeafMode mode : {LeafMode::sampled, LeafMode::min, LeafMode::ramp})
+      for (LeafMode mode : {LeafMode::sampled, LeafMode::quad, LeafMode::min, LeafMode::ramp})
         for (int leaf : {2, 4, 8, 16}) {
+          if (mode == LeafMode::quad && leaf < 8) continue;  // quad leaves of side <= 4 are sampled ones
           TraversalSettings s;
           s.leaf_side = leaf, s.leaf_mode = mode, s.bias = 0.001f;
           // The mip chain's other depth sums: none (Step 5) and midpoint (no table).
@@ -347,7 +348,11 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
           const auto expected = recursion(st, scene, leaf_queries, s);
           const auto observed = observe(st, scene, leaf_queries, s);
           add_comparison(results,
-                         label + st.label + (mode == LeafMode::sampled ? " sampled" : mode == LeafMode::min ? " min (HQEPCSS)" : " ramp") +
+                         label + st.label +
+                             (mode == LeafMode::sampled ? " sampled"
+                              : mode == LeafMode::quad  ? " quad (4 samples)"
+                              : mode == LeafMode::min   ? " min (HQEPCSS)"
+                                                        : " ramp") +
                              " leaves, side " + std::to_string(leaf) + ":",
                          scene, expected, observed, expected, true, s.depth_sums != DepthSums::none,
                          mode == LeafMode::ramp);
@@ -355,25 +360,32 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
 
     // Fast PCSS's leaf side for a region (pnTraversalRegionLeafSide): leaf side 16 over regions of side
     // 16…256, the leaf at most a quarter of the region's side (a power of two), 1 under 4: the
-    // recursion with that side (4 at side 16, 8 at 32, 16 from 64 on).
-    for (const Structure& st : structures) {
-      if (!st.mip) continue;
-      TraversalSettings s;
-      s.leaf_side = 16, s.region_leaf = true, s.bias = 0.001f;
-      std::vector<TraversalResult> expected;
-      for (const TraversalQuery& q : leaf_queries) {
-        TraversalSettings own = s;
-        int quarter = 1;
-        while (quarter * 2 <= std::max(q.region.width, q.region.height) / 4) quarter *= 2;
-        own.leaf_side = std::min(s.leaf_side, quarter);
-        if (own.leaf_side < 4) own.leaf_side = 1;
-        expected.push_back(recursion(st, scene, {q}, own)[0]);
+    // recursion with that side (4 at side 16, 8 at 32, 16 from 64 on). And with the shipped work
+    // budget (issue 52, fast_pcss.h): leaves of at least the region's side / 8 (32 at side 256), of 4
+    // samples each.
+    for (const Structure& st : structures)
+      for (const auto& [divisor, mode] : {std::pair{0, LeafMode::sampled}, {8, LeafMode::quad}}) {
+        if (!st.mip) continue;
+        TraversalSettings s;
+        s.leaf_side = 16, s.region_leaf = true, s.leaf_divisor = divisor, s.leaf_mode = mode, s.bias = 0.001f;
+        std::vector<TraversalResult> expected;
+        for (const TraversalQuery& q : leaf_queries) {
+          TraversalSettings own = s;
+          const int longer = std::max(q.region.width, q.region.height);
+          int quarter = 1;
+          while (quarter * 2 <= longer / 4) quarter *= 2;
+          own.leaf_side = std::min(std::max(s.leaf_side, divisor > 0 ? longer / divisor : 0), quarter);
+          if (own.leaf_side < 4) own.leaf_side = 1;
+          expected.push_back(recursion(st, scene, {q}, own)[0]);
+        }
+        const auto observed = observe(st, scene, leaf_queries, s);
+        add_comparison(results,
+                       label + st.label +
+                           (divisor > 0 ? " quad leaves of side max(16, the region's side / 8)"
+                                        : " sampled leaves of side 16") +
+                           ", at most a quarter of the region's side:",
+                       scene, expected, observed, expected, true, true, false);
       }
-      const auto observed = observe(st, scene, leaf_queries, s);
-      add_comparison(results,
-                     label + st.label + " sampled leaves of side 16, at most a quarter of the region's side:",
-                     scene, expected, observed, expected, true, true, false);
-    }
 
     // The leaf side from the region (pnTraversalLeafSide's divisor, Fast PCSS's `leafDivisor`): the
     // recursion with the side the definition gives, max(leaf, the region's longer side / divisor);

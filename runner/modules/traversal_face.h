@@ -7,7 +7,10 @@
 
 namespace pn {
 
-enum class LeafMode { sampled = PN_LEAF_SAMPLED, min = PN_LEAF_MIN, ramp = PN_LEAF_RAMP };
+enum class LeafMode { sampled = PN_LEAF_SAMPLED, min = PN_LEAF_MIN, ramp = PN_LEAF_RAMP, quad = PN_LEAF_QUAD };
+
+// Whether a leaf mode samples the leaf from the sample table (sampled, quad: traversal.h).
+inline bool sampled_leaves(LeafMode mode) { return mode == LeafMode::sampled || mode == LeafMode::quad; }
 
 // The depth sums of the mip chain's wholly occluding nodes (glsl/traversal.h).
 enum class DepthSums { none = PN_DEPTH_SUMS_NONE, table = PN_DEPTH_SUMS_TABLE, midpoint = PN_DEPTH_SUMS_MIDPOINT };

@@ -157,6 +157,8 @@ PcssSettings fast_pcss() {
   s.depth_sums = DepthSums::midpoint;
   s.refine_iterations = kFastPcssRefineIterations;
   s.leaf_side = kFastPcssLeafSide;
+  s.leaf_divisor = kFastPcssLeafDivisor;  // the work budget (fast_pcss.h): leaves of at least the region's side / 8,
+  s.leaf_mode = kFastPcssLeafMode;        // each of 4 samples
   s.search_tile = s.filter_tile = 0;
   s.blur = false;
   s.blur_params.adaptive = true;  // when switched on (fast-blur): the radius follows the filter size
@@ -174,6 +176,8 @@ PcssSettings fast_pcss_all_off() {
   s.name = "fast-all-off";
   s.refine_iterations = 0;
   s.leaf_side = 1;
+  s.leaf_divisor = 0;  // leaves of side 1 at every width
+  s.leaf_mode = LeafMode::sampled;
   s.depth_sums = DepthSums::table;  // exact blocker sums: the mip chain's traversal at leaf 1 is brute force
   s.search_tile = s.filter_tile = 0;
   s.region = RegionMode::exact;
@@ -203,7 +207,8 @@ void set_pcss_setting(PcssSettings& s, const std::string& key, const std::string
     if (value == "sampled") return LeafMode::sampled;
     if (value == "min") return LeafMode::min;
     if (value == "ramp") return LeafMode::ramp;
-    throw bad("sampled, min or ramp");
+    if (value == "quad") return LeafMode::quad;
+    throw bad("sampled, quad, min or ramp");
   };
   const auto estimator = [&] {
     if (value == "scan") return Estimator::scan;

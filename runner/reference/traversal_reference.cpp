@@ -72,10 +72,12 @@ void estimate_leaf(LeafMode mode, double lo, double hi, double texels, double t,
   r.depth_sum += fraction * texels * 0.5 * (lo + std::min(t, hi));
 }
 
-// Eq. 5 and 6 over the w×h rectangle at (x, y) with the §3.2 samples of a node of side `side`.
+// Eq. 5 and 6 over the w×h rectangle at (x, y) with the §3.2 samples of a node of side `side` —
+// with quad leaves those of a node of side at most 4: the 2×2 group of 4 samples (traversal.h).
 void sample_rect(const Image& depth, const SampleTable& table, float t, const TraversalParams& p, int x, int y, int w,
                  int h, int side, TraversalResult& r) {
-  const SampleSelection s = select_samples(side, p.pixel_x, p.pixel_y);
+  const int group_side = p.leaf_mode == LeafMode::quad ? std::min(side, 4) : side;
+  const SampleSelection s = select_samples(group_side, p.pixel_x, p.pixel_y);
   int occluding = 0;
   float depth_sum = 0.0f;
   for (int column = s.first_column; column <= s.last_column; ++column) {
@@ -126,7 +128,7 @@ class Recursion {
         r_.depth_sum += sum;
       } else if (lo < t_) {  // some do
         if (side > p_.leaf_side && !spent) children(level, ox, oy);
-        else if (p_.leaf_mode != LeafMode::sampled) estimate_leaf(p_.leaf_mode, lo, hi, texels, t_, r_);
+        else if (!sampled_leaves(p_.leaf_mode)) estimate_leaf(p_.leaf_mode, lo, hi, texels, t_, r_);
         else sample(ox, oy, side, side, side);
       }
     } else if (!spent) {
@@ -234,7 +236,7 @@ class AlignedRecursion {
     }
     if (!(lo < t_)) return;  // none does
     if (side <= p_.leaf_side || spent) {
-      if (p_.leaf_mode != LeafMode::sampled) estimate_leaf(p_.leaf_mode, lo, hi, part.texels(), t_, r_);
+      if (!sampled_leaves(p_.leaf_mode)) estimate_leaf(p_.leaf_mode, lo, hi, part.texels(), t_, r_);
       else sample(part, side);
     } else if (level == 1) {  // four texels, classified at once
       r_.nodes += 4;
@@ -292,7 +294,7 @@ TraversalResult grid_count(const Image& depth, const SampleTable& table, const R
       }
       if (!(lo < t)) continue;
       const double part = static_cast<double>(hx - lx) * (hy - ly);
-      if (p.leaf_mode != LeafMode::sampled) estimate_leaf(p.leaf_mode, lo, hi, part, t, r);
+      if (!sampled_leaves(p.leaf_mode)) estimate_leaf(p.leaf_mode, lo, hi, part, t, r);
       else sample_rect(depth, table, t, p, lx, ly, hx - lx, hy - ly, std::min(side, std::max(p.leaf_side, 1)), r);
     }
   return r;

@@ -24,10 +24,10 @@ const std::vector<TechniqueEntry>& technique_registry() {
       {.name = "fast-paper", .summary = "Fast PCSS (seed 000) with the paper's settings: decreased pyramid, power-of-two windows, leaf 8, reuse, blur",
        .make = []() -> Made { return pcss_config(fast_paper_pcss()); }, .family = "fast", .frontier = {}},
       {.name = "fast", .summary = "Fast PCSS as shipped, one pass (pnFastPcss): exact regions over the aligned mip chain, refined search, "
-                "leaf 16, the receiver-plane depth bias (slopes to tan 1; the staged passes need receiver-plane=off)",
+                "leaf 16, leaves of at least the region's side / 8 of 4 samples each (the work budget), the receiver-plane depth bias (slopes to tan 1; the staged passes need receiver-plane=off)",
        .make = []() -> Made { return pcss_config(shipped_fast_pcss()); },
        .frontier = {"", ":receiver-plane=off", ":grid=4", ":grid=2", ":leaf=4", ":leaf=8", ":leaf=32",
-                     ":leaf-divisor=8", ":leaf-divisor=16"}},
+                     ":leaf-divisor=0:leaf-mode=sampled", ":leaf-divisor=16"}},
       {.name = "fast-no-refine", .summary = "Fast PCSS without Step 3's refinement", .make = []() -> Made { return pcss_ablation("fast-no-refine", "refine", "0"); },
        .family = "fast", .rendered = false, .frontier = {}},
       {.name = "fast-leaf-1", .summary = "Fast PCSS with leaf side 1 (no sampled leaves; counts exact)",
