@@ -18,9 +18,15 @@
 //   bound, leaves of PN_FAST_PCSS_LEAF_SIDE at every width);
 // - leafMode: an ambiguous leaf is estimated from the sample table's 4-sample group whatever its
 //   side (PN_LEAF_QUAD), not from 16 samples for sides 8 and above (PN_LEAF_SAMPLED, the paper's).
-// leafDivisor 0 with PN_LEAF_SAMPLED is the unbounded walk the budget is measured against.
+// leafDivisor 0 with PN_LEAF_SAMPLED is the unbounded walk the budget is measured against. An engine
+// may define either before the include to change pnFastPcssDefaults' budget (the runner does, for
+// `fast:leaf-divisor=D:leaf-mode=M`: the call as an engine would compile it).
+#ifndef PN_FAST_PCSS_LEAF_DIVISOR
 #define PN_FAST_PCSS_LEAF_DIVISOR 8
+#endif
+#ifndef PN_FAST_PCSS_LEAF_MODE
 #define PN_FAST_PCSS_LEAF_MODE PN_LEAF_QUAD
+#endif
 // Nodes a traversal may visit before it stops descending: no bound.
 #define PN_FAST_PCSS_NODE_BUDGET PN_TRAVERSAL_NO_BUDGET
 // Steps 4 and 5 traverse (0), or count over a grid of this many cells a side (pnGridRegionMip).

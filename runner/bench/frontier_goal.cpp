@@ -1,5 +1,6 @@
 #include "bench/frontier_goal.h"
 
+#include <algorithm>
 #include <iomanip>
 
 #include "core/format.h"
@@ -10,8 +11,15 @@ namespace pn {
 namespace {
 
 std::string ratio_text(const std::optional<double>& r) { return r ? format_number("%.2f", *r) + "x" : "-"; }
+std::string value_text(const std::optional<double>& v) { return v ? format_number("%.4f", *v) : "-"; }
 
 }  // namespace
+
+std::vector<std::string> with_unbounded_walk(std::vector<std::string> techniques) {
+  const auto has = [&](const std::string& t) { return std::find(techniques.begin(), techniques.end(), t) != techniques.end(); };
+  if (has(kFrontierDefault) && has(kPoissonTechnique) && !has(kFastUnbounded)) techniques.push_back(kFastUnbounded);
+  return techniques;
+}
 
 std::vector<FrontierGoalRow> frontier_goal_rows(const std::vector<FrontierPoint>& points) {
   std::vector<FrontierGoalRow> out;
@@ -31,6 +39,11 @@ std::vector<FrontierGoalRow> frontier_goal_rows(const std::vector<FrontierPoint>
     const FrontierRow* fast_first = frontier_row(*first, kFrontierDefault);
     if (fast->estimate_ms && fast_first->estimate_ms) g.growth = *fast->estimate_ms / *fast_first->estimate_ms;
     g.fast_mae = fast->mae, g.poisson_mae = poisson->mae, g.fast_ssim = fast->ssim, g.poisson_ssim = poisson->ssim;
+    if (const FrontierRow* unbounded = frontier_row(p, kFastUnbounded)) {
+      g.unbounded_mae = unbounded->mae, g.unbounded_ssim = unbounded->ssim;
+      if (unbounded->estimate_ms && poisson->estimate_ms)
+        g.unbounded_estimate_ratio = *unbounded->estimate_ms / *poisson->estimate_ms;
+    }
     out.push_back(g);
   }
   return out;
@@ -39,18 +52,22 @@ std::vector<FrontierGoalRow> frontier_goal_rows(const std::vector<FrontierPoint>
 void print_frontier_goal(std::ostream& out, const std::vector<FrontierGoalRow>& rows) {
   if (rows.empty()) return;
   out << "fast against " << kPoissonTechnique << " (issue 52: estimate <= 1x at the smallest width, <= 2x above; "
-      << "growth <= 2x; MAE <= and SSIM >= Poisson's):\n"
+      << "growth <= 2x; MAE <= and SSIM >= Poisson's; 'unbounded': " << kFastUnbounded << "):\n"
       << std::left << std::setw(14) << "scene" << std::right << std::setw(6) << "size" << std::setw(7) << "width"
-      << std::setw(10) << "est." << std::setw(9) << "time" << std::setw(9) << "growth" << std::setw(10) << "MAE"
-      << std::setw(10) << "Poisson" << std::setw(8) << "SSIM" << std::setw(9) << "Poisson" << "  goals\n";
+      << std::setw(10) << "est." << std::setw(11) << "unbounded" << std::setw(9) << "time" << std::setw(9) << "growth"
+      << std::setw(10) << "MAE"
+      << std::setw(10) << "Poisson" << std::setw(11) << "unbounded" << std::setw(8) << "SSIM" << std::setw(9)
+      << "Poisson" << std::setw(11) << "unbounded" << "  goals\n";
   int cheap = 0, flat = 0, closer = 0;
   for (const FrontierGoalRow& g : rows) {
     cheap += g.cheap_enough(), flat += g.flat_enough(), closer += g.closer();
     out << std::left << std::setw(14) << g.scene << std::right << std::setw(6) << g.size << std::setw(7)
-        << ("x" + format_number("%g", g.width)) << std::setw(10) << ratio_text(g.estimate_ratio) << std::setw(9)
+        << ("x" + format_number("%g", g.width)) << std::setw(10) << ratio_text(g.estimate_ratio) << std::setw(11)
+        << ratio_text(g.unbounded_estimate_ratio) << std::setw(9)
         << ratio_text(g.time_ratio) << std::setw(9) << ratio_text(g.growth) << std::setw(10)
-        << format_number("%.4f", g.fast_mae) << std::setw(10) << format_number("%.4f", g.poisson_mae) << std::setw(8)
-        << format_number("%.4f", g.fast_ssim) << std::setw(9) << format_number("%.4f", g.poisson_ssim) << "  "
+        << format_number("%.4f", g.fast_mae) << std::setw(10) << format_number("%.4f", g.poisson_mae) << std::setw(11)
+        << value_text(g.unbounded_mae) << std::setw(8) << format_number("%.4f", g.fast_ssim) << std::setw(9)
+        << format_number("%.4f", g.poisson_ssim) << std::setw(11) << value_text(g.unbounded_ssim) << "  "
         << (g.cheap_enough() ? "cost " : "") << (g.flat_enough() ? "flat " : "") << (g.closer() ? "closer" : "") << "\n";
   }
   const size_t n = rows.size();
@@ -73,6 +90,9 @@ nlohmann::json frontier_goal_json(const std::vector<FrontierGoalRow>& rows) {
                     {"poisson_mae", g.poisson_mae},
                     {"fast_ssim", g.fast_ssim},
                     {"poisson_ssim", g.poisson_ssim},
+                    {"unbounded_estimate_ratio", optional(g.unbounded_estimate_ratio)},
+                    {"unbounded_mae", optional(g.unbounded_mae)},
+                    {"unbounded_ssim", optional(g.unbounded_ssim)},
                     {"cheap_enough", g.cheap_enough()},
                     {"flat_enough", g.flat_enough()},
                     {"closer", g.closer()}});

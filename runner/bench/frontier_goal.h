@@ -3,6 +3,8 @@
 // SSIM against the truth side by side — and the growth of its estimate from the scene and size's
 // smallest width. The goal: the estimate at most Poisson's at the smallest width and at most twice
 // it at the others, the growth at most 2, and MAE <= Poisson's with SSIM >= Poisson's everywhere.
+// Beside them, what the work budget gave up: MAE and SSIM of the unbounded walk (kFastUnbounded),
+// which bench_frontier runs with every run that has both.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -15,6 +17,14 @@
 
 namespace pn {
 
+// Fast PCSS without its work budget (fast_pcss.h: leaves of leafSide at every width, 16 samples from
+// side 8): the walk the budget is measured against, compiled as an engine that sets that budget would
+// (shipped_call_settings: pnFastPcssDefaults with PN_FAST_PCSS_LEAF_DIVISOR 0 and _MODE sampled).
+inline constexpr const char* kFastUnbounded = "fast:leaf-divisor=0:leaf-mode=sampled";
+
+// The run's techniques with kFastUnbounded appended where it has `fast` and `poisson` but not it.
+std::vector<std::string> with_unbounded_walk(std::vector<std::string> techniques);
+
 struct FrontierGoalRow {
   std::string scene;
   int size = 0;
@@ -24,6 +34,8 @@ struct FrontierGoalRow {
   double time_ratio = 0.0;                // fast / poisson, the run's medians (llvmpipe here)
   std::optional<double> growth;           // fast's estimate / its estimate at the smallest width
   double fast_mae = 0.0, poisson_mae = 0.0, fast_ssim = 0.0, poisson_ssim = 0.0;
+  std::optional<double> unbounded_mae, unbounded_ssim;  // kFastUnbounded's, where the point ran it
+  std::optional<double> unbounded_estimate_ratio;       // kFastUnbounded / poisson on the GPU estimate
 
   double cost_bound() const { return first_width ? 1.0 : 2.0; }
   bool cheap_enough() const { return estimate_ratio && *estimate_ratio <= cost_bound(); }

@@ -19,7 +19,13 @@ Canvas draw_line_charts(const std::string& title, const std::vector<ChartPanel>&
   const Font font;
   const Rgb ink{20, 20, 20}, grid{225, 225, 225};
   const int text = 13, panel_w = 460, panel_h = 330, left = 62, right = 16, top = 62, bottom = 44, gap = 24;
-  const size_t legend_items = panels.empty() ? 0 : panels.front().series.size();
+  // The legend: every label once, in the order the panels first use it.
+  std::vector<const ChartSeries*> legend;
+  for (const ChartPanel& panel : panels)
+    for (const ChartSeries& s : panel.series)
+      if (std::none_of(legend.begin(), legend.end(), [&](const ChartSeries* l) { return l->label == s.label; }))
+        legend.push_back(&s);
+  const size_t legend_items = legend.size();
   const int legend_rows = static_cast<int>((legend_items + 2) / 3);
   const int count = static_cast<int>(panels.size());
   const int per_row = columns > 0 ? std::min(columns, std::max(count, 1)) : std::max(count, 1);
@@ -84,7 +90,7 @@ Canvas draw_line_charts(const std::string& title, const std::vector<ChartPanel>&
   // The legend.
   const int ly = std::max(rows, 1) * row_h + 6;
   for (size_t i = 0; i < legend_items; ++i) {
-    const ChartSeries& s = panels.front().series[i];
+    const ChartSeries& s = *legend[i];
     const int x = left + static_cast<int>(i % 3) * 300, y = ly + static_cast<int>(i / 3) * (text + 8);
     canvas.line(x, y + text / 2, x + 30, y + text / 2, s.colour, 2, s.dashed ? 6 : 0);
     canvas.text(font, x + 38, y, s.label, text - 1, ink);

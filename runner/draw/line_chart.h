@@ -27,7 +27,8 @@ struct ChartPanel {
   bool log_x = false;  // x on a log scale (x > 0; ticks at 1, 2, 5 × 10^k)
 };
 
-// `title` above the panels; the legend (every label of the first panel) below them. `columns`
+// `title` above the panels; the legend (every label once, in the order the panels first use it)
+// below them. `columns`
 // panels a row (0: all in one row).
 Canvas draw_line_charts(const std::string& title, const std::vector<ChartPanel>& panels, int columns = 0);
 

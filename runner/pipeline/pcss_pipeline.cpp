@@ -332,7 +332,13 @@ static_assert(static_cast<int>(OneCall::fast) == PN_ONE_CALL_FAST && static_cast
 static std::vector<Define> one_call_defines(OneCall call, bool record_work, const PcssSettings& settings) {
   std::vector<Define> out{{"PN_PCSS_ONE_CALL", std::to_string(static_cast<int>(call))},
                           {"PN_PCSS_WRITE_WORK", record_work ? "true" : "false"}};
-  if (shipped_call_settings(settings)) out.push_back({"PN_PCSS_ENGINE_FORM", "1"});
+  if (shipped_call_settings(settings)) {
+    out.push_back({"PN_PCSS_ENGINE_FORM", "1"});
+    if (call == OneCall::fast) {  // its work budget, as an engine sets it (fast_pcss.h)
+      out.push_back({"PN_FAST_PCSS_LEAF_DIVISOR", std::to_string(settings.leaf_divisor)});
+      out.push_back({"PN_FAST_PCSS_LEAF_MODE", std::to_string(static_cast<int>(settings.leaf_mode))});
+    }
+  }
   return with_area_edges(out, settings);
 }
 

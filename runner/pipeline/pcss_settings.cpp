@@ -89,10 +89,14 @@ std::optional<OneCall> one_call(const PcssSettings& s) {
 bool shipped_call_settings(const PcssSettings& s) {
   const std::optional<OneCall> call = one_call(s);
   if (!call || *call == OneCall::exact) return false;
-  const PcssSettings d = *call == OneCall::fast      ? fast_pcss()
-                         : *call == OneCall::poisson ? poisson_pcss()
-                         : *call == OneCall::vogel   ? vogel_pcss()
-                                                     : hqepcss();
+  PcssSettings d = *call == OneCall::fast      ? fast_pcss()
+                   : *call == OneCall::poisson ? poisson_pcss()
+                   : *call == OneCall::vogel   ? vogel_pcss()
+                                               : hqepcss();
+  if (*call == OneCall::fast && sampled_leaves(s.leaf_mode)) {  // the work budget: the engine form's defines
+    d.leaf_divisor = s.leaf_divisor;
+    d.leaf_mode = s.leaf_mode;
+  }
   const auto blocker_leaves = [](const PcssSettings& x) { return x.blocker_leaf_mode.value_or(x.leaf_mode); };
   return s.filter_scale == d.filter_scale && s.refine_iterations == d.refine_iterations && s.region == d.region &&
          s.structure == d.structure && s.depth_sums == d.depth_sums && s.leaf_side == d.leaf_side &&

@@ -110,7 +110,9 @@ bool has_area_squares(const PcssSettings& s);
 // Whether `s` is its one call's shipped settings — everything the call reads but the bias and the
 // receiver plane equal to its technique's (fast_pcss(), poisson_pcss(), vogel_pcss(), hqepcss():
 // the module's pnXDefaults) — so that the runner's pass compiles the call as an engine does, the
-// defaults as constants (PN_PCSS_ENGINE_FORM, pcss_one_call.glsl). Exact PCSS's call has plain
+// defaults as constants (PN_PCSS_ENGINE_FORM, pcss_one_call.glsl). Fast PCSS's work budget may
+// differ (leaf_divisor, and a sampling leaf_mode): the pass then defines PN_FAST_PCSS_LEAF_DIVISOR
+// and _MODE as an engine that sets its budget does (fast_pcss.h). Exact PCSS's call has plain
 // parameters, no defaults: never.
 bool shipped_call_settings(const PcssSettings& s);
 

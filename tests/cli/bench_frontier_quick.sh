@@ -4,7 +4,8 @@
 # GL context) as CI runs it: the tables with Fast PCSS's standing, a JSON with
 # its 8 points (2 scenes × 2 sizes, 128² and 256², × 2 widths), each with at least one row on the
 # frontier and the cost proxy beside the PCSS rows, issue 52's rows (fast against Poisson: the
-# estimate's ratio and growth, recomputed here from the points), and a PNG plot.
+# estimate's ratio and growth, recomputed here from the points; the unbounded walk's MAE and SSIM
+# beside them), and a PNG plot.
 penumbra=$1 work=$2
 here=$(dirname "$0")
 rm -rf "$work" && mkdir -p "$work" || exit 1
@@ -40,6 +41,11 @@ for g, p in zip(goal, points):
     assert abs(g["growth"] - est(p, "fast") / est(first, "fast")) <= 1e-9 * g["growth"], where
     assert g["cost_bound"] == (1.0 if p["width"] == first["width"] else 2.0), where
     assert g["closer"] == (g["fast_mae"] <= g["poisson_mae"] and g["fast_ssim"] >= g["poisson_ssim"]), where
+    # The unbounded walk (fast without its work budget) ran beside them, its MAE and SSIM the row's.
+    unbounded = next(r for r in p["rows"] if r["technique"] == "fast:leaf-divisor=0:leaf-mode=sampled")
+    assert (g["unbounded_mae"], g["unbounded_ssim"]) == (unbounded["mae"], unbounded["ssim"]), where
+    ratio = unbounded["estimate_ms"] / est(p, "poisson")
+    assert abs(g["unbounded_estimate_ratio"] - ratio) <= 1e-9 * ratio, where
 print("frontier.json: 8 points, a frontier in each, fast's fetch proxy, an estimate for every row, fast against Poisson at each")
 PY
 signature=$(head -c 8 "$work/frontier.png" | od -An -tx1 | tr -d ' \n')
