@@ -72,10 +72,10 @@
 //   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
 //   receiver stops after Step 3.
 //
-// isa budget: vgprs 40, instructions 700, code 4096, scratch 0, loop 390, loops 960
+// isa budget: vgprs 40, instructions 700, code 4096, scratch 0, loop 400, loops 970
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md; the
-//   area form, the default: PN_AREA_EDGES 0 takes 32, 657, 347 and 881 — docs/area-regions.md; the
-//   work budget's per-region leaf, issue 52, added 12 cycles to the region loop of 375)
+//   area form, the default: PN_AREA_EDGES 0 takes 32, 656, 345 and 879 — docs/area-regions.md; the
+//   work budget's per-region leaf, issue 52, added 18 cycles to the region loop of 375, none a step)
 
 #ifndef PENUMBRA_FAST_PCSS_GLSL
 #define PENUMBRA_FAST_PCSS_GLSL

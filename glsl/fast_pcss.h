@@ -22,7 +22,7 @@
 // may define either before the include to change pnFastPcssDefaults' budget (the runner does, for
 // `fast:leaf-divisor=D:leaf-mode=M`: the call as an engine would compile it).
 #ifndef PN_FAST_PCSS_LEAF_DIVISOR
-#define PN_FAST_PCSS_LEAF_DIVISOR 8
+#define PN_FAST_PCSS_LEAF_DIVISOR 12
 #endif
 #ifndef PN_FAST_PCSS_LEAF_MODE
 #define PN_FAST_PCSS_LEAF_MODE PN_LEAF_QUAD

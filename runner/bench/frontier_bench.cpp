@@ -307,42 +307,8 @@ Canvas frontier_bench_chart(const std::vector<FrontierPoint>& points, const std:
                                   })));
     }
   }
-  // Issue 52's row: per scene and size, fast's estimate as a ratio to Poisson's against the width,
-  // the unbounded walk's beside it, and the goal's bound.
-  for (size_t i = 0; estimate && i < points.size(); ++i) {
-    const FrontierPoint& p = points[i];
-    if (std::any_of(points.begin(), points.begin() + static_cast<long>(i),
-                    [&](const FrontierPoint& q) { return q.scene == p.scene && q.size == p.size; }))
-      continue;  // the scene and size's panel is drawn
-    ChartPanel panel;
-    panel.title = p.scene + " " + std::to_string(p.size) + "²: estimate / Poisson's";
-    panel.x_label = "light width factor (log)";
-    panel.y_label = "estimated time / Poisson 36/64's";
-    panel.log_x = true;
-    ChartSeries bounded{"fast / poisson, estimate", {214, 39, 40}, false, {}};
-    ChartSeries unbounded{std::string(kFastUnbounded) + " / poisson", {120, 20, 20}, true, {}};
-    ChartSeries bound{"issue 52's bound (1x at the smallest width, 2x above)", {0, 0, 0}, true, {}};
-    bound.marker = 0;
-    double smallest = p.width;
-    for (const FrontierPoint& q : points)
-      if (q.scene == p.scene && q.size == p.size) smallest = std::min(smallest, q.width);
-    for (const FrontierPoint& q : points) {
-      if (q.scene != p.scene || q.size != p.size) continue;
-      const FrontierRow* poisson = frontier_row(q, kPoissonTechnique);
-      if (!poisson || !poisson->estimate_ms) continue;
-      const auto ratio = [&](const char* technique, ChartSeries& series) {
-        const FrontierRow* r = frontier_row(q, technique);
-        if (r && r->estimate_ms) series.points.emplace_back(q.width, *r->estimate_ms / *poisson->estimate_ms);
-      };
-      ratio(kFrontierDefault, bounded);
-      ratio(kFastUnbounded, unbounded);
-      bound.points.emplace_back(q.width, q.width == smallest ? 1.0 : 2.0);
-    }
-    if (bounded.points.empty()) continue;
-    for (ChartSeries* s : {&bound, &unbounded, &bounded}) std::sort(s->points.begin(), s->points.end());
-    panel.series = {bound, unbounded, bounded};
-    panels.push_back(panel);
-  }
+  if (estimate)  // issue 52's row: fast's estimate / Poisson's against the width
+    for (ChartPanel& panel : frontier_goal_panels(points)) panels.push_back(std::move(panel));
   return draw_line_charts(title, panels, columns);
 }
 

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <iomanip>
 
+#include "core/error.h"
 #include "core/format.h"
+#include "draw/line_chart.h"
 #include "technique/technique_registry.h"
 
 namespace pn {
@@ -19,6 +21,15 @@ std::vector<std::string> with_unbounded_walk(std::vector<std::string> techniques
   const auto has = [&](const std::string& t) { return std::find(techniques.begin(), techniques.end(), t) != techniques.end(); };
   if (has(kFrontierDefault) && has(kPoissonTechnique) && !has(kFastUnbounded)) techniques.push_back(kFastUnbounded);
   return techniques;
+}
+
+void require_goal_inputs(const FrontierBenchSetup& setup) {
+  if (!setup.estimate) throw Error("--goal-plot: draws the GPU estimate: expected --estimate FAMILY, not off");
+  const std::vector<std::string> run = setup.techniques.empty() ? frontier_techniques() : setup.techniques;
+  const auto has = [&](const char* t) { return std::find(run.begin(), run.end(), t) != run.end(); };
+  if (!has(kFrontierDefault) || !has(kPoissonTechnique))
+    throw Error(std::string("--goal-plot: draws ") + kFrontierDefault + " against " + kPoissonTechnique +
+                ": expected both in --techniques");
 }
 
 std::vector<FrontierGoalRow> frontier_goal_rows(const std::vector<FrontierPoint>& points) {
@@ -97,6 +108,52 @@ nlohmann::json frontier_goal_json(const std::vector<FrontierGoalRow>& rows) {
                     {"flat_enough", g.flat_enough()},
                     {"closer", g.closer()}});
   return list;
+}
+
+std::vector<ChartPanel> frontier_goal_panels(const std::vector<FrontierPoint>& points) {
+  // Per scene and size, fast's estimate as a ratio to Poisson's against the width, the unbounded
+  // walk's beside it, and the goal's bound.
+  std::vector<ChartPanel> panels;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const FrontierPoint& p = points[i];
+    if (std::any_of(points.begin(), points.begin() + static_cast<long>(i),
+                    [&](const FrontierPoint& q) { return q.scene == p.scene && q.size == p.size; }))
+      continue;  // the scene and size's panel is drawn
+    ChartPanel panel;
+    panel.title = p.scene + " " + std::to_string(p.size) + "²: estimate / Poisson's";
+    panel.x_label = "light width factor (log)";
+    panel.y_label = "estimated time / Poisson 36/64's";
+    panel.log_x = true;
+    ChartSeries bounded{"fast / poisson", {214, 39, 40}, false, {}};
+    ChartSeries unbounded{"unbounded walk / poisson", {120, 20, 20}, true, {}};
+    ChartSeries bound{"goal: 1x, wider 2x", {0, 0, 0}, true, {}};
+    bound.marker = 0;
+    double smallest = p.width;
+    for (const FrontierPoint& q : points)
+      if (q.scene == p.scene && q.size == p.size) smallest = std::min(smallest, q.width);
+    for (const FrontierPoint& q : points) {
+      if (q.scene != p.scene || q.size != p.size) continue;
+      const FrontierRow* poisson = frontier_row(q, kPoissonTechnique);
+      if (!poisson || !poisson->estimate_ms) continue;
+      const auto ratio = [&](const char* technique, ChartSeries& series) {
+        const FrontierRow* r = frontier_row(q, technique);
+        if (r && r->estimate_ms) series.points.emplace_back(q.width, *r->estimate_ms / *poisson->estimate_ms);
+      };
+      ratio(kFrontierDefault, bounded);
+      ratio(kFastUnbounded, unbounded);
+      bound.points.emplace_back(q.width, q.width == smallest ? 1.0 : 2.0);
+    }
+    if (bounded.points.empty()) continue;
+    for (ChartSeries* s : {&bound, &unbounded, &bounded}) std::sort(s->points.begin(), s->points.end());
+    panel.series = {bound, unbounded, bounded};
+    panels.push_back(panel);
+  }
+  return panels;
+}
+
+Canvas frontier_goal_chart(const std::vector<FrontierPoint>& points, const std::string& title) {
+  const std::vector<ChartPanel> panels = frontier_goal_panels(points);
+  return draw_line_charts(title, panels, std::min(static_cast<int>(panels.size()), 5));
 }
 
 }  // namespace pn

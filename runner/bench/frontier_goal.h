@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bench/frontier_bench.h"
+#include "draw/line_chart.h"
 
 namespace pn {
 
@@ -44,11 +45,22 @@ struct FrontierGoalRow {
 };
 
 // One row a point that ran both `fast` and `poisson`, in the points' order.
+// What frontier_goal_chart draws from: `fast` and `poisson` in the run (the registry's list has both)
+// and the GPU estimate. Throws Error naming --goal-plot and what it needs.
+void require_goal_inputs(const FrontierBenchSetup& setup);
+
 std::vector<FrontierGoalRow> frontier_goal_rows(const std::vector<FrontierPoint>& points);
 
 // The table (a row a point, each goal marked) and the count of points meeting each goal.
 void print_frontier_goal(std::ostream& out, const std::vector<FrontierGoalRow>& rows);
 
 nlohmann::json frontier_goal_json(const std::vector<FrontierGoalRow>& rows);
+
+// Issue 52's panels (the last row of frontier_bench_chart with an estimate; `--goal-plot` alone): per
+// scene and size, fast's and the unbounded walk's (kFastUnbounded) estimate / Poisson's against the
+// light's width, with the goal's bound (1x at the smallest width, 2x above). Points without both
+// estimates are left out.
+std::vector<ChartPanel> frontier_goal_panels(const std::vector<FrontierPoint>& points);
+Canvas frontier_goal_chart(const std::vector<FrontierPoint>& points, const std::string& title);
 
 }  // namespace pn

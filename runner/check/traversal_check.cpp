@@ -30,9 +30,11 @@
 #include <cfloat>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "check/module_check.h"
 #include "check/pcss_compare.h"
+#include "modules/fast_pcss_face.h"
 #include "core/format.h"
 #include "core/seeded_random.h"
 #include "fixture_images/texture_fixture.h"
@@ -360,14 +362,15 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
 
     // Fast PCSS's leaf side for a region (pnTraversalRegionLeafSide): leaf side 16 over regions of side
     // 16…256, the leaf at most a quarter of the region's side (a power of two), 1 under 4: the
-    // recursion with that side (4 at side 16, 8 at 32, 16 from 64 on). And with the shipped work
-    // budget (issue 52, fast_pcss.h): leaves of at least the region's side / 8 (32 at side 256), of 4
-    // samples each.
+    // recursion with that side (4 at side 16, 8 at 32, 16 from 64 on). And with Fast PCSS's work
+    // budget (issue 52, fast_pcss.h): leaves of at least the region's side / its divisor, of 4 samples
+    // each — from leaf side 4, so that the divisor binds on these regions of side 16…256.
     for (const Structure& st : structures)
-      for (const auto& [divisor, mode] : {std::pair{0, LeafMode::sampled}, {8, LeafMode::quad}}) {
+      for (const auto& [leaf, divisor, mode] : {std::tuple{16, 0, LeafMode::sampled},
+                                                std::tuple{4, kFastPcssLeafDivisor, kFastPcssLeafMode}}) {
         if (!st.mip) continue;
         TraversalSettings s;
-        s.leaf_side = 16, s.region_leaf = true, s.leaf_divisor = divisor, s.leaf_mode = mode, s.bias = 0.001f;
+        s.leaf_side = leaf, s.region_leaf = true, s.leaf_divisor = divisor, s.leaf_mode = mode, s.bias = 0.001f;
         std::vector<TraversalResult> expected;
         for (const TraversalQuery& q : leaf_queries) {
           TraversalSettings own = s;
@@ -381,7 +384,8 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
         const auto observed = observe(st, scene, leaf_queries, s);
         add_comparison(results,
                        label + st.label +
-                           (divisor > 0 ? " quad leaves of side max(16, the region's side / 8)"
+                           (divisor > 0 ? " Fast PCSS's quad leaves (issue 52): side max(4, the region's side / " +
+                                              std::to_string(divisor) + "), 4 samples"
                                         : " sampled leaves of side 16") +
                            ", at most a quarter of the region's side:",
                        scene, expected, observed, expected, true, true, false);

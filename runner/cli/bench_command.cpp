@@ -5,6 +5,7 @@
 #include "bench/cache_bench.h"
 #include "bench/cascades_bench.h"
 #include "bench/frontier_bench.h"
+#include "bench/frontier_goal.h"
 #include "bench/pipeline_bench.h"
 #include "bench/pyramid_bench.h"
 #include "bench/sweep_bench.h"
@@ -35,6 +36,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     int max_level = 31;
     std::string json;
     std::string plot;
+    std::string goal_plot;
     std::string estimate = "navi21";
   };
   auto opt = std::make_shared<Options>();
@@ -75,6 +77,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   auto* estimate = applies_to(cmd->add_option("--estimate", opt->estimate, "pipeline, sweep, frontier: the GPU cost estimate beside each time for this RADV family, FAMILY/32 for wave32 (default navi21; off: none; docs/isa.md)"), {"pipeline", "sweep", "frontier"});
   cmd->add_option("--json", opt->json, "Also write the results as JSON to this file");
   applies_to(cmd->add_option("--plot", opt->plot, "cache: also draw the plot (time of the shadow-map stage, frame rate, against K) into this PNG; cascades, frontier: theirs"), {"cache", "cascades", "frontier"});
+  applies_to(cmd->add_option("--goal-plot", opt->goal_plot, "frontier: issue 52's panels alone into this PNG (fast's and the unbounded walk's estimate / Poisson's against the width; needs fast, poisson and the estimate)"), {"frontier"});
   cmd->add_option("--glsl-root", global.glsl_root, "Benchmark the modules in this directory");
   cmd->add_option("--backend", global.backend, "egl-device | egl-surfaceless | osmesa (default: first that works)");
   cmd->callback([opt, applies, repeats, sizes, truth_samples, screen, scenes, widths, exact_up_to, estimate, &global, &exit_code] {
@@ -118,6 +121,7 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (!opt->techniques.empty()) opt->frontier.techniques = opt->techniques;
       model_scenes(opt->frontier.scenes, opt->frontier.model);
       validate_frontier_setup(opt->frontier);
+      if (!opt->goal_plot.empty()) require_goal_inputs(opt->frontier);
     } else if (opt->what == "cascades") {
       if (sizes->count() > 0) opt->cascades.sizes = opt->sizes;
       if (repeats->count() > 0) opt->cascades.repeats = opt->repeats;
@@ -149,7 +153,8 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       throw Error("--model '" + opt->pipeline.model.string() + "': the path is not UTF-8, which --json cannot record; "
                   "expected a UTF-8 path (rename the file) or no --json");
     if (!opt->plot.empty()) probe_output_file(opt->plot);
-    require_distinct_outputs({{"--json", opt->json}, {"--plot", opt->plot}});  // issue 39 C11
+    if (!opt->goal_plot.empty()) probe_output_file(opt->goal_plot);
+    require_distinct_outputs({{"--json", opt->json}, {"--plot", opt->plot}, {"--goal-plot", opt->goal_plot}});  // issue 39 C11
     const SourceTree tree(glsl_root_or_default(global));
     const auto context = create_context(chosen_backend(global));
     std::cout << "backend " << backend_name(context->backend()) << ": " << context->renderer() << ", "
@@ -177,6 +182,12 @@ void add_bench_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
                              opt->frontier.estimate)
             .write_png(opt->plot);
         std::cout << "wrote " << opt->plot << "\n";
+      }
+      if (!opt->goal_plot.empty()) {
+        frontier_goal_chart(points, "penumbra bench frontier: fast's GPU estimate / Poisson 36/64's against the light's "
+                                    "width, with and without its work budget (" + gpu_estimate_label(*opt->frontier.estimate) + ")")
+            .write_png(opt->goal_plot);
+        std::cout << "wrote " << opt->goal_plot << "\n";
       }
     } else if (opt->what == "cascades") {
       const CascadesBench bench = bench_cascades(*context, tree, opt->cascades);

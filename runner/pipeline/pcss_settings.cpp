@@ -161,7 +161,7 @@ PcssSettings fast_pcss() {
   s.depth_sums = DepthSums::midpoint;
   s.refine_iterations = kFastPcssRefineIterations;
   s.leaf_side = kFastPcssLeafSide;
-  s.leaf_divisor = kFastPcssLeafDivisor;  // the work budget (fast_pcss.h): leaves of at least the region's side / 8,
+  s.leaf_divisor = kFastPcssLeafDivisor;  // the work budget (fast_pcss.h): leaves of at least the region's side / 12,
   s.leaf_mode = kFastPcssLeafMode;        // each of 4 samples
   s.search_tile = s.filter_tile = 0;
   s.blur = false;

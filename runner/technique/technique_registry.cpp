@@ -24,7 +24,7 @@ const std::vector<TechniqueEntry>& technique_registry() {
       {.name = "fast-paper", .summary = "Fast PCSS (seed 000) with the paper's settings: decreased pyramid, power-of-two windows, leaf 8, reuse, blur",
        .make = []() -> Made { return pcss_config(fast_paper_pcss()); }, .family = "fast", .frontier = {}},
       {.name = "fast", .summary = "Fast PCSS as shipped, one pass (pnFastPcss): exact regions over the aligned mip chain, refined search, "
-                "leaf 16, leaves of at least the region's side / 8 of 4 samples each (the work budget), the receiver-plane depth bias (slopes to tan 1; the staged passes need receiver-plane=off)",
+                "leaf 16, leaves of at least the region's side / 12 of 4 samples each (the work budget), the receiver-plane depth bias (slopes to tan 1; the staged passes need receiver-plane=off)",
        .make = []() -> Made { return pcss_config(shipped_fast_pcss()); },
        .frontier = {"", ":receiver-plane=off", ":grid=4", ":grid=2", ":leaf=4", ":leaf=8", ":leaf=32",
                      ":leaf-divisor=0:leaf-mode=sampled", ":leaf-divisor=16"}},

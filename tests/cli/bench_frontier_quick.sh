@@ -5,12 +5,12 @@
 # its 8 points (2 scenes × 2 sizes, 128² and 256², × 2 widths), each with at least one row on the
 # frontier and the cost proxy beside the PCSS rows, issue 52's rows (fast against Poisson: the
 # estimate's ratio and growth, recomputed here from the points; the unbounded walk's MAE and SSIM
-# beside them), and a PNG plot.
+# beside them), and the PNG plots (the frontier's; issue 52's panels alone, --goal-plot).
 penumbra=$1 work=$2
 here=$(dirname "$0")
 rm -rf "$work" && mkdir -p "$work" || exit 1
 sh "$here/gl_or_skip.sh" "$penumbra" "fast on the frontier: (yes|no)" \
-  bench frontier --quick --json "$work/frontier.json" --plot "$work/frontier.png"
+  bench frontier --quick --json "$work/frontier.json" --plot "$work/frontier.png" --goal-plot "$work/goal.png"
 status=$?
 [ "$status" -eq 0 ] || exit "$status"
 /usr/bin/python3 - "$work/frontier.json" <<'PY' || exit 1
@@ -48,6 +48,8 @@ for g, p in zip(goal, points):
     assert abs(g["unbounded_estimate_ratio"] - ratio) <= 1e-9 * ratio, where
 print("frontier.json: 8 points, a frontier in each, fast's fetch proxy, an estimate for every row, fast against Poisson at each")
 PY
-signature=$(head -c 8 "$work/frontier.png" | od -An -tx1 | tr -d ' \n')
-[ "$signature" = "89504e470d0a1a0a" ] || { echo "$work/frontier.png is not a PNG ($signature)"; exit 1; }
-echo "frontier.png: PNG, $(wc -c < "$work/frontier.png") bytes"
+for png in frontier.png goal.png; do
+  signature=$(head -c 8 "$work/$png" | od -An -tx1 | tr -d ' \n')
+  [ "$signature" = "89504e470d0a1a0a" ] || { echo "$work/$png is not a PNG ($signature)"; exit 1; }
+  echo "$png: PNG, $(wc -c < "$work/$png") bytes"
+done
