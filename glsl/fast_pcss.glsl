@@ -19,8 +19,11 @@
 //   <= leafSide are estimated from the sample table's set for `pixel`
 //   (sample_table.glsl: neighbouring pixels use different sets, so the noise
 //   is spatially decorrelated — a blur around the call can remove it, the
-//   call itself never reads a neighbour). leafDivisor > 0 grows the leaf with
-//   the region: leaf = max(leafSide, region side / leafDivisor). grid > 0 bounds
+//   call itself never reads a neighbour). The work budget (issue 52): leafDivisor
+//   > 0 grows the leaf with the region, leaf = max(leafSide, region side /
+//   leafDivisor), and leafMode PN_LEAF_QUAD takes 4 samples a leaf of any side,
+//   so a region is at most (2 leafDivisor + 1)² leaves of 4 fetches whatever
+//   the light's width (0 and PN_LEAF_SAMPLED: the unbounded walk). grid > 0 bounds
 //   the work instead: each region is counted over a fixed grid of about grid²
 //   aligned nodes (traversal.glsl, pnGridRegionMip), ambiguous ones sampled,
 //   never descended — the cost no longer grows with the penumbra.
@@ -28,8 +31,9 @@
 //   PN_DEPTH_SUMS_TABLE, PN_FAST_PCSS_ABLATIONS) and refineIterations 0 is exact
 //   PCSS (brute force over the same regions) up to the rounding of the blocker
 //   mean's sums.
-//   The shipped settings (pnFastPcssDefaults: exact regions, sampled leaves of
-//   side 16, no budget, the chain's midpoint sums) run a walk of their own,
+//   The shipped settings (pnFastPcssDefaults: exact regions, quad leaves of side
+//   16 and at least the region's side / 12, no node budget, the chain's midpoint
+//   sums) run a walk of their own,
 //   written for the GPU (docs/isa.md): the same nodes in the same order, the
 //   same sums, so the same result bit for bit as traversal_mip.glsl's.
 //
@@ -52,11 +56,14 @@
 //
 // options:
 //   PN_FAST_PCSS_ABLATIONS   defined before the include: the settings' ablation fields (regionMode,
-//                            leafDivisor, leafMode, blockerLeafMode, nodeBudget, depthSums, grid) and
-//                            leafSide 1 take effect (traversal_mip.glsl's walk, compiled in beside the
-//                            shipped one). Undefined (an engine's shader): only the shipped walk is in
-//                            the program; it honours bias, filterScale, refineIterations and leafSide
-//                            and reads none of the ablation fields (docs/modules/fast_pcss.md)
+//                            leafMode min or ramp, another blockerLeafMode, nodeBudget, depthSums,
+//                            grid) and leafSide 1 take effect (traversal_mip.glsl's walk, compiled in
+//                            beside the shipped one). Undefined (an engine's shader): only the shipped
+//                            walk is in the program; it honours bias, filterScale, refineIterations,
+//                            leafSide and the work budget (leafDivisor, leafMode quad or sampled) and
+//                            reads none of the ablation fields (docs/modules/fast_pcss.md)
+//   PN_FAST_PCSS_LEAF_DIVISOR 12, PN_FAST_PCSS_LEAF_MODE PN_LEAF_QUAD   the defaults' work budget
+//                            (fast_pcss.h): defined before the include, pnFastPcssDefaults' instead
 //   PN_TRAVERSAL_SUM_TABLE   a usampler2D (summed_area.glsl's table of the map) declared before the
 //                            include: settings.depthSums = PN_DEPTH_SUMS_TABLE then gives exact
 //                            blocker sums (traversal.glsl; with PN_FAST_PCSS_ABLATIONS)
@@ -69,8 +76,8 @@
 //   PN_TRAVERSAL_MAX_LEVEL, PN_REFINE_MAX_ITERATIONS   loop bounds (traversal.h, pcss_regions.h)
 //
 // cost: Step 3 <= 9 fetches a refinement; each traversal one fetch a node
-//   touching the region plus <= 16 a sampled leaf (traversal.glsl); a lit
-//   receiver stops after Step 3.
+//   touching the region plus 4 a quad leaf (<= 16 a sampled one: traversal.glsl),
+//   at most (2 leafDivisor + 1)² leaves a region; a lit receiver stops after Step 3.
 //
 // isa budget: vgprs 40, instructions 700, code 4096, scratch 0, loop 400, loops 970
 //   (`penumbra isa --budgets`: the call as an engine compiles it, RDNA 2 wave64; docs/isa.md; the
@@ -94,11 +101,13 @@ struct PnFastPcssSettings {
   float bias;            // light-depth units: a texel occludes when its depth < d - bias
   float filterScale;     // c: filter side = c · penumbra
   int refineIterations;  // Step 3's refinements, 0..PN_REFINE_MAX_ITERATIONS
-  // The ablations: read only with PN_FAST_PCSS_ABLATIONS (above); the shipped values otherwise.
+  // Read by the shipped walk too: the leaf side (>= 2) and the work budget (fast_pcss.h). The rest,
+  // and leafSide 1 and leafMode min or ramp, are the ablations: read only with PN_FAST_PCSS_ABLATIONS
+  // (above); the shipped values otherwise.
   int regionMode;        // PN_REGION_EXACT, _WINDOW or _CENTRED (pcss_regions.h)
   int leafSide;          // >= 1
-  int leafDivisor;       // 0: off
-  int leafMode;          // PN_LEAF_SAMPLED, _MIN or _RAMP (traversal.h)
+  int leafDivisor;       // leaves >= the region's side / this (the work budget); 0: off
+  int leafMode;          // PN_LEAF_QUAD or _SAMPLED (the work budget); _MIN or _RAMP (traversal.h)
   int blockerLeafMode;   // Step 4's leaves: a PN_LEAF_*, or PN_FAST_PCSS_SAME_LEAF_MODE
   int nodeBudget;        // per traversal, >= 1
   int depthSums;         // Step 4: PN_DEPTH_SUMS_MIDPOINT, or _TABLE with PN_TRAVERSAL_SUM_TABLE
@@ -117,8 +126,8 @@ struct PnFastPcssResult {
 
 PnFastPcssSettings pnFastPcssDefaults(float bias) {
   return PnFastPcssSettings(bias, 1.0, PN_FAST_PCSS_REFINE_ITERATIONS, PN_REGION_EXACT, PN_FAST_PCSS_LEAF_SIDE,
-                            PN_FAST_PCSS_LEAF_DIVISOR, PN_FAST_PCSS_LEAF_MODE, PN_FAST_PCSS_SAME_LEAF_MODE, PN_FAST_PCSS_NODE_BUDGET,
-                            PN_DEPTH_SUMS_MIDPOINT, PN_FAST_PCSS_GRID);
+                            PN_FAST_PCSS_LEAF_DIVISOR, PN_FAST_PCSS_LEAF_MODE, PN_FAST_PCSS_SAME_LEAF_MODE,
+                            PN_FAST_PCSS_NODE_BUDGET, PN_DEPTH_SUMS_MIDPOINT, PN_FAST_PCSS_GRID);
 }
 
 // Step 3 (pcss_regions_mip.glsl): the search entry, and its fetches at their bound (9 a refinement).
@@ -150,8 +159,8 @@ void pn_fastPcssOcclusionDone(inout PnFastPcssResult r, PnTraversal occlusion) {
 }
 
 // Whether the settings are the shipped call's (pnFastPcssDefaults, whatever the bias, filter scale,
-// refinements and leaf side >= 2): exact regions, sampled leaves of a fixed side, no budget, the
-// chain's midpoint sums, no grid — the walk below computes them.
+// refinements, leaf side >= 2 and work budget): exact regions, leaves sampled (quad or the paper's)
+// of one side a region, no node budget, the chain's midpoint sums, no grid — the walk below computes them.
 bool pn_fastPcssShipped(PnFastPcssSettings s) {
   return s.regionMode == PN_REGION_EXACT && s.leafSide >= 2 && s.leafDivisor >= 0 && pn_traversalSamples(s.leafMode) &&
          (s.blockerLeafMode == PN_FAST_PCSS_SAME_LEAF_MODE || s.blockerLeafMode == s.leafMode) &&
@@ -192,9 +201,10 @@ void pn_fastPcssSampleLeaf(inout PnTraversal t, sampler2D map, sampler2D sampleT
 // occlusion: the switch between them outside the walk); a cursor of the node relative to the root,
 // (x, y) at `level`, whose next node in Z order comes from the trailing ones of x & y (the levels
 // to climb), not from a Morton code decoded each step; one chain fetch a node, without bounds
-// logic (a node touching the region clipped to the map lies in the chain); leaves of side <=
-// leafSide sampled, nodes above it descended (no budget; leaf side 1 descends to the texels, one a
-// step, where the general walk visits a level-1 node's four at once).
+// logic (a node touching the region clipped to the map lies in the chain); leaves of the region's
+// side (leafSide, or its side / leafDivisor: the work budget) sampled, nodes above it descended (no
+// node budget; leaf side 1 descends to the texels, one a step, where the general walk visits a
+// level-1 node's four at once).
 // Step 4's midpoint sums are kept in Step 5 too, where nothing reads them.
 PnFastPcssResult pn_fastPcssShippedEstimate(sampler2D map, sampler2D mip, sampler2D sampleTable, PnLight light,
                                             vec3 receiver, vec2 receiverPlane, ivec2 pixel, PnFastPcssSettings s) {
