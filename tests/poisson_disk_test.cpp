@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "sampling/poisson_disk.h"
+#include "sampling/poisson_disk_source.h"
 
 TEST_CASE("Poisson disks of 1, 16, 36, 64 and 128 samples: count, inside the unit disk, every pair at least r apart") {
   for (int count : {1, 16, 36, 64, 128}) {
@@ -60,4 +61,27 @@ TEST_CASE("the GLSL constant's name must be an unreserved GLSL identifier (negat
     CHECK_THROWS_WITH(pn::poisson_disk_glsl(disk, word, 1u), Catch::Contains("a GLSL keyword or reserved word"));
   for (const char* fine : {"whiley", "vector", "matrix", "sampler", "images", "doMore"})
     CHECK_NOTHROW(pn::poisson_disk_glsl(disk, fine, 1u));
+}
+
+TEST_CASE("the disk in each language: its declaration, and each language's reserved words refused (negative)") {
+  const pn::PoissonDisk disk = pn::poisson_disk(4, 1u);
+  using pn::SourceLanguage;
+  CHECK(pn::poisson_disk_source(disk, "kDisk", 1u, SourceLanguage::hlsl).find("static const float2 kDisk[4] = {") !=
+        std::string::npos);
+  CHECK(pn::poisson_disk_source(disk, "kDisk", 1u, SourceLanguage::msl).find("constant float2 kDisk[4] = {") !=
+        std::string::npos);
+  CHECK(pn::poisson_disk_source(disk, "kDisk", 1u, SourceLanguage::cpp).find("constexpr float kDisk[4][2] = {") !=
+        std::string::npos);
+  const std::pair<SourceLanguage, const char*> refused[] = {
+      {SourceLanguage::hlsl, "cbuffer"}, {SourceLanguage::hlsl, "float3x4"}, {SourceLanguage::hlsl, "Texture2D"},
+      {SourceLanguage::hlsl, "class"},   {SourceLanguage::msl, "constant"},  {SourceLanguage::msl, "half2"},
+      {SourceLanguage::msl, "kernel"},   {SourceLanguage::cpp, "constexpr"}, {SourceLanguage::cpp, "and"}};
+  for (const auto& [language, word] : refused)
+    CHECK_THROWS_WITH(pn::poisson_disk_source(disk, word, 1u, language), Catch::Contains("keyword or reserved word"));
+  for (SourceLanguage language : {SourceLanguage::glsl, SourceLanguage::hlsl, SourceLanguage::msl, SourceLanguage::cpp}) {
+    CHECK_NOTHROW(pn::poisson_disk_source(disk, "disk_points", 1u, language));
+    CHECK_THROWS_WITH(pn::poisson_disk_source(disk, "my__disk", 1u, language), Catch::Contains("identifier"));
+  }
+  CHECK_NOTHROW(pn::poisson_disk_source(disk, "gl_Disk", 1u, SourceLanguage::hlsl));  // gl_ is GLSL's alone
+  CHECK_THROWS_WITH(pn::parse_source_language("java"), "--lang 'java': expected glsl, hlsl, msl or cpp");
 }

@@ -10,6 +10,7 @@
 #include "poisson_pcss.h"
 #include "reference/poisson_pcss_reference.h"
 #include "sampling/poisson_disk.h"
+#include "sampling/poisson_disk_source.h"
 
 namespace {
 

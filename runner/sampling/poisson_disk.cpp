@@ -1,10 +1,6 @@
 #include "sampling/poisson_disk.h"
 
-#include <cctype>
 #include <cmath>
-#include <cstdio>
-#include <regex>
-#include <set>
 
 #include "core/error.h"
 #include "core/seeded_random.h"
@@ -82,55 +78,6 @@ PoissonDisk poisson_disk(int count, std::uint32_t seed) {
       return closest;
     }
   }
-}
-
-namespace {
-
-// GLSL 4.50 §3.6 (and ES 3.10 §3.7): keywords and reserved words — a name the compiler refuses.
-bool glsl_keyword_or_reserved(const std::string& name) {
-  static const std::set<std::string> words{
-      // keywords
-      "const", "uniform", "buffer", "shared", "attribute", "varying", "coherent", "volatile", "restrict", "readonly",
-      "writeonly", "atomic_uint", "layout", "centroid", "flat", "smooth", "noperspective", "patch", "sample",
-      "invariant", "precise", "break", "continue", "do", "for", "while", "switch", "case", "default", "if", "else",
-      "subroutine", "in", "out", "inout", "int", "void", "bool", "true", "false", "float", "double", "discard",
-      "return", "uint", "lowp", "mediump", "highp", "precision", "struct",
-      // reserved for future use
-      "common", "partition", "active", "asm", "class", "union", "enum", "typedef", "template", "this", "resource",
-      "goto", "inline", "noinline", "public", "static", "extern", "external", "interface", "long", "short", "half",
-      "fixed", "unsigned", "superp", "input", "output", "filter", "sizeof", "cast", "namespace", "using"};
-  if (words.count(name)) return true;
-  // The type families: vectors (vec3, ivec2, hvec4, ...), matrices (mat3, dmat2x4), samplers and images.
-  static const std::regex types("[ibudhf]?vec[234]|d?mat[234](x[234])?|[iu]?(sampler|image|texture)[0-9A-Z].*");
-  return std::regex_match(name, types);
-}
-
-}  // namespace
-
-std::string poisson_disk_glsl(const PoissonDisk& disk, const std::string& name, std::uint32_t seed) {
-  // A GLSL identifier (GLSL ES 3.10 §3.7): a letter or _, then letters, digits and _; names
-  // beginning with gl_ or holding __ are reserved; at most 1024 characters.
-  bool identifier = !name.empty() && name.size() <= 1024 && !std::isdigit(static_cast<unsigned char>(name[0])) &&
-                    name.rfind("gl_", 0) != 0 && name.find("__") == std::string::npos;
-  for (char c : name) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
-  if (!identifier)
-    throw Error("Poisson disk name '" + name + "': expected a GLSL identifier (letters, digits and _, not starting with "
-                "a digit or gl_, no __)");
-  if (glsl_keyword_or_reserved(name))
-    throw Error("Poisson disk name '" + name + "': a GLSL keyword or reserved word: expected another identifier");
-  char line[96];
-  std::snprintf(line, sizeof line, "// %zu Poisson-disk samples in the unit disk, minimum distance %.6f,\n",
-                disk.points.size(), disk.min_distance);
-  std::string out = line;
-  std::snprintf(line, sizeof line, "// Bridson's algorithm, seed %u (penumbra poisson).\n", seed);
-  out += line;
-  out += "const vec2 " + name + "[" + std::to_string(disk.points.size()) + "] = vec2[](\n";
-  for (size_t i = 0; i < disk.points.size(); ++i) {
-    std::snprintf(line, sizeof line, "    vec2(%.9g, %.9g)%s\n", disk.points[i].x, disk.points[i].y,
-                  i + 1 < disk.points.size() ? "," : "");
-    out += line;
-  }
-  return out + ");\n";
 }
 
 }  // namespace pn

@@ -27,9 +27,4 @@ PoissonDisk bridson_disk(double r, std::uint32_t seed, int candidates = 30);
 // smallest overshoot. Deterministic for a seed. Throws Error for count < 1 or > 4096.
 PoissonDisk poisson_disk(int count, std::uint32_t seed);
 
-// The points as a GLSL constant: `const vec2 NAME[count] = vec2[](...);`
-// with a comment naming the seed and the minimum distance. Throws Error unless
-// `name` is a GLSL identifier that is not reserved (no gl_ prefix, no __).
-std::string poisson_disk_glsl(const PoissonDisk& disk, const std::string& name, std::uint32_t seed);
-
 }  // namespace pn
