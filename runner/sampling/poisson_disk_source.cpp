@@ -144,9 +144,11 @@ std::string poisson_disk_source(const PoissonDisk& disk, const std::string& name
   std::snprintf(line, sizeof line, "// %zu Poisson-disk samples in the unit disk, minimum distance %.6f,\n",
                 disk.points.size(), disk.min_distance);
   std::string out = line;
-  std::snprintf(line, sizeof line, "// Bridson's algorithm, seed %u (penumbra poisson --lang %s).\n", seed,
-                language == SourceLanguage::glsl ? "glsl" : language == SourceLanguage::hlsl ? "hlsl"
-                                                 : language == SourceLanguage::msl  ? "msl" : "cpp");
+  std::snprintf(line, sizeof line, "// Bridson's algorithm, seed %u (penumbra poisson%s).\n", seed,
+                language == SourceLanguage::glsl   ? ""  // the text GLSL files hold (poisson_pcss_query.comp)
+                : language == SourceLanguage::hlsl ? " --lang hlsl"
+                : language == SourceLanguage::msl  ? " --lang msl"
+                                                   : " --lang cpp");
   out += line;
   const char* point = "    float2(%s, %s)%s\n";
   switch (language) {
