@@ -15,6 +15,10 @@ as the HTML comment on the line before its fence says:
                                     is in M or the files it includes
   <!-- glsl: skip REASON -->        not GLSL as written (a placeholder), with the reason
 
+Every technique's settings struct (`struct Pn…Settings` in glsl/M.glsl) is restated on
+docs/modules/M.md a field a line, each line's comment giving its default (`default …`, or `the
+caller's` where there is none) — issue 53: the fields come from the code, their meaning from the page.
+
 compiled for gl450, vulkan and es310 with glslangValidator (the test expands the includes itself).
 A block without such a comment fails. Exit 0 when every block holds, 1 otherwise.
 """
@@ -113,6 +117,33 @@ def restated(block, module_text):
     return missing
 
 
+def settings_documented(root, blocks_found):
+    """Failures: a module's settings struct not restated on its page a field a line, each with a
+    comment naming its default (or `the caller's`)."""
+    failures = []
+    glsl = os.path.join(root, 'glsl')
+    for name in sorted(os.listdir(glsl)):
+        if not name.endswith('.glsl'):
+            continue
+        text = open(os.path.join(glsl, name), encoding='utf-8').read()
+        for struct, body in re.findall(r'^struct\s+(Pn\w*Settings)\s*\{([^}]*)\}', text, flags=re.M):
+            fields = re.findall(r'^\s*\w+\s+(\w+)\s*;', body, flags=re.M)
+            page = f'docs/modules/{name[:-5]}.md'
+            restated = [t for (p, _, note, t) in blocks_found
+                        if p == page and note is not None and note.group(1) == 'restates' and f'struct {struct}' in t]
+            if not restated:
+                failures.append(f'{page}: {struct} ({name}) is not restated in a `restates {name}` block')
+                continue
+            block = restated[0]
+            for field in fields:
+                line = next((l for l in block.split('\n') if re.match(rf'^\s*\w+\s+{field}\s*;', l)), None)
+                if line is None:
+                    failures.append(f'{page}: {struct}.{field} not on a line of its own')
+                elif not re.search(r"//.*(default|the caller's)", line):
+                    failures.append(f"{page}: {struct}.{field}: its comment names no default (`default …` or `the caller's`)")
+    return failures
+
+
 def compile_all(source, stage, validator, scratch, tag):
     failures = []
     for target, header in HEADERS.items():
@@ -128,6 +159,12 @@ def compile_all(source, stage, validator, scratch, tag):
 
 
 def main():
+    if sys.argv[1:2] == ['--settings-only']:  # the settings check alone (its broken-copy test)
+        failures = settings_documented(sys.argv[2], list(blocks(sys.argv[2])))
+        for f in failures:
+            print('FAIL ' + f)
+        print(f'settings structs: {len(failures)} failures')
+        return 1 if failures else 0
     root, validator, scratch = sys.argv[1:4]
     glsl = os.path.join(root, 'glsl')
     here = os.path.join(root, 'tests', 'docs')
@@ -171,11 +208,13 @@ def main():
             failures += [f'{where}: {f}' for f in compile_all(source, 'frag', validator, scratch, f'block{n}')]
         except ValueError as e:
             failures.append(f'{where}: {e}')
+    settings = settings_documented(root, list(blocks(root)))
+    failures += settings
     for f in failures:
         print('FAIL ' + f)
     total = sum(counts.values())
     print(f'{total} glsl blocks in docs/: ' + ', '.join(f'{v} {k}' for k, v in sorted(counts.items())) +
-          f'; {len(failures)} failures')
+          f'; the settings structs restated a field a line with their defaults; {len(failures)} failures')
     return 1 if failures else 0
 
 
