@@ -43,8 +43,6 @@ std::string export_entry(const SourceTree& tree, const std::string& module) {
   return entry;
 }
 
-namespace {
-
 // The declarations in the exported `code` of the resource at GLSL `binding`, as the code spells
 // them (issue 41: the header is read from the code, not written from a rule beside it): HLSL's
 // `… : register(xN)` lines (a read-only storage buffer is a `ByteAddressBuffer` at tN, a
@@ -86,8 +84,6 @@ std::vector<std::string> declarations_of(const std::string& code, CrossLanguage 
   }
   return out;
 }
-
-}  // namespace
 
 std::string export_source(const GlslangProcess& process, const SourceTree& tree, const std::string& module,
                           CrossLanguage language, const std::string& provenance) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "shader/glslang_compiler.h"
 #include "shader/source_tree.h"
@@ -23,6 +24,11 @@ std::string export_entry(const SourceTree& tree, const std::string& module);
 // Throws Error(ExitCode::failed) with the compiler's first error.
 std::string export_source(const GlslangProcess& process, const SourceTree& tree, const std::string& module,
                           CrossLanguage language, const std::string& provenance);
+
+// The declarations of the resource at GLSL `binding` in an export's `code`, as the code spells them:
+// HLSL's `… : register(xN)` lines, MSL's kernel parameters at [[texture(N)]], [[sampler(N)]],
+// [[buffer(N)]]. Empty when the code declares none (an unused resource).
+std::vector<std::string> declarations_of(const std::string& code, CrossLanguage language, unsigned binding);
 
 // FNV-1a, 64 bits, of `text`, as 16 hex digits: names a file's exact content in the header.
 std::string content_hash(const std::string& text);

@@ -40,6 +40,25 @@ class CrossContext {
   std::string error_;
 };
 
+// GLSL's name of a storage image format (the ones the passes declare, and their kin).
+std::string image_format_name(SpvImageFormat format) {
+  switch (format) {
+    case SpvImageFormatRgba32f: return "rgba32f";
+    case SpvImageFormatRg32f: return "rg32f";
+    case SpvImageFormatR32f: return "r32f";
+    case SpvImageFormatRgba16f: return "rgba16f";
+    case SpvImageFormatRg16f: return "rg16f";
+    case SpvImageFormatR16f: return "r16f";
+    case SpvImageFormatRgba8: return "rgba8";
+    case SpvImageFormatRgba32ui: return "rgba32ui";
+    case SpvImageFormatRg32ui: return "rg32ui";
+    case SpvImageFormatR32ui: return "r32ui";
+    case SpvImageFormatRgba32i: return "rgba32i";
+    case SpvImageFormatR32i: return "r32i";
+    default: return "";
+  }
+}
+
 }  // namespace
 
 SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv, bool active_only) {
@@ -77,7 +96,10 @@ SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv, bool acti
         const spvc_type sampled = spvc_compiler_get_type_handle(compiler, spvc_type_get_image_sampled_type(image));
         const spvc_basetype base = spvc_type_get_basetype(sampled);
         b.integer = base == SPVC_BASETYPE_UINT32 || base == SPVC_BASETYPE_INT32;
+        b.format = image_format_name(spvc_type_get_image_storage_format(image));
       }
+      b.non_writable = spvc_compiler_has_decoration(compiler, list[i].id, SpvDecorationNonWritable);
+      b.non_readable = spvc_compiler_has_decoration(compiler, list[i].id, SpvDecorationNonReadable);
       out.bindings.push_back(b);
     }
   }

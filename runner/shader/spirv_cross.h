@@ -20,6 +20,8 @@ struct SpirvBinding {
   DescriptorKind kind = DescriptorKind::combined_image_sampler;
   std::string name;
   bool integer = false;  // a storage image of integer texels (rgba32ui)
+  std::string format;    // a storage image's declared format ("rgba32f", "r32ui"; "" unknown or not an image)
+  bool non_writable = false, non_readable = false;  // the variable's (GLSL readonly, writeonly)
 };
 
 struct SpirvReflection {
