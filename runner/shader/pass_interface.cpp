@@ -52,7 +52,8 @@ std::string holds(const std::string& glsl, const std::string& name) {
     }
   if (declaration.empty()) return "";
   std::smatch m;
-  if (std::regex_search(declaration, m, std::regex(R"(\b(PN_\w*_BINDING)\b)"))) {
+  if (std::regex_search(declaration, m, std::regex(R"(binding\s*=\s*(PN_\w+))")) ||
+      std::regex_search(declaration, m, std::regex(R"(\b(PN_\w*_BINDING)\b)"))) {
     std::smatch d;
     if (std::regex_search(glsl, d, std::regex("#define\\s+" + m[1].str() + "\\s+\\d+[ \\t]*//[ \\t]*([^\\n]*)")))
       return d[1].str();
