@@ -58,8 +58,10 @@ std::string holds(const std::string& glsl, const std::string& name) {
     if (std::regex_search(glsl, d, std::regex("#define\\s+" + m[1].str() + "\\s+\\d+[ \\t]*//[ \\t]*([^\\n]*)")))
       return d[1].str();
   }
-  const std::size_t comment = declaration.find("//");
-  return comment == std::string::npos ? "" : declaration.substr(declaration.find_first_not_of(" /", comment));
+  const std::size_t text = declaration.find("//") == std::string::npos
+                               ? std::string::npos
+                               : declaration.find_first_not_of(" /", declaration.find("//"));
+  return text == std::string::npos ? "" : declaration.substr(text);
 }
 
 // A block's members, comments dropped ("int level; int texelFirst; int texelCount;"): what an
