@@ -11,14 +11,28 @@ namespace pn {
 
 namespace {
 
-const char* language_name(SourceLanguage language) {
-  switch (language) {
-    case SourceLanguage::glsl: return "GLSL";
-    case SourceLanguage::hlsl: return "HLSL";
-    case SourceLanguage::msl: return "MSL";
-    case SourceLanguage::cpp: return "C++";
-  }
-  return "";
+// What a language writes: its --lang key, its name with the article before it, the array's
+// declaration around NAME[n] and a point's format.
+struct LanguageForm {
+  SourceLanguage language;
+  const char* key;
+  const char* named;  // "a GLSL", "an HLSL"
+  const char* type;   // before NAME
+  const char* open;   // after [n]
+  const char* point;  // x, y, separator
+  const char* close;
+};
+
+constexpr LanguageForm kForms[] = {
+    {SourceLanguage::glsl, "glsl", "a GLSL", "const vec2 ", "] = vec2[](\n", "    vec2(%s, %s)%s\n", ");\n"},
+    {SourceLanguage::hlsl, "hlsl", "an HLSL", "static const float2 ", "] = {\n", "    float2(%s, %s)%s\n", "};\n"},
+    {SourceLanguage::msl, "msl", "an MSL", "constant float2 ", "] = {\n", "    float2(%s, %s)%s\n", "};\n"},
+    {SourceLanguage::cpp, "cpp", "a C++", "constexpr float ", "][2] = {\n", "    {%s, %s}%s\n", "};\n"}};
+
+const LanguageForm& form_of(SourceLanguage language) {
+  for (const LanguageForm& f : kForms)
+    if (f.language == language) return f;
+  return kForms[0];
 }
 
 // GLSL 4.50 §3.6 (and ES 3.10 §3.7): keywords and reserved words — a name the compiler refuses.
@@ -115,16 +129,14 @@ bool reserved(const std::string& name, SourceLanguage language) {
 }  // namespace
 
 SourceLanguage parse_source_language(const std::string& name) {
-  if (name == "glsl") return SourceLanguage::glsl;
-  if (name == "hlsl") return SourceLanguage::hlsl;
-  if (name == "msl") return SourceLanguage::msl;
-  if (name == "cpp") return SourceLanguage::cpp;
+  for (const LanguageForm& f : kForms)
+    if (name == f.key) return f.language;
   throw Error("--lang '" + name + "': expected glsl, hlsl, msl or cpp");
 }
 
 std::string poisson_disk_source(const PoissonDisk& disk, const std::string& name, std::uint32_t seed,
                                 SourceLanguage language) {
-  const std::string lang = language_name(language);
+  const LanguageForm& form = form_of(language);
   // An identifier (GLSL ES 3.10 §3.7, C++ [lex.name] without universal characters): a letter or _,
   // then letters, digits and _; names beginning with gl_ or holding __ are reserved (GLSL; in C++
   // and its kin __ is the implementation's); at most 1024 characters.
@@ -133,42 +145,25 @@ std::string poisson_disk_source(const PoissonDisk& disk, const std::string& name
                     name.find("__") == std::string::npos;
   for (char c : name) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
   if (!identifier)
-    throw Error("Poisson disk name '" + name + "': expected " + (language == SourceLanguage::glsl || language == SourceLanguage::cpp ? "a " : "an ") +
-                lang + " identifier (letters, digits and _, not " +
+    throw Error("Poisson disk name '" + name + "': expected " + form.named + " identifier (letters, digits and _, not " +
                 "starting with a digit" + (language == SourceLanguage::glsl ? " or gl_" : "") + ", no __)");
   if (reserved(name, language))
-    throw Error("Poisson disk name '" + name + "': " + (language == SourceLanguage::glsl || language == SourceLanguage::cpp ? "a " : "an ") +
-                lang + " keyword or reserved word: expected another identifier");
-  const std::string n = std::to_string(disk.points.size());
+    throw Error("Poisson disk name '" + name + "': " + form.named + " keyword or reserved word: expected another identifier");
   char line[96];
   std::snprintf(line, sizeof line, "// %zu Poisson-disk samples in the unit disk, minimum distance %.6f,\n",
                 disk.points.size(), disk.min_distance);
   std::string out = line;
-  std::snprintf(line, sizeof line, "// Bridson's algorithm, seed %u (penumbra poisson%s).\n", seed,
-                language == SourceLanguage::glsl   ? ""  // the text GLSL files hold (poisson_pcss_query.comp)
-                : language == SourceLanguage::hlsl ? " --lang hlsl"
-                : language == SourceLanguage::msl  ? " --lang msl"
-                                                   : " --lang cpp");
+  // GLSL's without --lang: the text GLSL files hold (poisson_pcss_query.comp).
+  const std::string lang = language == SourceLanguage::glsl ? "" : std::string(" --lang ") + form.key;
+  std::snprintf(line, sizeof line, "// Bridson's algorithm, seed %u (penumbra poisson%s).\n", seed, lang.c_str());
   out += line;
-  const char* point = "    float2(%s, %s)%s\n";
-  switch (language) {
-    case SourceLanguage::glsl:
-      out += "const vec2 " + name + "[" + n + "] = vec2[](\n";
-      point = "    vec2(%s, %s)%s\n";
-      break;
-    case SourceLanguage::hlsl: out += "static const float2 " + name + "[" + n + "] = {\n"; break;
-    case SourceLanguage::msl: out += "constant float2 " + name + "[" + n + "] = {\n"; break;
-    case SourceLanguage::cpp:
-      out += "constexpr float " + name + "[" + n + "][2] = {\n";
-      point = "    {%s, %s}%s\n";
-      break;
-  }
+  out += form.type + name + "[" + std::to_string(disk.points.size()) + form.open;
   for (size_t i = 0; i < disk.points.size(); ++i) {
     std::string x = number(disk.points[i].x, language), y = number(disk.points[i].y, language);
-    std::snprintf(line, sizeof line, point, x.c_str(), y.c_str(), i + 1 < disk.points.size() ? "," : "");
+    std::snprintf(line, sizeof line, form.point, x.c_str(), y.c_str(), i + 1 < disk.points.size() ? "," : "");
     out += line;
   }
-  return out + (language == SourceLanguage::glsl ? ");\n" : "};\n");
+  return out + form.close;
 }
 
 std::string poisson_disk_glsl(const PoissonDisk& disk, const std::string& name, std::uint32_t seed) {

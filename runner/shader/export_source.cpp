@@ -85,14 +85,22 @@ std::vector<std::string> declarations_of(const std::string& code, CrossLanguage 
   return out;
 }
 
+EntrySpirv compile_entry(const GlslangProcess& process, const SourceTree& tree, const std::string& module) {
+  EntrySpirv out;
+  out.entry = export_entry(tree, module);
+  out.flat = flatten(tree, tree.locate_in_root(out.entry));
+  CompileResult compiled = compile_with_glslang(process, standalone_source(out.flat, Target::vulkan), Target::vulkan);
+  if (!compiled.ok)
+    throw Error(out.entry + ": " + first_error(compiled, "glslang could not compile it for Vulkan"), ExitCode::failed);
+  out.spirv = std::move(compiled.spirv);
+  return out;
+}
+
 std::string export_source(const GlslangProcess& process, const SourceTree& tree, const std::string& module,
                           CrossLanguage language, const std::string& provenance) {
-  const std::string entry = export_entry(tree, module);
-  const FlatSource flat = flatten(tree, tree.locate_in_root(entry));
-  const ShaderSource source = standalone_source(flat, Target::vulkan);
-  const CompileResult compiled = compile_with_glslang(process, source, Target::vulkan);
-  if (!compiled.ok)
-    throw Error(entry + ": " + first_error(compiled, "glslang could not compile it for Vulkan"), ExitCode::failed);
+  const EntrySpirv compiled = compile_entry(process, tree, module);
+  const std::string& entry = compiled.entry;
+  const FlatSource& flat = compiled.flat;
   const std::string text = cross_compile(compiled.spirv, language);
 
   std::string header = "// penumbra bundle of " + tree.display_name(tree.locate(module)) + " as " +

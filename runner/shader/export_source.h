@@ -7,9 +7,11 @@
 // registers.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "shader/flatten.h"
 #include "shader/glslang_compiler.h"
 #include "shader/source_tree.h"
 #include "shader/spirv_cross.h"
@@ -19,6 +21,16 @@ namespace pn {
 // The entry a module or pass is exported through, relative to the root: "exports/X.comp" for
 // X.glsl, the pass itself otherwise. Throws Error naming the module when a module has none.
 std::string export_entry(const SourceTree& tree, const std::string& module);
+
+// A module's or pass's entry (export_entry), flattened and compiled by glslang for the vulkan target:
+// what export_source crosses to HLSL or MSL and pass_interface reflects.
+struct EntrySpirv {
+  std::string entry;  // relative to the root
+  FlatSource flat;
+  std::vector<std::uint32_t> spirv;
+};
+// Throws Error(ExitCode::failed) with the compiler's first error.
+EntrySpirv compile_entry(const GlslangProcess& process, const SourceTree& tree, const std::string& module);
 
 // `provenance`: a line or two on where the files came from (the commit), put in the header.
 // Throws Error(ExitCode::failed) with the compiler's first error.

@@ -4,11 +4,8 @@
 #include <regex>
 #include <sstream>
 
-#include "core/error.h"
 #include "shader/export_source.h"
-#include "shader/flatten.h"
 #include "shader/spirv_cross.h"
-#include "shader/target.h"
 
 namespace pn {
 
@@ -97,11 +94,8 @@ std::string escaped(std::string text) {
 }  // namespace
 
 std::vector<InterfaceRow> pass_interface(const GlslangProcess& process, const SourceTree& tree, const std::string& module) {
-  const std::string entry = export_entry(tree, module);
-  const FlatSource flat = flatten(tree, tree.locate_in_root(entry));
-  const ShaderSource source = standalone_source(flat, Target::vulkan);
-  const CompileResult compiled = compile_with_glslang(process, source, Target::vulkan);
-  if (!compiled.ok) throw Error(entry + ": glslang could not compile it for Vulkan", ExitCode::failed);
+  const EntrySpirv compiled = compile_entry(process, tree, module);
+  const FlatSource& flat = compiled.flat;
   const std::string hlsl = cross_compile(compiled.spirv, CrossLanguage::hlsl50);
   const SpirvReflection all = reflect_spirv(compiled.spirv), active = reflect_spirv(compiled.spirv, true);
   std::vector<InterfaceRow> rows;
