@@ -96,6 +96,19 @@ TEST_CASE("poisson_pcss.h: one maximum for GLSL and C++, and the default counts 
   STATIC_REQUIRE(PN_POISSON_BLOCKER_SAMPLES <= PN_POISSON_MAX_SAMPLES);
 }
 
+TEST_CASE("exports/poisson_disks.glsl holds `penumbra poisson` of the runner's two disks verbatim") {
+  std::ifstream in(std::string(PENUMBRA_GLSL_DIR) + "/exports/poisson_disks.glsl");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string blocker = pn::poisson_disk_glsl(
+      pn::poisson_disk(PN_POISSON_BLOCKER_SAMPLES, pn::kPoissonBlockerDiskSeed), "PN_EXPORT_BLOCKER_DISK",
+      pn::kPoissonBlockerDiskSeed);
+  const std::string filter = pn::poisson_disk_glsl(pn::poisson_disk(PN_POISSON_PCF_SAMPLES, pn::kPoissonFilterDiskSeed),
+                                                   "PN_EXPORT_FILTER_DISK", pn::kPoissonFilterDiskSeed);
+  CHECK(text.str().find(blocker) != std::string::npos);
+  CHECK(text.str().find(filter) != std::string::npos);
+}
+
 TEST_CASE("poisson_pcss_query.comp holds `penumbra poisson --count 16 --seed 1`'s output verbatim") {
   std::ifstream in(std::string(PENUMBRA_GLSL_DIR) + "/passes/poisson_pcss_query.comp");
   std::stringstream text;

@@ -1,11 +1,12 @@
 // exports/poisson_pcss_call.glsl — the call exports/poisson_pcss.comp and .frag make: each
 // overload of pnPoissonPcss once per receiver of a receiver image (bindings: exports.h,
-// poisson_pcss.h; the disks read in place from the block, as poisson_pcss.glsl asks its includer).
+// poisson_pcss.h; the disks read in place from constants, as poisson_pcss.glsl asks its includer).
 
 #include "poisson_pcss_export.h"
 
-#define PN_POISSON_BLOCKER_DISK pnExport.blockerPoints
-#define PN_POISSON_FILTER_DISK pnExport.filterPoints
+#include "poisson_disks.glsl"
+#define PN_POISSON_BLOCKER_DISK PN_EXPORT_BLOCKER_DISK
+#define PN_POISSON_FILTER_DISK PN_EXPORT_FILTER_DISK
 #include "poisson_pcss.glsl"
 
 #include "receivers.glsl"  // pnExportReceiver, pnExportReceiverPlane

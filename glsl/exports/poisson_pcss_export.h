@@ -9,8 +9,7 @@
 #include "../poisson_pcss.h"
 #include "exports.h"
 
-// The two disks travel in the block (an engine may paste `penumbra poisson --count 36` and
-// `--count 64` as constants instead): std140, a vec2 a 16-byte element.
+// The two disks are constants (poisson_disks.glsl), not in the block.
 PN_UNIFORM_BLOCK(PnPoissonPcssExport, PN_EXPORT_PARAMS_BINDING)
   PN_LIGHT_FIELDS
   float bias;
@@ -21,8 +20,6 @@ PN_UNIFORM_BLOCK(PnPoissonPcssExport, PN_EXPORT_PARAMS_BINDING)
   float rotationSin;
   float rotationAngle;     // with rotationFromAngle != 0 instead: pnPoissonRotation(rotationAngle)
   int rotationFromAngle;
-  PN_VEC2_ARRAY(blockerPoints, PN_POISSON_MAX_SAMPLES)
-  PN_VEC2_ARRAY(filterPoints, PN_POISSON_MAX_SAMPLES)
 PN_END_UNIFORM_BLOCK(pnExport)
 
 #endif  // PENUMBRA_EXPORTS_POISSON_PCSS_H

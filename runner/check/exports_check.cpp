@@ -74,7 +74,6 @@ namespace pn::glsl {
 #include "exports/vsm_export.h"
 PN_STD140_OFFSET(PnPoissonPcssExport, rotationSin, 44);
 PN_STD140_OFFSET(PnPoissonPcssExport, rotationFromAngle, 52);
-PN_STD140_OFFSET(PnPoissonPcssExport, blockerPoints, 64);
 PN_STD140_OFFSET(PnVogelPcssExport, filterSamples, 36);
 PN_STD140_OFFSET(PnBackprojectionExport, thickness, 44);
 PN_STD140_OFFSET(PnBackprojectionExport, slabs, 48);
@@ -303,8 +302,9 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const SummedAreaPass sums(env.device, env.tree);
   const std::unique_ptr<DeviceTexture> table = upload_sample_table(env.device, generate_sample_table(kSampleTableSeed));
   const float bias = exact_pcss().bias;
-  const std::vector<Sample> blocker_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0036u).points;
-  const std::vector<Sample> filter_disk = poisson_disk(PN_POISSON_MAX_SAMPLES, 0x5eed0064u).points;
+  // The export's constant disks (exports/poisson_disks.glsl).
+  const std::vector<Sample> blocker_disk = poisson_disk(PN_POISSON_BLOCKER_SAMPLES, kPoissonBlockerDiskSeed).points;
+  const std::vector<Sample> filter_disk = poisson_disk(PN_POISSON_PCF_SAMPLES, kPoissonFilterDiskSeed).points;
   std::vector<CaseResult> results;
   vsm_cases(env, results);
   {
@@ -475,10 +475,6 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
         pb.blockerSamples = d.blocker_samples, pb.filterSamples = d.filter_samples;
         pb.rotationCos = static_cast<float>(rotation_cos), pb.rotationSin = static_cast<float>(rotation_sin);
         pb.rotationAngle = static_cast<float>(kRotation), pb.rotationFromAngle = d.filter_scale > 0.0f ? 0 : 1;
-        for (int k = 0; k < PN_POISSON_MAX_SAMPLES; ++k) {
-          pb.blockerPoints[k] = {blocker_disk[static_cast<std::size_t>(k)].x, blocker_disk[static_cast<std::size_t>(k)].y};
-          pb.filterPoints[k] = {filter_disk[static_cast<std::size_t>(k)].x, filter_disk[static_cast<std::size_t>(k)].y};
-        }
         results.push_back(interval_case(where + "exports/poisson_pcss (pnPoissonPcss, " + settings +
                                             ", both overloads, rotated" +
                                             (d.filter_scale > 0.0f ? "" : " by pnPoissonRotation(angle)") +

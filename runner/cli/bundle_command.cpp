@@ -52,6 +52,7 @@ void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   struct Options {
     std::string module, output, target = "gl450", shader_model;
     bool bare = false, interface = false;
+    RegisterPlanOptions registers;
   };
   auto opt = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("bundle", "Flatten a module and its includes into one GLSL file");
@@ -60,12 +61,14 @@ void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
   cmd->add_option("--target", opt->target,
                   "gl450 | vulkan | es310: the #version header of the standalone form; hlsl | msl: the module's export "
                   "entry (exports/X.comp) or the pass as HLSL or MSL, through SPIR-V and SPIRV-Cross");
-  cmd->add_option("--shader-model", opt->shader_model, "With --target hlsl: 5.0 (the default) or 6.0");
+  cmd->add_option("--shader-model", opt->shader_model,
+                  "With --target hlsl: 5.0 (the default), 5.1 or 6.0 (register spaces: 5.1 and 6.0)");
   cmd->add_flag("--interface", opt->interface,
                 "Print the module's or pass's resource interface instead, from its SPIR-V: a markdown table of each "
                 "binding's HLSL register, kind, format, access, whether the entry uses it and what it holds");
   cmd->add_flag("--bare", opt->bare,
                 "Only the flattened source, no #version and no entry point: to paste after an engine's own header");
+  add_register_plan_options(*cmd, opt->registers, "With --target hlsl");
   cmd->add_option("--glsl-root", global.glsl_root, "Directory that #include paths resolve under (default: the module's own copy of glsl/)");
   cmd->callback([opt, &global, &exit_code] {
     const bool cross = opt->target == "hlsl" || opt->target == "msl";
@@ -73,9 +76,14 @@ void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       throw Error("--interface: reads the Vulkan SPIR-V of the module's entry: expected no --target, --shader-model or --bare");
     if (!opt->shader_model.empty() && opt->target != "hlsl")
       throw Error("--shader-model " + opt->shader_model + ": applies to --target hlsl only");
-    if (!opt->shader_model.empty() && opt->shader_model != "5.0" && opt->shader_model != "6.0")
-      throw Error("--shader-model " + opt->shader_model + ": expected 5.0 or 6.0");
+    if (!opt->shader_model.empty() && opt->shader_model != "5.0" && opt->shader_model != "5.1" &&
+        opt->shader_model != "6.0")
+      throw Error("--shader-model " + opt->shader_model + ": expected 5.0, 5.1 or 6.0");
     if (cross && opt->bare) throw Error("--bare: applies to the GLSL targets, not " + opt->target);
+    const RegisterPlan plan = register_plan_of(opt->registers, opt->target == "hlsl" && !opt->interface, "--target hlsl");
+    if (plan.space != 0 && (opt->shader_model.empty() || opt->shader_model == "5.0"))
+      throw Error("--register-space " + std::to_string(plan.space) +
+                  ": shader model 5.0 has no register spaces: expected --shader-model 5.1 or 6.0");
     const Target target = cross ? Target::vulkan : [&] {
       try {
         return parse_target(opt->target);
@@ -97,9 +105,10 @@ void add_bundle_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     } else if (cross) {
       const CrossLanguage language = opt->target == "msl"          ? CrossLanguage::msl
                                      : opt->shader_model == "6.0" ? CrossLanguage::hlsl60
+                                     : opt->shader_model == "5.1" ? CrossLanguage::hlsl51
                                                                   : CrossLanguage::hlsl50;
       const GlslangProcess process;
-      text = export_source(process, tree, opt->module, language, provenance(tree.root()));
+      text = export_source(process, tree, opt->module, language, provenance(tree.root()), plan);
     } else if (opt->bare) {
       text = header + flat.file_table_comment() + flat.text;
     } else {

@@ -27,9 +27,10 @@ std::optional<PassLanguage> vulkan_language(const GlobalOptions& global, bool wi
   return std::nullopt;
 }
 
-void print_vulkan_device(const VulkanDevice& device) {
-  std::cout << (device.query_api() == "hlsl" ? "hlsl (each pass's HLSL export, compiled back by glslang) on vulkan: "
-                                              : "vulkan: ")
+void print_vulkan_device(const VulkanDevice& device, const RegisterPlan& plan) {
+  std::cout << (device.query_api() == "hlsl" ? "hlsl (each pass's HLSL export, registers " + plan.describe() +
+                                                   ", compiled back by glslang) on vulkan: "
+                                             : std::string("vulkan: "))
             << device.device_name() << " (" << device.device_type() << ", Vulkan "
             << device.api_version() << ", " << device.driver() << "), validation " << device.validation() << "\n";
 }
@@ -46,6 +47,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     bool quick = false;
     bool no_validation = false;
     std::string hlsl_root;
+    RegisterPlanOptions registers;
     DispatchBounds bounds{true};
   };
   auto opt = std::make_shared<Options>();
@@ -62,6 +64,8 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
                   "X.glsl --target hlsl` writes it) for the export entry exports/X.comp or the pass passes/X.comp; "
                   "each check says which copies it ran");
   cmd->add_flag("--no-validation", opt->no_validation, "With --api vulkan | hlsl: without the Khronos validation layer");
+  add_register_plan_options(*cmd, opt->registers,
+                            "With --api hlsl: each export written with your plan (as `bundle` writes it) and bound there");
   cmd->add_option("--blur-radius", opt->blur_radius,
                   "Check blur with this radius only (0 to " + std::to_string(kBlurMaxRadius) + ")");
   cmd->add_option("--blur-sigma", opt->blur_sigma, "Check blur with this sigma only (texels, > 0)");
@@ -106,6 +110,7 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     if (language && !global.backend.empty())
       throw Error("--backend " + global.backend + ": applies to the GL APIs (gl450, es310), not to " + global.api);
     if (!language && opt->no_validation) throw Error("--no-validation: applies to --api vulkan | hlsl only");
+    const RegisterPlan plan = register_plan_of(opt->registers, language == PassLanguage::hlsl, "--api hlsl");
     const SourceTree tree(glsl_root_or_default(global));
     // A root that supplies no copy, or a copy named so that it would never be read, is refused
     // here, before any work (vk/hlsl_root.h); each check then says what it ran.
@@ -118,9 +123,10 @@ void add_check_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       settings.language = *language;
       settings.validation = !opt->no_validation;
       if (!opt->hlsl_root.empty()) settings.hlsl_root = opt->hlsl_root;
+      settings.registers = plan;
       const auto device = create_vulkan_device(settings);
       device->set_dispatch_bounds(opt->bounds);
-      print_vulkan_device(*device);
+      print_vulkan_device(*device, plan);
       // One check at a time: each with its own budget of device time, and the origins of the
       // stages it compiled (--hlsl-root).
       const CheckEnvironment env(*device, tree, options);

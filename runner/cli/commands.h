@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "gl/context.h"
+#include "shader/register_plan.h"
 
 namespace pn::cli {
 
@@ -46,5 +47,16 @@ std::optional<Backend> chosen_backend(const GlobalOptions& global);  // throws E
 Api chosen_api(const GlobalOptions& global);                        // likewise; default gl450
 // Adds `--api gl450|es310` to a command that makes a context.
 void add_api_option(CLI::App& command, GlobalOptions& global);
+
+// `--register-shift t=N,s=N,u=N,b=N` and `--register-space N` (shader/register_plan.h), for `bundle
+// --target hlsl` and `check --api hlsl`; `where` says that in the help.
+struct RegisterPlanOptions {
+  std::string shift;
+  std::optional<long long> space;
+  bool given() const { return !shift.empty() || space.has_value(); }
+};
+void add_register_plan_options(CLI::App& command, RegisterPlanOptions& options, const std::string& where);
+// The plan; throws Error naming the option when `applies` is false (`what`: where they apply) or a value is wrong.
+RegisterPlan register_plan_of(const RegisterPlanOptions& options, bool applies, const std::string& what);
 
 }  // namespace pn::cli

@@ -47,4 +47,21 @@ void add_api_option(CLI::App& command, GlobalOptions& global) {
                      "`bundle --target es310` writes them)");
 }
 
+void add_register_plan_options(CLI::App& command, RegisterPlanOptions& options, const std::string& where) {
+  command.add_option("--register-shift", options.shift,
+                     where + ": your register plan's shifts, added to each GLSL binding by register kind: t (textures, "
+                             "read-only buffers), s (samplers), u (images, read-write buffers), b (constant buffers), "
+                             "e.g. t=16,u=32,b=48 (each 0 to " + std::to_string(kMaxRegisterShift) + "; default 0)");
+  command.add_option("--register-space", options.space,
+                     where + ": the register space of every resource (0 to " + std::to_string(kMaxRegisterSpace) +
+                         "; default 0), a descriptor set on Vulkan");
+}
+
+RegisterPlan register_plan_of(const RegisterPlanOptions& options, bool applies, const std::string& what) {
+  if (options.given() && !applies)
+    throw Error(std::string(options.shift.empty() ? "--register-space" : "--register-shift") + ": applies to " + what +
+                " only");
+  return parse_register_plan(options.shift, options.space.value_or(0));
+}
+
 }  // namespace pn::cli

@@ -32,8 +32,6 @@ using PcssBlock = glsl::PnPcssParams;
 
 namespace {
 
-constexpr std::uint32_t kBlockerDiskSeed = 0x5eed0036u;
-constexpr std::uint32_t kFilterDiskSeed = 0x5eed0064u;
 constexpr int kScanBandRows = 128;  // pcss_scan.comp: 128 × ceil(8192 / 16) < 65535 loop iterations
 
 PcssBlock make_block(const LightModel& light, const PcssSettings& s) {
@@ -135,8 +133,8 @@ PcssPipeline::PcssPipeline(const QueryDevice& device, const SourceTree& tree)
       no_pyramid_(device.make_texture({TexelFormat::rgba32f, 1, 1, 1, 1, true})),
       no_mip_(device.make_texture(float_shape(1, 1, 4))),
       no_depth_sums_(device.make_texture({TexelFormat::rgba32ui, 1, 1})),
-      blocker_disk_(make_disk(PcssSettings{}.blocker_samples, kBlockerDiskSeed)),
-      filter_disk_(make_disk(PcssSettings{}.filter_samples, kFilterDiskSeed)) {
+      blocker_disk_(make_disk(PcssSettings{}.blocker_samples, kPoissonBlockerDiskSeed)),
+      filter_disk_(make_disk(PcssSettings{}.filter_samples, kPoissonFilterDiskSeed)) {
   const float zero[4] = {0, 0, 0, 0};
   for (const Texture* placeholder : {&no_pyramid_, &no_mip_, &no_depth_sums_}) device.clear_texture(**placeholder, zero);
   // The passes without switches now, so a copy that does not compile fails here.
@@ -266,7 +264,7 @@ const glsl::PnPoissonDisk& PcssPipeline::disk(int samples) const {
   // A count other than the defaults gets its own disk, made once (Bridson's algorithm on the CPU:
   // not a per-frame cost an engine pays, so not inside a timed frame after the first).
   std::unique_ptr<glsl::PnPoissonDisk>& made = other_disks_[samples];
-  if (!made) made = make_disk(samples, kFilterDiskSeed);
+  if (!made) made = make_disk(samples, kPoissonFilterDiskSeed);
   return *made;
 }
 

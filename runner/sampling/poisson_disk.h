@@ -27,4 +27,10 @@ PoissonDisk bridson_disk(double r, std::uint32_t seed, int candidates = 30);
 // smallest overshoot. Deterministic for a seed. Throws Error for count < 1 or > 4096.
 PoissonDisk poisson_disk(int count, std::uint32_t seed);
 
+// The seeds of the runner's Poisson PCSS disks (its blocker search's PN_POISSON_BLOCKER_SAMPLES,
+// its PCF's PN_POISSON_PCF_SAMPLES), which the HLSL and MSL exports also ship as constants
+// (glsl/exports/poisson_disks.glsl).
+inline constexpr std::uint32_t kPoissonBlockerDiskSeed = 0x5eed0036u;
+inline constexpr std::uint32_t kPoissonFilterDiskSeed = 0x5eed0064u;
+
 }  // namespace pn

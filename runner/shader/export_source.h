@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "shader/flatten.h"
+#include "shader/register_plan.h"
 #include "shader/glslang_compiler.h"
 #include "shader/source_tree.h"
 #include "shader/spirv_cross.h"
@@ -32,15 +33,30 @@ struct EntrySpirv {
 // Throws Error(ExitCode::failed) with the compiler's first error.
 EntrySpirv compile_entry(const GlslangProcess& process, const SourceTree& tree, const std::string& module);
 
+// The code of an export, without its header (what `check --api hlsl` compiles back, and
+// export_source writes after the header): `spirv` (compiled from `flat`) as `language`, registers
+// as `plan` says, then made usable by name (issue 53) —
+// - the named constants of the modules' headers (each `#define PN_X <number>` of a .h file outside
+//   exports/ and passes/: PN_REGION_EXACT, PN_LEAF_QUAD, …) as `static const int|float` (MSL:
+//   `constant`) before the code, so that HLSL can write `s.regionMode = PN_REGION_EXACT`;
+// - each constant array of the GLSL (`const vec2 PN_EXPORT_BLOCKER_DISK[36] = …`), which
+//   SPIRV-Cross names by an id (`_752`), under its GLSL name again (matched by type, length and
+//   first value).
+std::string export_code(const std::vector<std::uint32_t>& spirv, const FlatSource& flat, CrossLanguage language,
+                        const RegisterPlan& plan);
+
 // `provenance`: a line or two on where the files came from (the commit), put in the header.
+// The header also keeps the entry's (a pass's) or the module's own leading comment.
 // Throws Error(ExitCode::failed) with the compiler's first error.
 std::string export_source(const GlslangProcess& process, const SourceTree& tree, const std::string& module,
-                          CrossLanguage language, const std::string& provenance);
+                          CrossLanguage language, const std::string& provenance, const RegisterPlan& plan = {});
 
 // The declarations of the resource at GLSL `binding` in an export's `code`, as the code spells them:
-// HLSL's `… : register(xN)` lines, MSL's kernel parameters at [[texture(N)]], [[sampler(N)]],
-// [[buffer(N)]]. Empty when the code declares none (an unused resource).
-std::vector<std::string> declarations_of(const std::string& code, CrossLanguage language, unsigned binding);
+// HLSL's `… : register(xM)` lines, M = N + `plan`'s shift of the register's kind, MSL's kernel
+// parameters at [[texture(N)]], [[sampler(N)]], [[buffer(N)]]. Empty when the code declares none
+// (an unused resource).
+std::vector<std::string> declarations_of(const std::string& code, CrossLanguage language, unsigned binding,
+                                         const RegisterPlan& plan = {});
 
 // FNV-1a, 64 bits, of `text`, as 16 hex digits: names a file's exact content in the header.
 std::string content_hash(const std::string& text);

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "shader/export_source.h"
+#include "shader/register_plan.h"
 #include "shader/spirv_cross.h"
 
 namespace pn {
@@ -96,7 +97,7 @@ std::string escaped(std::string text) {
 std::vector<InterfaceRow> pass_interface(const GlslangProcess& process, const SourceTree& tree, const std::string& module) {
   const EntrySpirv compiled = compile_entry(process, tree, module);
   const FlatSource& flat = compiled.flat;
-  const std::string hlsl = cross_compile(compiled.spirv, CrossLanguage::hlsl50);
+  const std::string hlsl = cross_compile(compiled.spirv, CrossLanguage::hlsl50, RegisterPlan{});
   const SpirvReflection all = reflect_spirv(compiled.spirv), active = reflect_spirv(compiled.spirv, true);
   std::vector<InterfaceRow> rows;
   for (const SpirvBinding& b : all.bindings) {

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "shader/register_plan.h"
 
 namespace pn {
 
@@ -99,6 +100,15 @@ SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv, bool acti
         b.format = image_format_name(spvc_type_get_image_storage_format(image));
       }
       b.non_writable = spvc_compiler_has_decoration(compiler, list[i].id, SpvDecorationNonWritable);
+      if (kind == DescriptorKind::storage_buffer && !b.non_writable) {
+        // A buffer's readonly (GLSL's, HLSL's ByteAddressBuffer) is on its block's members.
+        const spvc_type block = spvc_compiler_get_type_handle(compiler, list[i].base_type_id);
+        const unsigned members = spvc_type_get_num_member_types(block);
+        bool all = members > 0;
+        for (unsigned m = 0; all && m < members; ++m)
+          all = spvc_compiler_has_member_decoration(compiler, list[i].base_type_id, m, SpvDecorationNonWritable);
+        b.non_writable = all;
+      }
       b.non_readable = spvc_compiler_has_decoration(compiler, list[i].id, SpvDecorationNonReadable);
       out.bindings.push_back(b);
     }
@@ -140,26 +150,30 @@ std::vector<std::string> shared_bindings(const SpirvReflection& reflection) {
 const char* cross_language_name(CrossLanguage language) {
   switch (language) {
     case CrossLanguage::hlsl50: return "HLSL shader model 5.0";
+    case CrossLanguage::hlsl51: return "HLSL shader model 5.1";
     case CrossLanguage::hlsl60: return "HLSL shader model 6.0";
     case CrossLanguage::msl: return "MSL 2.0";
   }
   return "?";
 }
 
-std::string cross_compile(const std::vector<std::uint32_t>& spirv, CrossLanguage language) {
+std::string cross_compile(const std::vector<std::uint32_t>& spirv, CrossLanguage language, const RegisterPlan& plan) {
   CrossContext context;
   const bool msl = language == CrossLanguage::msl;
+  if (msl && !plan.identity()) throw Error("a register plan applies to HLSL only, not MSL", ExitCode::failed);
+  if (language == CrossLanguage::hlsl50 && plan.space != 0)
+    throw Error("a register space needs HLSL shader model 5.1 or later", ExitCode::failed);
   spvc_compiler compiler = context.compiler(spirv, msl ? SPVC_BACKEND_MSL : SPVC_BACKEND_HLSL);
   spvc_compiler_options options = nullptr;
   context.check(spvc_compiler_create_compiler_options(compiler, &options), "options");
+  SpvExecutionModel model = SpvExecutionModelGLCompute;
+  const spvc_entry_point* entries = nullptr;
+  size_t entry_count = 0;
+  context.check(spvc_compiler_get_entry_points(compiler, &entries, &entry_count), "listing entry points");
+  if (entry_count > 0) model = entries[0].execution_model;
   if (msl) {
     context.check(spvc_compiler_options_set_uint(options, SPVC_COMPILER_OPTION_MSL_VERSION, 20000), "MSL version");
     // [[texture(N)]], [[sampler(N)]], [[buffer(N)]] at the GLSL binding N, as HLSL's registers are.
-    SpvExecutionModel model = SpvExecutionModelGLCompute;
-    const spvc_entry_point* entries = nullptr;
-    size_t entry_count = 0;
-    context.check(spvc_compiler_get_entry_points(compiler, &entries, &entry_count), "listing entry points");
-    if (entry_count > 0) model = entries[0].execution_model;
     for (const SpirvBinding& b : reflect_spirv(spirv).bindings) {
       spvc_msl_resource_binding binding;
       spvc_msl_resource_binding_init(&binding);
@@ -171,8 +185,24 @@ std::string cross_compile(const std::vector<std::uint32_t>& spirv, CrossLanguage
     }
   } else {
     context.check(spvc_compiler_options_set_uint(options, SPVC_COMPILER_OPTION_HLSL_SHADER_MODEL,
-                                                 language == CrossLanguage::hlsl60 ? 60 : 50),
+                                                 language == CrossLanguage::hlsl60   ? 60
+                                                 : language == CrossLanguage::hlsl51 ? 51
+                                                                                     : 50),
                   "shader model");
+    // The plan's registers: binding N's t, s, u or b register at N + that kind's shift, in its space.
+    if (!plan.identity())
+      for (const SpirvBinding& b : reflect_spirv(spirv).bindings) {
+        spvc_hlsl_resource_binding binding;
+        spvc_hlsl_resource_binding_init(&binding);
+        binding.stage = model;
+        binding.desc_set = b.set;
+        binding.binding = b.binding;
+        binding.srv = {plan.space, b.binding + plan.t};
+        binding.sampler = {plan.space, b.binding + plan.s};
+        binding.uav = {plan.space, b.binding + plan.u};
+        binding.cbv = {plan.space, b.binding + plan.b};
+        context.check(spvc_compiler_hlsl_add_resource_binding(compiler, &binding), "an HLSL register");
+      }
   }
   context.check(spvc_compiler_install_compiler_options(compiler, options), "options");
   const char* source = nullptr;

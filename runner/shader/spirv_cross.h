@@ -21,7 +21,7 @@ struct SpirvBinding {
   std::string name;
   bool integer = false;  // a storage image of integer texels (rgba32ui)
   std::string format;    // a storage image's declared format ("rgba32f", "r32ui"; "" unknown or not an image)
-  bool non_writable = false, non_readable = false;  // the variable's (GLSL readonly, writeonly)
+  bool non_writable = false, non_readable = false;  // GLSL readonly, writeonly (a buffer's: all its members')
 };
 
 struct SpirvReflection {
@@ -38,11 +38,14 @@ SpirvReflection reflect_spirv(const std::vector<std::uint32_t>& spirv, bool acti
 // bindings are apart, but one binding namespace a set in Vulkan. Empty when every number is one's.
 std::vector<std::string> shared_bindings(const SpirvReflection& reflection);
 
-enum class CrossLanguage { hlsl50, hlsl60, msl };
+enum class CrossLanguage { hlsl50, hlsl51, hlsl60, msl };  // HLSL's register spaces: 5.1 and later
 const char* cross_language_name(CrossLanguage language);  // "HLSL shader model 5.0", …
 
-// `spirv` as source of `language`. Throws Error(ExitCode::failed) with SPIRV-Cross's message.
-std::string cross_compile(const std::vector<std::uint32_t>& spirv, CrossLanguage language);
+struct RegisterPlan;
+
+// `spirv` as source of `language`; HLSL's registers as `plan` says (shader/register_plan.h; MSL:
+// the identity plan only; HLSL 5.0: space 0 only). Throws Error(ExitCode::failed) with SPIRV-Cross's message.
+std::string cross_compile(const std::vector<std::uint32_t>& spirv, CrossLanguage language, const RegisterPlan& plan);
 
 // Where an HLSL sampler register s<N> goes when glslang compiles the HLSL back to SPIR-V: binding
 // N + kHlslSamplerBindingShift, so that it does not collide with texture t<N> at binding N

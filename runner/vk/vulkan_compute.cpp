@@ -62,8 +62,7 @@ void VulkanQueryProgram::run(const PassResources& resources, int width, int heig
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &before, 0,
                          nullptr, 0, nullptr);
     vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    if (bound.set != VK_NULL_HANDLE)
-      vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
+    bind_set(c, VK_PIPELINE_BIND_POINT_COMPUTE, bound);
     if (groups != nullptr)
       vkCmdDispatchIndirect(c, groups->buffer(), 0);
     else

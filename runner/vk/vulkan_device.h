@@ -15,6 +15,7 @@
 
 #include "device/pass_origin.h"
 #include "device/query_device.h"
+#include "shader/register_plan.h"
 
 namespace pn {
 
@@ -31,6 +32,10 @@ struct VulkanSettings {
   // used instead of the generated export of the compute entry X (exports/X.comp or
   // passes/X.comp) compiled without extra defines; checked by usable_hlsl_copies (vk/hlsl_root.h).
   std::optional<std::filesystem::path> hlsl_root;
+  // With hlsl: the registers the export is written with (`check --register-shift/--register-space`),
+  // bound back at binding register + kHlslSamplerBindingShift for samplers, set = space, as an
+  // engine with that plan binds them.
+  RegisterPlan registers;
 };
 
 class VulkanDevice final : public QueryDevice {

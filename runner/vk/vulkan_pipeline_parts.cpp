@@ -46,15 +46,20 @@ SetLayoutBindings set_layout_bindings(
     if (stage == VK_SHADER_STAGE_COMPUTE_BIT)
       std::copy(std::begin(reflection.local_size), std::end(reflection.local_size), out.local_size);
     for (const SpirvBinding& b : reflection.bindings) {
-      if (b.set != 0)
-        throw Error(name + ": '" + b.name + "' is in descriptor set " + std::to_string(b.set) + ": expected set 0",
+      if (!out.bindings.empty() && b.set != out.set)
+        throw Error(name + ": '" + b.name + "' is in descriptor set " + std::to_string(b.set) + ", '" +
+                        out.bindings.front().name + "' in set " + std::to_string(out.set) + ": expected one set",
                     ExitCode::failed);
+      out.set = b.set;
       const auto same = std::find_if(out.bindings.begin(), out.bindings.end(),
                                      [&](const SpirvBinding& known) { return known.binding == b.binding; });
       if (same != out.bindings.end()) {
-        if (same->kind != b.kind)
-          throw Error(name + ": binding " + std::to_string(b.binding) + " is '" + same->name + "' in one stage and '" +
-                          b.name + "', of another kind, in another",
+        const auto before = reflection.bindings.begin() + (&b - reflection.bindings.data());
+        const bool this_stage = std::any_of(reflection.bindings.begin(), before,
+                                            [&](const SpirvBinding& earlier) { return earlier.binding == b.binding; });
+        if (same->kind != b.kind || this_stage)
+          throw Error(name + ": binding " + std::to_string(b.binding) + " is both '" + same->name + "' and '" + b.name +
+                          "' (Vulkan has one binding namespace a set: a register plan must keep them apart)",
                       ExitCode::failed);
         out.layout[static_cast<std::size_t>(same - out.bindings.begin())].stageFlags |= stage;
         continue;

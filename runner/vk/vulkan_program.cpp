@@ -1,6 +1,7 @@
 #include "vk/vulkan_program.h"
 
 #include <algorithm>
+#include <vector>
 #include <cstring>
 #include <iterator>
 
@@ -31,9 +32,17 @@ VulkanProgram::VulkanProgram(
   layout_info.bindingCount = static_cast<uint32_t>(layout.size());
   layout_info.pBindings = layout.data();
   vk_check(vkCreateDescriptorSetLayout(s.device, &layout_info, nullptr, &set_layout_), name_ + ": a set layout");
+  // An export in register space N: its set is N, the sets below it empty (an engine's own).
+  set_index_ = set.set;
+  std::vector<VkDescriptorSetLayout> layouts(set_index_ + 1, set_layout_);
+  if (set_index_ > 0) {
+    VkDescriptorSetLayoutCreateInfo empty{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    vk_check(vkCreateDescriptorSetLayout(s.device, &empty, nullptr, &empty_layout_), name_ + ": an empty set layout");
+    std::fill(layouts.begin(), layouts.end() - 1, empty_layout_);
+  }
   VkPipelineLayoutCreateInfo pipeline_layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  pipeline_layout_info.setLayoutCount = 1;
-  pipeline_layout_info.pSetLayouts = &set_layout_;
+  pipeline_layout_info.setLayoutCount = static_cast<uint32_t>(layouts.size());
+  pipeline_layout_info.pSetLayouts = layouts.data();
   vk_check(vkCreatePipelineLayout(s.device, &pipeline_layout_info, nullptr, &pipeline_layout_),
            name_ + ": a pipeline layout");
 }
@@ -44,6 +53,17 @@ VulkanProgram::~VulkanProgram() {
   if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(s_->device, pipeline_, nullptr);
   if (pipeline_layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(s_->device, pipeline_layout_, nullptr);
   if (set_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(s_->device, set_layout_, nullptr);
+  if (empty_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(s_->device, empty_layout_, nullptr);
+}
+
+void VulkanProgram::bind_set(VkCommandBuffer c, VkPipelineBindPoint point, const BoundSet& bound) const {
+  if (bound.set != VK_NULL_HANDLE) vkCmdBindDescriptorSets(c, point, pipeline_layout_, set_index_, 1, &bound.set, 0, nullptr);
+}
+
+unsigned VulkanProgram::resource_binding(const SpirvBinding& b) const {
+  if (s_->settings.language != PassLanguage::hlsl) return b.binding;
+  const RegisterPlan& plan = s_->settings.registers;
+  return b.binding - plan.shift(plan.register_kind(b.kind, b.non_writable));
 }
 
 void VulkanProgram::bind(const PassResources& resources, BoundSet& out) const {
@@ -74,11 +94,12 @@ void VulkanProgram::bind(const PassResources& resources, BoundSet& out) const {
     write.descriptorCount = 1;
     write.descriptorType = descriptor_type(b.kind);
     const std::string where = name_ + ": '" + b.name + "' (binding " + std::to_string(b.binding) + ")";
+    const unsigned at = resource_binding(b);  // the binding of the resource in `resources`
     switch (b.kind) {
       case DescriptorKind::combined_image_sampler:
       case DescriptorKind::sampled_image: {
         const auto t = std::find_if(resources.textures.begin(), resources.textures.end(),
-                                    [&](const QueryTexture& t) { return t.binding == b.binding; });
+                                    [&](const QueryTexture& t) { return t.binding == at; });
         if (t == resources.textures.end())
           throw Error(where + " is a texture the dispatch does not give", ExitCode::failed);
         images[i] = {s.sampler, made_here<VulkanImage>(t->texture, b.binding).view(), kImageLayout};
@@ -91,7 +112,7 @@ void VulkanProgram::bind(const PassResources& resources, BoundSet& out) const {
         break;
       case DescriptorKind::storage_image: {
         const auto found = std::find_if(resources.images.begin(), resources.images.end(),
-                                        [&](const PassImage& image) { return image.binding == b.binding; });
+                                        [&](const PassImage& image) { return image.binding == at; });
         if (found == resources.images.end())
           throw Error(where + " is an image the dispatch does not give", ExitCode::failed);
         const VulkanImage& image = made_here<VulkanImage>(found->texture, b.binding);
@@ -110,7 +131,7 @@ void VulkanProgram::bind(const PassResources& resources, BoundSet& out) const {
       case DescriptorKind::uniform_buffer: {
         const std::vector<QueryBlock> blocks = uniform_blocks(resources);
         const auto block = std::find_if(blocks.begin(), blocks.end(),
-                                        [&](const QueryBlock& block) { return block.binding == b.binding; });
+                                        [&](const QueryBlock& block) { return block.binding == at; });
         if (block == blocks.end())
           throw Error(where + " is a uniform block the dispatch does not give", ExitCode::failed);
         HostBuffer& uniform = out.uniforms.emplace_back(s, block->size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -120,13 +141,13 @@ void VulkanProgram::bind(const PassResources& resources, BoundSet& out) const {
         break;
       }
       case DescriptorKind::storage_buffer:
-        if (b.binding == kGuardBinding) {
+        if (at == kGuardBinding) {
           out.guard.emplace(s, sizeof(LoopGuardState), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
           std::memset(out.guard->data(), 0, sizeof(LoopGuardState));
           buffers[i] = {out.guard->buffer(), 0, sizeof(LoopGuardState)};
         } else {
           const auto found = std::find_if(resources.buffers.begin(), resources.buffers.end(),
-                                          [&](const PassBuffer& buffer) { return buffer.binding == b.binding; });
+                                          [&](const PassBuffer& buffer) { return buffer.binding == at; });
           if (found == resources.buffers.end())
             throw Error(where + " is a storage buffer the dispatch does not give", ExitCode::failed);
           const HostBuffer& buffer = made_here<VulkanBuffer>(found->buffer, b.binding).host();

@@ -52,6 +52,11 @@ class VulkanProgram : public QueryProgram {
   // buffer, cleared, where it has one). Throws Error naming a resource it uses and `resources`
   // lacks, or one made on another device.
   void bind(const PassResources& resources, BoundSet& out) const;
+  // The binding of `b`'s resource in a dispatch's PassResources: the GLSL binding, which under
+  // --api hlsl is the register less the plan's shift (the sampler shift stays on samplers alone).
+  unsigned resource_binding(const SpirvBinding& b) const;
+  // Binds `bound` (when it holds a set) at the set the SPIR-V names.
+  void bind_set(VkCommandBuffer c, VkPipelineBindPoint point, const BoundSet& bound) const;
 
   template <class Made>
   const Made& made_here(const auto& object, unsigned binding) const {
@@ -67,7 +72,9 @@ class VulkanProgram : public QueryProgram {
   std::vector<SpirvBinding> bindings_;
   std::vector<VkShaderModule> modules_;
   unsigned local_size_[3] = {1, 1, 1};
+  unsigned set_index_ = 0;  // 0 but for an HLSL export written in a register space
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout empty_layout_ = VK_NULL_HANDLE;  // the sets below set_index_
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };

@@ -124,8 +124,7 @@ void VulkanRasterProgram::draw(const VulkanVertices* vertices, const std::vector
       vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
       const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
       vkCmdSetViewport(c, 0, 1, &viewport);
-      if (bound.set != VK_NULL_HANDLE)
-        vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_, 0, 1, &bound.set, 0, nullptr);
+      bind_set(c, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
       if (vertices != nullptr) {
         const VkBuffer buffers[] = {vertices->buffer().buffer()};
         const VkDeviceSize offsets[] = {0};

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "shader/export_source.h"
 #include "shader/flatten.h"
 #include "shader/glslang_compiler.h"
 #include "shader/spirv_cross.h"
@@ -13,7 +14,8 @@ namespace pn::vk {
 
 namespace {
 
-std::vector<std::uint32_t> compile_stage(const VulkanDevice::State& s, ShaderSource source, const std::string& pass,
+std::vector<std::uint32_t> compile_stage(const VulkanDevice::State& s, const FlatSource& flat, ShaderSource source,
+                                         const std::string& pass,
                                          const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
   if (loops != nullptr && s.bounds.enabled)
     *loops = guard_loops(s.glslang, source, Target::vulkan, {kGuardBinding, s.bounds.loop_iterations});
@@ -38,7 +40,9 @@ std::vector<std::uint32_t> compile_stage(const VulkanDevice::State& s, ShaderSou
     s.origins.push_back({pass, name, "", ""});
     s.copies_read.insert(copy.filename().string());
   } else {
-    hlsl = cross_compile(glsl.spirv, CrossLanguage::hlsl50);
+    // As `bundle` writes it: shader model 5.0, or 5.1 for a plan's register space.
+    const CrossLanguage language = s.settings.registers.space != 0 ? CrossLanguage::hlsl51 : CrossLanguage::hlsl50;
+    hlsl = export_code(glsl.spirv, flat, language, s.settings.registers);
     if (s.settings.hlsl_root) {
       const std::string root = s.settings.hlsl_root->string();
       if (source.stage != Stage::compute) {
@@ -64,9 +68,10 @@ std::vector<std::uint32_t> compile_stage(const VulkanDevice::State& s, ShaderSou
 
 std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const SourceTree& tree, const std::string& pass,
                                        const std::vector<Define>& defines, std::vector<GuardedLoop>* loops) {
-  ShaderSource source = standalone_source(flatten(tree, tree.locate_in_root(pass)), Target::vulkan, defines);
+  const FlatSource flat = flatten(tree, tree.locate_in_root(pass));
+  ShaderSource source = standalone_source(flat, Target::vulkan, defines);
   // A copy's run is recorded each time (origins): never from the cache.
-  if (s.settings.hlsl_root) return compile_stage(s, std::move(source), pass, defines, loops);
+  if (s.settings.hlsl_root) return compile_stage(s, flat, std::move(source), pass, defines, loops);
   // The same text, stage, language and loop guard compile to the same SPIR-V and loops.
   const bool guarded = loops != nullptr && s.bounds.enabled;
   const std::string key = std::to_string(static_cast<int>(source.stage)) + "|" +
@@ -76,7 +81,7 @@ std::vector<std::uint32_t> stage_spirv(const VulkanDevice::State& s, const Sourc
   const auto found = s.compiled.find(key);
   if (found == s.compiled.end()) {
     VulkanDevice::State::CompiledStage stage;
-    stage.spirv = compile_stage(s, std::move(source), pass, defines, loops ? &stage.loops : nullptr);
+    stage.spirv = compile_stage(s, flat, std::move(source), pass, defines, loops ? &stage.loops : nullptr);
     const auto added = s.compiled.emplace(key, std::move(stage)).first;
     if (loops != nullptr) *loops = added->second.loops;
     return added->second.spirv;

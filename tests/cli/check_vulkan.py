@@ -8,9 +8,11 @@ CTests, so that two cores share what one ran serially):
   check_all_gl.sh): every registered check passes on both, and every case the API ran is one of
   GL's (the same name) — --quick runs every program on fewer fixtures (docs/reliability.md: the
   suite's 8 minutes);
+- hlsl: every export written with an engine's register plan (PLAN: every register kind shifted,
+  space 2: issue 53) and bound there, as the engine binds it;
 - hlsl: an HLSL copy given with --hlsl-root is what runs: exact_pcss.glsl's export (`bundle
-  --target hlsl`, the file an engine takes) passes the exports check as written and fails with one
-  operator changed, with a where / expected / observed line.
+  --target hlsl` with the plan, the file an engine takes) passes the exports check as written and
+  fails with one operator changed, with a where / expected / observed line.
 Exit 77 (skipped) when there is no Vulkan device.
 """
 import os
@@ -22,6 +24,10 @@ import sys
 CASE = re.compile(r'^([a-z_]+): (pass|FAIL) (.*?): ')
 ROW = re.compile(r'^([a-z_]+)\s+(\d+|-)\s+.*\s(pass|FAIL)$')
 WHERE = re.compile(r'exports: FAIL .* at \([0-9]+, [0-9]+\)(\[[0-9]\])?: expected [-+0-9.einf]+, observed [-+0-9.einf]+')
+
+
+# An engine's register plan (DXC's -fvk-*-shift habit): each kind its own range, in space 2.
+PLAN = ('--register-shift', 't=16,s=8,u=32,b=48', '--register-space', '2')
 
 
 def run(*args):
@@ -63,7 +69,7 @@ def main():
         return 77
     with open(gl_check) as f:
         runs = {'gl450': table(f.read())}
-    r = run(penumbra, 'check', '-v', '--quick', '--api', api)
+    r = run(penumbra, 'check', '-v', '--quick', '--api', api, *(PLAN if api == 'hlsl' else ()))
     if r.returncode != 0:
         print(r.stdout + r.stderr)
         print(f'check --api {api}: exit {r.returncode}, expected 0')
@@ -71,6 +77,8 @@ def main():
     runs[api] = table(r.stdout)
 
     failures = []
+    if api == 'hlsl' and 'registers t+16 s+8 u+32 b+48, space 2' not in r.stdout:
+        failures.append('check --api hlsl with the plan: its header does not name the plan (t+16 s+8 u+32 b+48, space 2)')
     modules = sorted(runs['gl450'][0])
     print(f'{"module":16} {"gl450":>14} {api:>14}')
     for module in modules:
@@ -100,11 +108,11 @@ def main():
     shutil.rmtree(root, ignore_errors=True)
     os.makedirs(root)
     export = os.path.join(root, 'exact_pcss.hlsl')
-    b = run(penumbra, 'bundle', 'exact_pcss.glsl', '--target', 'hlsl', '-o', export)
+    b = run(penumbra, 'bundle', 'exact_pcss.glsl', '--target', 'hlsl', '--shader-model', '5.1', *PLAN, '-o', export)
     if b.returncode != 0:
         print(b.stdout + b.stderr)
         return 1
-    good = run(penumbra, 'check', 'exports', '--quick', '--api', 'hlsl', '--hlsl-root', root)
+    good = run(penumbra, 'check', 'exports', '--quick', '--api', 'hlsl', *PLAN, '--hlsl-root', root)
     if good.returncode != 0:
         failures.append('exports on exact_pcss.glsl\'s HLSL export: exit %d, expected 0\n%s' % (good.returncode, good.stdout))
     text = open(export).read()
@@ -113,7 +121,7 @@ def main():
         failures.append('could not put the mistake into exact_pcss.hlsl (return 1.0f - pnPcfOccludedFraction()')
     else:
         open(export, 'w').write(mistake)
-        bad = run(penumbra, 'check', 'exports', '--quick', '--api', 'hlsl', '--hlsl-root', root)
+        bad = run(penumbra, 'check', 'exports', '--quick', '--api', 'hlsl', *PLAN, '--hlsl-root', root)
         print(bad.stdout, end='')
         if bad.returncode != 1 or not WHERE.search(bad.stdout):
             failures.append(f'exports on a broken HLSL copy: exit {bad.returncode}, expected 1 with a where / expected / observed line')
