@@ -1,9 +1,11 @@
 # penumbra_bundle(OUTPUT <file> MODULE <module>
-#                 [TARGET gl450|vulkan|es310|hlsl|msl] [SHADER_MODEL 5.0|6.0] [BARE] [GLSL_ROOT <dir>])
+#                 [TARGET gl450|vulkan|es310|hlsl|msl] [SHADER_MODEL 5.0|5.1|6.0] [BARE] [GLSL_ROOT <dir>]
+#                 [REGISTER_SHIFT t=N,s=N,u=N,b=N] [REGISTER_SPACE N])
 #
 # Writes OUTPUT at build time with `penumbra bundle MODULE --target TARGET` (docs/cli.md): the module and
-# its includes in one GLSL file, or its HLSL or MSL export; BARE and SHADER_MODEL are the command's --bare
-# and --shader-model. MODULE is a path under the glsl root (fast_pcss.glsl, passes/blur.comp); the root is
+# its includes in one GLSL file, or its HLSL or MSL export; BARE, SHADER_MODEL, REGISTER_SHIFT and
+# REGISTER_SPACE are the command's --bare, --shader-model, --register-shift and --register-space (an HLSL
+# export in your register plan: a space needs SHADER_MODEL 5.1 or 6.0). MODULE is a path under the glsl root (fast_pcss.glsl, passes/blur.comp); the root is
 # the tool's own modules, or GLSL_ROOT, a copy of glsl/ (relative: to the calling CMakeLists' directory). A
 # relative OUTPUT is under the current binary directory. The command runs again when the tool or any file
 # under the root changes; OUTPUT is built when a target of the same directory lists it as a source (or an
@@ -13,10 +15,11 @@
 # when this file is included by penumbra's own CMakeLists.txt (in tree, or a checkout added with
 # add_subdirectory or FetchContent). A bad call stops the configure step, naming the argument.
 function(penumbra_bundle)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "BARE" "OUTPUT;MODULE;TARGET;SHADER_MODEL;GLSL_ROOT" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "BARE" "OUTPUT;MODULE;TARGET;SHADER_MODEL;GLSL_ROOT;REGISTER_SHIFT;REGISTER_SPACE"
+                        "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "penumbra_bundle: '${arg_UNPARSED_ARGUMENTS}': not an argument it takes; expected "
-                        "OUTPUT, MODULE, TARGET, SHADER_MODEL, BARE or GLSL_ROOT")
+                        "OUTPUT, MODULE, TARGET, SHADER_MODEL, BARE, GLSL_ROOT, REGISTER_SHIFT or REGISTER_SPACE")
   endif()
   foreach(keyword IN LISTS arg_KEYWORDS_MISSING_VALUES)
     message(FATAL_ERROR "penumbra_bundle: ${keyword} without a value: expected ${keyword} <value>")
@@ -41,10 +44,29 @@ function(penumbra_bundle)
   endif()
   set(options --target ${arg_TARGET})
   if(DEFINED arg_SHADER_MODEL)
-    if(NOT arg_TARGET STREQUAL "hlsl" OR NOT arg_SHADER_MODEL MATCHES "^(5[.]0|6[.]0)$")
-      message(FATAL_ERROR "penumbra_bundle: SHADER_MODEL '${arg_SHADER_MODEL}': expected 5.0 or 6.0, with TARGET hlsl")
+    if(NOT arg_TARGET STREQUAL "hlsl" OR NOT arg_SHADER_MODEL MATCHES "^(5[.]0|5[.]1|6[.]0)$")
+      message(FATAL_ERROR "penumbra_bundle: SHADER_MODEL '${arg_SHADER_MODEL}': expected 5.0, 5.1 or 6.0, with TARGET hlsl")
     endif()
     list(APPEND options --shader-model ${arg_SHADER_MODEL})
+  endif()
+  # The register plan (the command checks the values again, and a space against the shader model).
+  if(DEFINED arg_REGISTER_SHIFT)
+    if(NOT arg_TARGET STREQUAL "hlsl" OR NOT arg_REGISTER_SHIFT MATCHES "^[tsub]=[0-9]+(,[tsub]=[0-9]+)*$")
+      message(FATAL_ERROR "penumbra_bundle: REGISTER_SHIFT '${arg_REGISTER_SHIFT}': expected KIND=N[,KIND=N...] "
+                          "(KIND t, s, u or b; e.g. t=16,u=32,b=48), with TARGET hlsl")
+    endif()
+    list(APPEND options --register-shift ${arg_REGISTER_SHIFT})
+  endif()
+  if(DEFINED arg_REGISTER_SPACE)
+    if(NOT arg_TARGET STREQUAL "hlsl" OR NOT arg_REGISTER_SPACE MATCHES "^[0-9]+$")
+      message(FATAL_ERROR "penumbra_bundle: REGISTER_SPACE '${arg_REGISTER_SPACE}': expected a space number, with "
+                          "TARGET hlsl")
+    endif()
+    if(NOT arg_REGISTER_SPACE EQUAL 0 AND NOT arg_SHADER_MODEL MATCHES "^(5[.]1|6[.]0)$")
+      message(FATAL_ERROR "penumbra_bundle: REGISTER_SPACE ${arg_REGISTER_SPACE}: shader model 5.0 has no register "
+                          "spaces: expected SHADER_MODEL 5.1 or 6.0")
+    endif()
+    list(APPEND options --register-space ${arg_REGISTER_SPACE})
   endif()
   if(arg_BARE)
     if(arg_TARGET STREQUAL "hlsl" OR arg_TARGET STREQUAL "msl")

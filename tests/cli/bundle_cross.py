@@ -14,6 +14,10 @@
   lines are the code's own declarations (issue 41: a read-only storage buffer is a
   `ByteAddressBuffer … : register(tN)`, an image written only `access::write`), and every
   resource the code declares is in the header;
+- every module's export in an engine's register plan (--shader-model 5.1, PLAN: issue 53): the
+  header's registers are the plan's (GLSL binding + the kind's shift, space 2) and glslangValidator
+  compiles the export to exactly those descriptor sets and bindings (register tN / sN / uN / bN
+  in spaceM at binding N of set M);
 - a module without an export entry is refused in one line that names the entry it looked for.
 """
 import glob
@@ -23,6 +27,43 @@ import subprocess
 import sys
 
 BINDING = re.compile(r'^//   (\w+) \(GLSL binding (\d+)\): (.*)$', re.M)
+
+
+PLAN = ('--register-shift', 't=16,s=8,u=32,b=48', '--register-space', '2')
+SHIFT = {'t': 16, 's': 8, 'u': 32, 'b': 48}
+DECORATION = re.compile(r'Decorate (\d+)(?:\(\w*\))? (DescriptorSet|Binding) (\d+)')
+
+
+def planned_export(penumbra, validator, name, out):
+    """The failures of one module's export in PLAN: its header's registers against the plan, and
+    the SPIR-V glslang makes of it against the header."""
+    b = run(penumbra, 'bundle', name, '--target', 'hlsl', '--shader-model', '5.1', *PLAN, '-o', out)
+    if b.returncode != 0:
+        return [f'bundle {name} in the plan: {b.stderr.strip()}']
+    text = open(out).read()
+    failures = header_matches_code(name, 'HLSL 5.1 in the plan', text)
+    expected = set()
+    for resource, binding, where in BINDING.findall(text):
+        for register in re.findall(r'register\(([tsub])(\d+), space(\d+)\)', where):
+            kind, number, space = register[0], int(register[1]), int(register[2])
+            if number != int(binding) + SHIFT[kind] or space != 2:
+                failures.append(f'{name}: {resource} at {kind}{number}, space{space}: expected '
+                                f'{kind}{int(binding) + SHIFT[kind]}, space2 (GLSL binding {binding}, the plan)')
+            expected.add((space, number, kind))
+    v = run(validator, '-D', '-H', '-S', 'comp', '-e', 'main', out, '-o', os.devnull)
+    if v.returncode != 0:
+        return failures + [f'{name} (HLSL 5.1 in the plan) refused by glslangValidator -D: {v.stdout.strip()[:300]}']
+    sets, bindings = {}, {}
+    for variable, what, value in DECORATION.findall(v.stdout):
+        (sets if what == 'DescriptorSet' else bindings)[variable] = int(value)
+    compiled = {(sets.get(v, 0), b) for v, b in bindings.items()}
+    # What the code declares but never reads (a sampler beside Load, a texture of an overload the
+    # entry does not take) glslang may drop: every image and constant buffer stays.
+    needed = {(space, number) for space, number, kind in expected if kind in 'ub'}
+    if not needed <= compiled or not compiled <= {(space, number) for space, number, _ in expected}:
+        failures.append(f'{name}: glslang put the export in the plan at (set, binding) {sorted(compiled)}, '
+                        f'its header says {sorted(expected)}')
+    return failures
 
 
 def run(*args):
@@ -120,6 +161,9 @@ def main():
             failures.extend(header_matches_code(name, language, b.stdout))
             checked.add((name, language))
     print(f'{len(checked)} exports: the header read against the code')
+    for m in modules:
+        failures.extend(planned_export(penumbra, validator, m + '.glsl', os.path.join(scratch, m + '.planned.hlsl')))
+    print(f'{len(modules)} module exports in the plan {" ".join(PLAN)}: the registers and glslang\'s bindings read')
     bad = run(penumbra, 'bundle', 'region.glsl', '--target', 'hlsl')
     if bad.returncode != 2 or 'exports/region.comp' not in bad.stderr or len(bad.stderr.strip().splitlines()) != 1:
         failures.append(f'bundle region.glsl --target hlsl: exit {bad.returncode}, {bad.stderr.strip()!r}: expected '

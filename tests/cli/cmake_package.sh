@@ -48,6 +48,8 @@ run "$scratch/project-configure.log" cmake -S "$source/tests/data/cmake_package"
 run "$scratch/project-build.log" cmake --build "$project" || fail "a project's bundles do not build"
 grep -q "pnFastPcss" "$project/fast_pcss.hlsl" || fail "fast_pcss.hlsl is not Fast PCSS's HLSL export"
 cmp -s "$project/glsl/fast_pcss_bundle.glsl" installed_bundle.glsl || fail "the project's bare bundle differs"
+grep -q "^Texture2D<float4> pnDepthMap : register(t19, space2);" "$project/poisson_pcss_planned.hlsl" ||
+  fail "poisson_pcss_planned.hlsl is not in the plan REGISTER_SHIFT t=16,u=32,b=48 REGISTER_SPACE 2"
 touch "$prefix/share/penumbra/glsl/traversal.h"
 run "$scratch/project-rebuild.log" cmake --build "$project" || fail "the rebuild failed"
 [ "$(grep -c "penumbra bundle fast_pcss.glsl" "$scratch/project-rebuild.log")" -eq 2 ] ||
@@ -56,7 +58,8 @@ run "$scratch/project-rebuild.log" cmake --build "$project" || fail "the rebuild
 # Wrong calls: each configure fails with its message.
 for case in "missing_module:MODULE 'no_such.glsl': no such file under the glsl root $prefix/share/penumbra/glsl" \
             "unknown_target:TARGET 'glsl': expected one of gl450, vulkan, es310, hlsl, msl" \
-            "no_output:no OUTPUT: expected OUTPUT <file> MODULE"; do
+            "no_output:no OUTPUT: expected OUTPUT <file> MODULE" \
+            "space_without_model:REGISTER_SPACE 1: shader model 5.0 has no register spaces: expected SHADER_MODEL 5.1 or 6.0"; do
   name=${case%%:*} message=${case#*:}
   if cmake -S "$source/tests/data/cmake_package" -B "$scratch/bad-$name" -DCMAKE_PREFIX_PATH="$prefix" \
        -DCASE="$name" >"$scratch/bad-$name.log" 2>&1; then
