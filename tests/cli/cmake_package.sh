@@ -37,6 +37,7 @@ grep -qx "penumbra_DIR:PATH=$prefix/lib.*/cmake/penumbra" "$examples/CMakeCache.
   fail "examples/ found another penumbra package: $(grep penumbra_DIR "$examples/CMakeCache.txt")"
 run "$scratch/examples-build.log" cmake --build "$examples" -j2 || fail "examples/ does not build against the installed package"
 [ -x "$examples/fast_pcss/fast_pcss_example" ] || fail "no fast_pcss_example"
+[ -x "$examples/fast_pcss_vulkan/fast_pcss_vulkan_example" ] || fail "no fast_pcss_vulkan_example"
 [ -s "$examples/fast_pcss/generated/sample_table.inc" ] || fail "no sample table"
 cmp "$examples/fast_pcss/generated/fast_pcss_bundle.glsl" installed_bundle.glsl ||
   fail "the example's bundle is not the installed tool's bundle of fast_pcss.glsl"
