@@ -160,6 +160,10 @@ def main():
                 continue
             failures.extend(header_matches_code(name, language, b.stdout))
             checked.add((name, language))
+            # The pass's own header comment travels with it (issue 53): its first line, in the header.
+            first = open(os.path.join(glsl, name)).readline().rstrip('\n')
+            if name.startswith('passes/') and (f"{name}'s own comment" not in b.stdout or first not in b.stdout):
+                failures.append(f'bundle {name} as {language}: the pass\'s own comment ({first!r}) is not in the header')
     print(f'{len(checked)} exports: the header read against the code')
     for m in modules:
         failures.extend(planned_export(penumbra, validator, m + '.glsl', os.path.join(scratch, m + '.planned.hlsl')))
