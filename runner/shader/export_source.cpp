@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cinttypes>
-#include <cstdlib>
-#include <optional>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -176,7 +176,7 @@ std::string named_arrays(std::string code, const std::string& glsl, CrossLanguag
     const auto same = [&](const Found& f) { return f.length == array.length && f.first == array.first; };
     const auto match = std::find_if(found.begin(), found.end(), same);
     if (match == found.end() || std::count_if(found.begin(), found.end(), same) != 1) continue;
-    if (renamed(code, array.name, "") != code) continue;  // the name is taken in the code
+    if (renamed(code, array.name, array.name + "_") != code) continue;  // the name is taken in the code
     code = renamed(code, match->id, array.name);
   }
   return code;

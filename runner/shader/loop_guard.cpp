@@ -250,7 +250,7 @@ std::string guard_prelude(const LoopGuardSettings& settings, GuardSyntax syntax,
   for (size_t k = 0; k < std::max<size_t>(loops, 1); ++k) zeros += k == 0 ? "0u" : ", 0u";
   if (syntax == GuardSyntax::hlsl)  // as SPIRV-Cross writes a GLSL storage buffer and atomicCompSwap
     return "globallycoherent RWByteAddressBuffer pnLoopGuardState : register(u" + std::to_string(settings.binding) +
-           ");\n"
+           (settings.space != 0 ? ", space" + std::to_string(settings.space) : std::string()) + ");\n"
            "static uint pnLoopGuardCounts[" + n + "] = { " + zeros + " };\n"
            "bool pnLoopGuard(uint loop) {\n"
            "  pnLoopGuardCounts[loop] += 1u;\n"

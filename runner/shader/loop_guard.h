@@ -30,6 +30,7 @@ struct LoopGuardSettings {
   // Iterations one loop may run in one invocation, summed over all its entries: below
   // llvmpipe's own silent cap of 65535, so that on llvmpipe the guard speaks first.
   unsigned iterations = 65000;
+  unsigned space = 0;  // HLSL: the buffer's register space (an export in a register plan's space)
 };
 
 enum class GuardSyntax { glsl, hlsl };

@@ -34,8 +34,10 @@ std::vector<std::uint32_t> compile_stage(const VulkanDevice::State& s, const Fla
     const std::filesystem::path canonical = root.locate_in_root(name);
     hlsl = root.read(canonical), name = root.diagnostic_path(canonical);
     if (loops != nullptr)  // the copy's own loops, guarded as the GLSL's are
+      // The guard's buffer in the copy's register plan, as the executor finds it (register u63 + the shift).
       *loops = s.bounds.enabled ? guard_hlsl_loops(s.glslang, hlsl, name, source.stage,
-                                                   {kGuardBinding, s.bounds.loop_iterations})
+                                                   {kGuardBinding + s.settings.registers.u, s.bounds.loop_iterations,
+                                                    s.settings.registers.space})
                                 : std::vector<GuardedLoop>{};
     s.origins.push_back({pass, name, "", ""});
     s.copies_read.insert(copy.filename().string());
