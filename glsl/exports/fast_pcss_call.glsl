@@ -7,9 +7,10 @@
 layout(binding = PN_EXPORT_SUM_TABLE_BINDING) uniform highp usampler2D pnDepthSums;
 #define PN_TRAVERSAL_SUM_TABLE pnDepthSums
 #endif
-// The block's settings, every ablation among them — but in the engine's build, and with
-// PN_EXPORT_NO_ABLATIONS (the exports check: the shipped walk alone, as an engine's shader holds it).
-#if !defined(PN_EXPORT_ENGINE) && !defined(PN_EXPORT_NO_ABLATIONS)
+// The shipped walk alone, as an engine's shader holds it — what `bundle --target hlsl|msl` exports
+// (issue 54's new user found the ablations in the HLSL). With PN_EXPORT_ABLATIONS (the exports
+// check's ablation cases) the block's settings reach every ablation too.
+#if !defined(PN_EXPORT_ENGINE) && defined(PN_EXPORT_ABLATIONS)
 #define PN_FAST_PCSS_ABLATIONS
 #endif
 #include "fast_pcss.glsl"

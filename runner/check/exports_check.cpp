@@ -12,7 +12,7 @@
 //   brute force, over the min/max mip chain built on the same executor: with the summed-area
 //   table's blocker sums (exports/fast_pcss with PN_EXPORT_SUM_TABLE) and, as an engine includes
 //   it (no define), with the chain's midpoint sums on a map whose occluding nodes are flat — and
-//   so again without PN_FAST_PCSS_ABLATIONS (PN_EXPORT_NO_ABLATIONS: the shipped walk alone, leaf 1
+//   so again without PN_FAST_PCSS_ABLATIONS (the export as bundled: the shipped walk alone, leaf 1
 //   descending to the texels); with its shipped settings, the shipped walk of that build equal,
 //   bit for bit, to traversal_mip.glsl's general walk (the same settings but a node budget of
 //   2^26 - 1, never reached: not the shipped ones, so the ablations' build walks them);
@@ -288,10 +288,11 @@ std::vector<CaseResult> run_exports_check(const CheckEnvironment& env) {
   const ExportPass exact(env.device, env.tree, "exact_pcss", {texel_squares});
   const ExportPass exact_area(env.device, env.tree, "exact_pcss");
   const ExportPass pcf(env.device, env.tree, "pcf");
-  const ExportPass fast_table(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_SUM_TABLE", "1"}, texel_squares});
-  const ExportPass fast(env.device, env.tree, "fast_pcss", {texel_squares});
-  const ExportPass fast_shipped(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}, texel_squares});
-  const ExportPass fast_area(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_NO_ABLATIONS", "1"}});
+  const ExportPass fast_table(env.device, env.tree, "fast_pcss",
+                              {{"PN_EXPORT_SUM_TABLE", "1"}, {"PN_EXPORT_ABLATIONS", "1"}, texel_squares});
+  const ExportPass fast(env.device, env.tree, "fast_pcss", {{"PN_EXPORT_ABLATIONS", "1"}, texel_squares});
+  const ExportPass fast_shipped(env.device, env.tree, "fast_pcss", {texel_squares});
+  const ExportPass fast_area(env.device, env.tree, "fast_pcss");  // the export as bundled
   const ExportPass hqepcss(env.device, env.tree, "hqepcss", {texel_squares});
   const ExportPass hqepcss_area(env.device, env.tree, "hqepcss");
   const ExportPass poisson(env.device, env.tree, "poisson_pcss");

@@ -55,6 +55,7 @@ void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
                   ": add it to --families and --waves");
     if (!opt->json.empty()) probe_output_file(opt->json);
     if (!opt->isa_dir.empty()) validate_output_directory(opt->isa_dir);
+    require_radv_families(opt->families, opt->jobs);
 
     const SourceTree tree(glsl_root_or_default(global));
     std::vector<IsaEntry> entries;

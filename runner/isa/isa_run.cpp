@@ -1,12 +1,16 @@
 #include "isa/isa_run.h"
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -49,9 +53,45 @@ ShaderExecutable executable_from(const json& j) {
   return e;
 }
 
+// The signals that end the runner (core/write_file.h): while the children compile, the parent
+// notes one instead, ends its children, removes their temporaries, then lets it end the process
+// as before (issue 54 X2: the children ran on as orphans and left their results for good).
+constexpr int kEndingSignals[] = {SIGINT, SIGTERM, SIGHUP};
+volatile std::sig_atomic_t g_ending_signal = 0;  // a handler reaches nothing else
+extern "C" void note_ending_signal(int signal) { g_ending_signal = signal; }
+
+class ParentSignals {
+ public:
+  ParentSignals() {
+    g_ending_signal = 0;
+    struct sigaction note {};
+    note.sa_handler = note_ending_signal;
+    sigemptyset(&note.sa_mask);
+    note.sa_flags = 0;  // no SA_RESTART: the parent's waitpid returns EINTR
+    for (std::size_t k = 0; k < std::size(kEndingSignals); ++k) sigaction(kEndingSignals[k], &note, &before_[k]);
+  }
+  ~ParentSignals() {
+    for (std::size_t k = 0; k < std::size(kEndingSignals); ++k) sigaction(kEndingSignals[k], &before_[k], nullptr);
+  }
+  ParentSignals(const ParentSignals&) = delete;
+  ParentSignals& operator=(const ParentSignals&) = delete;
+  int noted() const { return g_ending_signal; }
+
+ private:
+  struct sigaction before_[std::size(kEndingSignals)] {};
+};
+
 // The child: compiles every program on `target`, writes {"device", "min_wave", "shaders"} to `out`.
 [[noreturn]] void child(const std::vector<IsaProgram>& programs, const RadvTarget& target, const std::string& manifest,
                         const std::string& out, const std::string& runtime_dir) {
+  // The parent's way with signals is its own (ParentSignals): a child ends on them, and with its
+  // parent, whatever ends the parent (SIGKILL included).
+  for (int signal : kEndingSignals) std::signal(signal, SIG_DFL);
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  // The driver's own lines (an abort's reason) into OUT.err, for the parent's message.
+  std::fflush(stderr);
+  if (std::freopen((out + ".err").c_str(), "w", stderr) == nullptr) std::_Exit(1);
+  std::setvbuf(stderr, nullptr, _IONBF, 0);  // an abort flushes nothing
   int code = 0;
   try {
     set_radv_environment(target, manifest, runtime_dir);
@@ -86,7 +126,10 @@ IsaTargetResult read_child(const RadvTarget& target, const std::string& file, in
   IsaTargetResult r;
   r.target = target;
   if (WIFSIGNALED(status)) {
-    r.error = "the driver died (signal " + std::to_string(WTERMSIG(status)) + ")";
+    std::ifstream said(file + ".err");  // the driver's last words, when it left any
+    std::string line;
+    std::getline(said, line);
+    r.error = "the driver died (signal " + std::to_string(WTERMSIG(status)) + (line.empty() ? "" : ": " + line) + ")";
   } else {
     std::ifstream in(file);
     json j = json::parse(in, nullptr, false);
@@ -188,33 +231,68 @@ std::vector<IsaTargetResult> run_isa(const std::vector<IsaProgram>& programs, co
     throw Error("isa: no radeon ICD (radeon_icd.*.json under /usr/share/vulkan/icd.d): install mesa-vulkan-drivers "
                 "(scripts/install-deps.sh does)",
                 ExitCode::failed);
-  const TempDir temp;
   std::vector<IsaTargetResult> out(targets.size());
-  std::vector<std::pair<pid_t, size_t>> running;
-  const auto file_of = [&](size_t i) { return (temp.path() / ("target-" + std::to_string(i) + ".json")).string(); };
-  const auto reap = [&] {
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    for (auto it = running.begin(); it != running.end(); ++it) {
-      if (it->first != pid) continue;
-      const size_t i = it->second;
-      out[i] = read_child(targets[i], file_of(i), status, programs.size());
-      running.erase(it);
-      progress(targets[i].family + " wave" + std::to_string(targets[i].wave) + ": " +
-               (out[i].error.empty() ? out[i].device : out[i].error));
-      return;
+  int ending_signal = 0;
+  {
+    const TempDir temp;
+    const ParentSignals signals;
+    std::vector<std::pair<pid_t, size_t>> running;
+    const auto file_of = [&](size_t i) { return (temp.path() / ("target-" + std::to_string(i) + ".json")).string(); };
+    const auto reap = [&] {
+      int status = 0;
+      const pid_t pid = waitpid(-1, &status, 0);
+      if (pid < 0) {
+        if (errno == EINTR) return;
+        // No child to wait for (ECHILD: reaped unseen, e.g. under an ignored SIGCHLD): their results are lost.
+        for (const auto& [child_pid, i] : running) {
+          out[i].target = targets[i];
+          out[i].error = std::string("its compiler process could not be waited for (") + std::strerror(errno) + ")";
+          out[i].shaders.assign(programs.size(), IsaShader{out[i].error, {}});
+        }
+        running.clear();
+        return;
+      }
+      for (auto it = running.begin(); it != running.end(); ++it) {
+        if (it->first != pid) continue;
+        const size_t i = it->second;
+        out[i] = read_child(targets[i], file_of(i), status, programs.size());
+        running.erase(it);
+        progress(targets[i].family + " wave" + std::to_string(targets[i].wave) + ": " +
+                 (out[i].error.empty() ? out[i].device : out[i].error));
+        return;
+      }
+    };
+    for (size_t i = 0; i < targets.size() && signals.noted() == 0; ++i) {
+      while (static_cast<int>(running.size()) >= std::max(1, jobs) && signals.noted() == 0) reap();
+      if (signals.noted() != 0) break;
+      std::fflush(nullptr);
+      const pid_t pid = fork();
+      if (pid < 0) throw Error("isa: fork failed", ExitCode::failed);
+      if (pid == 0) child(programs, targets[i], manifest, file_of(i), temp.path().string());
+      running.push_back({pid, i});
     }
-  };
-  for (size_t i = 0; i < targets.size(); ++i) {
-    while (static_cast<int>(running.size()) >= std::max(1, jobs)) reap();
-    std::fflush(nullptr);
-    const pid_t pid = fork();
-    if (pid < 0) throw Error("isa: fork failed", ExitCode::failed);
-    if (pid == 0) child(programs, targets[i], manifest, file_of(i), temp.path().string());
-    running.push_back({pid, i});
-  }
-  while (!running.empty()) reap();
+    while (!running.empty() && signals.noted() == 0) reap();
+    ending_signal = signals.noted();
+    if (ending_signal != 0) {
+      for (const auto& [pid, i] : running) kill(pid, SIGKILL);
+      for (const auto& [pid, i] : running)
+        while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+    }
+  }  // the handlers as before, the temporaries removed
+  if (ending_signal != 0) std::raise(ending_signal);  // ends the process as the signal would have
   return out;
+}
+
+void require_radv_families(const std::vector<std::string>& families, int jobs) {
+  std::vector<RadvTarget> targets;
+  for (const std::string& family : families)
+    if (std::none_of(targets.begin(), targets.end(), [&](const RadvTarget& t) { return t.family == family; }))
+      targets.push_back({family, 64});
+  for (const IsaTargetResult& r : run_isa({}, targets, jobs, [](const std::string&) {}))
+    if (!r.error.empty())
+      throw Error("--families '" + r.target.family + "': RADV makes no device of that family (" + r.error +
+                  "): expected a chip name it knows, such as polaris10, vega10, navi10, navi21, gfx1100");
 }
 
 }  // namespace pn

@@ -62,4 +62,9 @@ bool supports_wave(const std::string& family, int wave);
 std::vector<IsaTargetResult> run_isa(const std::vector<IsaProgram>& programs, const std::vector<RadvTarget>& targets,
                                      int jobs, const std::function<void(const std::string&)>& progress);
 
+// Throws Error (exit 2) naming the first of `families` RADV cannot make a device of (issue 54 X3:
+// an unknown name compiled everything, then the driver aborted): one device a family, made by
+// run_isa with no program (a fraction of a second each), before any compiling.
+void require_radv_families(const std::vector<std::string>& families, int jobs);
+
 }  // namespace pn
