@@ -83,12 +83,37 @@ function(penumbra_bundle)
   else()
     get_target_property(root penumbra::penumbra PENUMBRA_GLSL_DIR)
   endif()
-  if(IS_ABSOLUTE "${arg_MODULE}" OR NOT EXISTS "${root}/${arg_MODULE}" OR IS_DIRECTORY "${root}/${arg_MODULE}")
+  # The module under the root (issue 54 X7: ../outside.glsl configured, then failed at build).
+  cmake_path(ABSOLUTE_PATH arg_MODULE BASE_DIRECTORY "${root}" NORMALIZE OUTPUT_VARIABLE module_path)
+  cmake_path(IS_PREFIX root "${module_path}" NORMALIZE module_under_root)
+  if(IS_ABSOLUTE "${arg_MODULE}" OR NOT module_under_root OR NOT EXISTS "${module_path}" OR IS_DIRECTORY "${module_path}")
     message(FATAL_ERROR "penumbra_bundle: MODULE '${arg_MODULE}': no such file under the glsl root ${root}: "
                         "expected a module's path relative to it, e.g. fast_pcss.glsl or passes/blur.comp")
   endif()
+  # HLSL and MSL export a module through its export entry, or a pass itself (issue 54 X8).
+  if(arg_TARGET STREQUAL "hlsl" OR arg_TARGET STREQUAL "msl")
+    cmake_path(GET module_path EXTENSION LAST_ONLY module_extension)
+    cmake_path(GET module_path STEM LAST_ONLY module_stem)
+    if(module_extension STREQUAL ".glsl")
+      if(NOT EXISTS "${root}/exports/${module_stem}.comp")
+        message(FATAL_ERROR "penumbra_bundle: MODULE '${arg_MODULE}' with TARGET ${arg_TARGET}: the module has no export "
+                            "entry exports/${module_stem}.comp: expected a technique's module (fast_pcss.glsl, …) or a "
+                            "pass (passes/….comp)")
+      endif()
+    elseif(NOT module_extension MATCHES "^[.](comp|vert|frag)$")
+      message(FATAL_ERROR "penumbra_bundle: MODULE '${arg_MODULE}' with TARGET ${arg_TARGET}: expected a module (.glsl) "
+                          "or a pass (.comp, .vert, .frag), not a header")
+    endif()
+  endif()
 
+  # OUTPUT one file, not a list and not a directory (issue 54 X6, X8).
+  if(arg_OUTPUT MATCHES ";")
+    message(FATAL_ERROR "penumbra_bundle: OUTPUT '${arg_OUTPUT}': a list (';'): expected one file")
+  endif()
   cmake_path(ABSOLUTE_PATH arg_OUTPUT BASE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} NORMALIZE OUTPUT_VARIABLE output)
+  if(IS_DIRECTORY "${output}")
+    message(FATAL_ERROR "penumbra_bundle: OUTPUT '${arg_OUTPUT}': ${output} is a directory: expected a file")
+  endif()
   cmake_path(GET output PARENT_PATH output_dir)
   file(MAKE_DIRECTORY ${output_dir})
   # Any file of the root may be included by the module (or be its export entry).

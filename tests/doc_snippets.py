@@ -20,7 +20,10 @@ docs/modules/M.md a field a line, each line's comment giving its default (`defau
 caller's` where there is none) — issue 53: the fields come from the code, their meaning from the page.
 
 compiled for gl450, vulkan and es310 with glslangValidator (the test expands the includes itself).
-A block without such a comment fails. Exit 0 when every block holds, 1 otherwise.
+A block without such a comment fails, and so does a ROOT without one block (issue 54 X10: a
+ROOT without docs/ read as "0 failures"). Exit 0 when every block holds, 1 otherwise; 2 with a
+usage line when the arguments are wrong (missing, a validator that is not an executable file, a
+SCRATCH that is not a directory or cannot be one: issue 54 X11).
 """
 import os
 import re
@@ -165,7 +168,23 @@ def main():
             print('FAIL ' + f)
         print(f'settings structs: {len(failures)} failures')
         return 1 if failures else 0
+    usage = 'usage: doc_snippets.py ROOT GLSLANG_VALIDATOR SCRATCH  (or --settings-only ROOT)'
+    if len(sys.argv) != 4:
+        print(f'{usage}: expected 3 arguments, got {len(sys.argv) - 1}', file=sys.stderr)
+        return 2
     root, validator, scratch = sys.argv[1:4]
+    problem = (f'ROOT {root!r} is not a directory' if not os.path.isdir(root) else
+               f'GLSLANG_VALIDATOR {validator!r} is not an executable file'
+               if not (os.path.isfile(validator) and os.access(validator, os.X_OK)) else
+               f'SCRATCH {scratch!r} is not a directory' if os.path.exists(scratch) and not os.path.isdir(scratch)
+               else None)
+    if problem:
+        print(f'{usage}: {problem}', file=sys.stderr)
+        return 2
+    if not os.path.isdir(os.path.join(root, 'docs')):
+        print(f'FAIL {os.path.join(root, "docs")}: no such directory: expected the guide and the module pages')
+        print('0 glsl blocks in docs/; 1 failures')
+        return 1
     glsl = os.path.join(root, 'glsl')
     here = os.path.join(root, 'tests', 'docs')
     before = open(os.path.join(here, 'prelude_before.glsl'), encoding='utf-8').read()
@@ -210,6 +229,8 @@ def main():
             failures.append(f'{where}: {e}')
     settings = settings_documented(root, list(blocks(root)))
     failures += settings
+    if not counts:
+        failures.append(f'{os.path.join(root, "docs")}: no ```glsl block found: expected the guide and the module pages')
     for f in failures:
         print('FAIL ' + f)
     total = sum(counts.values())

@@ -240,6 +240,8 @@ std::vector<double> estimate_ratios(const Comparison& comparison, const std::vec
   return out;
 }
 
+nlohmann::json ratio_json(double ratio) { return ratio > 0 ? nlohmann::json(ratio) : nlohmann::json(nullptr); }
+
 void print_estimate_cells(std::ostream& out, const std::vector<GpuEstimate>& estimates,
                           const std::vector<double>& ratios, std::size_t i) {
   const bool ok = i < estimates.size() && estimates[i].ok;

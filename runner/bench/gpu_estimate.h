@@ -98,5 +98,8 @@ const GpuEstimate* estimate_of(const Comparison& comparison, const std::vector<G
 // Estimated time of `base` over each result's (0 where either has none): as the bench's time ratios.
 std::vector<double> estimate_ratios(const Comparison& comparison, const std::vector<GpuEstimate>& estimates,
                                     const std::string& base);
+// A ratio of the bench's (a time or an estimate over a baseline's; 0 where either did not run) as
+// JSON: null where there is none (issue 54 X15: 0.0 read as a measured ratio).
+nlohmann::json ratio_json(double ratio);
 
 }  // namespace pn

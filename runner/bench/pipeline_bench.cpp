@@ -89,12 +89,18 @@ void print_pipeline_bench(std::ostream& out, const std::vector<PipelineBenchSize
         << "x exact" << std::setw(10) << "x Poisson" << (staged ? "  x staged P." : "");
     if (estimate) out << std::setw(11) << "est. us" << std::setw(10) << "est. x P.";
     out << "   stages (ms)\n";
+    // A baseline that did not run: "-", not a ratio of 0 (issue 54 X15).
+    const auto cell = [&](int width, double ratio) {
+      if (ratio > 0) out << std::setw(width) << ratio;
+      else out << std::setw(width) << "-";
+    };
     for (size_t i = 0; i < s.comparison.results.size(); ++i) {
       const TechniqueResult& r = s.comparison.results[i];
       out << std::left << std::setw(name) << r.name << std::right << std::fixed << std::setprecision(2) << std::setw(11)
-          << r.measurement.total_ms << std::setw(10) << s.speedup_vs_exact[i] << std::setw(10)
-          << s.speedup_vs_poisson[i];
-      if (staged) out << std::setw(13) << s.speedup_vs_staged_poisson[i];
+          << r.measurement.total_ms;
+      cell(10, s.speedup_vs_exact[i]);
+      cell(10, s.speedup_vs_poisson[i]);
+      if (staged) cell(13, s.speedup_vs_staged_poisson[i]);
       if (estimate) print_estimate_cells(out, s.estimates, s.estimate_vs_poisson, i);
       out << "  ";
       for (const auto& [name, ms] : r.measurement.stage_ms)
@@ -117,14 +123,14 @@ nlohmann::json pipeline_bench_json(const PipelineBenchSetup& setup, const std::v
                       {"total_ms", r.measurement.total_ms},
                       {"stage_ms", named_json(r.measurement.stage_ms)},
                       {"stats", named_json(r.measurement.frame.stats)},
-                      {"speedup_vs_exact", s.speedup_vs_exact[i]},
-                      {"speedup_vs_poisson", s.speedup_vs_poisson[i]},
-                      {"speedup_vs_staged_poisson", s.speedup_vs_staged_poisson[i]},
+                      {"speedup_vs_exact", ratio_json(s.speedup_vs_exact[i])},
+                      {"speedup_vs_poisson", ratio_json(s.speedup_vs_poisson[i])},
+                      {"speedup_vs_staged_poisson", ratio_json(s.speedup_vs_staged_poisson[i])},
                       {"vs_truth", scores_json(r.vs_truth)},
                       {"vs_exact", r.vs_exact ? scores_json(*r.vs_exact) : nlohmann::json(nullptr)}});
       if (setup.estimate && i < s.estimates.size()) {
         list.back()["gpu_estimate"] = gpu_estimate_json(s.estimates[i], *setup.estimate);
-        list.back()["estimate_speedup_vs_poisson"] = s.estimate_vs_poisson[i];
+        list.back()["estimate_speedup_vs_poisson"] = ratio_json(s.estimate_vs_poisson[i]);
       }
     }
   nlohmann::json truth = nlohmann::json::array();

@@ -36,7 +36,7 @@ struct PipelineBenchSize {
   Comparison comparison;
   // Per result: exact PCSS's / Poisson PCSS's (one pass, as engines ship it) / the staged Poisson
   // passes' total over its own (0 when that baseline did not run).
-  std::vector<double> speedup_vs_exact, speedup_vs_poisson, speedup_vs_staged_poisson;
+  std::vector<double> speedup_vs_exact, speedup_vs_poisson, speedup_vs_staged_poisson;  // 0: no baseline ran
   // Per result: the GPU cost estimate (bench/gpu_estimate.h; empty without one), and Poisson
   // PCSS's estimate over its own.
   std::vector<GpuEstimate> estimates;

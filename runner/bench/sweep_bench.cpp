@@ -213,7 +213,7 @@ nlohmann::json sweep_bench_json(const SweepBenchSetup& setup, const SweepBench& 
         const std::size_t k = static_cast<std::size_t>(r - p.comparison.results.data());
         if (setup.estimate && k < p.estimates.size()) {
           row["gpu_estimate"] = gpu_estimate_json(p.estimates[k], *setup.estimate);
-          row["estimate_speedup_vs_poisson"] = p.estimate_vs_poisson[k];
+          row["estimate_speedup_vs_poisson"] = ratio_json(p.estimate_vs_poisson[k]);
         }
       }
       rows.push_back(row);

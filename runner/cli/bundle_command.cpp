@@ -38,7 +38,12 @@ std::string shell_quoted(const std::string& text) {
 std::string provenance(const std::filesystem::path& root) {
   const std::string git = "git -C " + shell_quoted(root.string()) + " ";
   const std::string commit = first_line_of(git + "log -1 --format=%H -- . 2>/dev/null");
-  if (commit.empty()) return "a copy outside any git checkout (see the hashes)";
+  if (commit.empty()) {
+    // Inside a checkout that never committed it (issue 54 X14), or outside any.
+    const std::string top = first_line_of(git + "rev-parse --show-toplevel 2>/dev/null");
+    return top.empty() ? "a copy outside any git checkout (see the hashes)"
+                       : "untracked in the checkout at " + top + ": no commit has it (see the hashes)";
+  }
   std::string inside = first_line_of(git + "rev-parse --show-prefix 2>/dev/null");
   if (inside.empty()) inside = "./";
   const bool changed = !first_line_of(git + "status --porcelain -- . 2>/dev/null").empty();

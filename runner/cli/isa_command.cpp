@@ -54,7 +54,10 @@ void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       throw Error(std::string("--budgets: the budgets are for ") + kBudgetFamily + " wave" + std::to_string(kBudgetWave) +
                   ": add it to --families and --waves");
     if (!opt->json.empty()) probe_output_file(opt->json);
-    if (!opt->isa_dir.empty()) validate_output_directory(opt->isa_dir);
+    // --isa's directory made and written to before the work, or refused in one line (issue 54 X4:
+    // /proc/self/x failed after every compile); made but left empty by a failed run, removed again.
+    MadeDirectories made(opt->isa_dir.empty() ? std::vector<std::filesystem::path>{}
+                                              : prepare_output_directory(opt->isa_dir, {kIsaManifestName}));
     require_radv_families(opt->families, opt->jobs);
 
     const SourceTree tree(glsl_root_or_default(global));
@@ -81,6 +84,7 @@ void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     }
     if (!opt->json.empty()) write_file_atomically(opt->json, isa_json(programs, results).dump(1) + "\n");
     if (!opt->isa_dir.empty()) write_isa_files(opt->isa_dir, programs, results);
+    made.keep();
     if (opt->budgets) {
       for (const IsaTargetResult& r : results) {
         if (r.target.family != kBudgetFamily || r.target.wave != kBudgetWave) continue;

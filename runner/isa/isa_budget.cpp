@@ -1,5 +1,6 @@
 #include "isa/isa_budget.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -42,15 +43,18 @@ std::optional<IsaBudget> read_budget(const SourceTree& tree, const std::string& 
       std::istringstream kv(item);
       std::string key, value, rest;
       kv >> key >> value >> rest;
-      char* end = nullptr;
-      const double v = std::strtod(value.c_str(), &end);
-      if ((key != "vgprs" && key != "instructions" && key != "code" && key != "scratch" && key != "loop" &&
-           key != "loops") ||
-          value.empty() || *end != '\0' || !rest.empty())
+      // N: decimal digits, at most 9 (a register count or a size, never a sign, a fraction or 20
+      // digits: issue 54 X16); each key once.
+      const bool digits = !value.empty() && value.size() <= 9 && value.find_first_not_of("0123456789") == std::string::npos;
+      const bool known = key == "vgprs" || key == "instructions" || key == "code" || key == "scratch" || key == "loop" ||
+                         key == "loops";
+      const bool again = std::any_of(b.limits.begin(), b.limits.end(), [&](const auto& l) { return l.first == key; });
+      if (!known || !digits || !rest.empty() || again)
         throw Error(file + ":" + std::to_string(number) + ": isa budget item '" + item +
-                    "': expected 'vgprs N', 'instructions N', 'code BYTES', 'scratch BYTES', 'loop CYCLES' or "
-                    "'loops CYCLES'");
-      b.limits.emplace_back(key, v);
+                    (again ? "': " + key + " a second time" : "'") +
+                    ": expected 'vgprs N', 'instructions N', 'code BYTES', 'scratch BYTES', 'loop CYCLES' or "
+                    "'loops CYCLES', each once, N a whole number of up to 9 digits");
+      b.limits.emplace_back(key, std::stod(value));
     }
     return b;
   }

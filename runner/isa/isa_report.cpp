@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/content_hash.h"
+#include "core/error.h"
 #include "core/write_file.h"
 
 namespace pn {
@@ -104,14 +106,23 @@ nlohmann::json isa_json(const std::vector<IsaProgram>& programs, const std::vect
 
 void write_isa_files(const std::filesystem::path& dir, const std::vector<IsaProgram>& programs,
                      const std::vector<IsaTargetResult>& results) {
+  const std::filesystem::path manifest_path = dir / kIsaManifestName;
+  std::error_code ec;
+  std::filesystem::remove(manifest_path, ec);
+  if (ec) throw Error("--isa: '" + manifest_path.string() + "' cannot be removed (" + ec.message() + ")");
+  std::string manifest;
   for (const IsaTargetResult& r : results) {
     if (!r.error.empty()) continue;
-    const std::filesystem::path sub = dir / (r.target.family + "-wave" + std::to_string(r.target.wave));
-    std::filesystem::create_directories(sub);
+    const std::string sub = r.target.family + "-wave" + std::to_string(r.target.wave);
+    std::filesystem::create_directories(dir / sub);
     for (size_t i = 0; i < programs.size() && i < r.shaders.size(); ++i)
-      if (const ShaderExecutable* own = r.shaders[i].own(programs[i].entry.stage))
-        write_file_atomically(sub / file_name(programs[i].entry), own->isa);
+      if (const ShaderExecutable* own = r.shaders[i].own(programs[i].entry.stage)) {
+        const std::string name = sub + "/" + file_name(programs[i].entry);
+        write_file_atomically(dir / name, own->isa);
+        manifest += content_hash(own->isa) + "  " + name + "\n";
+      }
   }
+  write_file_atomically(manifest_path, manifest);
 }
 
 }  // namespace pn

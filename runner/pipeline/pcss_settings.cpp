@@ -38,10 +38,17 @@ void PcssSettings::validate() const {
   if (!std::isfinite(receiver_plane_tan) || receiver_plane_tan < 0)
     throw bad("receiver plane tangent", receiver_plane_tan, "0 (off) or a finite number > 0");
   const std::optional<OneCall> call = one_call(*this);
-  if (receiver_plane_tan > 0 && (staged || !call))
-    throw Error("technique '" + name + "': receiver-plane: expected a one call (fast, exact, poisson, vogel or hqepcss: "
-                "pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss) with stages off; the staged passes "
-                "take no plane (receiver-plane=off)");
+  if (receiver_plane_tan > 0 && (staged || !call)) {
+    // Name what asked for the staged passes (issue 54 X13: `fast:blur=on` blamed receiver-plane and
+    // stages, neither given — `fast` has the plane by default).
+    const std::string why = blur ? "blur=on needs the staged passes (the blur reads neighbours)"
+                            : search_tile > 0 || filter_tile > 0
+                                ? "reuse needs the staged passes (a tile shares its neighbours' results)"
+                            : staged ? "stages=on runs the staged passes"
+                                     : "these estimators and structures are no one call (fast, exact, poisson, vogel "
+                                       "or hqepcss: pnFastPcss, pnExactPcss, pnPoissonPcss, pnVogelPcss, pnHqepcss)";
+    throw Error("technique '" + name + "': " + why + ", which take no receiver plane: add receiver-plane=off");
+  }
   // HQEPCSS's filter is always an exact square; Fast PCSS's windows are the paper's integer squares.
   if (edges.value_or(false) && !has_area_squares(*this))
     throw Error("technique '" + name + "': edges=area: expected exact PCSS, HQEPCSS (pnExactPcss, pnHqepcss, or "

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iomanip>
 
+#include "core/content_hash.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "core/named.h"
@@ -25,20 +26,11 @@ namespace {
 
 constexpr float kErrorLimit = 0.5f;  // the error pictures saturate at ±0.5 visibility
 
-// FNV-1a 64 of `bytes`, 16 hex digits: the manifest's hash of each file (issue 39 C10).
-std::string file_hash(const std::string& bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
-  char out[17];
-  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
-  return out;
-}
-
 // Writes `canvas` to `path`; returns the hash of the bytes written.
 std::string write_canvas(const Canvas& canvas, const std::filesystem::path& path) {
   const std::string bytes = canvas.png();
   write_file_atomically(path, bytes);
-  return file_hash(bytes);
+  return content_hash(bytes);
 }
 
 std::string write_grey(const Image& image, const std::filesystem::path& path) {

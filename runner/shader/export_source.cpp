@@ -10,19 +10,12 @@
 #include <regex>
 #include <sstream>
 
+#include "core/content_hash.h"
 #include "core/error.h"
 #include "shader/flatten.h"
 #include "shader/target.h"
 
 namespace pn {
-
-std::string content_hash(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
-  char out[17];
-  std::snprintf(out, sizeof out, "%016" PRIx64, h);
-  return out;
-}
 
 std::string export_entry(const SourceTree& tree, const std::string& module) {
   const std::filesystem::path file = tree.locate(module);

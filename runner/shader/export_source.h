@@ -58,7 +58,5 @@ std::string export_source(const GlslangProcess& process, const SourceTree& tree,
 std::vector<std::string> declarations_of(const std::string& code, CrossLanguage language, unsigned binding,
                                          const RegisterPlan& plan = {});
 
-// FNV-1a, 64 bits, of `text`, as 16 hex digits: names a file's exact content in the header.
-std::string content_hash(const std::string& text);
 
 }  // namespace pn

@@ -60,7 +60,12 @@ run "$scratch/project-rebuild.log" cmake --build "$project" || fail "the rebuild
 for case in "missing_module:MODULE 'no_such.glsl': no such file under the glsl root $prefix/share/penumbra/glsl" \
             "unknown_target:TARGET 'glsl': expected one of gl450, vulkan, es310, hlsl, msl" \
             "no_output:no OUTPUT: expected OUTPUT <file> MODULE" \
-            "space_without_model:REGISTER_SPACE 1: shader model 5.0 has no register spaces: expected SHADER_MODEL 5.1 or 6.0"; do
+            "space_without_model:REGISTER_SPACE 1: shader model 5.0 has no register spaces: expected SHADER_MODEL 5.1 or 6.0" \
+            "output_directory:OUTPUT 'adir': $scratch/bad-output_directory/adir is a directory: expected a file" \
+            "module_outside:MODULE '../outside.glsl': no such file under the glsl root" \
+            "header_hlsl:MODULE 'fast_pcss.h' with TARGET hlsl: expected a module (.glsl) or a pass" \
+            "no_export_hlsl:MODULE 'region.glsl' with TARGET hlsl: the module has no export entry exports/region.comp" \
+            "output_list:OUTPUT 'a;b.glsl': a list"; do
   name=${case%%:*} message=${case#*:}
   if cmake -S "$source/tests/data/cmake_package" -B "$scratch/bad-$name" -DCMAKE_PREFIX_PATH="$prefix" \
        -DCASE="$name" >"$scratch/bad-$name.log" 2>&1; then

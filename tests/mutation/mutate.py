@@ -590,6 +590,8 @@ def main(argv):
     mode = args.checks
     if args.quick:
         kinds = [k for k in kinds if k in ('ret0', 'ret1')] if args.kinds != ','.join(KINDS) else ['ret0', 'ret1']
+        if not kinds:  # issue 54 X12: it used to blame --functions
+            raise Usage(f'--quick runs the return-constant mutants (ret0, ret1): --kinds {args.kinds} asks for none')
         functions = functions or set(QUICK_CALLS)
         mode = 'own'
     args.glsl_root = os.path.abspath(args.glsl_root)
@@ -607,10 +609,15 @@ def main(argv):
         # fully lit result, the false PASS issue 39 found — else the zero.
         ones = {m['id'].rsplit(':', 1)[0] for m in todo if m['kind'] == 'ret1'}
         todo = [m for m in todo if m['kind'] == 'ret1' or m['id'].rsplit(':', 1)[0] not in ones]
-    if functions:
-        missing = functions - {m['function'] for m in todo} - {n.split(':')[1] for n in notes}
+    found = {m['function'] for m in todo} | {n.split(':')[1] for n in notes}
+    if args.functions:
+        missing = functions - found
         if missing:
-            raise Usage(f'--functions: no public definition of {", ".join(sorted(missing))}')
+            where = f' in --modules {args.modules}' if args.modules else ''
+            raise Usage(f'--functions: no public definition of {", ".join(sorted(missing))}{where}')
+    elif args.quick and not todo:  # its own calls: those of --modules, when given
+        raise Usage(f'--quick --modules {args.modules}: none of the quick subset\'s calls ({", ".join(sorted(QUICK_CALLS))}) '
+                    'is defined there')
     if args.list:
         for m in todo:
             print(f'{m["id"]}  {m["file"]}:{m["line"]}  {m["what"]}')

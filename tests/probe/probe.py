@@ -131,6 +131,13 @@ def make_hostile_inputs(work: pathlib.Path, glsl: pathlib.Path) -> None:
     shutil.copytree(glsl, bom_copy)
     for name in ("region.glsl", "passes/region_query.comp"):
         (bom_copy / name).write_bytes(b"\xef\xbb\xbf" + (bom_copy / name).read_bytes())
+    # Issue 54 X16: isa budget lines that do not parse (a sign, a key twice, 20 digits).
+    for copy, budget in (("budget_negative", "vgprs -1"), ("budget_twice", "vgprs 48, vgprs 10"),
+                         ("budget_huge", "vgprs 12345678901234567890")):
+        shutil.copytree(glsl, work / copy)
+        fast = work / copy / "fast_pcss.glsl"
+        fast.write_text(re.sub(r"^// isa budget:.*$", "// isa budget: " + budget, fast.read_text(), count=1, flags=re.M))
+    (work / "nodocs").mkdir()  # X10: a root without docs/
 
 
 def has_gl(penumbra: str) -> bool:
