@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "example_shaders.h"  // generated: the shaders' text and the Fast PCSS bundle (example::text)
+#include "command_line.h"
 #include "gl_util.h"
 #include "headless_gl.h"
 #include "interface.h"
@@ -289,91 +290,29 @@ Frame draw_lit(const Programs& programs, const SceneGeometry& scene, const Light
 // ---------------------------------------------------------------------------
 // Step 6 and the command line: where the pictures go, and the options.
 
-struct Options {
-  fs::path model = "/usr/share/assimp/models/OBJ/spider.obj";  // Debian's assimp-testmodels
-  fs::path out = "fast_pcss_out";  // a directory, or a .png file for the lit image
-  int size = kDefaultScreenSize;   // screen N x N (the shadow map stays kShadowMapSize)
-  float bias = kDepthBias;
+struct Options : CommonOptions {
   bool depth_buffer = false;  // Step 2 keeps only the light's depth buffer; Step 3 converts it
 };
 
-const char* const kUsage =
-    "usage: fast_pcss_example [--model PATH] [--out DIR | FILE.png] [--size N] [--bias B] [--depth-buffer]\n"
-    "  --model PATH  a mesh file Assimp reads (default /usr/share/assimp/models/OBJ/spider.obj)\n"
-    "  --out DIR     writes DIR/<model>_fast_pcss_lit.png and _visibility.png (default fast_pcss_out);\n"
-    "  --out F.png   writes F.png and F_visibility.png\n"
-    "  --size N      screen size, 16..4096 (default 512)\n"
-    "  --bias B      Fast PCSS depth bias in light-depth units, >= 0 (default 0.02)\n"
-    "  --depth-buffer  build the mip chain straight from the light's D32F depth buffer\n"
-    "                (PN_MIP_LEVEL0_DEPTH) instead of an R32F map of linear depth\n";
-
 Options parse_options(int argc, char** argv) {
   Options o;
+  o.out = "fast_pcss_out";
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "--help" || flag == "-h") {
-      std::cout << kUsage;
+      std::cout << "usage: fast_pcss_example [--model PATH] [--out DIR | FILE.png] [--size N] [--bias B] "
+                   "[--depth-buffer]\n"
+                << common_usage("fast_pcss_out")
+                << "  --depth-buffer  build the mip chain straight from the light's D32F depth buffer\n"
+                   "                (PN_MIP_LEVEL0_DEPTH) instead of an R32F map of linear depth\n";
       std::exit(0);
     }
-    if (flag == "--depth-buffer") {
-      o.depth_buffer = true;
-      continue;
-    }
-    if (flag != "--model" && flag != "--out" && flag != "--size" && flag != "--bias")
+    if (flag == "--depth-buffer") o.depth_buffer = true;
+    else if (!read_common_option(argc, argv, i, o))
       throw std::invalid_argument("'" + flag + "': unknown option (--help lists them)");
-    if (i + 1 >= argc) throw std::invalid_argument(flag + ": expected a value");
-    const std::string value = argv[++i];
-    std::size_t used = 0;
-    const auto number = [&](auto parse) {
-      try {
-        const auto v = parse(value, &used);
-        if (used == value.size()) return v;
-      } catch (const std::logic_error&) {
-      }
-      throw std::invalid_argument(flag + " '" + value + "': expected a number");
-    };
-    if (flag == "--model") o.model = value;
-    else if (flag == "--out") o.out = value;
-    else if (flag == "--size") o.size = number([](const std::string& s, std::size_t* n) { return std::stoi(s, n); });
-    else o.bias = number([](const std::string& s, std::size_t* n) { return std::stof(s, n); });
   }
-  if (o.size < 16 || o.size > 4096)
-    throw std::invalid_argument("--size " + std::to_string(o.size) + ": expected 16..4096");
-  if (!(o.bias >= 0.0f) || !std::isfinite(o.bias)) throw std::invalid_argument("--bias: expected a finite number >= 0");
+  check_common_options(o);
   return o;
-}
-
-// Where the two pictures go. Checked before any GL work (a directory that
-// exists or can be made); made only in Step 6, when there is something to write.
-struct Outputs {
-  fs::path directory, lit, visibility;
-};
-
-Outputs plan_outputs(const Options& o) {
-  Outputs out;
-  if (o.out.extension() == ".png") {
-    out.directory = o.out.parent_path().empty() ? fs::path(".") : o.out.parent_path();
-    out.lit = o.out;
-    out.visibility = out.directory / (o.out.stem().string() + "_visibility.png");
-  } else {
-    const std::string stem = o.model.stem().string();
-    out.directory = o.out;
-    out.lit = o.out / (stem + "_fast_pcss_lit.png");
-    out.visibility = o.out / (stem + "_fast_pcss_visibility.png");
-  }
-  fs::path existing = fs::absolute(out.directory);
-  while (!fs::exists(existing) && existing.has_relative_path()) existing = existing.parent_path();
-  if (!fs::is_directory(existing))
-    throw std::invalid_argument("--out '" + o.out.string() + "': " + existing.string() + " is not a directory");
-  if (fs::is_directory(out.lit))
-    throw std::invalid_argument("--out '" + o.out.string() + "': " + out.lit.string() + " is a directory");
-  return out;
-}
-
-void make_directory(const fs::path& directory) {
-  std::error_code ec;
-  fs::create_directories(directory, ec);
-  if (ec) throw std::runtime_error("'" + directory.string() + "': cannot be made a directory (" + ec.message() + ")");
 }
 
 int run(const Options& options) {

@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line.h"
 #include "vulkan_interface.h"
 #include "mesh_model.h"
 #include "passes/minmax_mip_build.h"  // the library's pass: its bindings and parameter block (GLSL and C++)
@@ -352,88 +353,34 @@ Shaded shade(const VulkanContext& vk, Route route, const Buffer& frame, const GB
 // ---------------------------------------------------------------------------
 // Step 7 and the command line: where the pictures go, and the options.
 
-struct Options {
+struct Options : CommonOptions {
   Route route = Route::glsl;
-  fs::path model = "/usr/share/assimp/models/OBJ/spider.obj";  // Debian's assimp-testmodels
-  fs::path out = "fast_pcss_vulkan_out";  // a directory, or a .png file for the lit image
-  int size = kDefaultScreenSize;          // screen N x N (the shadow map stays kShadowMapSize)
-  float bias = kDepthBias;
 };
-
-const char* const kUsage =
-    "usage: fast_pcss_vulkan_example [--route glsl|hlsl] [--model PATH] [--out DIR | FILE.png] [--size N] [--bias B]\n"
-    "  --route R     glsl: the shaders from the GLSL bundle (default); hlsl: the chain build and the\n"
-    "                shading pass from the HLSL exports\n"
-    "  --model PATH  a mesh file Assimp reads (default /usr/share/assimp/models/OBJ/spider.obj)\n"
-    "  --out DIR     writes DIR/<model>_fast_pcss_lit.png and _visibility.png (default fast_pcss_vulkan_out);\n"
-    "  --out F.png   writes F.png and F_visibility.png\n"
-    "  --size N      screen size, 16..4096 (default 512)\n"
-    "  --bias B      Fast PCSS depth bias in light-depth units, >= 0 (default 0.02)\n";
 
 Options parse_options(int argc, char** argv) {
   Options o;
+  o.out = "fast_pcss_vulkan_out";
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "--help" || flag == "-h") {
-      std::cout << kUsage;
+      std::cout << "usage: fast_pcss_vulkan_example [--route glsl|hlsl] [--model PATH] [--out DIR | FILE.png] "
+                   "[--size N] [--bias B]\n"
+                   "  --route R     glsl: the shaders from the GLSL bundle (default); hlsl: the chain build and the\n"
+                   "                shading pass from the HLSL exports\n"
+                << common_usage("fast_pcss_vulkan_out");
       std::exit(0);
     }
-    if (flag != "--route" && flag != "--model" && flag != "--out" && flag != "--size" && flag != "--bias")
-      throw std::invalid_argument("'" + flag + "': unknown option (--help lists them)");
-    if (i + 1 >= argc) throw std::invalid_argument(flag + ": expected a value");
-    const std::string value = argv[++i];
-    std::size_t used = 0;
-    const auto number = [&](auto parse) {
-      try {
-        const auto v = parse(value, &used);
-        if (used == value.size()) return v;
-      } catch (const std::logic_error&) {
-      }
-      throw std::invalid_argument(flag + " '" + value + "': expected a number");
-    };
     if (flag == "--route") {
+      if (i + 1 >= argc) throw std::invalid_argument("--route: expected a value");
+      const std::string value = argv[++i];
       if (value != "glsl" && value != "hlsl") throw std::invalid_argument("--route '" + value + "': expected glsl or hlsl");
       o.route = value == "glsl" ? Route::glsl : Route::hlsl;
-    } else if (flag == "--model") {
-      o.model = value;
-    } else if (flag == "--out") {
-      o.out = value;
-    } else if (flag == "--size") {
-      o.size = number([](const std::string& s, std::size_t* n) { return std::stoi(s, n); });
-    } else {
-      o.bias = number([](const std::string& s, std::size_t* n) { return std::stof(s, n); });
+    } else if (!read_common_option(argc, argv, i, o)) {
+      throw std::invalid_argument("'" + flag + "': unknown option (--help lists them)");
     }
   }
-  if (o.size < 16 || o.size > 4096)
-    throw std::invalid_argument("--size " + std::to_string(o.size) + ": expected 16..4096");
-  if (!(o.bias >= 0.0f) || !std::isfinite(o.bias)) throw std::invalid_argument("--bias: expected a finite number >= 0");
+  check_common_options(o);
   return o;
-}
-
-// Where the two pictures go. Checked before any Vulkan work; made only in Step 7.
-struct Outputs {
-  fs::path directory, lit, visibility;
-};
-
-Outputs plan_outputs(const Options& o) {
-  Outputs out;
-  if (o.out.extension() == ".png") {
-    out.directory = o.out.parent_path().empty() ? fs::path(".") : o.out.parent_path();
-    out.lit = o.out;
-    out.visibility = out.directory / (o.out.stem().string() + "_visibility.png");
-  } else {
-    const std::string stem = o.model.stem().string();
-    out.directory = o.out;
-    out.lit = o.out / (stem + "_fast_pcss_lit.png");
-    out.visibility = o.out / (stem + "_fast_pcss_visibility.png");
-  }
-  fs::path existing = fs::absolute(out.directory);
-  while (!fs::exists(existing) && existing.has_relative_path()) existing = existing.parent_path();
-  if (!fs::is_directory(existing))
-    throw std::invalid_argument("--out '" + o.out.string() + "': " + existing.string() + " is not a directory");
-  if (fs::is_directory(out.lit))
-    throw std::invalid_argument("--out '" + o.out.string() + "': " + out.lit.string() + " is a directory");
-  return out;
 }
 
 int run(const Options& options) {
@@ -464,9 +411,7 @@ int run(const Options& options) {
     throw std::runtime_error("the validation layer reported " + std::to_string(vk.messages()) +
                              " message(s), the first: " + vk.first_message());
   // Step 7
-  std::error_code ec;
-  fs::create_directories(outputs.directory, ec);
-  if (ec) throw std::runtime_error("'" + outputs.directory.string() + "': cannot be made a directory (" + ec.message() + ")");
+  make_directory(outputs.directory);
   write_files({{outputs.lit, encode_png(shaded.lit)}, {outputs.visibility, encode_png(shaded.visibility)}});
   std::cout << "model " << options.model.string() << ": " << model.size() / 3 << " triangles, shadow map "
             << kShadowMapSize << "x" << kShadowMapSize << ", screen " << options.size << "x" << options.size << "\n"
