@@ -412,6 +412,18 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
                        scene, expected, observed, expected, true, true, false);
       }
 
+    // Regions of unequal sides along the map's edges, as Fast PCSS's square regions are where the map
+    // clips them (issue 54 M03: a grid cell taken from the shorter side passed every check).
+    std::vector<TraversalQuery> grid_queries = leaf_queries;
+    for (int k = 0; k < 32; ++k) {
+      const int wide = random.uniform_int(40, kMapSize / 2), narrow = random.uniform_int(3, 24);
+      const bool across = k % 2 == 0;  // wide along x, clipped in y; or the other way round
+      const int w = across ? wide : narrow, h = across ? narrow : wide;
+      const Rect r{k % 4 < 2 ? random.uniform_int(0, kMapSize - w) : kMapSize - w,
+                   k % 4 < 2 ? kMapSize - h : random.uniform_int(0, kMapSize - h), w, h};
+      const std::vector<float> rs = receivers_for(scene.depth, r);
+      grid_queries.push_back({r, random.uniform_float(rs[0], rs[4]), random.uniform_int(0, 1023), random.uniform_int(0, 1023)});
+    }
     // The grid (pnGridRegionMip) over the mip chain: against the CPU's grid with the same decisions and
     // samples, and with grid >= the region's side (texels) against brute force.
     for (int grid : {1, 4, 16})
@@ -420,14 +432,14 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
         s.grid = grid, s.leaf_side = leaf, s.leaf_mode = mode, s.bias = 0.001f;
         s.depth_sums = grid == 4 ? DepthSums::none : grid == 16 ? DepthSums::midpoint : DepthSums::table;
         std::vector<TraversalResult> expected;
-        for (const TraversalQuery& q : leaf_queries) {
+        for (const TraversalQuery& q : grid_queries) {
           const TraversalParams p{q.receiver_depth, s.bias, s.leaf_side, s.leaf_mode, s.node_budget, q.pixel_x, q.pixel_y};
           expected.push_back(aligned_grid_reference(scene.depth, table, q.region, p, s.depth_sums, grid));
         }
-        const auto observed = observe(structures[1], scene, leaf_queries, s);
+        const auto observed = observe(structures[1], scene, grid_queries, s);
         add_comparison(results,
                        label + " grid " + std::to_string(grid) + (mode == LeafMode::ramp ? ", ramp" : ", sampled") +
-                           " leaves of side <= " + std::to_string(leaf) + ":",
+                           " leaves of side <= " + std::to_string(leaf) + " (square and edge-clipped regions):",
                        scene, expected, observed, expected, true, s.depth_sums != DepthSums::none, mode == LeafMode::ramp);
       }
     {
