@@ -58,7 +58,6 @@ void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
     // /proc/self/x failed after every compile); made but left empty by a failed run, removed again.
     MadeDirectories made(opt->isa_dir.empty() ? std::vector<std::filesystem::path>{}
                                               : prepare_output_directory(opt->isa_dir, {kIsaManifestName}));
-    require_radv_families(opt->families, opt->jobs);
 
     const SourceTree tree(glsl_root_or_default(global));
     std::vector<IsaEntry> entries;
@@ -71,6 +70,7 @@ void add_isa_command(CLI::App& app, GlobalOptions& global, int& exit_code) {
       if (std::none_of(entries.begin(), entries.end(), [&](const IsaEntry& e) { return e.name == name; }))
         throw Error("--only '" + name + "': no entry of that name among the kinds asked for");
     const IsaBudgets budgets = opt->budgets ? read_budgets(tree, entries) : IsaBudgets{};
+    require_radv_families(opt->families, opt->jobs);  // a device a family, before any compiling
     const GlslangProcess glslang;
     const std::vector<IsaProgram> programs = compile_isa_programs(glslang, tree, entries);
     std::cerr << "isa: " << programs.size() << " shaders on " << targets.size() << " targets\n";
