@@ -17,6 +17,14 @@ requires the mutant to FAIL (exit 1). Kinds (a definition gets each kind that ap
          (comments, preprocessor lines, << and >> skipped)
   const  the body's first float literal x -> 1.5 x (0 -> 0.5), or without one its first
          integer literal + 1
+  The mistakes people make when they edit a shader (issue 54), each the body's first site:
+  swap   `.xy` <-> `.yx`; without one, the operands of a non-commutative `a - b` or `a / b`
+         (names or members, not calls) exchanged
+  bound  a `for` loop's bound halved: `i < E` -> `i < (E) / 2` (`<` or `<=`)
+  bound1 the same bound minus one: `i < (E) - 1`
+  minmax `min(` <-> `max(`; without one, `floor(` <-> `ceil(`
+  offset the integer texel coordinate of a `texelFetch` + 1: `texelFetch(s, p, l)` -> `texelFetch(s, (p) + 1, l)`
+  drop   a term of a sum removed: `a + b` -> `a` (b a name, a member, a number or a call)
 
 Edits stay on their line (the return goes after the body's `{`), so diagnostics keep their lines.
 A mutant's id is MODULE:FUNCTION:OVERLOAD:KIND (OVERLOAD: the definition's index among the
@@ -57,7 +65,7 @@ import sys
 import tempfile
 import time
 
-KINDS = ('ret0', 'ret1', 'cmp', 'const')
+KINDS = ('ret0', 'ret1', 'cmp', 'const', 'swap', 'bound', 'bound1', 'minmax', 'offset', 'drop')
 
 # The CTest subset (--quick): the return-constant mutants of these calls, each run on its module's
 # own check (and `exports` where the module has an export entry). Chosen for checks of a few
@@ -77,6 +85,14 @@ COMPARISON = re.compile(r'(?<![<>=!])(<=|>=|==|!=|<|>)(?![<>=])')
 FLIP = {'<': '>=', '>=': '<', '<=': '>', '>': '<=', '==': '!=', '!=': '=='}
 FLOAT = re.compile(r'(?<![\w.])((?:\d+\.\d*|\.\d+)(?:[eE][+-]?\d+)?|\d+[eE][+-]?\d+)(lf|LF|f|F)?(?![\w.])')
 INT = re.compile(r'(?<![\w.])(0[xX][0-9a-fA-F]+|\d+)([uU]?)(?![\w.])')
+SWIZZLE = re.compile(r'\.(xy|yx)\b')
+OPERAND = r'[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*'
+NONCOMMUTATIVE = re.compile(r'(?<![\w.)\]])(' + OPERAND + r')(\s*[-/]\s*)(' + OPERAND + r')(?![\w.(\[])')
+FOR = re.compile(r'\bfor\s*\(')
+MINMAX = re.compile(r'\b(min|max)(\s*\()')
+FLOORCEIL = re.compile(r'\b(floor|ceil)(\s*\()')
+FETCH = re.compile(r'\btexelFetch\s*\(')
+PLUS = re.compile(r'(?<=[\w)\]])(\s*\+\s*)(?![+=])')
 FAIL_LINE = re.compile(r'^(\S+): FAIL (.*)$', re.M)
 COMPILE_ERROR = re.compile(r'\.(glsl|comp|frag|vert|h):\d+: error:|ERROR: ')
 
@@ -318,6 +334,81 @@ def mutate_constant(body):
     return None
 
 
+def arguments(body, open_paren):
+    """[(start, end)] of the arguments of the call whose `(` is at `open_paren` (top level commas)."""
+    out, depth, start = [], 0, open_paren + 1
+    for i in range(open_paren, len(body)):
+        c = body[i]
+        if c in '([{':
+            depth += 1
+        elif c in ')]}':
+            depth -= 1
+            if depth == 0:
+                out.append((start, i))
+                return out
+        elif c == ',' and depth == 1:
+            out.append((start, i))
+            start = i + 1
+    return []
+
+
+def edit_of(kind, body):
+    """(offset in body, old, new) of `kind`'s edit of the body's first site, or None (issue 54)."""
+    if kind == 'swap':
+        m = SWIZZLE.search(body)
+        if m:
+            return m.start(1), m.group(1), m.group(1)[::-1]
+        m = NONCOMMUTATIVE.search(body)
+        if m:
+            return m.start(), m.group(0), m.group(3) + m.group(2) + m.group(1)
+        return None
+    if kind in ('bound', 'bound1'):
+        for m in FOR.finditer(body):
+            parts = arguments(body.replace(';', ','), m.end() - 1)  # the for's three clauses
+            if len(parts) < 3:
+                continue
+            start, end = parts[1]
+            cond = re.search(r'(<=?)\s*([^&|]+?)\s*$', body[start:end])
+            if not cond or not cond.group(2).strip():
+                continue
+            bound = cond.group(2)
+            new = f'({bound}) / 2' if kind == 'bound' else f'({bound}) - 1'
+            return start + cond.start(2), bound, new
+        return None
+    if kind == 'minmax':
+        m = MINMAX.search(body) or FLOORCEIL.search(body)
+        if m:
+            other = {'min': 'max', 'max': 'min', 'floor': 'ceil', 'ceil': 'floor'}[m.group(1)]
+            return m.start(1), m.group(1), other
+        return None
+    if kind == 'offset':
+        for m in FETCH.finditer(body):
+            args = arguments(body, m.end() - 1)
+            if len(args) == 3:
+                start, end = args[1]
+                coord = body[start:end].strip()
+                at = start + body[start:end].index(coord)
+                return at, coord, f'({coord}) + 1'
+        return None
+    if kind == 'drop':
+        for m in PLUS.finditer(body):
+            after = m.end()
+            term = re.match(r'\d+\.?\d*(?:[eE][+-]?\d+)?[uUfF]?|' + OPERAND, body[after:])
+            if not term:
+                continue
+            end = after + term.end()
+            if end < len(body) and body[end] == '(':  # a call: its arguments too
+                args = arguments(body, end)
+                if not args:
+                    continue
+                end = args[-1][1] + 1
+            if re.match(r'\s*[*/.\[]', body[end:]):  # the term goes on (a product, an index): not a term alone
+                continue
+            return m.start(), body[m.start():end], ''
+        return None
+    return None
+
+
 def mutants(root, wanted_modules=None, wanted_functions=None, kinds=KINDS):
     """(the mutants, notes): each mutant a dict with id, module, file, function, overload, kind,
     line, what (the edit), and text (the mutated file)."""
@@ -365,12 +456,17 @@ def mutants(root, wanted_modules=None, wanted_functions=None, kinds=KINDS):
                         c = mutate_constant(body)
                         if c:
                             edit = (open_ + 1 + c[0], c[1], c[2])
+                    else:
+                        c = edit_of(kind, body)
+                        if c:
+                            edit = (open_ + 1 + c[0], c[1], c[2])
                     if edit is None:
                         continue
                     at, old, new = edit
                     line = text.count('\n', 0, at) + 1
                     mutated = text[:at] + new + text[at + len(old):]
-                    what = f'inserted `{new.strip()}`' if not old else f'`{old}` -> `{new}`'
+                    what = (f'inserted `{new.strip()}`' if not old else f'removed `{old.strip()}`' if not new
+                            else f'`{old}` -> `{new}`')
                     found.append({'id': f'{base}:{kind}', 'module': module, 'file': rel, 'function': name,
                                   'overload': overload, 'kind': kind, 'line': line, 'what': what,
                                   'text': mutated})

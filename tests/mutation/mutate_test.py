@@ -6,7 +6,8 @@
   pnSavsm, pnVsm, pnEvsm2, pnEvsm4), struct lines are not, and every return-constant mutant
   is inserted after its body's `{` on the same line (diagnostics keep their line numbers);
 - on a made-up module: a function added to the use: header is a site without a change to the
-  tool; the comparison flip skips comments, preprocessor lines and shifts; the constant change
+  tool; the comparison flip skips comments, preprocessor lines and shifts; issue 54's kinds (swap,
+  bound, bound1, minmax, offset, drop) each edit their first site; the constant change
   takes the first float literal (0 -> 0.5, x -> 1.5 x), else the first integer + 1; a struct
   result gets its constructor of zeros; a function defined only in an #if branch is a site.
 """
@@ -32,6 +33,7 @@ MODULE = '''// made_up.glsl — a module the tool has never seen.
 //   float pnMadeUp(float x, float y)
 //   PnMadeUpResult pnMadeUpResult(int n)
 //   bool pnMadeUpFlag(int n)     (pnMadeUpHelper is not defined here: no site)
+//   vec2 pnMadeUpKinds(sampler2D s, ivec2 p, float a, float b)
 //   PnMadeUpResult { float a; ivec2 b; bool c; PnMadeUpInner inner; }
 //
 // cost: nothing.
@@ -55,6 +57,12 @@ float pnMadeUp(float x) { return pnMadeUp(x, 0.0); }
 
 PnMadeUpResult pnMadeUpResult(int n) {
   return PnMadeUpResult(float(n + 7), ivec2(n), n != 0, PnMadeUpInner(uvec3(0u), float[2](0.0, 0.0)));
+}
+
+vec2 pnMadeUpKinds(sampler2D s, ivec2 p, float a, float b) {
+  vec2 sum = vec2(0.0);
+  for (int i = 0; i < 2 * 4; ++i) sum += texelFetch(s, p, 0).xy + vec2(min(a, b));
+  return sum * (a - b) + floor(a);
 }
 
 #ifdef PN_MADE_UP_OPTION
@@ -107,14 +115,26 @@ def main():
             'made_up:pnMadeUpFlag:0:const': '`0x1F` -> `0x20`',
             'made_up:pnMadeUpFlag:1:cmp': '`>=` -> `<`',
             'made_up:pnMadeUpFlag:1:const': '`3u` -> `4u`',
+            # Issue 54's kinds, each on its body's first site.
+            'made_up:pnMadeUpKinds:0:swap': '`xy` -> `yx`',
+            'made_up:pnMadeUpKinds:0:bound': '`2 * 4` -> `(2 * 4) / 2`',
+            'made_up:pnMadeUpKinds:0:bound1': '`2 * 4` -> `(2 * 4) - 1`',
+            'made_up:pnMadeUpKinds:0:minmax': '`min` -> `max`',
+            'made_up:pnMadeUpKinds:0:offset': '`p` -> `(p) + 1`',
+            'made_up:pnMadeUpKinds:0:drop': 'removed `+ vec2(min(a, b))`',
+            'made_up:pnMadeUp:0:swap': None,  # `x <= y`: no swizzle, no `-` or `/`
+            'made_up:pnMadeUpResult:0:drop': 'removed `+ 7`',
         }
         for mid, what in want.items():
+            if what is None:
+                expect(mid not in got, f'{mid}: expected no mutant, got {got.get(mid, {}).get("what")}')
+                continue
             expect(mid in got and got[mid]['what'] == what,
                    f'{mid}: expected {what}, got {got[mid]["what"] if mid in got else "no mutant"}')
         expect('made_up:pnMadeUp:1:cmp' not in got, 'a comparison found in a body without one')
         expect('made_up:pnMadeUpResult:0:ret1' not in got, 'ret1 of a struct result')
         expect(not any(m['function'] == 'pnMadeUpHelper' for m in found), 'a name the module does not define')
-        expect(got.get('made_up:pnMadeUp:0:cmp', {}).get('line') == 23, 'the flip is not on the return line')
+        expect(got.get('made_up:pnMadeUp:0:cmp', {}).get('line') == 24, 'the flip is not on the return line')
     print(f'{len(FAILURES)} failures')
     return 1 if FAILURES else 0
 
