@@ -1,6 +1,8 @@
 // light_depth_query.comp — light_model.glsl's pnLightDepthFromDepthBuffer over a
-// batch of depth-buffer values, for both clip-range conventions.
-// Result k: (linear depth as OpenGL's [-1, 1] clip range wrote it, as a [0, 1] clip range did, 0, 0).
+// batch of depth-buffer values, for both clip-range conventions, and pnLightProject of a batch of
+// world points. Query k: (depth-buffer value, world x, y, z).
+// Result k: (linear depth as OpenGL's [-1, 1] clip range wrote it, as a [0, 1] clip range did,
+// pnLightProject's u and v of the world point).
 // Bindings and the projection block: light_depth_query.h.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -15,7 +17,8 @@ layout(rgba32f, binding = PN_LIGHT_DEPTH_QUERY_RESULTS_BINDING) writeonly unifor
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(pnResults)))) return;
-  float depth = texelFetch(pnQueries, p, 0).x;
-  imageStore(pnResults, p, vec4(pnLightDepthFromDepthBuffer(pnParams.lightProjection, depth, false),
-                                pnLightDepthFromDepthBuffer(pnParams.lightProjection, depth, true), 0.0, 0.0));
+  vec4 q = texelFetch(pnQueries, p, 0);
+  vec3 projected = pnLightProject(pnParams.lightView, pnParams.lightProjection, pnParams.mapSize, q.yzw);
+  imageStore(pnResults, p, vec4(pnLightDepthFromDepthBuffer(pnParams.lightProjection, q.x, false),
+                                pnLightDepthFromDepthBuffer(pnParams.lightProjection, q.x, true), projected.xy));
 }

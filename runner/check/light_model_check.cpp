@@ -2,7 +2,9 @@
 // over a grid of receiver and blocker depths for several lights (area lights on
 // perspective maps, directional lights on orthographic ones) (relative
 // float rounding, the grid keeping dP / z >= 1.01 so the difference does not
-// cancel), and degenerate inputs give exactly 0 where the definition says 0.
+// cancel), and degenerate inputs give exactly 0 where the definition says 0; pnLightProject of
+// world points spread unevenly in x and z (issue 54: u and v swapped, or the + 1/2 dropped, passed
+// every check) against the projection in double.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -12,6 +14,7 @@
 #include "check/module_check.h"
 #include "core/format.h"
 #include "core/query_grid.h"
+#include "core/seeded_random.h"
 #include "pass_runners/light_depth_query_pass.h"
 #include "pass_runners/light_model_query_pass.h"
 #include "scene/light_model.h"
@@ -104,6 +107,42 @@ void depth_buffer_cases(const CheckEnvironment& env, std::vector<CaseResult>& re
     }
 }
 
+// pnLightProject of world points: (u, v) = (clip.xy / clip.w · 1/2 + 1/2) · mapSize, the
+// projection computed in double from the float matrices. A light off the axes, looking down at a
+// slant, and points spread unevenly in x and z: u and v differ everywhere.
+void light_project_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {
+  const LightDepthQueryPass gpu(env.device, env.tree);
+  const glm::mat4 view = glm::lookAt(glm::vec3(1.5f, 20.0f, -2.5f), glm::vec3(0.3f, 0.0f, 0.7f), glm::vec3(0.0f, 0.0f, -1.0f));
+  const glm::mat4 projection = glm::perspective(1.0471976f, 1.0f, 9.0f, 40.0f);
+  const float map_size = 512.0f;
+  SeededRandom random(0x5eed0054u);
+  std::vector<Query> queries;
+  for (int k = 0; k < 256; ++k)
+    queries.push_back({0.5f, random.uniform_float(-7.0f, 5.0f), random.uniform_float(0.0f, 3.0f),
+                       random.uniform_float(-2.0f, 9.0f)});
+  const Image input = query_image(queries);
+  const Image observed = gpu.run(projection, input, view, map_size);
+  Image expected_u(input.width, input.height, 1), expected_v(input.width, input.height, 1);
+  Image got_u(input.width, input.height, 1), got_v(input.width, input.height, 1);
+  for (size_t k = 0; k < queries.size(); ++k) {
+    double world[4] = {queries[k][1], queries[k][2], queries[k][3], 1.0}, eye[4] = {}, clip[4] = {};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) eye[r] += static_cast<double>(view[c][r]) * world[c];
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) clip[r] += static_cast<double>(projection[c][r]) * eye[c];
+    const int x = static_cast<int>(k) % input.width, y = static_cast<int>(k) / input.width;
+    expected_u.at(x, y) = static_cast<float>((clip[0] / clip[3] * 0.5 + 0.5) * map_size);
+    expected_v.at(x, y) = static_cast<float>((clip[1] / clip[3] * 0.5 + 0.5) * map_size);
+    got_u.at(x, y) = observed.at(x, y, 2), got_v.at(x, y) = observed.at(x, y, 3);
+  }
+  // Float rounding of two matrix products and a divide, in texels: well under 64 ulps of the map's size.
+  const Tolerance tolerance = Tolerance::absolute(64.0 * kFloatEpsilon * map_size);
+  for (const auto& [axis, expected, got] : {std::tuple{"u", &expected_u, &got_u}, {"v", &expected_v, &got_v}})
+    results.push_back({std::string("pnLightProject ") + axis + " of 256 world points, a slanted light off the axes, " +
+                           "512 texels, vs the projection in double",
+                       tolerance, compare(*expected, *got, tolerance)});
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
@@ -156,6 +195,7 @@ std::vector<CaseResult> run_light_model_check(const CheckEnvironment& env) {
     }
   }
   depth_buffer_cases(env, results);
+  light_project_cases(env, results);
   return results;
 }
 
