@@ -3,6 +3,10 @@
 // map, and every integer side 0…2N for N = 2, 3, 8, 13, 64; seeded random
 // float regions for N = 1024; NaN / negative / infinite inputs. Bit-exact,
 // plus the property that every window is a power of two <= N inside the map.
+// The area-weighted region (pnRegionArea, pnRegionAreaSpan, pnRegionAreaOver, pnRegionAreaOfRect;
+// issue 54: their min/max and dropped-term mutants passed region's own check) at random float
+// centres and sides against the overlap of the continuous square with texels, in double.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -63,6 +67,43 @@ void add_cases(std::vector<CaseResult>& results, const std::string& name, const 
   }
 }
 
+// The length of [a0, a1) ∩ [b0, b1].
+double overlap(double a0, double a1, double b0, double b1) { return std::max(0.0, std::min(a1, b1) - std::max(a0, b0)); }
+
+void area_cases(std::vector<CaseResult>& results, const RegionQuery& pass, int n, SeededRandom& random) {
+  std::vector<Query> queries;
+  for (int k = 0; k < 4096; ++k)
+    queries.push_back({random.uniform_float(-0.5f * n, 1.5f * n), random.uniform_float(-0.5f * n, 1.5f * n),
+                       random.uniform_float(0.25f, 1.5f * n), static_cast<float>(random.uniform_int(-2, n + 1))});
+  const Image input = query_image(queries);
+  const Image observed = pass.run_areas(input, n);
+  Image expected(input.width, input.height, 4);
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const int x = static_cast<int>(k) % input.width, y = static_cast<int>(k) / input.width;
+    const Query& q = queries[k];
+    // The square of side clamp(s, 1, 4N) about the centre, clipped to the map [0, N]² (region.glsl's
+    // pnRegionArea), its bounds per axis.
+    const double half = 0.5 * std::clamp(static_cast<double>(q[2]), 1.0, 4.0 * n);
+    double lo[2], hi[2];
+    for (int a = 0; a < 2; ++a) {
+      lo[a] = std::clamp(q[a] - half, 0.0, static_cast<double>(n));
+      hi[a] = std::clamp(q[a] + half, lo[a], static_cast<double>(n));
+    }
+    const double t = q[3];
+    expected.at(x, y, 0) = static_cast<float>(overlap(t, t + 1, lo[0], hi[0]));
+    expected.at(x, y, 1) = static_cast<float>(overlap(t, t + 1, lo[1], hi[1]));
+    expected.at(x, y, 2) = static_cast<float>(overlap(t, t + 3, lo[0], hi[0]) * overlap(t, t + 2, lo[1], hi[1]));
+    const double fx = std::floor(q[0]), fy = std::floor(q[1]);
+    expected.at(x, y, 3) = static_cast<float>(overlap(fx, fx + 4, t, t + 5) * overlap(fy, fy + 4, t, t + 3));
+  }
+  // Float bounds within an ulp of N each, a product of two spans: 16 ulps of N².
+  const Tolerance tolerance = Tolerance::absolute(16.0 * std::ldexp(1.0, -23) * n * n);
+  results.push_back({"N=" + std::to_string(n) + " area-weighted regions (pnRegionArea, its spans along x and y, its "
+                         "overlap with 3x2 texels, pnRegionAreaOfRect's with 4x4): 4096 random float centres and sides "
+                         "vs the continuous square's overlaps in double",
+                     tolerance, compare(expected, observed, tolerance)});
+}
+
 }  // namespace
 
 std::vector<CaseResult> run_region_check(const CheckEnvironment& env) {
@@ -92,6 +133,7 @@ std::vector<CaseResult> run_region_check(const CheckEnvironment& env) {
                                {50.0f, nan, 9.0f, 0},     {inf, 3.0f, 5.0f, 0},      {-inf, -inf, 5.0f, 0},
                                {512.0f, 512.0f, inf, 0}, {1e30f, -1e30f, 1e30f, 0}, {-0.0f, 0.0f, 0.0f, 0}};
   add_cases(results, "N=1024 NaN, negative and infinite inputs", pass, odd, kRandomSize);
+  for (int area_n : {13, 64}) area_cases(results, pass, area_n, random);
   return results;
 }
 
