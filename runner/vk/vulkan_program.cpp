@@ -1,9 +1,9 @@
 #include "vk/vulkan_program.h"
 
 #include <algorithm>
-#include <vector>
 #include <cstring>
 #include <iterator>
+#include <vector>
 
 #include "shader/loop_guard.h"
 #include "vk/vulkan_pipeline_parts.h"
