@@ -98,16 +98,23 @@ namespace {
 
 bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
+// The first whole-word `word` in `text` at or after `from` (npos: none).
+std::size_t find_word(const std::string& text, const std::string& word, std::size_t from = 0) {
+  for (std::size_t found = text.find(word, from); found != std::string::npos; found = text.find(word, found + 1)) {
+    const std::size_t end = found + word.size();
+    if ((found == 0 || !is_identifier_char(text[found - 1])) && (end == text.size() || !is_identifier_char(text[end])))
+      return found;
+  }
+  return std::string::npos;
+}
+
 // `text` with every whole-word `from` replaced by `to`.
 std::string renamed(const std::string& text, const std::string& from, const std::string& to) {
   std::string out;
   std::size_t at = 0;
-  for (std::size_t found = text.find(from); found != std::string::npos; found = text.find(from, found + from.size())) {
-    const bool starts = found == 0 || !is_identifier_char(text[found - 1]);
-    const std::size_t end = found + from.size();
-    if (!starts || (end < text.size() && is_identifier_char(text[end]))) continue;
+  for (std::size_t found = find_word(text, from); found != std::string::npos; found = find_word(text, from, at)) {
     out += text.substr(at, found - at) + to;
-    at = end;
+    at = found + from.size();
   }
   return out + text.substr(at);
 }
@@ -169,7 +176,7 @@ std::string named_arrays(std::string code, const std::string& glsl, CrossLanguag
     const auto same = [&](const Found& f) { return f.length == array.length && f.first == array.first; };
     const auto match = std::find_if(found.begin(), found.end(), same);
     if (match == found.end() || std::count_if(found.begin(), found.end(), same) != 1) continue;
-    if (renamed(code, array.name, array.name + "_") != code) continue;  // the name is taken in the code
+    if (find_word(code, array.name) != std::string::npos) continue;  // the name is taken in the code
     code = renamed(code, match->id, array.name);
   }
   return code;
