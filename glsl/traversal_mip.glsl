@@ -263,9 +263,11 @@ PnTraversalWalk pn_traversalWalkBegin(PnMipShape shape, int mapSize, PnArea area
   w.rootOrigin = (w.regionStart >> top) << top;
   w.level = top;
   w.code = 0u;
-  // One node a step (four texels at level 1); once the budget is spent no node
-  // descends, and at most 3 siblings a level remain.
-  w.iterations = w.done ? 0 : budget + 3 * w.rootLevel + 4;
+  // One node a step (four texels at level 1): the budget's nodes, then no node descends and at most
+  // the 3 later siblings of each node on the path remain, one a level from `top` down to 1 (a side-2
+  // node's texels are read in its own step). Tight: a walk that spends its budget on the way down to
+  // its first level-1 node takes every iteration (the traversal check's budget-8 case).
+  w.iterations = w.done ? 0 : budget + 3 * top;
   return w;
 }
 

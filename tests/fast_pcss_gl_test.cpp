@@ -17,11 +17,12 @@ const pn::ModuleCheck& fast_pcss() { return pn::find_module_check("fast_pcss"); 
 
 TEST_CASE("the one calls equal the staged passes in compute and fragment stage, and exact PCSS with everything off") {
   const auto results = pn::test::run_check(fast_pcss(), PENUMBRA_GLSL_DIR);
-  // 3 scenes × 14 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
+  // 3 scenes × 15 settings × (compute vs staged, fragment vs compute) + 3 scenes × 6 settings with a receiver plane ×
   // fragment vs compute (the staged passes take no plane) + 3 scenes × 2 stages vs the CPU × (all off and exact, and
   // with area-weighted edges all off, exact and HQEPCSS at leaf 1, without the plane; all off, exact and HQEPCSS at
-  // leaf 1 with it).
-  CHECK(results.size() == 3 * 14 * 2 + 3 * 6 + 3 * 2 * (5 + 3));
+  // leaf 1 with it) + 3 scenes × 3 settings (the shipped walk's 2, the node budget's) × 3 counts vs
+  // their definition.
+  CHECK(results.size() == 3 * 15 * 2 + 3 * 6 + 3 * 2 * (5 + 3) + 3 * 3 * 3);
   pn::test::check_all_pass(results);
 }
 
@@ -36,9 +37,9 @@ TEST_CASE("negative: a copy that halves Fast PCSS's occluded fraction fails in b
     if (named(r, ": poisson") || named(r, ": exact") || named(r, ": hqepcss")) CHECK(r.comparison.pass);
     else if (named(r, "vs the staged passes") || named(r, "brute force")) fast_failing += r.comparison.pass ? 0 : 1;
   }
-  // The quick run's scene (the tall blocker): seven fast settings vs the staged passes (five, and two with
+  // The quick run's scene (the tall blocker): eight fast settings vs the staged passes (six, and two with
   // area-weighted edges); all off, without and with the plane and with area-weighted edges, in both stages vs the CPU.
-  CHECK(fast_failing == 7 + 2 * 3);
+  CHECK(fast_failing == 8 + 2 * 3);
   CHECK(pn::test::failing_cases(results) == fast_failing);  // the fragment shader still equals the compute pass
 }
 
@@ -56,7 +57,12 @@ TEST_CASE("negative: a shipped walk that ignores the work budget fails against t
     if (!r.comparison.pass) INFO(r.name << ": " << r.comparison.where(r.tolerance));
   CHECK(pn::test::failing_named(results, ": fast: one call in a compute pass vs the staged passes") == 1);
   CHECK(pn::test::failing_named(results, "(the work budget binding): one call in a compute pass vs the staged") == 1);
-  CHECK(pn::test::failing_cases(results) == 2);
+  // Their counts too: the shipped defaults' Step 5 nodes and fetches (its blocker squares are under
+  // 16 · 12 texels, where the divisor is no bound), and all three at leaf 2 with the divisor of 4.
+  CHECK(pn::test::failing_named(results, ": fast: occlusionNodes vs their definition") == 1);
+  CHECK(pn::test::failing_named(results, ": fast: fetches") == 1);
+  CHECK(pn::test::failing_named(results, "(the work budget binding): blockerNodes vs their definition") == 1);
+  CHECK(pn::test::failing_cases(results) == 7);
 }
 
 TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fails only against the compute pass") {
@@ -70,5 +76,5 @@ TEST_CASE("negative: a fragment shader that reads the pixel half a texel off fai
     if (named(r, "vs the staged passes")) CHECK(r.comparison.pass);
     if (named(r, "fragment shader vs the compute pass")) fragment_failing += r.comparison.pass ? 0 : 1;
   }
-  CHECK(fragment_failing == 20);  // every setting, with a plane or not, on the quick run's scene
+  CHECK(fragment_failing == 21);  // every setting, with a plane or not, on the quick run's scene
 }

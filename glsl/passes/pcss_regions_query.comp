@@ -3,10 +3,11 @@
 //   search: pnSearchEntry over the pyramid (receiver A, bias C.x, iterations B.z, mode B.y)
 //   search over the mip chain: pnSearchEntryMip, the same inputs
 //   counted search over the mip chain: pnSearchEntryMipCounted, the same inputs
+//   plane search over the mip chain: pnSearchEntryMipPlane, the same and the gradient C.yz
 //   filter: pnFilterEntry (search entry A, blocker mean C.y, has blocker B.w, scale C.z)
 //   entry:  A as given
 // and result k is that entry, pnEntryRect of it, pnEntryWindow of it in mode B.y
-// with pnEntryLit (plus 2 × the counted search's refinements: the four
+// with pnEntryLit (plus 2 × the counted and plane searches' refinements: the four
 // images are GLSL ES 3.10's minimum), and pnEntryLinkKey in mode B.y. Integers
 // travel as floats (exact below 2^24). Bindings, kinds and the parameter block: pcss_regions_query.h.
 
@@ -40,6 +41,8 @@ void main() {
   int refinements = 0;
   if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED)
     entry = pnSearchEntryMipCounted(pnMip, n, light, a, c.x, int(b.z), refinements);
+  else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_PLANE)
+    entry = pnSearchEntryMipPlane(pnMip, n, light, a, c.yz, c.x, int(b.z), refinements);
   else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP) entry = pnSearchEntryMip(pnMip, n, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_FILTER) entry = pnFilterEntry(light, a, c.y, b.w != 0.0, c.z);

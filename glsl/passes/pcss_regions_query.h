@@ -18,7 +18,7 @@
 #define PN_PCSS_REGIONS_QUERY_PYRAMID_BINDING 4  // sampler2DArray: the depth pyramid (depth_pyramid.glsl)
 #define PN_PCSS_REGIONS_QUERY_A_BINDING 5        // sampler2D, RGBA32F: receiver (u, v, d, valid) or entry
 #define PN_PCSS_REGIONS_QUERY_B_BINDING 6        // sampler2D, RGBA32F: (kind, region mode, iterations, has blocker)
-#define PN_PCSS_REGIONS_QUERY_C_BINDING 7        // sampler2D, RGBA32F: (bias, blocker mean, filter scale, -)
+#define PN_PCSS_REGIONS_QUERY_C_BINDING 7        // sampler2D, RGBA32F: (bias, blocker mean, filter scale, -); plane: (bias, gradient, -)
 #define PN_PCSS_REGIONS_QUERY_PARAMS_BINDING 8
 #define PN_PCSS_REGIONS_QUERY_MIP_BINDING 9      // sampler2D: the aligned min/max mip chain (minmax_mip.glsl)
 
@@ -28,6 +28,7 @@
 #define PN_PCSS_REGIONS_QUERY_ENTRY 2   // A itself
 #define PN_PCSS_REGIONS_QUERY_SEARCH_MIP 3  // pnSearchEntryMip(mip, N, light, A, C.x, int(B.z))
 #define PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED 4  // pnSearchEntryMipCounted: the same, and its refinements
+#define PN_PCSS_REGIONS_QUERY_SEARCH_MIP_PLANE 5  // pnSearchEntryMipPlane: the same with the receiver plane's gradient C.yz
 
 PN_UNIFORM_BLOCK(PnPcssRegionsQueryParams, PN_PCSS_REGIONS_QUERY_PARAMS_BINDING)
   PN_LIGHT_FIELDS  // PnLight (light_model.glsl); mapSize is N, the pyramid's size

@@ -34,7 +34,9 @@
 #include "scene/scene.h"
 #include "scenes.h"
 #include "pipeline/pcss_pipeline.h"
+#include "reference/fast_pcss_reference.h"
 #include "reference/pcss_reference.h"
+#include "sampling/sample_table_generator.h"
 
 namespace pn {
 namespace {
@@ -67,6 +69,12 @@ std::vector<PcssSettings> one_call_settings() {
   budget.name = "fast, leaf 2, leaf divisor 4 (the work budget binding)";
   budget.leaf_side = 2;
   budget.leaf_divisor = 4;
+  // A node budget spent on the way down (4 nodes, regions of more than 8 texels a side: levels >= 4),
+  // the ablations' walk (pn_fastPcssAblationsEstimate) then visiting every later sibling its bound
+  // allows: a walk cut short of its bound changes the counts and the visibility.
+  PcssSettings node_budget = fast_pcss();
+  node_budget.name = "fast, node budget 4";
+  node_budget.node_budget = 4;
   PcssSettings poisson_fewer = poisson_pcss();
   poisson_fewer.name = "poisson, 16 / 32 samples, c 0.5";
   poisson_fewer.blocker_samples = 16;
@@ -97,7 +105,7 @@ std::vector<PcssSettings> one_call_settings() {
   PcssSettings hqepcss_exact_area = hqepcss_exact;
   hqepcss_exact_area.name += ", area-weighted edges";
   hqepcss_exact_area.edges = true;
-  std::vector<PcssSettings> out{fast_pcss(),   budget,       windows,      grid,         fast_pcss_all_off(),
+  std::vector<PcssSettings> out{fast_pcss(),   budget,       node_budget,  windows,      grid,         fast_pcss_all_off(),
                                 poisson_pcss(), poisson_fewer, exact_pcss(), exact_area, hqepcss(),
                                 fast_area,     fast_all_off_area, hqepcss_area, hqepcss_exact_area};
   // With the receiver plane from the G-buffer's neighbours (receiver_plane.glsl): every one call takes one.
@@ -111,6 +119,48 @@ std::vector<PcssSettings> one_call_settings() {
     s.edges = s.edges.value_or(false);  // the integer squares but where named (against their own reference)
   }
   return out;
+}
+
+// Whether the settings run the shipped walk (pn_fastPcssShipped), or the ablations' with a node
+// budget, over exact squares with integer edges and no plane: the walks whose counts
+// fast_pcss_counts_reference defines.
+bool counts_defined(const PcssSettings& s) {
+  return s.blockers == Estimator::traversal && s.occlusion == Estimator::traversal && s.structure == Structure::mip &&
+         s.region == RegionMode::exact && s.depth_sums == DepthSums::midpoint && s.grid == 0 && s.leaf_side >= 2 &&
+         !s.blocker_leaf_mode && s.receiver_plane_tan == 0 && !s.area_edges() &&
+         (s.leaf_mode == LeafMode::sampled || s.leaf_mode == LeafMode::quad);
+}
+
+// The one call's counts (its work image's Step 4 and Step 5 nodes, its fetch image) against their
+// definition, the pixels where a decision lay within rounding of flipping left out: exact.
+void add_count_cases(const std::string& what, const Image& map, const Image& gbuffer, const Scene& scene,
+                     const PcssSettings& settings, const Image& work, const Image& fetches,
+                     std::vector<CaseResult>& results) {
+  FastPcssCountSettings c;
+  c.bias = settings.bias, c.filter_scale = settings.filter_scale, c.refine_iterations = settings.refine_iterations;
+  c.leaf_side = settings.leaf_side, c.leaf_divisor = settings.leaf_divisor, c.leaf_mode = settings.leaf_mode;
+  c.node_budget = settings.node_budget;
+  const FastPcssCounts expected = fast_pcss_counts_reference(map, gbuffer, scene.light,
+                                                             generate_sample_table(kSampleTableSeed), c,
+                                                             kPcssDecisionMargin);
+  Image blocker_nodes = channel(work, 1), occlusion_nodes = channel(work, 2), observed_fetches = fetches;
+  int left_out = 0;
+  for (int y = 0; y < work.height; ++y)
+    for (int x = 0; x < work.width; ++x)
+      if (expected.ambiguous.at(x, y) != 0.0f) {
+        blocker_nodes.at(x, y) = expected.blocker_nodes.at(x, y);
+        occlusion_nodes.at(x, y) = expected.occlusion_nodes.at(x, y);
+        observed_fetches.at(x, y) = expected.fetches.at(x, y);
+        ++left_out;
+      }
+  const std::string tail = " vs their definition on the CPU (" + std::to_string(left_out) +
+                           " pixels within rounding of a decision left out)";
+  results.push_back({what + ": blockerNodes" + tail, Tolerance::exact(),
+                     compare(expected.blocker_nodes, blocker_nodes, Tolerance::exact())});
+  results.push_back({what + ": occlusionNodes" + tail, Tolerance::exact(),
+                     compare(expected.occlusion_nodes, occlusion_nodes, Tolerance::exact())});
+  results.push_back({what + ": fetches (9 a refinement, the traversals' nodes and samples)" + tail,
+                     Tolerance::exact(), compare(expected.fetches, observed_fetches, Tolerance::exact())});
 }
 
 }  // namespace
@@ -144,6 +194,8 @@ std::vector<CaseResult> run_fast_pcss_check(const CheckEnvironment& env) {
       }
       results.push_back({what + ": one call in a fragment shader vs the compute pass (visibility, work, flags)",
                          Tolerance::exact(), compare(compute_work, fragment, Tolerance::exact())});
+      if (counts_defined(settings))
+        add_count_cases(what, map, gbuffer, scene, settings, compute_work, read(*computed.fetches), results);
       const bool brute_force_equal =  // exact PCSS, and fast with every improvement off
           (settings.blockers == Estimator::scan && settings.occlusion == Estimator::scan) ||
           (settings.blockers == Estimator::traversal && settings.leaf_side == 1 && settings.refine_iterations == 0);

@@ -149,7 +149,7 @@ void push_group(std::vector<CaseResult>& results, const std::string& name, const
   }
   if (!g.e_refinements.empty())
     results.push_back({name + ": " + std::to_string(g.e_refinements.size()) +
-                           " counted searches (pnSearchEntryMipCounted) — refinements, the squares whose min was read",
+                           " counted searches (pnSearchEntryMipCounted or …MipPlane) — refinements, the squares whose min was read",
                        exact, compare(row_image(g.e_refinements, 1), row_image(g.o_refinements, 1), exact)});
   if (!g.e_regions.empty()) {
     const std::string left = g.regions_tied > 0 ? ", " + std::to_string(g.regions_tied) +

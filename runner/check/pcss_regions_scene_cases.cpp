@@ -1,6 +1,7 @@
 // The pcss_regions check's cases on rendered scenes: the tall blocker's own map and
 // G-buffer in every mode, the lit-coverage property there and on the boxes'
 // far field (pcss_regions_check.cpp states the tolerances).
+#include <array>
 #include <memory>
 #include <utility>
 
@@ -111,6 +112,40 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
     tally.searched += g.queries, tally.left_out += g.left_out;
     push_group(results, scene.name + ", " + what, g,
                ("search entries (0 and " + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
+  }
+
+  // The search with a receiver plane (pnSearchEntryMipPlane, as Fast PCSS's Step 3 calls it): each
+  // receiver with a gradient of its own, of either sign and unequal in u and v. The plane's highest
+  // threshold over a square about its receiver is the receiver's own (capped there) but for a square
+  // under 2 texels a side — so the plane changes next to no entry; a centre read (v, u) moves the
+  // square off it, where steep gradients decide receivers lit. Against search_entry with that gradient.
+  {
+    std::vector<PcssRegionsQuery> queries =
+        search_queries(scene.receivers, RegionMode::exact, defaults.refine_iterations, defaults.bias, Structure::mip);
+    const auto gradient = [](std::size_t k) {
+      return std::array<float, 2>{0.04f * static_cast<float>(static_cast<int>(k % 5) - 2),
+                                  0.11f * static_cast<float>(static_cast<int>(k % 3) - 1)};
+    };
+    for (std::size_t k = 0; k < queries.size(); ++k)
+      queries[k].kind = PcssRegionsQuery::Kind::search_mip_plane, queries[k].gradient = gradient(k);
+    const std::vector<PcssRegionsResult> observed = pass.run(scene.pyramid, scene.light, queries, &scene.mip);
+    EntryGroup g;
+    int changed = 0;  // entries the plane changes (lit, or refined less far)
+    for (std::size_t k = 0; k < scene.receivers.size(); ++k) {
+      Rounding rounding{kAmbiguity};
+      int refinements = 0;
+      const RegionEntry expected =
+          search_entry(scan, scene.light, scene.receivers[k], defaults.bias, defaults.refine_iterations, &rounding,
+                       Structure::mip, &refinements, false, {gradient(k)[0], gradient(k)[1]});
+      add_entry(g, expected, rounding.ambiguous, observed[k], refinements);
+      const RegionEntry flat = search_entry(scan, scene.light, scene.receivers[k], defaults.bias,
+                                            defaults.refine_iterations, nullptr, Structure::mip);
+      if (expected.lit() != flat.lit() || (!expected.lit() && expected.side != flat.side)) ++changed;
+    }
+    tally.searched += g.queries, tally.left_out += g.left_out;
+    push_group(results, scene.name + ", the mip chain's search with a receiver plane (" + std::to_string(changed) +
+                            " entries differ from the flat search's)",
+               g, ("search entries and refinements (" + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
   }
 
   // The property on the boxes scene at render's resolution, on the far field (screen rows 128-319,

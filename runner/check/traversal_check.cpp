@@ -458,7 +458,7 @@ std::vector<CaseResult> run_traversal_check(const CheckEnvironment& env) {
     if (std::string(fixture.name) == "fine_checker") {
       // The pathological case: every node ambiguous at receiver 0.5.
       for (const Structure& st : structures)
-        for (int budget : {64, 1000}) {
+        for (int budget : {8, 64, 1000}) {
           TraversalSettings s;
           s.node_budget = budget;
           const std::vector<TraversalQuery> q{{{0, 0, 256, 256}, 0.5f, 0, 0}, {{10, 20, 200, 150}, 0.5f, 5, 1}};

@@ -16,8 +16,9 @@
 namespace pn {
 
 struct PcssRegionsQuery {
-  // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h); search_mip_counted also reports its refinements
-  enum class Kind { search = 0, filter = 1, entry = 2, search_mip = 3, search_mip_counted = 4 };
+  // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h); search_mip_counted and search_mip_plane also
+  // report their refinements
+  enum class Kind { search = 0, filter = 1, entry = 2, search_mip = 3, search_mip_counted = 4, search_mip_plane = 5 };
   Kind kind = Kind::search;
   RegionMode mode = RegionMode::window;
   std::array<float, 4> input{};  // search: receiver (u, v, d, valid); filter: search entry; entry: the entry
@@ -26,6 +27,7 @@ struct PcssRegionsQuery {
   float blocker_mean = 0.0f;     // filter
   bool has_blocker = false;      // filter
   float filter_scale = 1.0f;     // filter
+  std::array<float, 2> gradient{};  // search_mip_plane: the receiver plane's (receiver_plane.glsl)
 };
 
 struct PcssRegionsResult {
@@ -33,7 +35,7 @@ struct PcssRegionsResult {
   std::array<float, 4> rect{};    // pnEntryRect: origin x, y, size x, y
   std::array<float, 4> window{};  // pnEntryWindow in the query's mode: origin x, y, side; then pnEntryLit (1 or 0)
   std::array<float, 4> key{};     // pnEntryLinkKey in the query's mode
-  int refinements = 0;            // search_mip_counted: pnSearchEntryMipCounted's count (else 0)
+  int refinements = 0;            // search_mip_counted, _plane: the search's count (else 0)
 };
 
 class PcssRegionsQueryPass {

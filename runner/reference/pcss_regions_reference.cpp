@@ -18,8 +18,18 @@ Rect window_rect(const RegionWindow& w) { return {w.u, w.v, w.side, w.side}; }
 // Distance of v from the nearest integer.
 double from_integer(double v) { return std::fabs(v - std::round(v)); }
 
-// Flags a region whose texels float rounding of the entry's side (or of the
-// float evaluation of its position) could change.
+// The area square's cover: its bounds c ± s/2 floored and ceiled — a bound within rounding of an
+// integer may land on either side in float.
+void note_area(const RegionEntry& e, int n, Rounding& rounding) {
+  const double s = std::clamp(std::isnan(e.side) ? 0.0 : std::max(e.side, 0.0), 1.0, 4.0 * n);
+  for (double c : {e.x, e.y})
+    for (double bound : {c - 0.5 * s, c + 0.5 * s})
+      if (std::isfinite(bound) && from_integer(bound) <= rounding.relative * (std::fabs(c) + s + 1.0))
+        rounding.ambiguous = true;
+}
+
+}  // namespace
+
 void note_region(const RegionEntry& e, int n, RegionMode mode, Rounding& rounding) {
   const double s = e.side;
   if (!std::isfinite(s) || s < 0.0) return;
@@ -40,18 +50,6 @@ void note_region(const RegionEntry& e, int n, RegionMode mode, Rounding& roundin
     for (double bound : {c - 0.5 * s, c + 0.5 * s})
       if (std::isfinite(bound) && from_integer(bound) <= rel * (std::fabs(c) + s + 1.0)) rounding.ambiguous = true;
 }
-
-// The area square's cover: its bounds c ± s/2 floored and ceiled — a bound within rounding of an
-// integer may land on either side in float.
-void note_area(const RegionEntry& e, int n, Rounding& rounding) {
-  const double s = std::clamp(std::isnan(e.side) ? 0.0 : std::max(e.side, 0.0), 1.0, 4.0 * n);
-  for (double c : {e.x, e.y})
-    for (double bound : {c - 0.5 * s, c + 0.5 * s})
-      if (std::isfinite(bound) && from_integer(bound) <= rounding.relative * (std::fabs(c) + s + 1.0))
-        rounding.ambiguous = true;
-}
-
-}  // namespace
 
 Rect pcss_square(double x, double y, double side, int n, double* margin) {
   const double s = std::isnan(side) ? 0.0 : std::max(side, 0.0);
@@ -139,7 +137,8 @@ double DepthScan::min(const Rect& r) const {
 }
 
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
-                         int iterations, Rounding* rounding, Structure structure, int* refinements, bool area_edges) {
+                         int iterations, Rounding* rounding, Structure structure, int* refinements, bool area_edges,
+                         std::array<double, 2> gradient) {
   int reads = 0;
   if (!refinements) refinements = &reads;
   *refinements = 0;
@@ -155,10 +154,22 @@ RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const R
     const double zmin =
         scan.min(structure == Structure::mip ? mip_square_cover(region, n) : covering_square(region, n));
     ++*refinements;
-    if (rounding && bias != 0.0 && std::isfinite(zmin) && std::isfinite(threshold) &&
-        std::fabs(zmin - threshold) <= rounding->relative * std::fabs(threshold))
-      rounding->ambiguous = true;  // float rounds d - bias
-    if (!(zmin < threshold)) {
+    // The plane's highest threshold over the square's texels: a linear function's, at a corner.
+    double highest = threshold, magnitude = std::fabs(threshold);
+    if ((gradient[0] != 0.0 || gradient[1] != 0.0) && region.width > 0 && region.height > 0) {
+      double rise = 0.0;
+      const double first[2] = {region.x + 0.5 - e.x, region.y + 0.5 - e.y};
+      const double last[2] = {region.x + region.width - 0.5 - e.x, region.y + region.height - 0.5 - e.y};
+      for (int a = 0; a < 2; ++a) {
+        rise += std::max(gradient[a] * first[a], gradient[a] * last[a]);
+        magnitude += std::fabs(gradient[a]) * (std::fabs(first[a]) + std::fabs(last[a]) + 2.0 * std::fabs(a ? e.y : e.x));
+      }
+      highest = std::min(threshold, threshold + rise);
+    }
+    if (rounding && (bias != 0.0 || highest != threshold) && std::isfinite(zmin) && std::isfinite(highest) &&
+        std::fabs(zmin - highest) <= rounding->relative * magnitude)
+      rounding->ambiguous = true;  // float rounds d - bias, and the plane's range (widened by its rounding)
+    if (!(zmin < highest)) {
       e.side = kRegionLit;
       return e;
     }

@@ -21,6 +21,7 @@
 // "no occluder", SPEC §3): the min over a rectangle by scanning every texel.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 
@@ -99,14 +100,21 @@ struct Rounding {
   bool ambiguous = false;  // set by the functions below, never cleared
 };
 
+// Flags (rounding.ambiguous) an entry whose region's texels float rounding of its side, or the float
+// evaluation of its position, could change.
+void note_region(const RegionEntry& entry, int n, RegionMode mode, Rounding& rounding);
+
 // Step 3. Invalid receivers and NaN depths: lit (0, 0, 0, lit). `iterations` is
 // bounded by kRefineMaxIterations; 0 gives PCSS's search width as is.
 // `structure`: which square's min refinement reads (search_min_square, or mip_search_cover);
 // `refinements` (optional): how many squares' mins it read. `area_edges` (PN_AREA_EDGES, issue 51):
-// the squares read cover area_cover instead of pcss_square.
+// the squares read cover area_cover instead of pcss_square. `gradient` (pnSearchEntryMipPlane): the
+// receiver plane's (depth a texel along u, v): lit when zmin is not below the plane's highest
+// threshold over the square's texels q, d - bias + g · (q + ½ − (u, v)), taken at most d - bias.
 RegionEntry search_entry(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver, double bias,
                          int iterations, Rounding* rounding = nullptr, Structure structure = Structure::pyramid,
-                         int* refinements = nullptr, bool area_edges = false);
+                         int* refinements = nullptr, bool area_edges = false,
+                         std::array<double, 2> gradient = {0.0, 0.0});
 
 // Step 4, from the search entry and the blocker mean of its pixel.
 RegionEntry filter_entry(const LightModel& light, const RegionEntry& search, double blocker_mean, bool has_blocker,

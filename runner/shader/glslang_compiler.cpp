@@ -21,7 +21,11 @@ std::vector<Diagnostic> validate_spirv(const std::vector<uint32_t>& spirv, const
   tools.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* text) {
     if (level <= SPV_MSG_ERROR) out.push_back({entry, 0, "error", std::string("SPIR-V validation: ") + text});
   });
-  if (!tools.Validate(spirv) && out.empty()) out.push_back({entry, 0, "error", "SPIR-V validation failed"});
+  // Without friendly names: the validator's name map (a string per id, made before any rule is
+  // checked) was 40 % of a Vulkan check's time; its messages name ids by number instead.
+  spvtools::ValidatorOptions options;
+  options.SetFriendlyNames(false);
+  if (!tools.Validate(spirv.data(), spirv.size(), options) && out.empty()) out.push_back({entry, 0, "error", "SPIR-V validation failed"});
   return out;
 }
 
