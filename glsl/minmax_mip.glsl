@@ -42,6 +42,8 @@
 //         decision made from it is conservative.
 //   build: vec4 pnMipFirstTexel(sampler2D shadowMap, ivec2 texel)           the first level's texel
 //          vec4 pnMipCombineTexel(sampler2D mip, int level, ivec2 texel)   level's texel from level - 1
+//          (a level at or below PN_MIP_FIRST_LEVEL, which the map itself gives, reads as the one
+//          above it: never a level outside the chain)
 //
 // options:
 //   PN_MIP_LEVEL0_DEPTH(value)   how a texel of the map becomes linear light depth, in the build

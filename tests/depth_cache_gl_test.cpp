@@ -17,7 +17,7 @@ namespace {
 
 const pn::ModuleCheck& depth_cache() { return pn::find_module_check("depth_cache"); }
 
-constexpr size_t kModuleCases = 2 * std::size(pn::fixtures::kTextureFixtures);
+constexpr size_t kModuleCases = 2 * std::size(pn::fixtures::kTextureFixtures) + 1;  // + maps of unequal sizes
 constexpr size_t kComposeCases = 3, kSequences = 3, kPerSequence = 4;
 constexpr const char* kNonfinite = "nonfinite";
 

@@ -22,8 +22,9 @@ const pn::ModuleCheck& pcf() { return pn::find_module_check("pcf"); }
 TEST_CASE("pcf window scans equal the definition: whole, in bands of 1/7/128 rows, and bounded to 64 texels a side") {
   const auto results = pn::test::run_check(pcf(), PENUMBRA_GLSL_DIR);
   // fixtures × ((whole, bands, bounded) × (sides <= 16, > 16) × (counts, depth sum) + bilinear, without and with a
-  // receiver plane, + the area-weighted window), and the leave-out case.
-  CHECK(results.size() == std::size(pn::fixtures::kTextureFixtures) * (3 * 2 * 2 + 2 + 1) + 1);
+  // receiver plane, + the area-weighted window without and with a plane + the windows with a plane (counts, depth
+  // sum)), and the leave-out case.
+  CHECK(results.size() == std::size(pn::fixtures::kTextureFixtures) * (3 * 2 * 2 + 2 + 2 + 2) + 1);
   pn::test::check_all_pass(results);
 }
 
@@ -57,7 +58,7 @@ TEST_CASE("negative: a copy of pcf.glsl whose bands start one row early fails ev
       CHECK(r.comparison.pass);  // a whole window starts at row 0: max(lo.y, -1) = lo.y
     }
   }
-  CHECK(banded == std::size(pn::fixtures::kTextureFixtures) * 2);
+  CHECK(banded == std::size(pn::fixtures::kTextureFixtures) * 3);  // and the plane windows' (banded 3 in 4)
   CHECK(pn::test::failing_cases(results) >= banded);
 }
 

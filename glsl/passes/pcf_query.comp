@@ -13,6 +13,10 @@
 //   band rows 0 pnPcfAreaPlane (flat plane), b > 0 bands of b rows added up with
 //   pnPcfAddAreaRowsPlane; result (occluders, depth sum, texels, r) as areas, r = pnPcfBlockerMean at
 //   odd columns, pnPcfOccludedFraction at even ones (fractional counts: the weights' own test).
+// B.w = 3 / 4 instead: the window (A as for B.w = 0) / the area-weighted square (A as for B.w = 2)
+//   with a receiver plane of gradient C.xy about (C.zw, B.x) / (A.xy, B.x): band rows 0
+//   pnPcfWindowPlane / pnPcfAreaPlane, b > 0 bands of b rows added up with pnPcfAddRowsPlane /
+//   pnPcfAddAreaRowsPlane; result (occluders, depth sum, texels, 0 / the ratio as for B.w = 2).
 //   bindings: pcf_query.h
 // The check also compiles it with a small PN_PCF_MAX_SIDE to exercise the bound.
 
@@ -23,6 +27,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = PN_PCF_QUERY_MAP_BINDING) uniform sampler2D pnDepthMap;
 layout(binding = PN_PCF_QUERY_A_BINDING) uniform sampler2D pnQueryA;
 layout(binding = PN_PCF_QUERY_B_BINDING) uniform sampler2D pnQueryB;
+layout(binding = PN_PCF_QUERY_C_BINDING) uniform sampler2D pnQueryC;
 layout(rgba32f, binding = PN_PCF_QUERY_RESULT_IMAGE) writeonly uniform image2D pnResult;
 
 #include "pcf.glsl"
@@ -42,6 +47,25 @@ void main() {
     return;
   }
   int rows = int(b.z);
+  if (b.w == 3.0 || b.w == 4.0) {
+    vec4 c = texelFetch(pnQueryC, p, 0);
+    bool area = b.w == 4.0;
+    PnArea square = pnRegionArea(a.xy, a.z, textureSize(pnDepthMap, 0).x);
+    vec3 receiver = area ? vec3(a.xy, b.x) : vec3(c.zw, b.x);
+    PnPcf s = pnPcfZero();
+    if (rows <= 0) {
+      s = area ? pnPcfAreaPlane(pnDepthMap, square, receiver, c.xy, b.y)
+               : pnPcfWindowPlane(pnDepthMap, origin, size, receiver, c.xy, b.y);
+    } else {
+      int height = textureSize(pnDepthMap, 0).y;
+      for (int first = 0; first < height; first += rows)
+        s = area ? pnPcfAddAreaRowsPlane(pnDepthMap, square, receiver, c.xy, b.y, first, rows, s)
+                 : pnPcfAddRowsPlane(pnDepthMap, origin, size, receiver, c.xy, b.y, first, rows, s);
+    }
+    float ratio = !area ? 0.0 : (p.x % 2 == 1) ? pnPcfBlockerMean(s) : pnPcfOccludedFraction(s);
+    imageStore(pnResult, p, vec4(s.occluders, s.depthSum, s.texels, ratio));
+    return;
+  }
   if (b.w == 2.0) {
     PnArea area = pnRegionArea(a.xy, a.z, textureSize(pnDepthMap, 0).x);
     vec3 receiver = vec3(a.xy, b.x);

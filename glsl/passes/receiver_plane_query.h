@@ -15,5 +15,8 @@
 #define PN_RECEIVER_PLANE_QUERY_G_BINDING 7
 // image2D, rgba32f: (pnReceiverPlaneFromNeighbours, pnReceiverPlaneRange with the query's gradient)
 #define PN_RECEIVER_PLANE_QUERY_RESULT_IMAGE 0
+// image2D, rgba32f: (pnReceiverPlaneThreshold at the rectangle's last texel, pnReceiverPlaneThresholdRange
+// over it, 0), the threshold the receiver's depth, the plane the query's gradient about the receiver
+#define PN_RECEIVER_PLANE_QUERY_THRESHOLD_IMAGE 8
 
 #endif  // PENUMBRA_PASSES_RECEIVER_PLANE_QUERY_H

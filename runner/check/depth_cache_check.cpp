@@ -10,6 +10,7 @@
 //    cached source equals Fast PCSS on the full render every 10th frame.
 #include "check/depth_cache_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -83,6 +84,28 @@ void module_cases(const CheckEnvironment& env, std::vector<CaseResult>& results)
                              ": [0] composed, [1] visibility of receivers at, beside, NaN and +Inf (bias 0, 0.0125)",
                          Tolerance::exact(), compare(expected, observed, Tolerance::exact())});
     }
+  // Maps of unequal sizes (37x29 and 29x37): a texel is clamped into both (the smaller extent on each
+  // axis, 29x29), never read out of either; texels off every edge too.
+  const Image a = generate_fixture(fx[0], kFixtureWidth, kFixtureHeight);
+  const Image b = generate_fixture(fx[count - 1], kFixtureHeight, kFixtureWidth);
+  const std::unique_ptr<DeviceTexture> ta = env.device.upload(a), tb = env.device.upload(b);
+  const int last = std::min(kFixtureWidth, kFixtureHeight) - 1;
+  std::vector<DepthCacheQuery> queries;
+  std::vector<float> expected_composed;
+  for (int y = -3; y <= kFixtureWidth + 3; ++y)
+    for (int x = -3; x <= kFixtureWidth + 3; ++x) {
+      const int cx = std::clamp(x, 0, last), cy = std::clamp(y, 0, last);
+      const float c = depth_cache_compose_reference(a.at(cx, cy), b.at(cx, cy));
+      queries.push_back({x, y, c, 0.0f});
+      expected_composed.push_back(c);
+    }
+  const std::vector<DepthCacheResult> got = pass.run(*ta, *tb, queries);
+  Image expected(static_cast<int>(queries.size()), 1, 1), observed(static_cast<int>(queries.size()), 1, 1);
+  for (size_t k = 0; k < queries.size(); ++k)
+    expected.at(static_cast<int>(k), 0) = expected_composed[k], observed.at(static_cast<int>(k), 0) = got[k].composed;
+  results.push_back({std::string("static ") + fx[0].name + " 37x29, dynamic " + fx[count - 1].name +
+                         " 29x37: composed at texels -3..40, clamped into both maps (29x29)",
+                     Tolerance::exact(), compare(expected, observed, Tolerance::exact())});
 }
 
 void compose_pass_cases(const CheckEnvironment& env, std::vector<CaseResult>& results) {

@@ -177,6 +177,57 @@ CaseResult bilinear_plane_case(const PcfQueryPass& pass, const DeviceTexture& te
                              std::to_string(open) + " of 700 queries within rounding of a texel's threshold left out)");
 }
 
+// A query's receiver plane in the plane cases: gradients of either sign, unequal in u and v, from
+// shallow to steep (light depth a texel), so that u and v cannot trade places unseen.
+PcfPlane plane_for(size_t k) {
+  const float scale = k % 3 == 0 ? 0.001f : k % 3 == 1 ? 0.01f : 0.05f;
+  const float su = k % 2 == 0 ? 1.0f : -1.0f, sv = (k / 2) % 2 == 0 ? 1.0f : -1.0f;
+  return {su * scale, -0.37f * sv * scale, 0.0f, 0.0f};
+}
+
+// The windows with a receiver plane (pnPcfWindowPlane, and pnPcfAddRowsPlane in bands of 1, 7 and
+// 128 rows) against pcf_reference_plane: every window, its receivers as the plain windows' (NaN and
+// +Inf among them) at a point inside it off its centre ((0.3, 0.7) of its sides), each texel against
+// the plane at its own centre, never above dP - bias. A query with a texel within rounding of its
+// threshold (2^-20 of the magnitudes) is left out and counted.
+void window_plane_cases(const PcfQueryPass& pass, const DeviceTexture& texture, const Image& map,
+                        const std::vector<Window>& windows, const std::string& label, std::vector<CaseResult>& results) {
+  std::vector<PcfQuery> queries;
+  std::vector<PcfPlane> planes;
+  std::vector<PcfSums> expected;
+  std::vector<bool> open;
+  for (size_t i = 0; i < windows.size(); ++i) {
+    const Rect& w = windows[i].w;
+    const PcfCover c = pcf_cover(w, map.width, map.height, kPcfMaxSide);
+    for (const Receiver& r : receivers_for(map, c, i)) {
+      static constexpr int kBands[4] = {0, 1, 7, 128};
+      PcfPlane plane = plane_for(queries.size());
+      plane.centre_u = static_cast<float>(w.x) + 0.3f * static_cast<float>(w.width);
+      plane.centre_v = static_cast<float>(w.y) + 0.7f * static_cast<float>(w.height);
+      queries.push_back({w.x, w.y, w.width, w.height, r.depth, r.bias, kBands[queries.size() % 4]});
+      planes.push_back(plane);
+      bool tie = false;
+      expected.push_back(pcf_reference_plane(map, w, r.depth - r.bias,
+                                             {plane.gradient_u, plane.gradient_v, plane.centre_u, plane.centre_v,
+                                              std::ldexp(1.0, -20)},
+                                             tie));
+      open.push_back(tie);
+    }
+  }
+  const std::vector<PcfQueryResult> observed = pass.run(texture, queries, planes);
+  OcclusionBatch g;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    if (open[k]) {
+      ++g.left_out;
+      continue;
+    }
+    g.expected.push_back(sums(expected[k]));
+    g.observed.push_back(sums(observed[k]));
+  }
+  add_occlusion_cases(results, label + " windows with a receiver plane (whole and in bands of 1, 7, 128 rows)", g,
+                      "texels", "a texel within rounding of its plane threshold");
+}
+
 // The area-weighted window (issue 51: pnRegionArea + pnPcfAreaPlane, whole and in bands of 1, 7
 // and 128 rows) against pcf_area_reference: continuous centres inside, across the edges and
 // outside the map, sides from below one texel to past the map's, NaN and infinite inputs;
@@ -187,7 +238,11 @@ CaseResult bilinear_plane_case(const PcfQueryPass& pass, const DeviceTexture& te
 // [0] occluded area, [1] its depth-weighted sum, [2] the area read, [3] pnPcfBlockerMean (odd
 // queries) or pnPcfOccludedFraction (even) of the sums — fractional counts, areas below ½ among
 // them (squares almost wholly off the map), within the quotient of both terms' bounds.
-CaseResult area_case(const PcfQueryPass& pass, const DeviceTexture& texture, const Image& map, const std::string& label) {
+// With `plane`: each query with plane_for's gradient about the square's centre (pnPcfAreaPlane,
+// pnPcfAddAreaRowsPlane) against pcf_area_reference_plane; the squares of non-finite inputs and
+// the queries with a texel within rounding of its threshold left out.
+CaseResult area_case(const PcfQueryPass& pass, const DeviceTexture& texture, const Image& map, const std::string& label,
+                     bool plane = false) {
   constexpr double u = 0x1p-24;
   float deepest = 0.0f;
   for (float d : map.texels)
@@ -206,9 +261,12 @@ CaseResult area_case(const PcfQueryPass& pass, const DeviceTexture& texture, con
   for (float side : {1.0f, 1.5f, 2.7f, 5.25f, 16.4f, 33.9f, 100.6f, 299.5f})
     for (int k = 0; k < 12; ++k) squares.push_back({position(random), position(random), side + 0.1f * fraction(random)});
   std::vector<PcfAreaQuery> queries;
+  std::vector<PcfPlane> planes;
   std::vector<PcfAreaSums> expected;
   std::vector<double> position_error;
+  int left_out = 0;
   for (const auto& [x, y, side] : squares) {
+    if (plane && !(std::isfinite(x) && std::isfinite(y) && std::isfinite(side))) continue;
     const int tx = std::clamp(std::isfinite(x) ? static_cast<int>(std::floor(x)) : 0, 0, kMapSize - 1);
     const int ty = std::clamp(std::isfinite(y) ? static_cast<int>(std::floor(y)) : 0, 0, kMapSize - 1);
     const float d = std::isfinite(map.at(tx, ty)) ? map.at(tx, ty) : 0.5f;
@@ -216,12 +274,22 @@ CaseResult area_case(const PcfQueryPass& pass, const DeviceTexture& texture, con
     for (const auto& [receiver, bias] : {std::pair{d, 0.0f}, {d + 0.02f, 0.0f}, {d - 0.02f, 0.0f}, {d + 0.05f, 0.01f},
                                          {d + 0.03f, 0.0f}, {NAN, 0.0f}, {INFINITY, 0.0f}}) {
       static constexpr int kBands[4] = {0, 1, 7, 128};
+      const PcfPlane p = plane_for(queries.size() + static_cast<size_t>(left_out));
+      bool open = false;
+      const PcfAreaSums sums = plane ? pcf_area_reference_plane(map, x, y, side, receiver - bias,
+                                                                {p.gradient_u, p.gradient_v, x, y, std::ldexp(1.0, -20)}, open)
+                                     : pcf_area_reference(map, x, y, side, receiver - bias);
+      if (open) {
+        ++left_out;
+        continue;
+      }
       queries.push_back({x, y, side, receiver, bias, kBands[queries.size() % 4]});
-      expected.push_back(pcf_area_reference(map, x, y, side, receiver - bias));
+      planes.push_back(p);
+      expected.push_back(sums);
       position_error.push_back(area_corner_error(x, y, side, kMapSize));
     }
   }
-  const std::vector<PcfQueryResult> observed = pass.area(texture, queries);
+  const std::vector<PcfQueryResult> observed = plane ? pass.area(texture, queries, planes) : pass.area(texture, queries);
   BoundedElements e;
   for (size_t k = 0; k < queries.size(); ++k) {
     const PcfAreaSums& x = expected[k];
@@ -251,8 +319,11 @@ CaseResult area_case(const PcfQueryPass& pass, const DeviceTexture& texture, con
   }
   Tolerance tolerance;
   const Comparison c = compare_bounded(e, tolerance);
-  return {label + " area-weighted window (pnRegionArea, pnPcfAreaPlane whole and in bands of 1, 7, 128 rows) vs "
-                  "every texel's overlap in double (" + std::to_string(queries.size()) + " queries): [0] occluded area, "
+  return {label + " area-weighted window (pnRegionArea, pnPcfAreaPlane whole and in bands of 1, 7, 128 rows" +
+              (plane ? ", with a receiver plane about its centre; " + std::to_string(left_out) +
+                           " queries within rounding of a plane threshold left out"
+                     : std::string()) +
+              ") vs every texel's overlap in double (" + std::to_string(queries.size()) + " queries): [0] occluded area, "
                   "[1] depth-weighted, [2] area, [3] blocker mean (odd) or occluded fraction (even)",
           tolerance, c};
 }
@@ -318,6 +389,8 @@ std::vector<CaseResult> run_pcf_check(const CheckEnvironment& env) {
     results.push_back(bilinear_case(pass, texture, map, label));
     results.push_back(bilinear_plane_case(pass, texture, map, label));
     results.push_back(area_case(pass, texture, map, label));
+    results.push_back(area_case(pass, texture, map, label, true));
+    window_plane_cases(pass, texture, map, all_windows, label, results);
   }
   const bool few = left_out_total * 100 <= queries_total;
   const Image want(1, 1, 1, 1.0f), got(1, 1, 1, few ? 1.0f : 0.0f);

@@ -81,7 +81,7 @@ std::vector<CaseResult> run_receiver_plane_check(const CheckEnvironment& env) {
   }
   const std::vector<ReceiverPlaneGpuResult> observed = pass.run(queries);
 
-  BoundedElements gradients, ranges;
+  BoundedElements gradients, ranges, thresholds, threshold_ranges;
   long left_out = 0, singular = 0, clamped = 0;
   for (size_t k = 0; k < queries.size(); ++k) {
     const ReceiverPlaneGpuQuery& q = queries[k];
@@ -126,6 +126,21 @@ std::vector<CaseResult> run_receiver_plane_check(const CheckEnvironment& env) {
          std::fabs(q.gradient_y) * (std::fabs(q.origin_y) + q.size_y + std::fabs(c[1]) + 1.0));
     ranges.add(range[0], observed[k].lo, range_bound, static_cast<int>(x), 0, 0);
     ranges.add(range[1], observed[k].hi, range_bound, static_cast<int>(x), 0, 1);
+    // The thresholds with the receiver's depth as t0: the rectangle's last texel's, and their range
+    // over it (each texel's threshold capped at t0: the range's ends capped), which the module widens
+    // by 2^-18 of the magnitudes (a node decided against it agrees with its texels' float thresholds):
+    // within twice that.
+    const double last_x = q.origin_x + q.size_x - 1, last_y = q.origin_y + q.size_y - 1;
+    const double along = q.gradient_x * (last_x + 0.5 - c[0]) + q.gradient_y * (last_y + 0.5 - c[1]);
+    thresholds.add(receiver_plane_threshold(c[2], along), observed[k].threshold, range_bound, static_cast<int>(x), 0, 0);
+    const double widening =
+        0x1p-17 * (std::fabs(c[2]) + std::fabs(0.5 * (range[0] + range[1])) +
+                   std::fabs(q.gradient_x) * (std::fabs(q.origin_x) + std::fabs(q.origin_x + q.size_x) + 2.0 * std::fabs(c[0])) +
+                   std::fabs(q.gradient_y) * (std::fabs(q.origin_y) + std::fabs(q.origin_y + q.size_y) + 2.0 * std::fabs(c[1])));
+    threshold_ranges.add(std::min(range[0], c[2]), observed[k].threshold_lo, widening + range_bound,
+                         static_cast<int>(x), 0, 0);
+    threshold_ranges.add(std::min(range[1], c[2]), observed[k].threshold_hi, widening + range_bound,
+                         static_cast<int>(x), 0, 1);
   }
   std::vector<CaseResult> results;
   const auto add = [&](const std::string& name, const BoundedElements& elements) {
@@ -141,6 +156,12 @@ std::vector<CaseResult> run_receiver_plane_check(const CheckEnvironment& env) {
   add("pnReceiverPlaneRange: the plane's (min, max) over 1..48-texel rectangles vs every texel centre (" + n +
           " queries, query k at (k, 0)[min, max])",
       ranges);
+  add("pnReceiverPlaneThreshold: the receiver's depth down its plane at the rectangle's last texel, capped at the "
+      "depth, vs the definition in double (" + n + " queries, query k at (k, 0))",
+      thresholds);
+  add("pnReceiverPlaneThresholdRange: the texels' thresholds' (min, max) over the rectangle, capped at the depth, "
+      "vs the definition in double, within the module's widening (" + n + " queries, query k at (k, 0)[min, max])",
+      threshold_ranges);
   return results;
 }
 

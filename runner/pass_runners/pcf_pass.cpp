@@ -1,5 +1,7 @@
 #include "pass_runners/pcf_pass.h"
 
+#include "core/error.h"
+
 #include <string>
 
 #include "core/query_grid.h"
@@ -36,12 +38,42 @@ std::vector<Define> max_side_define(int max_side) {
 
 PcfQueryPass::PcfQueryPass(const QueryDevice& device, const SourceTree& tree, int max_side)
     : query_(device, tree, "passes/pcf_query.comp",
-             {{PN_PCF_QUERY_A_BINDING, PN_PCF_QUERY_B_BINDING}, {PN_PCF_QUERY_RESULT_IMAGE}},
+             {{PN_PCF_QUERY_A_BINDING, PN_PCF_QUERY_B_BINDING, PN_PCF_QUERY_C_BINDING}, {PN_PCF_QUERY_RESULT_IMAGE}},
              max_side_define(max_side)) {}
 
 QueryResults PcfQueryPass::dispatch(const DeviceTexture& depth_map, const std::vector<Query>& a,
-                                    const std::vector<Query>& b) const {
-  return query_.run({a, b}, {{PN_PCF_QUERY_MAP_BINDING, depth_map}});
+                                    const std::vector<Query>& b, std::vector<Query> c) const {
+  if (c.empty()) c.assign(a.size(), Query{0.0f, 0.0f, 0.0f, 0.0f});
+  return query_.run({a, b, c}, {{PN_PCF_QUERY_MAP_BINDING, depth_map}});
+}
+
+std::vector<PcfQueryResult> PcfQueryPass::run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries,
+                                              const std::vector<PcfPlane>& planes) const {
+  if (queries.empty()) return {};
+  if (planes.size() != queries.size()) throw Error("pcf query: a plane per query expected");
+  std::vector<Query> a, b, c;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const PcfQuery& q = queries[k];
+    const PcfPlane& p = planes[k];
+    a.push_back({float(q.x), float(q.y), float(q.width), float(q.height)});
+    b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 3.0f});
+    c.push_back({p.gradient_u, p.gradient_v, p.centre_u, p.centre_v});
+  }
+  return sums(dispatch(depth_map, a, b, c), queries.size());
+}
+
+std::vector<PcfQueryResult> PcfQueryPass::area(const DeviceTexture& depth_map, const std::vector<PcfAreaQuery>& queries,
+                                               const std::vector<PcfPlane>& planes) const {
+  if (queries.empty()) return {};
+  if (planes.size() != queries.size()) throw Error("pcf query: a plane per query expected");
+  std::vector<Query> a, b, c;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    const PcfAreaQuery& q = queries[k];
+    a.push_back({q.x, q.y, q.side, 0.0f});
+    b.push_back({q.receiver_depth, q.bias, float(q.band_rows), 4.0f});
+    c.push_back({planes[k].gradient_u, planes[k].gradient_v, 0.0f, 0.0f});
+  }
+  return sums(dispatch(depth_map, a, b, c), queries.size());
 }
 
 std::vector<PcfQueryResult> PcfQueryPass::run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries) const {

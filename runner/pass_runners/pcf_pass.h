@@ -42,6 +42,13 @@ struct PcfAreaQuery {
   int band_rows = 0;
 };
 
+// A receiver plane for a window or area query (pnPcfWindowPlane, pnPcfAreaPlane and their bands):
+// its gradient (light depth a texel) and, for a window, the receiver's (u, v) (an area query's is the
+// square's centre).
+struct PcfPlane {
+  float gradient_u = 0.0f, gradient_v = 0.0f, centre_u = 0.0f, centre_v = 0.0f;
+};
+
 class PcfQueryPass {
  public:
   // max_side > 0 compiles the pass with that PN_PCF_MAX_SIDE; 0 keeps the module's default.
@@ -51,11 +58,18 @@ class PcfQueryPass {
   std::vector<PcfQueryResult> run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries) const;
   // Each area query's sums: occluded area, its depth-weighted sum, the area read; and `ratio`.
   std::vector<PcfQueryResult> area(const DeviceTexture& depth_map, const std::vector<PcfAreaQuery>& queries) const;
+  // The same with a receiver plane a query (planes[k]): the sums of the plane windows and squares.
+  std::vector<PcfQueryResult> run(const DeviceTexture& depth_map, const std::vector<PcfQuery>& queries,
+                                  const std::vector<PcfPlane>& planes) const;
+  std::vector<PcfQueryResult> area(const DeviceTexture& depth_map, const std::vector<PcfAreaQuery>& queries,
+                                   const std::vector<PcfPlane>& planes) const;
   // The 2×2 bilinear PCF visibility of each query.
   std::vector<float> bilinear(const DeviceTexture& depth_map, const std::vector<PcfBilinearQuery>& queries) const;
 
  private:
-  QueryResults dispatch(const DeviceTexture& depth_map, const std::vector<Query>& a, const std::vector<Query>& b) const;
+  // `c`: the plane queries' third input (empty: zeros).
+  QueryResults dispatch(const DeviceTexture& depth_map, const std::vector<Query>& a, const std::vector<Query>& b,
+                        std::vector<Query> c = {}) const;
   QueryPass query_;
 };
 

@@ -10,7 +10,7 @@ ReceiverPlaneQueryPass::ReceiverPlaneQueryPass(const QueryDevice& device, const 
                             PN_RECEIVER_PLANE_QUERY_RIGHT_BINDING, PN_RECEIVER_PLANE_QUERY_BELOW_BINDING,
                             PN_RECEIVER_PLANE_QUERY_ABOVE_BINDING, PN_RECEIVER_PLANE_QUERY_F_BINDING,
                             PN_RECEIVER_PLANE_QUERY_G_BINDING},
-                           {PN_RECEIVER_PLANE_QUERY_RESULT_IMAGE},
+                           {PN_RECEIVER_PLANE_QUERY_RESULT_IMAGE, PN_RECEIVER_PLANE_QUERY_THRESHOLD_IMAGE},
                            {}}) {}
 
 std::vector<ReceiverPlaneGpuResult> ReceiverPlaneQueryPass::run(const std::vector<ReceiverPlaneGpuQuery>& queries) const {
@@ -25,8 +25,8 @@ std::vector<ReceiverPlaneGpuResult> ReceiverPlaneQueryPass::run(const std::vecto
   const QueryResults r = query_.run(inputs);
   std::vector<ReceiverPlaneGpuResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
-    const Query q = r.at(0, k);
-    out.push_back({q[0], q[1], q[2], q[3]});
+    const Query q = r.at(0, k), t = r.at(1, k);
+    out.push_back({q[0], q[1], q[2], q[3], t[0], t[1], t[2]});
   }
   return out;
 }

@@ -1,5 +1,5 @@
 // Runner side of glsl/passes/receiver_plane_query.comp: receiver_plane.glsl's
-// gradient from G-buffer neighbours and its range over a rectangle, over a batch.
+// gradient from G-buffer neighbours, its range over a rectangle and the thresholds it gives, over a batch.
 #pragma once
 
 #include <array>
@@ -20,6 +20,9 @@ struct ReceiverPlaneGpuQuery {
 struct ReceiverPlaneGpuResult {
   float gradient_x = 0.0f, gradient_y = 0.0f;  // pnReceiverPlaneFromNeighbours
   float lo = 0.0f, hi = 0.0f;                  // pnReceiverPlaneRange
+  // With the receiver's depth the threshold: pnReceiverPlaneThreshold at the rectangle's last texel,
+  // pnReceiverPlaneThresholdRange over the rectangle.
+  float threshold = 0.0f, threshold_lo = 0.0f, threshold_hi = 0.0f;
 };
 
 class ReceiverPlaneQueryPass {

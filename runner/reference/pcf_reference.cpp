@@ -58,6 +58,51 @@ void for_each_area_texel(int width, int height, double x, double y, double side,
   }
 }
 
+namespace {
+
+// Whether texel (i, j) of depth d occludes under the plane; `open` where rounding may flip it.
+bool plane_occludes(double d, int i, int j, float threshold, const PlanePcf& p, bool& open) {
+  const double qx = i + 0.5 - p.centre_u, qy = j + 0.5 - p.centre_v;
+  const double along = p.gradient_u * qx + p.gradient_v * qy;
+  if (!std::isfinite(d)) return false;
+  const double magnitude = std::fabs(threshold) + std::fabs(p.gradient_u) * (std::fabs(i) + std::fabs(p.centre_u) + 1.0) +
+                           std::fabs(p.gradient_v) * (std::fabs(j) + std::fabs(p.centre_v) + 1.0);
+  const double slack = p.band * magnitude;
+  // Up the plane the threshold is the caller's float itself (the cap), exactly; down it (or within
+  // rounding of the cap) the plane's value, rounded.
+  if (along >= slack) return d < threshold;
+  if (std::fabs(d - (threshold + along)) <= slack || (along > -slack && std::fabs(d - threshold) <= slack)) open = true;
+  return d < receiver_plane_threshold(threshold, along);
+}
+
+}  // namespace
+
+PcfSums pcf_reference_plane(const Image& depth, const Rect& window, float threshold, const PlanePcf& plane, bool& open,
+                            int max_side) {
+  const PcfCover c = pcf_cover(window, depth.width, depth.height, max_side);
+  PcfSums s;
+  for (long y = c.y0; y < c.y1; ++y)
+    for (long x = c.x0; x < c.x1; ++x) {
+      const double d = depth.at(static_cast<int>(x), static_cast<int>(y));
+      ++s.texels;
+      if (plane_occludes(d, static_cast<int>(x), static_cast<int>(y), threshold, plane, open))
+        ++s.occluders, s.depth_sum += d;
+    }
+  return s;
+}
+
+PcfAreaSums pcf_area_reference_plane(const Image& depth, double x, double y, double side, float threshold,
+                                     const PlanePcf& plane, bool& open) {
+  PcfAreaSums sums;
+  for_each_area_texel(depth.width, depth.height, x, y, side, [&](int i, int j, double w) {
+    const float d = depth.at(i, j);
+    ++sums.touched;
+    sums.area += w;
+    if (plane_occludes(d, i, j, threshold, plane, open)) sums.occluders += w, sums.depth_sum += w * d;
+  });
+  return sums;
+}
+
 PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double side, float threshold) {
   PcfAreaSums sums;
   for_each_area_texel(depth.width, depth.height, x, y, side, [&](int i, int j, double w) {

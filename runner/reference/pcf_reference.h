@@ -52,6 +52,19 @@ struct PcfAreaSums {
 };
 PcfAreaSums pcf_area_reference(const Image& depth, double x, double y, double side, float threshold);
 
+// Both with a receiver plane (pnPcfWindowPlane, pnPcfAreaPlane and their bands): texel q against its
+// own threshold receiver_plane_threshold(t, g · (q + ½ − c)) — the plane through the receiver at c,
+// never above t (the float dP − bias the caller formed) — in double. `open` is set where a finite
+// texel's depth lies within `band` (relative to the magnitudes) of its threshold: float may decide
+// it either way.
+struct PlanePcf {
+  double gradient_u = 0.0, gradient_v = 0.0, centre_u = 0.0, centre_v = 0.0, band = 0.0;
+};
+PcfSums pcf_reference_plane(const Image& depth, const Rect& window, float threshold, const PlanePcf& plane, bool& open,
+                            int max_side = kPcfMaxSide);
+PcfAreaSums pcf_area_reference_plane(const Image& depth, double x, double y, double side, float threshold,
+                                     const PlanePcf& plane, bool& open);
+
 }  // namespace pn
 
 namespace pn {
