@@ -34,7 +34,7 @@ Which checks cover a module is traced, not listed: the runner appends every file
 $PENUMBRA_SOURCE_LOG, so each registered check (the list `penumbra check` prints for an unknown
 name) is run once on the unmutated root and covers every module it read (cached under --work,
 keyed by the root's content, the binary and the API). A mutant runs its module's covering checks,
-the module's own check (named as the module) first, then the fastest first, and stops at the
+the module's own check (named as the module, or its family's: OWN_CHECK) first, then the fastest first, and stops at the
 first that fails. A module no check reads fails the run ("no check covers"). --checks own skips
 the trace: the module's own check, and `exports` where the module has an export entry
 (glsl/exports/<module>.comp); the CTest subset runs so.
@@ -46,7 +46,8 @@ equivalent (a survivor listed with its reason in tests/mutation/equivalent.txt),
 a signal). Exit 0 when every mutant is killed or listed as equivalent; 1 when one survives, is
 unread, stillborn or errs, or a module has no check; 2 on bad options; 77 without a context.
 
-  --quick          the CTest subset: ret1 (else ret0) of QUICK_CALLS, --checks own, each check --quick
+  --quick          the CTest subset: ret1 (else ret0) of QUICK_CALLS and QUICK_KIND_MUTANTS, --checks own,
+                   each check --quick
   --modules a,b    modules (as the table names them: blur, passes/gbuffer_receiver_plane)
   --functions f,g  only these calls;  --kinds ret0,ret1,cmp,const;  --api gl450|es310|vulkan|hlsl
   --jobs N         mutants run at once (default 1);  --timeout S  seconds a check run may take
@@ -76,6 +77,13 @@ KINDS = ('ret0', 'ret1', 'cmp', 'const', 'swap', 'bound', 'bound1', 'minmax', 'o
 # whose own checks are short.
 QUICK_CALLS = ('pnPcf', 'pnPoissonPcss', 'pnVogelPcss', 'pnFastPcss', 'pnBackprojection', 'pnSavsm', 'pnVsm',
                'pnPoissonOcclusionDisk', 'pnReceiverPlaneGradient', 'pnBlur1DVec4')
+
+# And one mutant of each of issue 54's kinds, on modules whose own checks take about a second (the
+# full run of every kind on every module is docs/reliability.md's command, minutes).
+QUICK_KIND_MUTANTS = ('light_model:pnLightProject:0:swap', 'blur:pnBlur1DVec4:0:bound', 'blur:pnBlur1DVec4:0:bound1',
+                      'sample_table:pnSampleTexel:0:minmax', 'sample_table:pnSample:0:offset',
+                      'receiver_plane:pnReceiverPlaneThreshold:0:drop')
+QUICK_KINDS = ('ret0', 'ret1') + tuple(sorted({m.rsplit(':', 1)[1] for m in QUICK_KIND_MUTANTS}))
 
 SCALARS = {'float': '0.0', 'int': '0', 'uint': '0u', 'bool': 'false', 'double': '0.0lf'}
 ONES = {'float': '1.0', 'bool': 'true'}
@@ -551,8 +559,15 @@ def coverage(args, checks, work):
     return data
 
 
+# A module that is a part of another's (a structure's variant, a helper of one technique, a pass's
+# include) has that module's check as its own.
+OWN_CHECK = {'pcss_regions_mip': 'pcss_regions', 'pcss_regions_pyramid': 'pcss_regions', 'traversal_mip': 'traversal',
+             'traversal_pyramid': 'traversal', 'backprojection_mask': 'backprojection', 'variance_bound': 'vsm',
+             'correlated_multi_jitter': 'sample_table', 'gbuffer_receiver_plane': 'pipeline'}
+
+
 def covering_checks(module, rel, checks, trace, mode, root):
-    own = module.split('/')[-1]
+    own = OWN_CHECK.get(module.split('/')[-1], module.split('/')[-1])
     if mode == 'own':
         # The module's own check, and `exports` where the module has an export entry
         # (glsl/exports/<module>.comp: the entry the exports check runs).
@@ -685,10 +700,11 @@ def main(argv):
     functions = set(args.functions.split(',')) if args.functions else None
     mode = args.checks
     if args.quick:
-        kinds = [k for k in kinds if k in ('ret0', 'ret1')] if args.kinds != ','.join(KINDS) else ['ret0', 'ret1']
+        kinds = [k for k in kinds if k in QUICK_KINDS] if args.kinds != ','.join(KINDS) else list(QUICK_KINDS)
         if not kinds:  # issue 54 X12: it used to blame --functions
-            raise Usage(f'--quick runs the return-constant mutants (ret0, ret1): --kinds {args.kinds} asks for none')
-        functions = functions or set(QUICK_CALLS)
+            raise Usage(f'--quick runs the return-constant mutants (ret0, ret1) and one of each of '
+                        f'{", ".join(QUICK_KINDS[2:])}: --kinds {args.kinds} asks for none')
+        functions = functions or set(QUICK_CALLS) | {m.split(':')[1] for m in QUICK_KIND_MUTANTS}
         mode = 'own'
     args.glsl_root = os.path.abspath(args.glsl_root)
     if not os.path.isdir(args.glsl_root):
@@ -700,6 +716,9 @@ def main(argv):
         raise Usage(f'--modules: no module {", ".join(sorted(wanted - set(mods)))} '
                     f'(expected some of {", ".join(sorted(mods))})')
     todo, notes = mutants(args.glsl_root, wanted, functions, kinds)
+    if args.quick:  # the return constants of QUICK_CALLS, the other kinds' QUICK_KIND_MUTANTS
+        todo = [m for m in todo if (m['kind'] in ('ret0', 'ret1') and m['function'] in QUICK_CALLS) or
+                m['id'] in QUICK_KIND_MUTANTS]
     if args.quick and args.kinds == ','.join(KINDS):
         # One return constant a definition (the suite's time): `return 1.0;` where it applies — a
         # fully lit result, the false PASS issue 39 found — else the zero.
@@ -746,7 +765,7 @@ def main(argv):
             plan.append((m, cover))
     uncovered = sorted(set(uncovered))
     for module in uncovered:
-        print(f'{module}: FAIL no check covers it (no registered check {"is named as it" if mode == "own" else "reads " + mods[module][0]})')
+        print(f'{module}: FAIL no check covers it (no registered check {"is named as it or its family (OWN_CHECK)" if mode == "own" else "reads " + mods[module][0]})')
     print(f'{len(plan)} mutants of {len({m["module"] for m, _ in plan})} modules on {args.api}, '
           f'{args.jobs} at a time', flush=True)
 
