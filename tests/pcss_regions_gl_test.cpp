@@ -32,8 +32,9 @@ TEST_CASE("negative: a copy of pcss_regions.glsl with half the filter side fails
   // search) x 3 + the counted searches' refinements + the property) + 3 lights x 3 (filter) + 1
   // (given entries) + tall_blocker ((3 modes + the mip chain, and the mip chain over squares with
   // area-weighted edges) x (3 + the property), and the mip chain's search with a receiver plane x 3)
-  // + boxes (the property's far field: the window mode and the mip chain) + the left-out bound.
-  CHECK(results.size() == 12 * 14 + 9 + 1 + 20 + 3 + 2 + 1);
+  // + boxes (the property's far field: the window mode and the mip chain) + the staircases (the pyramid's entries
+  // and sides; the mip chain's and its refinements) + the left-out bound.
+  CHECK(results.size() == 12 * 14 + 9 + 1 + 20 + 3 + 2 + 2 + 3 + 1);
   CHECK(failing_named(results, "filter entries") >= 2);  // the sides of the two lights with a width
   for (const auto& r : results)
     if (!named(r, "filter entries")) CHECK(r.comparison.pass);

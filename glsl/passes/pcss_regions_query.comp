@@ -4,6 +4,7 @@
 //   search over the mip chain: pnSearchEntryMip, the same inputs
 //   counted search over the mip chain: pnSearchEntryMipCounted, the same inputs
 //   plane search over the mip chain: pnSearchEntryMipPlane, the same and the gradient C.yz
+//   plane search over the pyramid: pnSearchEntryPlane, as search and the gradient C.yz
 //   filter: pnFilterEntry (search entry A, blocker mean C.y, has blocker B.w, scale C.z)
 //   entry:  A as given
 // and result k is that entry, pnEntryRect of it, pnEntryWindow of it in mode B.y
@@ -43,6 +44,8 @@ void main() {
     entry = pnSearchEntryMipCounted(pnMip, n, light, a, c.x, int(b.z), refinements);
   else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_PLANE)
     entry = pnSearchEntryMipPlane(pnMip, n, light, a, c.yz, c.x, int(b.z), refinements);
+  else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_PLANE)
+    entry = pnSearchEntryPlane(pnPyramid, light, a, c.yz, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH) entry = pnSearchEntry(pnPyramid, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_SEARCH_MIP) entry = pnSearchEntryMip(pnMip, n, light, a, c.x, int(b.z));
   else if (kind == PN_PCSS_REGIONS_QUERY_FILTER) entry = pnFilterEntry(light, a, c.y, b.w != 0.0, c.z);

@@ -29,6 +29,7 @@
 #define PN_PCSS_REGIONS_QUERY_SEARCH_MIP 3  // pnSearchEntryMip(mip, N, light, A, C.x, int(B.z))
 #define PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED 4  // pnSearchEntryMipCounted: the same, and its refinements
 #define PN_PCSS_REGIONS_QUERY_SEARCH_MIP_PLANE 5  // pnSearchEntryMipPlane: the same with the receiver plane's gradient C.yz
+#define PN_PCSS_REGIONS_QUERY_SEARCH_PLANE 6  // pnSearchEntryPlane over the pyramid: the same as search, gradient C.yz
 
 PN_UNIFORM_BLOCK(PnPcssRegionsQueryParams, PN_PCSS_REGIONS_QUERY_PARAMS_BINDING)
   PN_LIGHT_FIELDS  // PnLight (light_model.glsl); mapSize is N, the pyramid's size

@@ -120,6 +120,129 @@ void synthetic_cases(std::vector<CaseResult>& results, const PcssRegionsQueryPas
   push_group(results, "given entries (odd sides and centres), N = " + std::to_string(n), g, "entries");
 }
 
+// A staircase of depth about one receiver on which Step 3 refines every time its bound allows
+// (PN_REFINE_MAX_ITERATIONS, 16) over the pyramid: nested squares Q_j of sides 36, 34, …, 4 (the
+// sides T_j = 38.25 − 2j the refinements reach) about the receiver, the texels of Q_j outside
+// Q_{j+1} at the depth z_j whose blocker window is T_{j+1} (light_model's, inverted by bisection),
+// the map outside Q_1 at z_0: each refinement's square holds its ring's depth as its min, and the
+// next side is 2 texels smaller. Searches of 8, 15, 16 and 100 iterations against search_entry,
+// which takes min(iterations, 16) refinements here.
+void staircase_case(const CheckEnvironment& env, const PcssRegionsQueryPass& pass, std::vector<CaseResult>& results,
+                    SearchTally& tally) {
+  constexpr int n = 64;
+  constexpr int kSteps = kRefineMaxIterations;  // 16
+  const LightModel light = fixture_lights(n)[1].light;  // light 1
+  const RegionReceiver receiver{32.5f, 32.5f, 2.0f, 1.0f};
+  const auto side_at = [](int j) { return 38.25 - 2.0 * j; };  // T_j
+  // z with blocker_window_texels(d, z) = target (decreasing in z on (near, d)).
+  const auto depth_for = [&](double target) {
+    double lo = light.near_plane, hi = receiver.depth;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (light.blocker_window_texels(receiver.depth, mid) > target ? lo : hi) = mid;
+    }
+    return static_cast<float>(0.5 * (lo + hi));
+  };
+  Image map(n, n, 1, depth_for(side_at(1)));  // z_0 outside Q_1
+  for (int j = 1; j <= kSteps; ++j) {
+    const Rect q = pcss_square(receiver.u, receiver.v, side_at(j), n, nullptr);
+    const float z = depth_for(side_at(j + 1));
+    for (int y = q.y; y < q.y + q.height; ++y)
+      for (int x = q.x; x < q.x + q.width; ++x) map.at(x, y) = z;
+  }
+  const std::unique_ptr<DeviceTexture> texture = env.device.upload(map);
+  const DepthPyramid pyramid = DepthPyramidBuilder(env.device, env.tree).build(*texture, n, n, 31);
+  const DepthScan scan(map);
+  std::vector<PcssRegionsQuery> queries;
+  for (int iterations : {8, kSteps - 1, kSteps, 100}) {
+    const std::vector<PcssRegionsQuery> q = search_queries({receiver}, RegionMode::exact, iterations, 0.0f);
+    queries.insert(queries.end(), q.begin(), q.end());
+  }
+  const std::vector<PcssRegionsResult> observed = pass.run(pyramid, light, queries);
+  EntryGroup g;
+  int most = 0;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    Rounding rounding{kAmbiguity};
+    int refinements = 0;
+    const RegionEntry expected = search_entry(scan, light, receiver, 0.0, queries[k].iterations, &rounding,
+                                              Structure::pyramid, &refinements);
+    most = std::max(most, refinements);
+    add_entry(g, expected, rounding.ambiguous, observed[k]);
+  }
+  tally.searched += g.queries, tally.left_out += g.left_out;
+  push_group(results, "staircase " + std::to_string(n) + "², the pyramid's search refining " + std::to_string(most) +
+                          " times (its bound)",
+             g, "search entries (8, 15, 16, 100 iterations)");
+}
+
+// The same over the aligned mip chain (pnSearchEntryMip): a refinement reads the min over the aligned
+// nodes that cover its square (mip_square_cover), so the squares shrink only where their covers
+// do: on a 1024² map about (472.5, 472.5), the sides whose covers strictly nest, each the largest
+// side below the last with a smaller cover (4096 — the whole map — 512, 434, 256, …, 7, 2: 16 reads),
+// each ring's depth the one whose window is the next side (+ ¼), and a last side of 1.25: 16
+// refinements, each a smaller side. Searches of 8, 15, 16 and 100 iterations against search_entry.
+void mip_staircase_case(const CheckEnvironment& env, const PcssRegionsQueryPass& pass, std::vector<CaseResult>& results,
+                        SearchTally& tally) {
+  constexpr int n = 1024;
+  const LightModel light = fixture_lights(n)[1].light;  // light 1
+  const RegionReceiver receiver{472.5f, 472.5f, 2.0f, 1.0f};
+  const auto depth_for = [&](double target) {  // z with blocker_window_texels(d, z) = target, by bisection
+    double lo = light.near_plane, hi = receiver.depth;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (light.blocker_window_texels(receiver.depth, mid) > target ? lo : hi) = mid;
+    }
+    return static_cast<float>(0.5 * (lo + hi));
+  };
+  const auto cover = [&](double side) { return mip_square_cover(pcss_square(receiver.u, receiver.v, side, n, nullptr), n); };
+  const auto inside = [](const Rect& a, const Rect& b) {  // a strictly inside b
+    return a.x >= b.x && a.y >= b.y && a.x + a.width <= b.x + b.width && a.y + a.height <= b.y + b.height &&
+           (a.width < b.width || a.height < b.height);
+  };
+  std::vector<int> sides;  // the squares read after the first (the search width's)
+  Rect current = cover(light.search_width_texels(receiver.depth));
+  std::vector<Rect> covers{current};
+  for (int m = n; m >= 1; --m)
+    if (inside(cover(m), current) && (sides.empty() || m < sides.back())) {
+      sides.push_back(m), current = cover(m), covers.push_back(current);
+      if (sides.size() + 1 == static_cast<size_t>(kRefineMaxIterations)) break;
+    }
+  // Ring j (in cover j, not in cover j + 1) at the depth whose window is square j + 1's side + ¼.
+  Image map(n, n);
+  for (size_t j = 0; j < covers.size(); ++j) {
+    const float z = depth_for(j < sides.size() ? sides[j] + 0.25 : 1.25);
+    const Rect& c = covers[j];
+    for (int y = c.y; y < c.y + c.height; ++y)
+      for (int x = c.x; x < c.x + c.width; ++x) map.at(x, y) = z;
+  }
+  const std::unique_ptr<DeviceTexture> texture = env.device.upload(map);
+  const DepthPyramid pyramid = DepthPyramidBuilder(env.device, env.tree).build(*texture, n, n, 31);
+  const MinMaxMipChain mip = MinMaxMipBuilder(env.device, env.tree).build(*texture, n);
+  const DepthScan scan(map);
+  std::vector<PcssRegionsQuery> queries;
+  for (int iterations : {8, kRefineMaxIterations - 1, kRefineMaxIterations, 100})
+    for (PcssRegionsQuery::Kind kind : {PcssRegionsQuery::Kind::search_mip_counted, PcssRegionsQuery::Kind::search_mip_plane}) {
+      PcssRegionsQuery q = search_queries({receiver}, RegionMode::exact, iterations, 0.0f, Structure::mip).front();
+      q.kind = kind;  // the plane's gradient 0: the counted search again, through the plane's call
+      queries.push_back(q);
+    }
+  const std::vector<PcssRegionsResult> observed = pass.run(pyramid, light, queries, &mip);
+  EntryGroup g;
+  int most = 0;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    Rounding rounding{kAmbiguity};
+    int refinements = 0;
+    const RegionEntry expected = search_entry(scan, light, receiver, 0.0, queries[k].iterations, &rounding,
+                                              Structure::mip, &refinements);
+    most = std::max(most, refinements);
+    add_entry(g, expected, rounding.ambiguous, observed[k], refinements);
+  }
+  tally.searched += g.queries, tally.left_out += g.left_out;
+  push_group(results, "staircase " + std::to_string(n) + "², the mip chain's search refining " + std::to_string(most) +
+                          " times (its bound: 16)",
+             g, "search entries and refinements (8, 15, 16, 100 iterations)");
+}
+
 }  // namespace
 
 void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass, std::vector<CaseResult>& results,
@@ -188,6 +311,8 @@ void fixture_cases(const CheckEnvironment& env, const PcssRegionsQueryPass& pass
     if (first) synthetic_cases(results, pass, pyramid, n);
     first = false;
   }
+  staircase_case(env, pass, results, tally);
+  mip_staircase_case(env, pass, results, tally);
 }
 
 }  // namespace pn::pcss_regions_cases

@@ -126,8 +126,12 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
       return std::array<float, 2>{0.04f * static_cast<float>(static_cast<int>(k % 5) - 2),
                                   0.11f * static_cast<float>(static_cast<int>(k % 3) - 1)};
     };
+    // Every other query over the pyramid (pnSearchEntryPlane: no count of its refinements).
+    const auto structure = [](std::size_t k) { return k % 2 == 0 ? Structure::mip : Structure::pyramid; };
     for (std::size_t k = 0; k < queries.size(); ++k)
-      queries[k].kind = PcssRegionsQuery::Kind::search_mip_plane, queries[k].gradient = gradient(k);
+      queries[k].kind = structure(k) == Structure::mip ? PcssRegionsQuery::Kind::search_mip_plane
+                                                       : PcssRegionsQuery::Kind::search_plane,
+      queries[k].gradient = gradient(k);
     const std::vector<PcssRegionsResult> observed = pass.run(scene.pyramid, scene.light, queries, &scene.mip);
     EntryGroup g;
     int changed = 0;  // entries the plane changes (lit, or refined less far)
@@ -136,14 +140,14 @@ void pcss_regions_cases::scene_cases(const CheckEnvironment& env, const PcssRegi
       int refinements = 0;
       const RegionEntry expected =
           search_entry(scan, scene.light, scene.receivers[k], defaults.bias, defaults.refine_iterations, &rounding,
-                       Structure::mip, &refinements, false, {gradient(k)[0], gradient(k)[1]});
-      add_entry(g, expected, rounding.ambiguous, observed[k], refinements);
+                       structure(k), &refinements, false, {gradient(k)[0], gradient(k)[1]});
+      add_entry(g, expected, rounding.ambiguous, observed[k], structure(k) == Structure::mip ? refinements : -1);
       const RegionEntry flat = search_entry(scan, scene.light, scene.receivers[k], defaults.bias,
-                                            defaults.refine_iterations, nullptr, Structure::mip);
+                                            defaults.refine_iterations, nullptr, structure(k));
       if (expected.lit() != flat.lit() || (!expected.lit() && expected.side != flat.side)) ++changed;
     }
     tally.searched += g.queries, tally.left_out += g.left_out;
-    push_group(results, scene.name + ", the mip chain's search with a receiver plane (" + std::to_string(changed) +
+    push_group(results, scene.name + ", the mip chain's and the pyramid's search with a receiver plane (" + std::to_string(changed) +
                             " entries differ from the flat search's)",
                g, ("search entries and refinements (" + std::to_string(defaults.refine_iterations) + " iterations)").c_str());
   }

@@ -1,6 +1,7 @@
 // Cases of the reuse check: on seeded region maps (smooth fields with steps,
 // zeros and NaN entries) of several sizes, for tiles 1 (no reuse), 2, 4, 8 and several
-// sigmas, the GPU's parent codes, representatives and gathered values equal
+// sigmas, and the largest tile, 16, with chains as long as its walk's bound, the GPU's parent
+// codes, representatives and gathered values equal
 // the CPU reference (explicit parent pointers and root finding) exactly, and
 // no group crosses a tile. The fraction of representatives is in each name.
 #include <cmath>
@@ -55,7 +56,11 @@ std::vector<CaseResult> run_reuse_check(const CheckEnvironment& env) {
     for (ReuseParams params : {ReuseParams{0.0f, 0.1f, 0.1f, 4}, ReuseParams{0.0f, 0.1f, 0.1f, 2},
                                ReuseParams{0.0f, 0.1f, 0.1f, 8}, ReuseParams{0.0f, 0.1f, 0.1f, 1},
                                ReuseParams{0.0f, 0.0f, 0.0f, 4},
-                               ReuseParams{0.5f, 0.3f, 0.3f, 4}}) {
+                               ReuseParams{0.5f, 0.3f, 0.3f, 4},
+                               // The largest tile, every finite neighbour similar (sigma 1 holds any two
+                               // non-negative values): chains of 2 (k - 1) = 30 links, every step the
+                               // walk's bound allows, from a tile's far corner.
+                               ReuseParams{1.0f, 1.0f, 1.0f, PN_REUSE_MAX_TILE}}) {
       const std::unique_ptr<DeviceTexture> parents = pass.link(*entry_texture, size.w, size.h, params);
       const std::unique_ptr<DeviceTexture> gathered = pass.gather(*parents, *value_texture, size.w, size.h, params.tile);
       const Image observed_parents = env.device.read_texture(*parents);

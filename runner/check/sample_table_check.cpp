@@ -2,13 +2,15 @@
 // every set and group (CPU property); the shader's §3.2 selection and scaling
 // equal the paper's arithmetic for every pixel residue, region side 0…40 and
 // sample index; and the stateless option (correlated_multi_jitter.glsl) gives
-// multi-jittered groups of 1, 4, 16 and 64 for every set of three seeds.
+// multi-jittered groups of 1, 4, 16 and 64 for every set of three seeds, jittered inside their
+// cells (the mean offset), groups of different sizes independent.
 #include <algorithm>
 #include <cmath>
 #include <vector>
 #include <string>
 
 #include "check/module_check.h"
+#include "core/format.h"
 #include "core/query_grid.h"
 #include "pass_runners/sample_table_query_pass.h"
 
@@ -84,6 +86,13 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
   const Image cmj_input = query_image(cmj);
   const Image positions = CorrelatedMultiJitterQueryPass(env.device, env.tree).run(cmj_input);
   size_t at = 0;
+  // Jitter: each sample's offset inside its fine cell, frac(x · n²) and frac(y · n²), uniform on [0, 1)
+  // (mean 1/2; the sd of the mean over these 2,016 samples is 0.007): the sample is not at a fixed
+  // point of its cell. And groups of different sizes independent: a set's first samples of the
+  // 4-, 16- and 64-sample groups sit at different offsets in their cells.
+  double offsets = 0.0;
+  int jittered = 0;
+  std::vector<std::vector<float>> first_offsets(3 * SampleTable::kSets);
   for (int seed : {1, 2, 12345})
     for (int k = 0; k <= 3; ++k) {
       const int n = 1 << k;
@@ -94,6 +103,13 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
         for (int i = 0; i < n * n; ++i, ++at) {
           const int x = static_cast<int>(at) % cmj_input.width, y = static_cast<int>(at) / cmj_input.width;
           group.push_back({positions.at(x, y, 0), positions.at(x, y, 1)});
+          if (k > 0) {
+            const float cells = static_cast<float>(n * n);
+            const float ox = group.back().x * cells - std::floor(group.back().x * cells);
+            const float oy = group.back().y * cells - std::floor(group.back().y * cells);
+            offsets += ox + oy, jittered += 2;
+            if (i == 0) first_offsets[static_cast<size_t>((seed == 1 ? 0 : seed == 2 ? 1 : 2) * SampleTable::kSets + set)].push_back(ox);
+          }
         }
         firsts.emplace_back(group.front().x, group.front().y);
         per_set.push_back(stratum_counts(group, n));
@@ -112,6 +128,20 @@ std::vector<CaseResult> run_sample_table_check(const CheckEnvironment& env) {
                              " samples: the 8 sets' first samples are all different",
                          exact, compare(Image(1, 1, 1, 8.0f), Image(1, 1, 1, static_cast<float>(distinct)), exact)});
     }
+  const double mean = offsets / jittered;
+  results.push_back({"stateless (Kensler): samples jittered inside their cells (mean offset " +
+                         format_number("%.3f", mean) + " of " + std::to_string(jittered) + ", within 0.45..0.55)",
+                     exact, compare(Image(1, 1, 1, 1.0f), Image(1, 1, 1, mean > 0.45 && mean < 0.55 ? 1.0f : 0.0f), exact)});
+  int independent = 0;
+  for (std::vector<float>& f : first_offsets) {
+    std::sort(f.begin(), f.end());
+    independent += std::unique(f.begin(), f.end()) == f.end() ? 1 : 0;
+  }
+  results.push_back({"stateless (Kensler): a set's 4-, 16- and 64-sample groups independent (their first samples' "
+                         "offsets in their cells differ) in " + std::to_string(independent) + " of " +
+                         std::to_string(first_offsets.size()) + " (seed, set) pairs",
+                     exact, compare(Image(1, 1, 1, static_cast<float>(first_offsets.size())),
+                                    Image(1, 1, 1, static_cast<float>(independent)), exact)});
   return results;
 }
 

@@ -25,7 +25,8 @@ static_assert(static_cast<int>(PcssRegionsQuery::Kind::search) == PN_PCSS_REGION
                   static_cast<int>(PcssRegionsQuery::Kind::entry) == PN_PCSS_REGIONS_QUERY_ENTRY &&
                   static_cast<int>(PcssRegionsQuery::Kind::search_mip) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP &&
                   static_cast<int>(PcssRegionsQuery::Kind::search_mip_counted) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_COUNTED &&
-                  static_cast<int>(PcssRegionsQuery::Kind::search_mip_plane) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_PLANE,
+                  static_cast<int>(PcssRegionsQuery::Kind::search_mip_plane) == PN_PCSS_REGIONS_QUERY_SEARCH_MIP_PLANE &&
+                  static_cast<int>(PcssRegionsQuery::Kind::search_plane) == PN_PCSS_REGIONS_QUERY_SEARCH_PLANE,
               "query kinds as pcss_regions_query.h numbers them");
 
 PcssRegionsQueryPass::PcssRegionsQueryPass(const QueryDevice& device, const SourceTree& tree, bool area_edges)
@@ -56,7 +57,8 @@ std::vector<PcssRegionsResult> PcssRegionsQueryPass::run(const DepthPyramid& pyr
     a.push_back({q.input[0], q.input[1], q.input[2], q.input[3]});
     b.push_back({float(static_cast<int>(q.kind)), float(static_cast<int>(q.mode)), float(q.iterations),
                  q.has_blocker ? 1.0f : 0.0f});
-    const bool plane = q.kind == PcssRegionsQuery::Kind::search_mip_plane;  // its gradient where a filter's inputs go
+    const bool plane =
+        q.kind == PcssRegionsQuery::Kind::search_mip_plane || q.kind == PcssRegionsQuery::Kind::search_plane;  // its gradient where a filter's inputs go
     c.push_back({q.bias, plane ? q.gradient[0] : q.blocker_mean, plane ? q.gradient[1] : q.filter_scale, 0.0f});
   }
   glsl::PnPcssRegionsQueryParams block{};

@@ -18,7 +18,9 @@ namespace pn {
 struct PcssRegionsQuery {
   // PN_PCSS_REGIONS_QUERY_* (pcss_regions_query.h); search_mip_counted and search_mip_plane also
   // report their refinements
-  enum class Kind { search = 0, filter = 1, entry = 2, search_mip = 3, search_mip_counted = 4, search_mip_plane = 5 };
+  enum class Kind {
+    search = 0, filter = 1, entry = 2, search_mip = 3, search_mip_counted = 4, search_mip_plane = 5, search_plane = 6
+  };
   Kind kind = Kind::search;
   RegionMode mode = RegionMode::window;
   std::array<float, 4> input{};  // search: receiver (u, v, d, valid); filter: search entry; entry: the entry
@@ -27,7 +29,7 @@ struct PcssRegionsQuery {
   float blocker_mean = 0.0f;     // filter
   bool has_blocker = false;      // filter
   float filter_scale = 1.0f;     // filter
-  std::array<float, 2> gradient{};  // search_mip_plane: the receiver plane's (receiver_plane.glsl)
+  std::array<float, 2> gradient{};  // search_mip_plane, search_plane: the receiver plane's (receiver_plane.glsl)
 };
 
 struct PcssRegionsResult {
