@@ -120,6 +120,17 @@ void synthetic_cases(std::vector<CaseResult>& results, const PcssRegionsQueryPas
   push_group(results, "given entries (odd sides and centres), N = " + std::to_string(n), g, "entries");
 }
 
+// The blocker depth z whose window (light_model's blocker_window_texels, decreasing in z on
+// (near, d)) is `target` texels for a receiver at depth d, by bisection.
+float blocker_depth_for(const LightModel& light, double d, double target) {
+  double lo = light.near_plane, hi = d;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (light.blocker_window_texels(d, mid) > target ? lo : hi) = mid;
+  }
+  return static_cast<float>(0.5 * (lo + hi));
+}
+
 // A staircase of depth about one receiver on which Step 3 refines every time its bound allows
 // (PN_REFINE_MAX_ITERATIONS, 16) over the pyramid: nested squares Q_j of sides 36, 34, …, 4 (the
 // sides T_j = 38.25 − 2j the refinements reach) about the receiver, the texels of Q_j outside
@@ -134,15 +145,7 @@ void staircase_case(const CheckEnvironment& env, const PcssRegionsQueryPass& pas
   const LightModel light = fixture_lights(n)[1].light;  // light 1
   const RegionReceiver receiver{32.5f, 32.5f, 2.0f, 1.0f};
   const auto side_at = [](int j) { return 38.25 - 2.0 * j; };  // T_j
-  // z with blocker_window_texels(d, z) = target (decreasing in z on (near, d)).
-  const auto depth_for = [&](double target) {
-    double lo = light.near_plane, hi = receiver.depth;
-    for (int i = 0; i < 200; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (light.blocker_window_texels(receiver.depth, mid) > target ? lo : hi) = mid;
-    }
-    return static_cast<float>(0.5 * (lo + hi));
-  };
+  const auto depth_for = [&](double target) { return blocker_depth_for(light, receiver.depth, target); };
   Image map(n, n, 1, depth_for(side_at(1)));  // z_0 outside Q_1
   for (int j = 1; j <= kSteps; ++j) {
     const Rect q = pcss_square(receiver.u, receiver.v, side_at(j), n, nullptr);
@@ -186,14 +189,7 @@ void mip_staircase_case(const CheckEnvironment& env, const PcssRegionsQueryPass&
   constexpr int n = 1024;
   const LightModel light = fixture_lights(n)[1].light;  // light 1
   const RegionReceiver receiver{472.5f, 472.5f, 2.0f, 1.0f};
-  const auto depth_for = [&](double target) {  // z with blocker_window_texels(d, z) = target, by bisection
-    double lo = light.near_plane, hi = receiver.depth;
-    for (int i = 0; i < 200; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (light.blocker_window_texels(receiver.depth, mid) > target ? lo : hi) = mid;
-    }
-    return static_cast<float>(0.5 * (lo + hi));
-  };
+  const auto depth_for = [&](double target) { return blocker_depth_for(light, receiver.depth, target); };
   const auto cover = [&](double side) { return mip_square_cover(pcss_square(receiver.u, receiver.v, side, n, nullptr), n); };
   const auto inside = [](const Rect& a, const Rect& b) {  // a strictly inside b
     return a.x >= b.x && a.y >= b.y && a.x + a.width <= b.x + b.width && a.y + a.height <= b.y + b.height &&
