@@ -1,7 +1,8 @@
 // poisson_pcss_query.comp — poisson_pcss.glsl over a batch of disks.
 // Query k: texel k of query image A = (centre x, y, diameter, receiver depth),
 //          texel k of query image B = (bias, sample count, rotation cos, sin).
-// Result k: (occluders, depth sum, samples, 0).
+// Result k: (occluders, depth sum, samples, r), r = pnPoissonBlockerMean of the sums at odd query
+// indices, pnPoissonOccludedFraction at even ones.
 //   bindings and block: poisson_pcss_query.h
 // The in-place disk is the constant below — `penumbra poisson --count 16 --seed 1`
 // pasted as it prints, as an engine would (the check compares it with the
@@ -52,5 +53,6 @@ void main() {
   vec4 b = texelFetch(pnQueryB, p, 0);
   int count = int(b.y);
   PnPoisson s = pnPoissonOcclusionDisk(pnDepthMap, a.xy, a.z, a.w, b.x, count, b.zw);
-  imageStore(pnResult, p, vec4(s.occluders, s.depthSum, s.samples, 0.0));
+  float ratio = (p.x % 2 == 1) ? pnPoissonBlockerMean(s) : pnPoissonOccludedFraction(s);
+  imageStore(pnResult, p, vec4(s.occluders, s.depthSum, s.samples, ratio));
 }

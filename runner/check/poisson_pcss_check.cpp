@@ -126,14 +126,21 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
             }
       const std::vector<PoissonPcssGpuResult> observed = pass.run(texture, block_disk, source, gpu);
       OcclusionBatch groups[2];  // rotation off, on
+      BoundedElements ratios;  // the sums through the module's helpers: odd queries the blocker mean, even the fraction
       for (size_t k = 0; k < cpu.size(); ++k) {
         OcclusionBatch& g = groups[cpu[k].rotation_y != 0.0 || cpu[k].rotation_x != 1.0 ? 1 : 0];
         if (ambiguous(map, points, cpu[k])) {
           ++g.left_out;
           continue;
         }
-        g.expected.push_back(sums(poisson_pcss_reference(map, points, cpu[k])));
+        const auto expected = poisson_pcss_reference(map, points, cpu[k]);
+        g.expected.push_back(sums(expected));
         g.observed.push_back(sums(observed[k]));
+        const double occluders = sums(expected).occluders, samples = sums(expected).taken;
+        const double ratio = k % 2 == 1 ? (occluders > 0.0 ? sums(expected).depth_sum / occluders : 0.0)
+                                        : (samples > 0.0 ? occluders / samples : 0.0);
+        // A float sum of n <= 64 terms and a quotient: (n + 2) u of the value.
+        ratios.add(ratio, observed[k].ratio, (samples + 2.0) * 0x1p-24 * std::fabs(ratio) + 1e-30, static_cast<int>(k), 0, 0);
       }
       queries_total += static_cast<long>(cpu.size());
       left_out_total += groups[0].left_out + groups[1].left_out;
@@ -141,6 +148,11 @@ std::vector<CaseResult> run_poisson_pcss_check(const CheckEnvironment& env) {
                                         : " block disk (64 in place, pnPoissonOcclusionDisk)";
       add_occlusion_cases(results, label + disk + ", rotation off", groups[0], "samples", "a sample on a texel edge or a tie");
       add_occlusion_cases(results, label + disk + ", rotation on", groups[1], "samples", "a sample on a texel edge or a tie");
+      Tolerance tolerance;
+      const Comparison c = compare_bounded(ratios, tolerance);
+      results.push_back({label + disk + ": pnPoissonBlockerMean (odd queries) or pnPoissonOccludedFraction (even) of "
+                                        "the sums vs the quotient in double (query k at (k, 0))",
+                         tolerance, c});
     }
   }
   const bool few = left_out_total * 20 <= queries_total;

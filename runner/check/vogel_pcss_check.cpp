@@ -99,7 +99,9 @@ std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
     for (int k = 0; k < 64; ++k) {  // the noise at pixel centres across a 4096² screen, no samples
       const float x = std::floor(random.uniform_float(0.0f, 4096.0f)) + 0.5f;
       const float y = std::floor(random.uniform_float(0.0f, 4096.0f)) + 0.5f;
-      gpu.push_back({x, y, 1.0f, 0.5f, 0.0f, 0, 0.0f, 0.0f, 0.0f});
+      VogelPcssGpuQuery q{x, y, 1.0f, 0.5f, 0.0f, 0, 0.0f, 0.0f, 0.0f};
+      q.estimate_turn = k % 2 == 1;  // every other one the one call's turn at that pixel (its centre's noise)
+      gpu.push_back(q);
     }
     const std::vector<VogelPcssGpuResult> observed = pass.run(texture, gpu);
 
@@ -138,7 +140,8 @@ std::vector<CaseResult> run_vogel_pcss_check(const CheckEnvironment& env) {
   }
   Tolerance noise_tolerance = Tolerance::absolute(0.0);
   const Comparison noise_result = compare_bounded(noise, noise_tolerance);
-  results.push_back({"pnInterleavedGradientNoise at every query's centre vs double (turns, on the circle)",
+  results.push_back({"pnInterleavedGradientNoise at every query's centre, and pnVogelPcssEstimate's turn at 32 pixels "
+                     "(its centre's), vs double (turns, on the circle)",
                      noise_tolerance, noise_result});
   const double fraction = samples_total > 0 ? static_cast<double>(ambiguous_total) / samples_total : 0.0;
   BoundedElements open;

@@ -49,7 +49,7 @@ std::vector<PoissonPcssGpuResult> PoissonPcssQueryPass::run(const DeviceTexture&
   std::vector<PoissonPcssGpuResult> out;
   for (size_t k = 0; k < queries.size(); ++k) {
     const Query q = r.at(0, k);
-    out.push_back({q[0], q[1], q[2]});
+    out.push_back({q[0], q[1], q[2], q[3]});
   }
   return out;
 }

@@ -30,6 +30,7 @@ struct PoissonPcssGpuQuery {
 
 struct PoissonPcssGpuResult {
   float occluders = 0.0f, depth_sum = 0.0f, samples = 0.0f;
+  float ratio = 0.0f;  // pnPoissonBlockerMean of the sums at odd query indices, pnPoissonOccludedFraction at even
 };
 
 class PoissonPcssQueryPass {

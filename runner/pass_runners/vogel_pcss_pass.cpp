@@ -17,7 +17,7 @@ std::vector<VogelPcssGpuResult> VogelPcssQueryPass::run(const DeviceTexture& dep
   for (const VogelPcssGpuQuery& q : queries) {
     a.push_back({q.centre_x, q.centre_y, q.diameter, q.receiver_depth});
     b.push_back({q.bias, static_cast<float>(q.count), q.turn, 0.0f});
-    c.push_back({q.gradient_x, q.gradient_y, 0.0f, 0.0f});
+    c.push_back({q.gradient_x, q.gradient_y, q.estimate_turn ? 1.0f : 0.0f, 0.0f});
   }
   const QueryResults r = query_.run({a, b, c}, {{PN_VOGEL_QUERY_MAP_BINDING, depth_map}}, QueryBlock{});
   std::vector<VogelPcssGpuResult> out;

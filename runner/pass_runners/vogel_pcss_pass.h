@@ -16,11 +16,14 @@ struct VogelPcssGpuQuery {
   int count = 0;
   float turn = 0.0f;
   float gradient_x = 0.0f, gradient_y = 0.0f;  // the receiver plane's (0: a constant bias)
+  // The result's noise from the one call instead: pnVogelPcssEstimate's turn at the pixel
+  // ivec2(centre) (a light of its own, the defaults with this bias).
+  bool estimate_turn = false;
 };
 
 struct VogelPcssGpuResult {
   float occluders = 0.0f, depth_sum = 0.0f, samples = 0.0f;
-  float noise = 0.0f;  // pnInterleavedGradientNoise(centre)
+  float noise = 0.0f;  // pnInterleavedGradientNoise(centre), or pnVogelPcssEstimate's turn (estimate_turn)
 };
 
 class VogelPcssQueryPass {
