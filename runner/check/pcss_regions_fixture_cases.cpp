@@ -131,6 +131,29 @@ float blocker_depth_for(const LightModel& light, double d, double target) {
   return static_cast<float>(0.5 * (lo + hi));
 }
 
+// A staircase's searches against search_entry, as one group named with the most refinements the
+// reference took (the mip chain's counted searches compare their refinements too).
+void add_staircase_group(const DepthScan& scan, const LightModel& light, const RegionReceiver& receiver,
+                         const std::vector<PcssRegionsQuery>& queries, const std::vector<PcssRegionsResult>& observed,
+                         Structure structure, const std::string& name, std::vector<CaseResult>& results,
+                         SearchTally& tally) {
+  const bool counted = structure == Structure::mip;
+  EntryGroup g;
+  int most = 0;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    Rounding rounding{kAmbiguity};
+    int refinements = 0;
+    const RegionEntry expected = search_entry(scan, light, receiver, 0.0, queries[k].iterations, &rounding,
+                                              structure, &refinements);
+    most = std::max(most, refinements);
+    add_entry(g, expected, rounding.ambiguous, observed[k], counted ? refinements : -1);
+  }
+  tally.searched += g.queries, tally.left_out += g.left_out;
+  push_group(results, name + " refining " + std::to_string(most) + " times (its bound: 16)", g,
+             counted ? "search entries and refinements (8, 15, 16, 100 iterations)"
+                     : "search entries (8, 15, 16, 100 iterations)");
+}
+
 // A staircase of depth about one receiver on which Step 3 refines every time its bound allows
 // (PN_REFINE_MAX_ITERATIONS, 16) over the pyramid: nested squares Q_j of sides 36, 34, …, 4 (the
 // sides T_j = 38.25 − 2j the refinements reach) about the receiver, the texels of Q_j outside
@@ -161,21 +184,8 @@ void staircase_case(const CheckEnvironment& env, const PcssRegionsQueryPass& pas
     const std::vector<PcssRegionsQuery> q = search_queries({receiver}, RegionMode::exact, iterations, 0.0f);
     queries.insert(queries.end(), q.begin(), q.end());
   }
-  const std::vector<PcssRegionsResult> observed = pass.run(pyramid, light, queries);
-  EntryGroup g;
-  int most = 0;
-  for (size_t k = 0; k < queries.size(); ++k) {
-    Rounding rounding{kAmbiguity};
-    int refinements = 0;
-    const RegionEntry expected = search_entry(scan, light, receiver, 0.0, queries[k].iterations, &rounding,
-                                              Structure::pyramid, &refinements);
-    most = std::max(most, refinements);
-    add_entry(g, expected, rounding.ambiguous, observed[k]);
-  }
-  tally.searched += g.queries, tally.left_out += g.left_out;
-  push_group(results, "staircase " + std::to_string(n) + "², the pyramid's search refining " + std::to_string(most) +
-                          " times (its bound)",
-             g, "search entries (8, 15, 16, 100 iterations)");
+  add_staircase_group(scan, light, receiver, queries, pass.run(pyramid, light, queries), Structure::pyramid,
+                      "staircase " + std::to_string(n) + "², the pyramid's search", results, tally);
 }
 
 // The same over the aligned mip chain (pnSearchEntryMip): a refinement reads the min over the aligned
@@ -222,21 +232,8 @@ void mip_staircase_case(const CheckEnvironment& env, const PcssRegionsQueryPass&
       q.kind = kind;  // the plane's gradient 0: the counted search again, through the plane's call
       queries.push_back(q);
     }
-  const std::vector<PcssRegionsResult> observed = pass.run(pyramid, light, queries, &mip);
-  EntryGroup g;
-  int most = 0;
-  for (size_t k = 0; k < queries.size(); ++k) {
-    Rounding rounding{kAmbiguity};
-    int refinements = 0;
-    const RegionEntry expected = search_entry(scan, light, receiver, 0.0, queries[k].iterations, &rounding,
-                                              Structure::mip, &refinements);
-    most = std::max(most, refinements);
-    add_entry(g, expected, rounding.ambiguous, observed[k], refinements);
-  }
-  tally.searched += g.queries, tally.left_out += g.left_out;
-  push_group(results, "staircase " + std::to_string(n) + "², the mip chain's search refining " + std::to_string(most) +
-                          " times (its bound: 16)",
-             g, "search entries and refinements (8, 15, 16, 100 iterations)");
+  add_staircase_group(scan, light, receiver, queries, pass.run(pyramid, light, queries, &mip), Structure::mip,
+                      "staircase " + std::to_string(n) + "², the mip chain's search", results, tally);
 }
 
 }  // namespace
